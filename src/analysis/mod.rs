@@ -1,0 +1,6 @@
+//! Linear analyses of an assembled rotor: static deflection, unbalance response,
+//! complex modes and the Campbell diagram.
+
+pub mod campbell;
+pub mod linear;
+pub mod modal;

@@ -1,0 +1,329 @@
+//! `rotor`: command-line front end of the rotor-bearing library.
+//!
+//! ```text
+//! rotor info     [MODEL.toml]
+//! rotor static   [MODEL.toml] [--csv FILE]
+//! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE]
+//! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--csv FILE] [--png FILE]
+//! ```
+//! Without MODEL.toml the built-in classic disk-on-shaft rotor is used.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand};
+
+use rotor_bearing::analysis::campbell::{campbell, critical_speeds};
+use rotor_bearing::analysis::linear::{node_xy, static_deflection};
+use rotor_bearing::analysis::modal::{ModalOptions, modes};
+use rotor_bearing::fe::assembly::Rotor;
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png};
+
+#[derive(Parser)]
+#[command(
+    name = "rotor",
+    version,
+    about = "Finite-element rotor-bearing dynamics"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Args)]
+struct ModelArg {
+    /// Model file (TOML); the built-in classic disk-on-shaft rotor when omitted.
+    model: Option<PathBuf>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Summarize a model: nodes, elements, masses, bearings.
+    Info {
+        #[command(flatten)]
+        model: ModelArg,
+    },
+    /// Static deflection under gravity (linear bearings).
+    Static {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Write node displacements to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
+    /// Complex modes at one speed: damped frequencies, damping, whirl.
+    Modes {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Spin speed (rpm).
+        #[arg(long, default_value_t = 0.0)]
+        rpm: f64,
+        /// Number of modes.
+        #[arg(long, default_value_t = 8)]
+        modes: usize,
+        /// Write the modes to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
+    /// Campbell diagram and critical speeds over 0..max-rpm.
+    Campbell {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Highest spin speed (rpm).
+        #[arg(long, default_value_t = 4000.0)]
+        max_rpm: f64,
+        /// Number of speed steps (the grid has steps + 1 points).
+        #[arg(long, default_value_t = 40)]
+        steps: usize,
+        /// Number of modes per speed.
+        #[arg(long, default_value_t = 8)]
+        modes: usize,
+        /// Write the diagram to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw the diagram to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
+}
+
+fn main() -> ExitCode {
+    match run(Cli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("rotor: error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn load(arg: &ModelArg) -> Result<Rotor, String> {
+    let model = match &arg.model {
+        Some(path) => RotorModel::from_file(path).map_err(|e| e.to_string())?,
+        None => RotorModel::default_model(),
+    };
+    Rotor::new(model).map_err(|e| e.to_string())
+}
+
+fn write_file(path: &Path, text: &str) -> Result<(), String> {
+    std::fs::write(path, text).map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
+    eprintln!("wrote {}", path.display());
+    Ok(())
+}
+
+fn run(cli: Cli) -> Result<(), String> {
+    match cli.command {
+        Command::Info { model } => {
+            let rotor = load(&model)?;
+            print!("{}", info(&rotor));
+        }
+        Command::Static { model, csv } => {
+            let rotor = load(&model)?;
+            let q = static_deflection(&rotor).map_err(|e| e.to_string())?;
+            let mut out = String::from("node,z_m,x_m,y_m,rx_rad,ry_rad\n");
+            for (i, z) in rotor.model.node_z.iter().enumerate() {
+                let d = &q[4 * i..4 * i + 4];
+                writeln!(
+                    out,
+                    "{},{z},{:e},{:e},{:e},{:e}",
+                    i + 1,
+                    d[0],
+                    d[1],
+                    d[2],
+                    d[3]
+                )
+                .ok();
+            }
+            let (peak_node, peak) = (0..rotor.model.node_count())
+                .map(|i| {
+                    let (x, y) = node_xy(&q, i);
+                    (i, x.hypot(y))
+                })
+                .fold((0, 0.0), |a, b| if b.1 > a.1 { b } else { a });
+            println!(
+                "static deflection of {}: largest {:.4e} m at node {}",
+                rotor.model.name,
+                peak,
+                peak_node + 1
+            );
+            match csv {
+                Some(path) => write_file(&path, &out)?,
+                None => print!("{out}"),
+            }
+        }
+        Command::Modes {
+            model,
+            rpm,
+            modes: count,
+            csv,
+        } => {
+            let rotor = load(&model)?;
+            let speed = rpm / RAD_S_TO_RPM;
+            let options = ModalOptions {
+                modes: count,
+                ..ModalOptions::default()
+            };
+            let ms = modes(&rotor, speed, &options).map_err(|e| e.to_string())?;
+            let mut out = String::from(
+                "mode,speed_rpm,damped_frequency_rad_s,damped_frequency_hz,natural_frequency_rad_s,damping_ratio,log_decrement,whirl\n",
+            );
+            println!("{} at {rpm} rpm:", rotor.model.name);
+            println!(" mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl");
+            for (k, m) in ms.iter().enumerate() {
+                let f = m.damped_frequency / (2.0 * std::f64::consts::PI);
+                println!(
+                    "{:5} {:12.4} {:11.4} {:14.4e} {:9.4} {:>9}",
+                    k + 1,
+                    m.damped_frequency,
+                    f,
+                    m.damping_ratio,
+                    m.log_decrement,
+                    m.whirl.label()
+                );
+                writeln!(
+                    out,
+                    "{},{rpm},{},{f},{},{},{},{}",
+                    k + 1,
+                    m.damped_frequency,
+                    m.natural_frequency,
+                    m.damping_ratio,
+                    m.log_decrement,
+                    m.whirl.label()
+                )
+                .ok();
+            }
+            if let Some(path) = csv {
+                write_file(&path, &out)?;
+            }
+        }
+        Command::Campbell {
+            model,
+            max_rpm,
+            steps,
+            modes: count,
+            csv,
+            png,
+        } => {
+            if !(max_rpm.is_finite() && max_rpm > 0.0) || steps == 0 {
+                return Err(format!(
+                    "--max-rpm must be positive (got {max_rpm}) and --steps at least 1 (got {steps})"
+                ));
+            }
+            let rotor = load(&model)?;
+            let options = ModalOptions {
+                modes: count,
+                ..ModalOptions::default()
+            };
+            let speeds: Vec<f64> = (0..=steps)
+                .map(|k| max_rpm / RAD_S_TO_RPM * k as f64 / steps as f64)
+                .collect();
+            let diagram = campbell(&rotor, &speeds, &options).map_err(|e| e.to_string())?;
+            let criticals =
+                critical_speeds(&rotor, &diagram, 1.0, &options).map_err(|e| e.to_string())?;
+            println!(
+                "critical speeds of {} (1× unbalance excitation):",
+                rotor.model.name
+            );
+            for c in &criticals {
+                println!(
+                    "  {:10.2} rpm ({:9.3} rad/s)  branch {}  {} whirl  ζ = {:.3e}",
+                    c.speed * RAD_S_TO_RPM,
+                    c.speed,
+                    c.rank + 1,
+                    c.whirl.label(),
+                    c.damping_ratio
+                );
+            }
+            let mut out = String::from(
+                "speed_rpm,speed_rad_s,mode,damped_frequency_rad_s,damped_frequency_hz,damping_ratio,log_decrement,whirl\n",
+            );
+            for p in &diagram {
+                for (k, m) in p.modes.iter().enumerate() {
+                    writeln!(
+                        out,
+                        "{},{},{},{},{},{},{},{}",
+                        p.speed * RAD_S_TO_RPM,
+                        p.speed,
+                        k + 1,
+                        m.damped_frequency,
+                        m.damped_frequency / (2.0 * std::f64::consts::PI),
+                        m.damping_ratio,
+                        m.log_decrement,
+                        m.whirl.label()
+                    )
+                    .ok();
+                }
+            }
+            match csv {
+                Some(path) => write_file(&path, &out)?,
+                None => print!("{out}"),
+            }
+            if let Some(path) = png {
+                let title = format!("Campbell diagram: {}", rotor.model.name);
+                campbell_png(&path, &title, &diagram, &[1.0], &criticals)
+                    .map_err(|e| e.to_string())?;
+                eprintln!("wrote {}", path.display());
+            }
+        }
+    }
+    Ok(())
+}
+
+fn info(rotor: &Rotor) -> String {
+    let m = &rotor.model;
+    let mut s = String::new();
+    writeln!(s, "model {} ({})", m.name, m.source).ok();
+    if !m.description.is_empty() {
+        writeln!(s, "  {}", m.description).ok();
+    }
+    writeln!(
+        s,
+        "  {} nodes, {} shaft elements, {} free DOFs, length {:.4} m, rotating mass {:.3} kg",
+        m.node_count(),
+        m.elements.len(),
+        rotor.dof_count(),
+        m.node_z[m.node_z.len() - 1] - m.node_z[0],
+        m.total_mass()
+    )
+    .ok();
+    for d in &m.disks {
+        writeln!(
+            s,
+            "  disk {} at node {}: m = {:.4} kg, Ip = {:.5} kg·m², Id = {:.5} kg·m²",
+            d.name,
+            d.node + 1,
+            d.disk.mass,
+            d.disk.polar_inertia,
+            d.disk.diametral_inertia
+        )
+        .ok();
+    }
+    for b in &m.bearings {
+        writeln!(
+            s,
+            "  bearing {} at node {}: {:?}",
+            b.name,
+            b.node + 1,
+            b.kind
+        )
+        .ok();
+    }
+    for u in &m.unbalances {
+        writeln!(
+            s,
+            "  unbalance {} at node {}: {} kg·m at {:.1}°",
+            u.name,
+            u.node + 1,
+            u.magnitude,
+            u.phase.to_degrees()
+        )
+        .ok();
+    }
+    for p in &m.probes {
+        writeln!(s, "  probe {} at node {}", p.name, p.node + 1).ok();
+    }
+    writeln!(s, "  gravity {:?} m/s²", m.gravity).ok();
+    s
+}

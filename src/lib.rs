@@ -1,0 +1,15 @@
+//! Rotor-bearing dynamics: a finite-element rotor (Timoshenko shaft elements,
+//! lumped disks) on bearings, with linear analyses (static deflection, unbalance
+//! response, complex modes, Campbell diagram).
+//!
+//! Data flow: model file ([`model`]) → validated [`model::RotorModel`] →
+//! assembled [`fe::assembly::Rotor`] (banded `M`, `K`, `C`, `G`) → analyses
+//! ([`analysis`]). Physics lives in [`fe`] and [`bearing`]; [`linalg`] holds the
+//! banded solver and the shift-invert eigen-solver; [`plot`] draws PNG figures.
+
+pub mod analysis;
+pub mod bearing;
+pub mod fe;
+pub mod linalg;
+pub mod model;
+pub mod plot;

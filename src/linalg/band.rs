@@ -1,0 +1,554 @@
+//! General banded matrices in LAPACK band storage and their LU factorization
+//! with partial pivoting (the unblocked algorithm of LAPACK `xGBTF2`/`xGBTRS`).
+
+use nalgebra::{Complex, ComplexField, DMatrix};
+
+use super::LinalgError;
+
+/// Scalars supported by the banded routines: `f64` and `Complex<f64>`.
+pub trait Scalar: ComplexField<RealField = f64> + Copy {}
+
+impl Scalar for f64 {}
+impl Scalar for Complex<f64> {}
+
+/// Square `n × n` matrix with `kl` sub- and `ku` super-diagonals.
+///
+/// Column-major LAPACK band storage with leading dimension `ldab = 2*kl + ku + 1`:
+/// entry `(i, j)` lives at `data[(kl + ku + i - j) + j * ldab]`. The first `kl`
+/// rows of every column are reserved for the fill-in produced by row pivoting,
+/// so [`BandMatrix::lu`] factorizes a plain copy of the storage.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BandMatrix<T> {
+    n: usize,
+    kl: usize,
+    ku: usize,
+    ldab: usize,
+    data: Vec<T>,
+}
+
+impl<T: Scalar> BandMatrix<T> {
+    /// Zero `n × n` matrix with `kl` sub- and `ku` super-diagonals
+    /// (both are clamped to `n - 1`).
+    pub fn new(n: usize, kl: usize, ku: usize) -> Self {
+        let kl = kl.min(n.saturating_sub(1));
+        let ku = ku.min(n.saturating_sub(1));
+        let ldab = 2 * kl + ku + 1;
+        Self {
+            n,
+            kl,
+            ku,
+            ldab,
+            data: vec![T::zero(); ldab * n],
+        }
+    }
+
+    /// Zero matrix with the same dimension and band as `self`.
+    pub fn zeroed_like(&self) -> Self {
+        Self::new(self.n, self.kl, self.ku)
+    }
+
+    /// Matrix dimension.
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// Number of sub-diagonals.
+    pub fn kl(&self) -> usize {
+        self.kl
+    }
+
+    /// Number of super-diagonals.
+    pub fn ku(&self) -> usize {
+        self.ku
+    }
+
+    /// Storage index of `(i, j)`, or `None` outside the matrix or the band.
+    #[inline]
+    fn index(&self, i: usize, j: usize) -> Option<usize> {
+        if i < self.n && j < self.n && i + self.ku >= j && i <= j + self.kl {
+            Some(self.kl + self.ku + i - j + j * self.ldab)
+        } else {
+            None
+        }
+    }
+
+    /// Entry `(i, j)`; zero outside the band or the matrix.
+    pub fn get(&self, i: usize, j: usize) -> T {
+        self.index(i, j).map_or_else(T::zero, |k| self.data[k])
+    }
+
+    /// `A[i, j] += v`; error if `(i, j)` is outside the band.
+    pub fn add(&mut self, i: usize, j: usize, v: T) -> Result<(), LinalgError> {
+        let k = self
+            .index(i, j)
+            .ok_or(LinalgError::OutOfBand { row: i, col: j })?;
+        self.data[k] += v;
+        Ok(())
+    }
+
+    /// `A[i, j] = v`; error if `(i, j)` is outside the band.
+    pub fn set(&mut self, i: usize, j: usize, v: T) -> Result<(), LinalgError> {
+        let k = self
+            .index(i, j)
+            .ok_or(LinalgError::OutOfBand { row: i, col: j })?;
+        self.data[k] = v;
+        Ok(())
+    }
+
+    /// `y = A x` without allocation.
+    pub fn mul_vec(&self, x: &[T], y: &mut [T]) -> Result<(), LinalgError> {
+        check_len(self.n, x.len())?;
+        check_len(self.n, y.len())?;
+        y.fill(T::zero());
+        let kv = self.kl + self.ku;
+        for (j, &xj) in x.iter().enumerate() {
+            let i0 = j.saturating_sub(self.ku);
+            let i1 = (j + self.kl).min(self.n - 1);
+            let base = j * self.ldab + kv - j;
+            let col = &self.data[base + i0..=base + i1];
+            for (yi, &a) in y[i0..=i1].iter_mut().zip(col) {
+                *yi += a * xj;
+            }
+        }
+        Ok(())
+    }
+
+    /// Dense copy (for tests and small problems).
+    pub fn to_dense(&self) -> DMatrix<T> {
+        DMatrix::from_fn(self.n, self.n, |i, j| self.get(i, j))
+    }
+
+    /// `self += alpha * other`; the band of `other` must lie within the band of `self`.
+    pub fn scale_add(&mut self, alpha: T, other: &BandMatrix<T>) -> Result<(), LinalgError> {
+        check_len(self.n, other.n)?;
+        if other.kl > self.kl || other.ku > self.ku {
+            return Err(LinalgError::IncompatibleBand);
+        }
+        let kv = self.kl + self.ku;
+        let okv = other.kl + other.ku;
+        for j in 0..self.n {
+            let i0 = j.saturating_sub(other.ku);
+            let i1 = (j + other.kl).min(self.n - 1);
+            let sb = j * self.ldab + kv - j;
+            let ob = j * other.ldab + okv - j;
+            let dst = &mut self.data[sb + i0..=sb + i1];
+            let src = &other.data[ob + i0..=ob + i1];
+            for (d, &s) in dst.iter_mut().zip(src) {
+                *d += alpha * s;
+            }
+        }
+        Ok(())
+    }
+
+    /// LU factorization with partial pivoting, `P A = L U`, of a copy of `self`.
+    ///
+    /// LAPACK `xGBTF2`: `U` gets `kl + ku` super-diagonals, `L` is unit lower
+    /// banded with `kl` sub-diagonals. Cost `O(n kl (kl + ku))`. A pivot that is
+    /// zero or whose modulus is below `n * EPSILON * max|a_ij|` is reported as
+    /// [`LinalgError::Singular`].
+    pub fn lu(&self) -> Result<BandLu<T>, LinalgError> {
+        let (n, kl, ku, ldab) = (self.n, self.kl, self.ku, self.ldab);
+        let kv = kl + ku;
+        let mut amax = 0.0_f64;
+        for j in 0..n {
+            let i0 = j.saturating_sub(ku);
+            let i1 = (j + kl).min(n - 1);
+            let base = j * ldab + kv - j;
+            for a in &self.data[base + i0..=base + i1] {
+                if !a.is_finite() {
+                    return Err(LinalgError::NotFinite);
+                }
+                amax = amax.max(a.modulus());
+            }
+        }
+        let thresh = n as f64 * f64::EPSILON * amax;
+        let mut a = self.data.clone();
+        // The fill-in rows are zero by construction; clear them anyway.
+        for col in a.chunks_exact_mut(ldab) {
+            col[..kl].fill(T::zero());
+        }
+        let mut ipiv = vec![0usize; n];
+        let mut ju = 0usize;
+        for (j, piv) in ipiv.iter_mut().enumerate() {
+            let km = kl.min(n - 1 - j);
+            let diag = j * ldab + kv;
+            let mut p = 0usize;
+            let mut pmax = -1.0_f64;
+            for (r, v) in a[diag..=diag + km].iter().enumerate() {
+                let m = v.modulus();
+                if m > pmax {
+                    pmax = m;
+                    p = r;
+                }
+            }
+            if pmax == 0.0 || pmax < thresh {
+                return Err(LinalgError::Singular { column: j });
+            }
+            *piv = j + p;
+            ju = ju.max((j + ku + p).min(n - 1));
+            if p != 0 {
+                for c in j..=ju {
+                    let k = c * ldab + kv + j - c;
+                    a.swap(k, k + p);
+                }
+            }
+            if km > 0 {
+                let (left, right) = a.split_at_mut((j + 1) * ldab);
+                let inv = T::one() / left[diag];
+                let l = &mut left[diag + 1..=diag + km];
+                for x in l.iter_mut() {
+                    *x *= inv;
+                }
+                for c in j + 1..=ju {
+                    let k = (c - j - 1) * ldab + kv + j - c;
+                    let u = right[k];
+                    if u != T::zero() {
+                        for (dst, &lr) in right[k + 1..=k + km].iter_mut().zip(l.iter()) {
+                            *dst -= lr * u;
+                        }
+                    }
+                }
+            }
+        }
+        Ok(BandLu {
+            n,
+            kl,
+            ku,
+            ldab,
+            data: a,
+            ipiv,
+        })
+    }
+}
+
+/// `BandMatrix<f64>` → `BandMatrix<Complex<f64>>` with the same band.
+pub fn map_to_complex(a: &BandMatrix<f64>) -> BandMatrix<Complex<f64>> {
+    BandMatrix {
+        n: a.n,
+        kl: a.kl,
+        ku: a.ku,
+        ldab: a.ldab,
+        data: a.data.iter().map(|&x| Complex::new(x, 0.0)).collect(),
+    }
+}
+
+fn check_len(expected: usize, found: usize) -> Result<(), LinalgError> {
+    if expected == found {
+        Ok(())
+    } else {
+        Err(LinalgError::DimensionMismatch { expected, found })
+    }
+}
+
+/// Banded LU factors `P A = L U` produced by [`BandMatrix::lu`].
+#[derive(Debug, Clone)]
+pub struct BandLu<T> {
+    n: usize,
+    kl: usize,
+    ku: usize,
+    ldab: usize,
+    data: Vec<T>,
+    ipiv: Vec<usize>,
+}
+
+impl<T: Scalar> BandLu<T> {
+    /// Matrix dimension.
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// Solves `A x = b` in place (LAPACK `xGBTRS`, no transpose), no allocation.
+    /// Cost `O(n (2 kl + ku))`.
+    pub fn solve_in_place(&self, b: &mut [T]) -> Result<(), LinalgError> {
+        let (n, kl, ldab) = (self.n, self.kl, self.ldab);
+        check_len(n, b.len())?;
+        let kv = kl + self.ku;
+        if kl > 0 {
+            for j in 0..n.saturating_sub(1) {
+                let lm = kl.min(n - 1 - j);
+                let l = self.ipiv[j];
+                if l != j {
+                    b.swap(l, j);
+                }
+                let bj = b[j];
+                let diag = j * ldab + kv;
+                let col = &self.data[diag + 1..=diag + lm];
+                for (bi, &lr) in b[j + 1..=j + lm].iter_mut().zip(col) {
+                    *bi -= lr * bj;
+                }
+            }
+        }
+        for j in (0..n).rev() {
+            let diag = j * ldab + kv;
+            let bj = b[j] / self.data[diag];
+            b[j] = bj;
+            let i0 = j.saturating_sub(kv);
+            let col = &self.data[diag - (j - i0)..diag];
+            for (bi, &u) in b[i0..j].iter_mut().zip(col) {
+                *bi -= u * bj;
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Tiny deterministic generator for test data (64-bit LCG).
+    struct Rng(u64);
+
+    impl Rng {
+        fn uniform(&mut self) -> f64 {
+            self.0 = self
+                .0
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        }
+    }
+
+    trait Random: Scalar {
+        fn random(rng: &mut Rng) -> Self;
+    }
+
+    impl Random for f64 {
+        fn random(rng: &mut Rng) -> Self {
+            rng.uniform()
+        }
+    }
+
+    impl Random for Complex<f64> {
+        fn random(rng: &mut Rng) -> Self {
+            Complex::new(rng.uniform(), rng.uniform())
+        }
+    }
+
+    /// Random band matrix, well conditioned: with `pivot` the diagonal is zero and
+    /// the dominant entries pair rows `(2k, 2k + 1)` so that every other column
+    /// needs a row interchange; otherwise the diagonal is shifted by 4.
+    fn random_band<T: Random>(
+        rng: &mut Rng,
+        n: usize,
+        kl: usize,
+        ku: usize,
+        pivot: bool,
+    ) -> BandMatrix<T> {
+        let mut a = BandMatrix::new(n, kl, ku);
+        for j in 0..n {
+            for i in j.saturating_sub(ku)..=(j + kl).min(n - 1) {
+                let mut v = T::random(rng);
+                let partner = if j % 2 == 0 { j + 1 } else { j - 1 };
+                if !pivot && i == j {
+                    v += T::from_real(4.0);
+                } else if pivot && i == j {
+                    v = if j + 1 == n && n % 2 == 1 {
+                        T::from_real(4.0)
+                    } else {
+                        T::zero()
+                    };
+                } else if pivot && i == partner {
+                    v += T::from_real(4.0);
+                }
+                a.set(i, j, v).expect("inside band");
+            }
+        }
+        a
+    }
+
+    fn norm<T: Scalar>(v: &[T]) -> f64 {
+        v.iter().map(|x| x.modulus_squared()).sum::<f64>().sqrt()
+    }
+
+    fn check_solve<T: Random>(seed: u64, n: usize, kl: usize, ku: usize, pivot: bool) {
+        let mut rng = Rng(seed);
+        let a: BandMatrix<T> = random_band(&mut rng, n, kl, ku, pivot);
+        let b: Vec<T> = (0..n).map(|_| T::random(&mut rng)).collect();
+        let lu = a.lu().expect("nonsingular");
+        if pivot {
+            let swaps = lu.ipiv.iter().enumerate().filter(|&(j, &p)| p != j).count();
+            assert!(swaps >= (n - 1) / 2, "only {swaps} row interchanges");
+        }
+        let mut x = b.clone();
+        lu.solve_in_place(&mut x).expect("dimensions match");
+        let mut ax = vec![T::zero(); n];
+        a.mul_vec(&x, &mut ax).expect("dimensions match");
+        let r: Vec<T> = ax.iter().zip(&b).map(|(&p, &q)| p - q).collect();
+        let rel = norm(&r) / norm(&b);
+        assert!(rel < 1e-12, "n={n} kl={kl} ku={ku}: residual {rel:e}");
+        let dense = a.to_dense().lu();
+        let xd = dense
+            .solve(&nalgebra::DVector::from_column_slice(&b))
+            .expect("dense nonsingular");
+        let diff: Vec<T> = x.iter().zip(xd.iter()).map(|(&p, &q)| p - q).collect();
+        let rel_x = norm(&diff) / norm(&x);
+        assert!(
+            rel_x < 1e-9,
+            "n={n} kl={kl} ku={ku}: differs from dense by {rel_x:e}"
+        );
+    }
+
+    const SHAPES: [(usize, usize, usize); 10] = [
+        (1, 0, 0),
+        (7, 0, 0),
+        (9, 1, 1),
+        (50, 3, 2),
+        (60, 0, 4),
+        (60, 4, 0),
+        (200, 7, 7),
+        (300, 15, 10),
+        (120, 2, 13),
+        (12, 20, 20),
+    ];
+
+    #[test]
+    fn band_lu_matches_dense_real() {
+        for (s, &(n, kl, ku)) in SHAPES.iter().enumerate() {
+            check_solve::<f64>(11 + s as u64, n, kl, ku, false);
+        }
+    }
+
+    #[test]
+    fn band_lu_matches_dense_complex() {
+        for (s, &(n, kl, ku)) in SHAPES.iter().enumerate() {
+            check_solve::<Complex<f64>>(101 + s as u64, n, kl, ku, false);
+        }
+    }
+
+    #[test]
+    fn band_lu_requires_pivoting() {
+        for (s, &(n, kl, ku)) in SHAPES.iter().enumerate() {
+            if kl > 0 && ku > 0 {
+                check_solve::<f64>(1001 + s as u64, n, kl, ku, true);
+                check_solve::<Complex<f64>>(2001 + s as u64, n, kl, ku, true);
+            }
+        }
+    }
+
+    #[test]
+    fn band_lu_permutation_matrix() {
+        // Anti-diagonal pairs: every pivot must come from a row interchange.
+        let n = 10;
+        let mut a = BandMatrix::<f64>::new(n, 1, 1);
+        for k in (0..n).step_by(2) {
+            a.set(k, k + 1, 2.0).expect("in band");
+            a.set(k + 1, k, 3.0).expect("in band");
+        }
+        let lu = a.lu().expect("nonsingular");
+        let mut x: Vec<f64> = (0..n).map(|i| i as f64 + 1.0).collect();
+        lu.solve_in_place(&mut x).expect("dims");
+        for k in (0..n).step_by(2) {
+            assert!((x[k] - (k as f64 + 2.0) / 3.0).abs() < 1e-15);
+            assert!((x[k + 1] - (k as f64 + 1.0) / 2.0).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn singular_zero_column() {
+        let mut a = BandMatrix::<f64>::new(6, 1, 1);
+        for i in 0..6_usize {
+            for j in i.saturating_sub(1)..=(i + 1).min(5) {
+                if j != 3 {
+                    a.set(i, j, 1.0 + i as f64 + 2.0 * j as f64)
+                        .expect("in band");
+                }
+            }
+        }
+        assert_eq!(a.lu().err(), Some(LinalgError::Singular { column: 3 }));
+    }
+
+    #[test]
+    fn singular_neumann_laplacian() {
+        // Rows sum to zero: exactly singular, last pivot is pure round-off.
+        let n = 50;
+        let mut a = BandMatrix::<Complex<f64>>::new(n, 1, 1);
+        for i in 0..n {
+            let d = if i == 0 || i == n - 1 { 1.0 } else { 2.0 };
+            a.set(i, i, Complex::new(d, 0.0)).expect("in band");
+            if i + 1 < n {
+                a.set(i, i + 1, Complex::new(-1.0, 0.0)).expect("in band");
+                a.set(i + 1, i, Complex::new(-1.0, 0.0)).expect("in band");
+            }
+        }
+        assert_eq!(a.lu().err(), Some(LinalgError::Singular { column: n - 1 }));
+        assert_eq!(
+            BandMatrix::<f64>::new(3, 1, 1).lu().err(),
+            Some(LinalgError::Singular { column: 0 })
+        );
+    }
+
+    #[test]
+    fn non_finite_rejected() {
+        let mut rng = Rng(5);
+        let mut a: BandMatrix<f64> = random_band(&mut rng, 20, 2, 3, false);
+        a.set(7, 9, f64::NAN).expect("in band");
+        assert_eq!(a.lu().err(), Some(LinalgError::NotFinite));
+        let mut c: BandMatrix<Complex<f64>> = random_band(&mut rng, 20, 2, 3, false);
+        c.set(4, 3, Complex::new(1.0, f64::INFINITY))
+            .expect("in band");
+        assert_eq!(c.lu().err(), Some(LinalgError::NotFinite));
+    }
+
+    #[test]
+    fn mul_vec_matches_dense() {
+        let mut rng = Rng(77);
+        for &(n, kl, ku) in &SHAPES {
+            let a: BandMatrix<Complex<f64>> = random_band(&mut rng, n, kl, ku, false);
+            let x: Vec<Complex<f64>> = (0..n).map(|_| Complex::random(&mut rng)).collect();
+            let mut y = vec![Complex::new(0.0, 0.0); n];
+            a.mul_vec(&x, &mut y).expect("dims");
+            let yd = a.to_dense() * nalgebra::DVector::from_column_slice(&x);
+            for (p, q) in y.iter().zip(yd.iter()) {
+                assert!((p - q).norm() < 1e-13, "n={n} kl={kl} ku={ku}");
+            }
+        }
+        let a = BandMatrix::<f64>::new(4, 1, 1);
+        let mut y = vec![0.0; 3];
+        assert_eq!(
+            a.mul_vec(&[1.0; 4], &mut y),
+            Err(LinalgError::DimensionMismatch {
+                expected: 4,
+                found: 3
+            })
+        );
+    }
+
+    #[test]
+    fn band_access_and_scale_add() {
+        let mut a = BandMatrix::<f64>::new(5, 1, 2);
+        assert_eq!((a.n(), a.kl(), a.ku()), (5, 1, 2));
+        assert_eq!(
+            a.add(3, 0, 1.0),
+            Err(LinalgError::OutOfBand { row: 3, col: 0 })
+        );
+        assert_eq!(
+            a.set(0, 3, 1.0),
+            Err(LinalgError::OutOfBand { row: 0, col: 3 })
+        );
+        assert!(a.set(5, 5, 1.0).is_err());
+        a.set(1, 0, 2.0).expect("in band");
+        a.add(1, 0, 0.5).expect("in band");
+        a.set(0, 2, 4.0).expect("in band");
+        assert_eq!(a.get(1, 0), 2.5);
+        assert_eq!(a.get(0, 2), 4.0);
+        assert_eq!(a.get(4, 0), 0.0);
+        assert_eq!(a.get(9, 9), 0.0);
+
+        let mut b = BandMatrix::<f64>::new(5, 1, 1);
+        b.set(1, 0, 1.0).expect("in band");
+        b.set(2, 2, 3.0).expect("in band");
+        a.scale_add(2.0, &b).expect("band contained");
+        assert_eq!(a.get(1, 0), 4.5);
+        assert_eq!(a.get(2, 2), 6.0);
+        assert_eq!(b.scale_add(1.0, &a), Err(LinalgError::IncompatibleBand));
+
+        let z = a.zeroed_like();
+        assert_eq!((z.n(), z.kl(), z.ku()), (5, 1, 2));
+        assert!(z.to_dense().iter().all(|&v| v == 0.0));
+
+        let c = map_to_complex(&a);
+        assert_eq!(c.get(0, 2), Complex::new(4.0, 0.0));
+        assert_eq!(c.to_dense().map(|v| v.re), a.to_dense());
+    }
+}

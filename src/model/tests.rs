@@ -1,0 +1,177 @@
+use super::*;
+
+const BASE: &str = r#"
+name = "t"
+[[materials]]
+name = "steel"
+youngs_modulus = 211e9
+shear_modulus = 81.2e9
+density = 7810.0
+
+[[shaft]]
+length = 1.5
+outer_diameter = 0.05
+material = "steel"
+elements = 6
+"#;
+
+fn err_of(extra: &str) -> String {
+    let text = format!("{BASE}{extra}");
+    match RotorModel::from_toml(&text, "m.toml") {
+        Ok(_) => panic!("expected an error for:\n{extra}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn default_model_is_the_classic_rotor() {
+    let m = RotorModel::default_model();
+    assert_eq!(m.name, DEFAULT_MODEL_NAME);
+    assert_eq!(m.node_count(), 7);
+    assert_eq!(m.elements.len(), 6);
+    assert_eq!(m.disks[0].node, 3);
+    assert!((m.disks[0].disk.mass - 32.590).abs() < 5e-4);
+    assert_eq!(m.bearings.len(), 2);
+    assert!((m.node_z[6] - 1.5).abs() < 1e-15);
+}
+
+#[test]
+fn shipped_models_load() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("models");
+    let mut count = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            let m = RotorModel::from_file(&path).unwrap_or_else(|e| panic!("{e}"));
+            assert!(m.node_count() >= 2, "{}", path.display());
+            count += 1;
+        }
+    }
+    assert!(
+        count >= 4,
+        "expected the four shipped models, found {count}"
+    );
+}
+
+#[test]
+fn hydro_unit_has_the_papers_layout() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("models/hydro_unit.toml");
+    let m = RotorModel::from_file(&path).unwrap();
+    assert_eq!(m.elements.len(), 19);
+    let probe_nodes: Vec<usize> = m.probes.iter().map(|p| p.node + 1).collect();
+    assert_eq!(probe_nodes, vec![6, 11, 16]);
+    assert_eq!(m.unbalances[0].node + 1, 5);
+    // 15 kg·m at 150 rpm is the paper's ≈3700 N synchronous force.
+    let w = 150.0 * std::f64::consts::PI / 30.0;
+    let force = m.unbalances[0].magnitude * w * w;
+    assert!((force - 3700.0).abs() < 0.01 * 3700.0, "{force}");
+}
+
+#[test]
+fn bad_value_names_file_field_value_and_line() {
+    let text = BASE.replace("outer_diameter = 0.05", "outer_diameter = -0.05");
+    let e = RotorModel::from_toml(&text, "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("m.toml:12: shaft[0].outer_diameter = -0.05"),
+        "{e}"
+    );
+    assert!(e.contains("greater than zero"), "{e}");
+}
+
+#[test]
+fn unknown_key_is_a_syntax_error_with_line() {
+    let e = err_of("\n[[disks]]\nnode = 4\nmas = 3.0\n");
+    assert!(e.starts_with("m.toml:19"), "{e}");
+    assert!(e.contains("mas"), "{e}");
+}
+
+#[test]
+fn unknown_bearing_type_is_rejected() {
+    let e = err_of("\n[[bearings]]\ntype = \"magnetic\"\nnode = 1\n");
+    assert!(e.contains("magnetic"), "{e}");
+}
+
+#[test]
+fn semantic_errors_are_reported() {
+    let cases = [
+        (
+            "\n[[disks]]\nnode = 9\nmass = 1.0\npolar_inertia = 0.1\ndiametral_inertia = 0.1\n",
+            "disks[0].node = 9",
+        ),
+        (
+            "\n[[disks]]\nz = 0.3\nmass = 1.0\npolar_inertia = 0.1\ndiametral_inertia = 0.1\n",
+            "nearest is node 2",
+        ),
+        (
+            "\n[[disks]]\nnode = 2\nmass = 1.0\n",
+            "disks[0].polar_inertia",
+        ),
+        (
+            "\n[[disks]]\nnode = 2\nmass = 1.0\npolar_inertia = 0.1\ndiametral_inertia = 0.1\nwidth = 0.1\n",
+            "not both",
+        ),
+        (
+            "\n[[disks]]\nnode = 2\nmaterial = \"brass\"\nouter_diameter = 0.2\nwidth = 0.1\n",
+            "unknown material",
+        ),
+        (
+            "\n[[probes]]\nname = \"a\"\nnode = 1\n[[probes]]\nname = \"a\"\nnode = 2\n",
+            "duplicate probe",
+        ),
+        (
+            "\n[[supports]]\nnode = 1\nfix = [\"x\", \"q\"]\n",
+            "supports[0].fix[1] = \"q\"",
+        ),
+        (
+            "\n[[bearings]]\ntype = \"linear\"\nnode = 1\nkxx = -5.0\n",
+            "bearings[0].kxx = -5",
+        ),
+        (
+            "\n[[unbalance]]\nnode = 4\nz = 0.75\nmagnitude = 1e-3\n",
+            "not both",
+        ),
+        ("\n[[unbalance]]\nmagnitude = 1e-3\n", "needs node or z"),
+        ("\ngravity = [0.0, -9.81]\n", "gravity"),
+    ];
+    for (extra, expect) in cases {
+        let e = err_of(extra);
+        assert!(e.contains(expect), "expected {expect:?} in: {e}");
+        assert!(e.starts_with("m.toml"), "{e}");
+    }
+}
+
+#[test]
+fn material_from_poisson_ratio_and_bad_ratio() {
+    let text = BASE.replace("shear_modulus = 81.2e9", "poisson_ratio = 0.3");
+    let m = RotorModel::from_toml(&text, "m.toml").unwrap();
+    let g = m.elements[0].element.material.shear_modulus;
+    assert!((g - 211e9 / 2.6).abs() < 1.0);
+    let text = BASE.replace("shear_modulus = 81.2e9", "shear_modulus = 10e9");
+    let e = RotorModel::from_toml(&text, "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("materials[0].shear_modulus"), "{e}");
+}
+
+#[test]
+fn positions_by_z_and_supports() {
+    let extra = "\n[[disks]]\nz = 0.75\nmass = 1.0\npolar_inertia = 0.1\ndiametral_inertia = 0.1\n\
+                 [[supports]]\nnode = 1\nfix = [\"pinned\"]\n[[supports]]\nz = 1.5\nfix = [\"clamped\"]\n";
+    let m = RotorModel::from_toml(&format!("{BASE}{extra}"), "m.toml").unwrap();
+    assert_eq!(m.disks[0].node, 3);
+    assert_eq!(m.supports[0].fixed, [true, true, false, false]);
+    assert_eq!(m.supports[1].node, 6);
+    assert_eq!(m.supports[1].fixed, [true; 4]);
+}
+
+#[test]
+fn missing_file_is_an_io_error() {
+    let e = RotorModel::from_file(Path::new("/no/such/model.toml")).unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("/no/such/model.toml: cannot read"),
+        "{e}"
+    );
+}
