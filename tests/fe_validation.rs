@@ -228,8 +228,10 @@ fn classic_rotor_damped_natural_frequencies() {
         let ms = modes(&rotor, rpm * RPM, &opts).unwrap();
         for (k, &e) in expect.iter().enumerate() {
             let got = ms[k].damped_frequency;
+            // The references carry 5 significant digits (rounding ≤ 4.3e-5 relative);
+            // the issue asks for 0.5%, the element reproduces them to 1e-4.
             assert!(
-                (got - e).abs() < 5e-3 * e,
+                (got - e).abs() < 1e-4 * e,
                 "{rpm} rpm mode {}: {got} vs {e}",
                 k + 1
             );
@@ -245,9 +247,22 @@ fn classic_rotor_damped_natural_frequencies() {
 
 #[test]
 fn classic_rotor_whirl_directions_at_speed() {
+    // Each pair splits into a backward (lower) and a forward (higher) whirl.
     let ms = modes(&classic(), 4000.0 * RPM, &ModalOptions::default()).unwrap();
-    assert_eq!(ms[2].whirl, Whirl::Backward, "{:?}", ms[2]);
-    assert_eq!(ms[3].whirl, Whirl::Forward, "{:?}", ms[3]);
+    for pair in ms.chunks(2) {
+        assert_eq!(
+            pair[0].whirl,
+            Whirl::Backward,
+            "{:?}",
+            pair[0].damped_frequency
+        );
+        assert_eq!(
+            pair[1].whirl,
+            Whirl::Forward,
+            "{:?}",
+            pair[1].damped_frequency
+        );
+    }
 }
 
 #[test]

@@ -200,10 +200,11 @@ impl ShaftElement {
                     target[(xa, xb)] = source[(a, b)];
                     target[(ya, yb)] = s * source[(a, b)];
                 }
-                // θx = Σ (YZ_SIGN·N_θ)_b q_y,b and θy = Σ N_θ,a q_x,a, so with
-                // T_g = Ω ∫ρI_p θ̇x θy: G[y-plane row, x-plane col] = ρI_p ∫ (S N_θ) N_θᵀ,
+                // The y–z beam rotation is ∂y/∂z = −θx = N_θ·(S q_y), S = YZ_SIGN, so
+                // θx = −Σ S_b N_θ,b q_y,b, while θy = Σ N_θ,a q_x,a. With
+                // T_g = Ω ∫ρI_p θ̇x θy: G[y-plane row, x-plane col] = −ρI_p ∫ (S N_θ) N_θᵀ,
                 // and G[x-plane row, y-plane col] is its negative transpose.
-                let g = 2.0 * rho * inertia * YZ_SIGN[a] * m_rot[(a, b)];
+                let g = -2.0 * rho * inertia * YZ_SIGN[a] * m_rot[(a, b)];
                 out.gyroscopic[(ya, xb)] = g;
                 out.gyroscopic[(xb, ya)] = -g;
             }
@@ -352,12 +353,54 @@ mod tests {
                 let tol_k = 1e-12 * k.amax();
                 assert!((mats.mass[(i, j)] - expect_m[(a, b)]).abs() < tol_m);
                 assert!((mats.stiffness[(i, j)] - k[(a, b)]).abs() < tol_k);
-                // Gyroscopic coupling equals twice the rotary inertia pattern.
-                let (yi, _) = (YZ_PLANE[a], 0);
-                let g = mats.gyroscopic[(yi, j)];
-                assert!((g - 2.0 * YZ_SIGN[a] * mr[(a, b)]).abs() < 1e-12 * mr.amax());
             }
         }
+    }
+
+    /// A rigid spinning cylinder tilting about its centre: the gyroscopic moment of
+    /// the element must equal that of a disk with the cylinder's polar inertia
+    /// `I_p = ρ I_p,area L` acting on the common tilt, `M = Ω I_p (θ̇y, −θ̇x)`
+    /// (the sign convention of [`crate::fe::disk`]).
+    #[test]
+    fn gyroscopic_moment_of_rigid_tilt_equals_disk_of_same_polar_inertia() {
+        let l = 0.4;
+        let e = element(l, 0.1, 0.03);
+        let g = e.matrices().gyroscopic;
+        let ip = e.material.density * e.section.polar_moment() * l;
+        // Rigid tilt rates about the mid-point: θ̇x = a, θ̇y = b.
+        let (a, b) = (0.7, -1.3);
+        let qdot = SVector::<f64, 8>::from_column_slice(&[
+            -b * l / 2.0,
+            a * l / 2.0,
+            a,
+            b,
+            b * l / 2.0,
+            -a * l / 2.0,
+            a,
+            b,
+        ]);
+        let f = g * qdot;
+        // Net moments about x and y (nodal moments plus forces × arm about the centre).
+        let moment_x = f[2] + f[6] - (f[5] * l / 2.0 - f[1] * l / 2.0);
+        let moment_y = f[3] + f[7] + (f[4] * l / 2.0 - f[0] * l / 2.0);
+        let disk = crate::fe::disk::Disk {
+            mass: 0.0,
+            polar_inertia: ip,
+            diametral_inertia: 0.0,
+        }
+        .gyroscopic_matrix();
+        let expect_x = disk[(2, 3)] * b;
+        let expect_y = disk[(3, 2)] * a;
+        assert!(
+            (moment_x - expect_x).abs() < 1e-9 * ip,
+            "{moment_x} vs {expect_x}"
+        );
+        assert!(
+            (moment_y - expect_y).abs() < 1e-9 * ip,
+            "{moment_y} vs {expect_y}"
+        );
+        // Net gyroscopic force of a rigid tilt is zero.
+        assert!((f[0] + f[4]).abs() < 1e-9 * ip && (f[1] + f[5]).abs() < 1e-9 * ip);
     }
 
     #[test]

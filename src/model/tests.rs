@@ -74,7 +74,7 @@ fn bad_value_names_file_field_value_and_line() {
         .unwrap_err()
         .to_string();
     assert!(
-        e.starts_with("m.toml:12: shaft[0].outer_diameter = -0.05"),
+        e.starts_with("m.toml:11: shaft[0].outer_diameter = -0.05"),
         "{e}"
     );
     assert!(e.contains("greater than zero"), "{e}");
@@ -83,7 +83,7 @@ fn bad_value_names_file_field_value_and_line() {
 #[test]
 fn unknown_key_is_a_syntax_error_with_line() {
     let e = err_of("\n[[disks]]\nnode = 4\nmas = 3.0\n");
-    assert!(e.starts_with("m.toml:19"), "{e}");
+    assert!(e.starts_with("m.toml:17"), "{e}");
     assert!(e.contains("mas"), "{e}");
 }
 
