@@ -74,6 +74,8 @@ pub fn campbell_png(
         .x_desc("spin speed (rpm)")
         .y_desc("damped natural frequency (Hz)")
         .label_style(("sans-serif", 16))
+        .x_label_formatter(&|v| format!("{v:.0}"))
+        .y_label_formatter(&|v| format!("{v:.0}"))
         .draw()
         .map_err(|e| err(&e))?;
 
