@@ -5,11 +5,15 @@
 //! see that trait. Sign conventions: the force acts **on the journal**;
 //! `K = −∂F/∂(x, y)` and `C = −∂F/∂(ẋ, ẏ)`, so a plain spring has positive `K`.
 
+pub mod equilibrium;
+pub mod film;
 pub mod linear;
+pub mod plain;
 
 use nalgebra::{Matrix2, Vector2};
 
 pub use linear::LinearBearing;
+pub use plain::PlainBearing;
 
 /// Position and velocity of a journal centre relative to the bearing centre.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -37,6 +41,27 @@ pub enum BearingError {
     /// An input was NaN or infinite.
     #[error("bearing input {what} is not finite ({value})")]
     NotFinite { what: &'static str, value: f64 },
+    /// The journal reached or passed the clearance circle, where the film model
+    /// has no meaning (journal–bearing contact).
+    #[error(
+        "journal at eccentricity ratio {eccentricity:.6} reached the clearance circle (ε ≥ 1): the oil film has broken down (contact)"
+    )]
+    ClearanceExceeded { eccentricity: f64 },
+}
+
+/// Quantities a bearing reports besides its force (for outputs and coupling).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BearingReport {
+    /// Eccentricity ratio `ε = e/C` (–); zero for bearings without a clearance.
+    pub eccentricity: f64,
+    /// Attitude angle (rad): from the load line to the eccentricity vector, in the spin direction.
+    pub attitude_angle: f64,
+    /// Minimum film thickness `C (1 − ε)` (m); zero without a film.
+    pub min_film_thickness: f64,
+    /// Viscous friction torque on the journal, opposing the spin (N·m).
+    pub friction_torque: f64,
+    /// Power dissipated in the film (W).
+    pub power_loss: f64,
 }
 
 /// A bearing kind: force and Jacobians from the journal state and spin speed.
@@ -51,6 +76,12 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
     /// True when the force is linear in the state and independent of speed, so it
     /// can be assembled once into the global matrices.
     fn is_linear(&self) -> bool;
+
+    /// Eccentricity, attitude angle, film thickness and friction at `state`, with
+    /// `force` the film force there (from [`Bearing::force_and_jacobian`]).
+    fn report(&self, _state: &JournalState, _speed: f64, _force: &Vector2<f64>) -> BearingReport {
+        BearingReport::default()
+    }
 }
 
 /// Bearing type and parameters as given in a model file (plain data).
@@ -63,6 +94,8 @@ pub enum BearingKind {
         /// Damping (N·s/m), row-major.
         damping: [[f64; 2]; 2],
     },
+    /// Plain journal bearing, short-bearing theory with π-film cavitation.
+    Plain(PlainBearing),
 }
 
 impl BearingKind {
@@ -72,6 +105,7 @@ impl BearingKind {
             BearingKind::Linear { stiffness, damping } => {
                 Box::new(LinearBearing::new(*stiffness, *damping))
             }
+            BearingKind::Plain(b) => Box::new(*b),
         }
     }
 }

@@ -133,6 +133,20 @@ pub enum BearingEntry {
         #[serde(default)]
         cyy: f64,
     },
+    /// Plain journal bearing, short-bearing (Ocvirk) theory, π-film cavitation.
+    Plain {
+        name: Option<String>,
+        node: Option<i64>,
+        z: Option<f64>,
+        /// Journal radius (m).
+        radius: f64,
+        /// Bearing length (m).
+        length: f64,
+        /// Radial clearance (m).
+        clearance: f64,
+        /// Oil dynamic viscosity (Pa·s).
+        viscosity: f64,
+    },
 }
 
 /// `[[unbalance]]`: an unbalance plane.

@@ -13,7 +13,7 @@ pub use error::ModelError;
 use std::collections::HashSet;
 use std::path::Path;
 
-use crate::bearing::BearingKind;
+use crate::bearing::{BearingKind, PlainBearing};
 use crate::fe::disk::Disk;
 use crate::fe::section::{CircularSection, Material};
 use crate::fe::shaft::{ShaftEffects, ShaftElement};
@@ -555,6 +555,34 @@ fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError> {
                         damping: c,
                     },
                 )
+            }
+            BearingEntry::Plain {
+                name,
+                node,
+                z,
+                radius,
+                length,
+                clearance,
+                viscosity,
+            } => {
+                let node = ctx.location(&p, node, z, &node_z)?;
+                let bearing = PlainBearing {
+                    radius: ctx.positive(p.key("radius"), radius)?,
+                    length: ctx.positive(p.key("length"), length)?,
+                    clearance: ctx.positive(p.key("clearance"), clearance)?,
+                    viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
+                };
+                if bearing.clearance >= 0.1 * bearing.radius {
+                    return Err(ctx.err(
+                        p.key("clearance"),
+                        bearing.clearance,
+                        &format!(
+                            "must be much smaller than the radius {} (thin-film theory)",
+                            bearing.radius
+                        ),
+                    ));
+                }
+                (name, node, BearingKind::Plain(bearing))
             }
         };
         bearings.push(PlacedBearing {
