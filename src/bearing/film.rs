@@ -159,7 +159,7 @@ impl Mul<f64> for Jet3 {
 impl Div for Jet3 {
     type Output = Self;
     fn div(self, o: Self) -> Self {
-        self * o.recip()
+        Mul::mul(self, o.recip())
     }
 }
 
