@@ -414,6 +414,9 @@ fn long_rotor_train_modes_are_found_with_banded_shift_invert() {
     let speed = 3000.0 * RPM;
     let fine_modes = modes(&fine, speed, &opts).unwrap();
     let coarse_modes = modes(&train(50), speed, &opts).unwrap();
+    for m in &fine_modes {
+        eprintln!("{} {:e}", m.damped_frequency, m.residual);
+    }
     for (f, c) in fine_modes.iter().zip(&coarse_modes) {
         assert!(f.residual < 1e-8, "residual {}", f.residual);
         let rel = (f.damped_frequency - c.damped_frequency).abs() / f.damped_frequency;
