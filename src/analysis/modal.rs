@@ -197,7 +197,7 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
     eigen.retain(|(l, _)| oscillating(l));
     let mut out: Vec<Mode> = eigen
         .into_iter()
-        .map(|(lambda, z)| make_mode(rotor, &d, lambda, &z[..n]))
+        .map(|(lambda, z)| make_mode(rotor, &d, speed, lambda, &z[..n]))
         .collect::<Result<_, _>>()
         .map_err(lin)?;
     out.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
@@ -229,6 +229,7 @@ fn frequency_scale(rotor: &Rotor) -> f64 {
 fn make_mode(
     rotor: &Rotor,
     d: &BandMatrix<f64>,
+    speed: f64,
     lambda: C64,
     x: &[C64],
 ) -> Result<Mode, LinalgError> {
@@ -285,7 +286,7 @@ fn make_mode(
         damped_frequency,
         damping_ratio,
         log_decrement,
-        whirl: classify_whirl(&shape),
+        whirl: classify_whirl(&shape, speed),
         shape,
         residual,
     })
@@ -302,7 +303,12 @@ pub fn orbit_radii(x: C64, y: C64) -> (f64, f64) {
     ((x + i * y).norm() / 2.0, (x - i * y).norm() / 2.0)
 }
 
-fn classify_whirl(shape: &[C64]) -> Whirl {
+/// Whirl relative to the spin; without spin there is no direction to compare
+/// with (and degenerate pairs are arbitrary combinations): `Mixed`.
+fn classify_whirl(shape: &[C64], speed: f64) -> Whirl {
+    if speed == 0.0 {
+        return Whirl::Mixed;
+    }
     let nodes = shape.len() / DOF_PER_NODE;
     let radii: Vec<(f64, f64)> = (0..nodes)
         .map(|k| {
@@ -327,6 +333,9 @@ fn classify_whirl(shape: &[C64]) -> Whirl {
         } else {
             planar += 1;
         }
+    }
+    if speed < 0.0 {
+        std::mem::swap(&mut forward, &mut backward);
     }
     match (forward, backward, planar) {
         (f, 0, 0) if f > 0 => Whirl::Forward,
