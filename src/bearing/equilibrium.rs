@@ -1,19 +1,27 @@
-//! Static equilibrium of a journal under a steady load, by Newton's method on the
-//! closed-form bearing force and stiffness, and the linearized coefficients there.
+//! Static equilibrium of a journal (and of a tilting-pad bearing's pads) under a
+//! steady load, by Newton's method on the closed-form forces and Jacobians, and
+//! the linearized coefficients there, with internal coordinates condensed.
 
-use nalgebra::Vector2;
+use nalgebra::{Complex, DMatrix, DVector, Matrix2, Vector2};
 
-use super::{Bearing, BearingError, BearingForce, JournalState};
+use super::{Bearing, BearingError, BearingEval};
 
 /// A converged equilibrium.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Equilibrium {
-    /// Journal position (m).
-    pub position: Vector2<f64>,
-    /// Force and linearized stiffness/damping there.
-    pub coefficients: BearingForce,
+    /// Generalized coordinates `[x, y, internal…]` (m).
+    pub q: Vec<f64>,
+    /// Forces and Jacobians there.
+    pub eval: BearingEval,
     /// Newton iterations used.
     pub iterations: usize,
+}
+
+impl Equilibrium {
+    /// Journal position (m).
+    pub fn position(&self) -> Vector2<f64> {
+        Vector2::new(self.q[0], self.q[1])
+    }
 }
 
 /// Why no equilibrium was found.
@@ -34,57 +42,61 @@ pub enum EquilibriumError {
     Singular,
 }
 
-/// Journal position where the film force balances `load` (the steady force
-/// applied to the journal, N): `F(q) + load = 0`, with zero journal velocity.
-/// Newton steps `δ = K⁻¹ (F + load)` with backtracking keep the journal inside
-/// the clearance `scale` and the residual decreasing; converged when
-/// `|F + load| ≤ 1e-10 |load|`.
+/// Coordinates where the bearing's forces balance `load` (the steady force applied
+/// to the journal, N) with all velocities zero: `Q(q) + [load, 0…] = 0`. Newton
+/// steps `δ = K⁻¹ (Q + load)` with backtracking keep the journal inside the
+/// radius `scale` and the residual decreasing; converged when
+/// `|Q + load| ≤ 1e-10 |load|`.
 pub fn journal_equilibrium(
     bearing: &dyn Bearing,
     load: Vector2<f64>,
     speed: f64,
     scale: f64,
 ) -> Result<Equilibrium, EquilibriumError> {
-    let eval = |position: Vector2<f64>| {
-        bearing.force_and_jacobian(
-            &JournalState {
-                position,
-                velocity: Vector2::zeros(),
-            },
-            speed,
-        )
+    let n = 2 + bearing.internal_dofs();
+    let zero = vec![0.0; n];
+    let residual_of = |eval: &BearingEval| -> DVector<f64> {
+        DVector::from_fn(n, |i, _| {
+            eval.force[i]
+                + match i {
+                    0 => load.x,
+                    1 => load.y,
+                    _ => 0.0,
+                }
+        })
     };
     let tol = 1e-10 * load.norm().max(f64::MIN_POSITIVE);
-    let mut position = Vector2::zeros();
-    let mut current = eval(position)?;
-    let mut residual = (current.force + load).norm();
+    let mut q = vec![0.0; n];
+    let mut eval = BearingEval::new(n);
+    bearing.evaluate(&q, &zero, speed, &mut eval)?;
+    let mut trial_eval = eval.clone();
+    let mut r = residual_of(&eval);
     for iteration in 0..200 {
-        if residual <= tol {
+        if r.norm() <= tol {
             return Ok(Equilibrium {
-                position,
-                coefficients: current,
+                q,
+                eval,
                 iterations: iteration,
             });
         }
-        let step = current
-            .stiffness
-            .try_inverse()
-            .ok_or(EquilibriumError::Singular)?
-            * (current.force + load);
+        let k = DMatrix::from_row_slice(n, n, &eval.stiffness);
+        let step = k.lu().solve(&r).ok_or(EquilibriumError::Singular)?;
         let mut t = 1.0;
         let mut accepted = false;
         for _ in 0..60 {
-            let trial = position + step * t;
-            if trial.norm() < scale {
-                if let Ok(next) = eval(trial) {
-                    let r = (next.force + load).norm();
-                    if r < residual {
-                        position = trial;
-                        current = next;
-                        residual = r;
-                        accepted = true;
-                        break;
-                    }
+            let trial: Vec<f64> = q.iter().zip(step.iter()).map(|(a, d)| a + t * d).collect();
+            if trial[0].hypot(trial[1]) < scale
+                && bearing
+                    .evaluate(&trial, &zero, speed, &mut trial_eval)
+                    .is_ok()
+            {
+                let rt = residual_of(&trial_eval);
+                if rt.norm() < r.norm() {
+                    q = trial;
+                    std::mem::swap(&mut eval, &mut trial_eval);
+                    r = rt;
+                    accepted = true;
+                    break;
                 }
             }
             t *= 0.5;
@@ -95,6 +107,43 @@ pub fn journal_equilibrium(
     }
     Err(EquilibriumError::NotConverged {
         iterations: 200,
-        residual,
+        residual: r.norm(),
     })
+}
+
+/// Journal stiffness and damping with the internal coordinates condensed for
+/// harmonic motion at `frequency` Ω (rad/s): `Z = K + iΩC`,
+/// `Z_red = Z_jj − Z_jp Z_pp⁻¹ Z_pj`, `K_red = Re Z_red`, `C_red = Im Z_red / Ω`
+/// (massless internal coordinates). Without internal coordinates this is the
+/// journal block itself. At Ω = 0 the damping follows from the derivative
+/// `dZ_red/d(iΩ)` at zero.
+pub fn condensed_coefficients(eval: &BearingEval, frequency: f64) -> (Matrix2<f64>, Matrix2<f64>) {
+    let n = eval.n();
+    if n == 2 {
+        let j = eval.journal();
+        return (j.stiffness, j.damping);
+    }
+    let reduce = |omega: f64| -> Option<Matrix2<Complex<f64>>> {
+        let z = DMatrix::from_fn(n, n, |i, j| {
+            Complex::new(eval.k(i, j), omega * eval.c(i, j))
+        });
+        let zpp = z.view((2, 2), (n - 2, n - 2)).into_owned();
+        let zpj = z.view((2, 0), (n - 2, 2)).into_owned();
+        let zjp = z.view((0, 2), (2, n - 2)).into_owned();
+        let x = zpp.lu().solve(&zpj)?;
+        let red = z.view((0, 0), (2, 2)).into_owned() - zjp * x;
+        Some(Matrix2::from_fn(|i, j| red[(i, j)]))
+    };
+    let omega = if frequency.abs() > 0.0 {
+        frequency
+    } else {
+        1e-6
+    };
+    match reduce(omega) {
+        Some(red) => (red.map(|z| z.re), red.map(|z| z.im / omega)),
+        None => {
+            let j = eval.journal();
+            (j.stiffness, j.damping)
+        }
+    }
 }

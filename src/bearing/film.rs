@@ -180,8 +180,8 @@ pub fn arc_potential(x: f64, y: f64, theta1: f64, theta2: f64) -> Jet3 {
 }
 
 /// The second and third derivatives of [`arc_potential`], named by the trig
-/// monomials they integrate.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// monomials they integrate. Integrals over several arcs add.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FilmIntegrals {
     /// `Φ_xx = 2 ∫ cos²/H³`.
     pub xx: f64,
@@ -197,6 +197,21 @@ pub struct FilmIntegrals {
     pub xyy: f64,
     /// `Φ_yyy = 6 ∫ sin³/H⁴`.
     pub yyy: f64,
+}
+
+impl Add for FilmIntegrals {
+    type Output = Self;
+    fn add(self, o: Self) -> Self {
+        Self {
+            xx: self.xx + o.xx,
+            xy: self.xy + o.xy,
+            yy: self.yy + o.yy,
+            xxx: self.xxx + o.xxx,
+            xxy: self.xxy + o.xxy,
+            xyy: self.xyy + o.xyy,
+            yyy: self.yyy + o.yyy,
+        }
+    }
 }
 
 impl FilmIntegrals {

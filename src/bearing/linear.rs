@@ -1,8 +1,8 @@
 //! Linear bearing: constant stiffness and damping, cross-coupling allowed.
 
-use nalgebra::Matrix2;
+use nalgebra::{Matrix2, Vector2};
 
-use super::{Bearing, BearingError, BearingForce, JournalState, check_finite};
+use super::{Bearing, BearingError, BearingEval, BearingForce, JournalState, check_state};
 
 /// `F = −K q − C q̇` with constant 2×2 `K` (N/m) and `C` (N·s/m).
 #[derive(Debug, Clone, PartialEq)]
@@ -24,18 +24,39 @@ impl LinearBearing {
     }
 }
 
-impl Bearing for LinearBearing {
-    fn force_and_jacobian(
+impl LinearBearing {
+    /// Force on the journal and its (constant) Jacobians.
+    pub fn force_and_jacobian(
         &self,
         state: &JournalState,
         speed: f64,
     ) -> Result<BearingForce, BearingError> {
-        check_finite(state, speed)?;
-        Ok(BearingForce {
-            force: -(self.stiffness * state.position + self.damping * state.velocity),
+        let mut out = BearingEval::new(2);
+        let q = [state.position.x, state.position.y];
+        let qd = [state.velocity.x, state.velocity.y];
+        self.evaluate(&q, &qd, speed, &mut out)?;
+        Ok(out.journal())
+    }
+}
+
+impl Bearing for LinearBearing {
+    fn evaluate(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<(), BearingError> {
+        check_state(2, q, qdot, speed, out)?;
+        let (x, v) = (Vector2::new(q[0], q[1]), Vector2::new(qdot[0], qdot[1]));
+        let part = BearingForce {
+            force: -(self.stiffness * x + self.damping * v),
             stiffness: self.stiffness,
             damping: self.damping,
-        })
+        };
+        out.clear();
+        out.add_transformed(&part, None);
+        Ok(())
     }
 
     fn is_linear(&self) -> bool {
@@ -46,7 +67,6 @@ impl Bearing for LinearBearing {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Vector2;
 
     #[test]
     fn force_opposes_displacement_and_matches_jacobians() {

@@ -9,11 +9,13 @@ pub mod equilibrium;
 pub mod film;
 pub mod linear;
 pub mod plain;
+pub mod tilting_pad;
 
 use nalgebra::{Matrix2, Vector2};
 
 pub use linear::LinearBearing;
 pub use plain::PlainBearing;
+pub use tilting_pad::TiltingPadBearing;
 
 /// Position and velocity of a journal centre relative to the bearing centre.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -41,6 +43,9 @@ pub enum BearingError {
     /// An input was NaN or infinite.
     #[error("bearing input {what} is not finite ({value})")]
     NotFinite { what: &'static str, value: f64 },
+    /// State vectors of the wrong length.
+    #[error("bearing state has {found} coordinates, expected {expected}")]
+    Dimension { expected: usize, found: usize },
     /// The journal reached or passed the clearance circle, where the film model
     /// has no meaning (journal–bearing contact).
     #[error(
@@ -64,24 +69,148 @@ pub struct BearingReport {
     pub power_loss: f64,
 }
 
-/// A bearing kind: force and Jacobians from the journal state and spin speed.
+/// Generalized forces and Jacobians of a bearing with `n = 2 + m` coordinates
+/// `q = [x, y, internal…]` (internal: pad tilts of a tilting-pad bearing).
+/// Buffers are sized once, so evaluation allocates nothing.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BearingEval {
+    n: usize,
+    /// Generalized forces `Q` (N on the journal, then N for each pad tilt).
+    pub force: Vec<f64>,
+    /// `K = −∂Q/∂q`, row-major `n × n`.
+    pub stiffness: Vec<f64>,
+    /// `C = −∂Q/∂q̇`, row-major `n × n`.
+    pub damping: Vec<f64>,
+}
+
+impl BearingEval {
+    /// Zeroed buffers for `n` generalized coordinates.
+    pub fn new(n: usize) -> Self {
+        Self {
+            n,
+            force: vec![0.0; n],
+            stiffness: vec![0.0; n * n],
+            damping: vec![0.0; n * n],
+        }
+    }
+
+    /// Number of generalized coordinates.
+    pub fn n(&self) -> usize {
+        self.n
+    }
+
+    /// `K[i][j]`.
+    pub fn k(&self, i: usize, j: usize) -> f64 {
+        self.stiffness[i * self.n + j]
+    }
+
+    /// `C[i][j]`.
+    pub fn c(&self, i: usize, j: usize) -> f64 {
+        self.damping[i * self.n + j]
+    }
+
+    /// The journal block: force on the journal and its 2×2 Jacobians (the
+    /// internal coordinates held fixed).
+    pub fn journal(&self) -> BearingForce {
+        BearingForce {
+            force: Vector2::new(self.force[0], self.force[1]),
+            stiffness: Matrix2::new(self.k(0, 0), self.k(0, 1), self.k(1, 0), self.k(1, 1)),
+            damping: Matrix2::new(self.c(0, 0), self.c(0, 1), self.c(1, 0), self.c(1, 1)),
+        }
+    }
+
+    fn clear(&mut self) {
+        self.force.fill(0.0);
+        self.stiffness.fill(0.0);
+        self.damping.fill(0.0);
+    }
+
+    /// Add a journal-type contribution `f, K, C` acting on the effective journal
+    /// coordinates `(x_e, y_e) = (x, y) + η·(a, b)` of internal coordinate
+    /// `internal` (`None`: the journal itself), i.e. with `T = [[1, 0, a], [0, 1, b]]`:
+    /// `Q += Tᵀ f`, `K += Tᵀ K T`, `C += Tᵀ C T`.
+    fn add_transformed(&mut self, part: &BearingForce, internal: Option<(usize, f64, f64)>) {
+        let idx: [(usize, [f64; 2]); 3] = match internal {
+            Some((k, a, b)) => [(0, [1.0, 0.0]), (1, [0.0, 1.0]), (2 + k, [a, b])],
+            None => [(0, [1.0, 0.0]), (1, [0.0, 1.0]), (usize::MAX, [0.0, 0.0])],
+        };
+        let n = self.n;
+        for &(i, ti) in idx.iter().filter(|(i, _)| *i != usize::MAX) {
+            self.force[i] += ti[0] * part.force.x + ti[1] * part.force.y;
+            for &(j, tj) in idx.iter().filter(|(j, _)| *j != usize::MAX) {
+                let (a, b) = (Vector2::from(ti), Vector2::from(tj));
+                let kv = a.dot(&(part.stiffness * b));
+                let cv = a.dot(&(part.damping * b));
+                self.stiffness[i * n + j] += kv;
+                self.damping[i * n + j] += cv;
+            }
+        }
+    }
+}
+
+/// A bearing kind: generalized force and Jacobians from the state and spin speed.
 pub trait Bearing: Send + Sync + std::fmt::Debug {
-    /// Force on the journal and its Jacobians at `state`, spin speed `speed` (rad/s).
-    fn force_and_jacobian(
+    /// Internal generalized coordinates besides the journal's `(x, y)`: the pad
+    /// tilts `η = ψ R` (m) of a tilting-pad bearing; none for other kinds.
+    fn internal_dofs(&self) -> usize {
+        0
+    }
+
+    /// Forces and Jacobians at `q = [x, y, internal…]`, `q̇` likewise (SI), spin
+    /// speed `speed` (rad/s), written into `out` (sized `2 + internal_dofs()`).
+    fn evaluate(
         &self,
-        state: &JournalState,
+        q: &[f64],
+        qdot: &[f64],
         speed: f64,
-    ) -> Result<BearingForce, BearingError>;
+        out: &mut BearingEval,
+    ) -> Result<(), BearingError>;
 
     /// True when the force is linear in the state and independent of speed, so it
     /// can be assembled once into the global matrices.
     fn is_linear(&self) -> bool;
 
-    /// Eccentricity, attitude angle, film thickness and friction at `state`, with
-    /// `force` the film force there (from [`Bearing::force_and_jacobian`]).
-    fn report(&self, _state: &JournalState, _speed: f64, _force: &Vector2<f64>) -> BearingReport {
+    /// Eccentricity, attitude angle, film thickness and friction at `q`, with `eval`
+    /// the evaluation there.
+    fn report(&self, _q: &[f64], _speed: f64, _eval: &BearingEval) -> BearingReport {
         BearingReport::default()
     }
+}
+
+/// Check lengths and finiteness of a generalized state.
+pub(crate) fn check_state(
+    n: usize,
+    q: &[f64],
+    qdot: &[f64],
+    speed: f64,
+    out: &BearingEval,
+) -> Result<(), BearingError> {
+    if q.len() != n || qdot.len() != n || out.n() != n {
+        return Err(BearingError::Dimension {
+            expected: n,
+            found: q.len().max(qdot.len()).max(out.n()),
+        });
+    }
+    let names = ["x", "y"];
+    for (k, (&v, &w)) in q.iter().zip(qdot).enumerate() {
+        let what = names.get(k).copied().unwrap_or("pad tilt");
+        if !v.is_finite() {
+            return Err(BearingError::NotFinite { what, value: v });
+        }
+        if !w.is_finite() {
+            return Err(BearingError::NotFinite {
+                what: "velocity",
+                value: w,
+            });
+        }
+    }
+    if !speed.is_finite() {
+        return Err(BearingError::NotFinite {
+            what: "speed",
+            value: speed,
+        });
+    }
+    Ok(())
 }
 
 /// Bearing type and parameters as given in a model file (plain data).
@@ -96,6 +225,8 @@ pub enum BearingKind {
     },
     /// Plain journal bearing, short-bearing theory with π-film cavitation.
     Plain(PlainBearing),
+    /// Tilting-pad journal bearing, short-bearing film on each pad.
+    TiltingPad(TiltingPadBearing),
 }
 
 impl BearingKind {
@@ -106,23 +237,7 @@ impl BearingKind {
                 Box::new(LinearBearing::new(*stiffness, *damping))
             }
             BearingKind::Plain(b) => Box::new(*b),
+            BearingKind::TiltingPad(b) => Box::new(b.clone()),
         }
     }
-}
-
-/// Reject a non-finite journal state or speed.
-pub(crate) fn check_finite(state: &JournalState, speed: f64) -> Result<(), BearingError> {
-    let items = [
-        ("x", state.position.x),
-        ("y", state.position.y),
-        ("vx", state.velocity.x),
-        ("vy", state.velocity.y),
-        ("speed", speed),
-    ];
-    for (what, value) in items {
-        if !value.is_finite() {
-            return Err(BearingError::NotFinite { what, value });
-        }
-    }
-    Ok(())
 }

@@ -26,7 +26,9 @@ use std::f64::consts::PI;
 use nalgebra::{Matrix2, Vector2};
 
 use super::film::FilmIntegrals;
-use super::{Bearing, BearingError, BearingForce, BearingReport, JournalState, check_finite};
+use super::{
+    Bearing, BearingError, BearingEval, BearingForce, BearingReport, JournalState, check_state,
+};
 
 /// Geometry and lubricant of a plain journal bearing (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,42 +43,24 @@ pub struct PlainBearing {
     pub viscosity: f64,
 }
 
-impl PlainBearing {
-    /// `c = μ R L³ / (4 C³)` (N·s/m).
-    fn force_constant(&self) -> f64 {
-        self.viscosity * self.radius * self.length.powi(3) / (4.0 * self.clearance.powi(3))
-    }
-
-    /// Start of the positive-pressure half circle `[α, α + π]` (rad), or `None` when
-    /// `S ≡ 0` (no pressure anywhere: journal centred at rest, or whirling about the
-    /// centre at exactly ω/2).
-    pub fn pressure_arc_start(&self, state: &JournalState, speed: f64) -> Option<f64> {
-        let (a, b) = source_coefficients(state, speed);
-        let scale = (speed * state.position.x).abs()
-            + (speed * state.position.y).abs()
-            + 2.0 * state.velocity.x.abs()
-            + 2.0 * state.velocity.y.abs();
-        if a.hypot(b) <= 1e-14 * scale || (a == 0.0 && b == 0.0) {
-            None
-        } else {
-            Some(b.atan2(a) + PI)
-        }
-    }
+/// Short-bearing film of radius `R`, length `L`, clearance `C`, viscosity `μ`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct ShortFilm {
+    pub radius: f64,
+    pub length: f64,
+    pub clearance: f64,
+    pub viscosity: f64,
 }
 
-/// `A = ωX − 2Ẏ`, `B = ωY + 2Ẋ` (m/s): `S(θ) = A sin θ − B cos θ`.
-fn source_coefficients(state: &JournalState, speed: f64) -> (f64, f64) {
-    let (p, v) = (state.position, state.velocity);
-    (speed * p.x - 2.0 * v.y, speed * p.y + 2.0 * v.x)
-}
-
-impl Bearing for PlainBearing {
-    fn force_and_jacobian(
+impl ShortFilm {
+    /// Force and Jacobians of the film over the positive-pressure part of the
+    /// window `[θ1, θ2]` (`None`: the whole circle, i.e. the π-film half circle).
+    pub(crate) fn force(
         &self,
         state: &JournalState,
         speed: f64,
+        window: Option<(f64, f64)>,
     ) -> Result<BearingForce, BearingError> {
-        check_finite(state, speed)?;
         let cl = self.clearance;
         let (x, y) = (state.position.x / cl, state.position.y / cl);
         let eccentricity = x.hypot(y);
@@ -84,13 +68,24 @@ impl Bearing for PlainBearing {
             return Err(BearingError::ClearanceExceeded { eccentricity });
         }
         let (a, b) = source_coefficients(state, speed);
-        // With S ≡ 0 there is no force; any half circle gives the one-sided limit
-        // of the Jacobian (the force is not differentiable there).
-        let start = self
-            .pressure_arc_start(state, speed)
-            .unwrap_or_else(|| y.atan2(x) + 0.5 * PI);
-        let f = FilmIntegrals::over_arc(x, y, start, start + PI);
-        let c = self.force_constant();
+        // With S ≡ 0 there is no pressure; any half circle gives the one-sided
+        // limit of the Jacobian (the force is not differentiable there).
+        let start = pressure_arc_start(state, speed).unwrap_or_else(|| y.atan2(x) + 0.5 * PI);
+        let f = match window {
+            None => FilmIntegrals::over_arc(x, y, start, start + PI),
+            Some((w1, w2)) => {
+                let mut sum = FilmIntegrals::default();
+                for k in -2..=1 {
+                    let lo = (start + 2.0 * PI * k as f64).max(w1);
+                    let hi = (start + PI + 2.0 * PI * k as f64).min(w2);
+                    if hi > lo {
+                        sum = sum + FilmIntegrals::over_arc(x, y, lo, hi);
+                    }
+                }
+                sum
+            }
+        };
+        let c = self.viscosity * self.radius * self.length.powi(3) / (4.0 * cl.powi(3));
         let force = Vector2::new(c * (a * f.xy - b * f.xx), c * (a * f.yy - b * f.xy));
         let dfx_dx = c * (speed * f.xy + (a * f.xxy - b * f.xxx) / cl);
         let dfx_dy = c * (-speed * f.xx + (a * f.xyy - b * f.xxy) / cl);
@@ -101,35 +96,73 @@ impl Bearing for PlainBearing {
             stiffness: -Matrix2::new(dfx_dx, dfx_dy, dfy_dx, dfy_dy),
             damping: Matrix2::new(f.xx, f.xy, f.xy, f.yy) * (2.0 * c),
         };
-        if out
+        let finite = out
             .force
             .iter()
             .chain(out.stiffness.iter())
             .chain(out.damping.iter())
-            .all(|v| v.is_finite())
-        {
+            .all(|v| v.is_finite());
+        if finite {
             Ok(out)
         } else {
             Err(BearingError::ClearanceExceeded { eccentricity })
         }
     }
 
-    fn is_linear(&self) -> bool {
-        false
+    /// Couette (Petroff-corrected) friction torque of the film over `[θ1, θ2]`,
+    /// shear `μωR/h` on the journal surface: `T = (μωR³L/C) ∫ dθ/H` (N·m). The
+    /// cavitated film is taken to carry shear too (striated oil).
+    pub(crate) fn friction_torque(
+        &self,
+        state: &JournalState,
+        speed: f64,
+        window: (f64, f64),
+    ) -> f64 {
+        let (x, y) = (
+            state.position.x / self.clearance,
+            state.position.y / self.clearance,
+        );
+        if x.hypot(y) >= 1.0 {
+            return f64::INFINITY;
+        }
+        let phi = super::film::arc_potential(x, y, window.0, window.1).value();
+        self.viscosity * speed * self.radius.powi(3) * self.length / self.clearance * phi
+    }
+}
+
+impl PlainBearing {
+    fn film(&self) -> ShortFilm {
+        ShortFilm {
+            radius: self.radius,
+            length: self.length,
+            clearance: self.clearance,
+            viscosity: self.viscosity,
+        }
     }
 
-    fn report(&self, state: &JournalState, speed: f64, force: &Vector2<f64>) -> BearingReport {
-        let e = state.position / self.clearance;
-        let eccentricity = e.norm();
-        // Couette shear over the whole circumference (the cavitated film still
-        // carries striated oil), Petroff-corrected: T = 2π μ ω R³ L / (C √(1 − ε²)).
-        let m = (1.0 - eccentricity * eccentricity).max(0.0);
-        let friction_torque = if m > 0.0 {
-            2.0 * PI * self.viscosity * speed * self.radius.powi(3) * self.length
-                / (self.clearance * m.sqrt())
-        } else {
-            f64::INFINITY
-        };
+    /// Force on the journal and its 2×2 Jacobians at `state`, spin `speed` (rad/s).
+    pub fn force_and_jacobian(
+        &self,
+        state: &JournalState,
+        speed: f64,
+    ) -> Result<BearingForce, BearingError> {
+        let mut out = BearingEval::new(2);
+        let q = [state.position.x, state.position.y];
+        let qd = [state.velocity.x, state.velocity.y];
+        self.evaluate(&q, &qd, speed, &mut out)?;
+        Ok(out.journal())
+    }
+
+    /// Eccentricity, attitude angle, film thickness and friction at `state`, with
+    /// `force` the film force there.
+    pub fn journal_report(
+        &self,
+        state: &JournalState,
+        speed: f64,
+        force: &Vector2<f64>,
+    ) -> BearingReport {
+        let eccentricity = state.position.norm() / self.clearance;
+        let friction_torque = self.film().friction_torque(state, speed, (0.0, 2.0 * PI));
         BearingReport {
             eccentricity,
             attitude_angle: attitude_angle(&state.position, force),
@@ -137,6 +170,60 @@ impl Bearing for PlainBearing {
             friction_torque,
             power_loss: friction_torque * speed,
         }
+    }
+}
+
+/// Start of the positive-pressure half circle `[α, α + π]` (rad), or `None` when
+/// `S ≡ 0` (no pressure anywhere: journal centred at rest, or whirling about the
+/// centre at exactly ω/2).
+pub fn pressure_arc_start(state: &JournalState, speed: f64) -> Option<f64> {
+    let (a, b) = source_coefficients(state, speed);
+    let scale = (speed * state.position.x).abs()
+        + (speed * state.position.y).abs()
+        + 2.0 * state.velocity.x.abs()
+        + 2.0 * state.velocity.y.abs();
+    if a.hypot(b) <= 1e-14 * scale || (a == 0.0 && b == 0.0) {
+        None
+    } else {
+        Some(b.atan2(a) + PI)
+    }
+}
+
+/// `A = ωX − 2Ẏ`, `B = ωY + 2Ẋ` (m/s): `S(θ) = A sin θ − B cos θ`.
+fn source_coefficients(state: &JournalState, speed: f64) -> (f64, f64) {
+    let (p, v) = (state.position, state.velocity);
+    (speed * p.x - 2.0 * v.y, speed * p.y + 2.0 * v.x)
+}
+
+impl Bearing for PlainBearing {
+    fn evaluate(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<(), BearingError> {
+        check_state(2, q, qdot, speed, out)?;
+        let state = JournalState {
+            position: Vector2::new(q[0], q[1]),
+            velocity: Vector2::new(qdot[0], qdot[1]),
+        };
+        let part = self.film().force(&state, speed, None)?;
+        out.clear();
+        out.add_transformed(&part, None);
+        Ok(())
+    }
+
+    fn is_linear(&self) -> bool {
+        false
+    }
+
+    fn report(&self, q: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
+        let state = JournalState {
+            position: Vector2::new(q[0], q[1]),
+            velocity: Vector2::zeros(),
+        };
+        self.journal_report(&state, speed, &eval.journal().force)
     }
 }
 

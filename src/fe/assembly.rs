@@ -4,7 +4,7 @@
 //! numbering every matrix is banded with half-bandwidth 7 (less after removing
 //! constrained DOFs). Storage and solves are O(n); nothing here is dense.
 
-use crate::bearing::{Bearing, JournalState};
+use crate::bearing::{Bearing, BearingEval};
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::{BandMatrix, LinalgError};
 use crate::model::RotorModel;
@@ -158,13 +158,15 @@ impl Rotor {
         for b in &model.bearings {
             let bearing = b.kind.build();
             let journal = [dofs.free(b.node, DOF_X), dofs.free(b.node, DOF_Y)];
-            if bearing.is_linear() {
-                let coeff = bearing
-                    .force_and_jacobian(&JournalState::default(), 0.0)
+            if bearing.is_linear() && bearing.internal_dofs() == 0 {
+                let mut eval = BearingEval::new(2);
+                bearing
+                    .evaluate(&[0.0; 2], &[0.0; 2], 0.0, &mut eval)
                     .map_err(|e| AssemblyError::Bearing {
                         name: b.name.clone(),
                         message: e.to_string(),
                     })?;
+                let coeff = eval.journal();
                 scatter(&mut stiffness, &journal, |a, c| coeff.stiffness[(a, c)])?;
                 scatter(&mut damping, &journal, |a, c| coeff.damping[(a, c)])?;
             } else {

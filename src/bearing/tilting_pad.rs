@@ -1,0 +1,198 @@
+//! Tilting-pad journal bearing (paper §3, eqs. 19–25): short-bearing film on each
+//! pad, Gümbel cavitation, massless rigid pads on rigid pivots.
+//!
+//! Pad `k` with pivot angle `θp`, preload `m` and tilt `η = ψ R` (ψ the pad
+//! rotation about its pivot, counter-clockwise) has the film
+//! `h = C − m C cos(θ − θp) − X cos θ − Y sin θ − η sin(θ − θp)`
+//! `  = C − X_e cos θ − Y_e sin θ`, with the *effective journal position*
+//! `X_e = X + mC cos θp − η sin θp`, `Y_e = Y + mC sin θp + η cos θp`
+//! (and `Ẋ_e = Ẋ − η̇ sin θp`, `Ẏ_e = Ẏ + η̇ cos θp`). So each pad is the plain
+//! short-bearing film ([`super::plain`]) at the effective position, restricted to
+//! the pad's arc (positive pressure only). With `T = ∂(X_e, Y_e)/∂(X, Y, η)
+//! = [[1, 0, −sin θp], [0, 1, cos θp]]` the generalized forces are `Tᵀ F_pad`
+//! (the third, `Q_η`, is the pivot moment divided by the pad radius) and the
+//! Jacobians `Tᵀ K_pad T`, `Tᵀ C_pad T`, exact because `T` is constant.
+//!
+//! **Pad tilts are extra unknowns** ([`Bearing::internal_dofs`]), not an inner
+//! solve: a massless pad's moment balance `Q_η(X, Y, Ẋ, Ẏ, η, η̇) = 0` contains
+//! `η̇` (the pad's own squeeze film), so the tilt has first-order dynamics of its
+//! own. Solving it inside Newton–Raphson with the journal keeps that dynamics;
+//! a quasi-static inner solve (η̇ = 0) would invent cross-coupled damping
+//! (`../shared/reference/tilting_pad_reference.json`, `quasi_static_reduced`).
+//!
+//! **Unloaded pads.** A pad the journal moves away from has no zero-moment
+//! tilt that carries load in short-bearing/Gümbel theory: its film force
+//! vanishes for a whole range of tilts, and its equation would be `0 = 0`. Every
+//! pivot therefore has a weak restoring moment `Q_rest = −k_r η − c_r η̇` with
+//! `c_r = 10⁻⁹ μRL³/C³` and `k_r = c_r · max(|ω|, 1 rad/s)`: nine orders of
+//! magnitude below the film of a loaded pad (loaded pads' tilts and the
+//! coefficients move by ~10⁻⁸ relative), it parks an unloaded pad where its film
+//! just stops carrying load and keeps the system non-singular.
+
+use std::f64::consts::PI;
+
+use nalgebra::Vector2;
+
+use super::plain::{ShortFilm, attitude_angle};
+use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, check_state};
+
+/// Relative size of the pivot's restoring moment (see the module docs).
+const PIVOT_REST: f64 = 1e-9;
+
+/// One pad of a tilting-pad bearing.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pad {
+    /// Pivot angle `θp` from +x toward +y (rad).
+    pub pivot: f64,
+    /// Arc extent of the pad (rad).
+    pub arc: f64,
+    /// Pivot position as a fraction of the arc from the leading edge (0.5 = centred).
+    pub offset: f64,
+    /// Preload `m = 1 − C_b/C` (0 = pad curvature centred on the bearing).
+    pub preload: f64,
+}
+
+impl Pad {
+    /// Leading and trailing edge angles (rad); the spin carries oil from leading to trailing.
+    pub fn edges(&self) -> (f64, f64) {
+        let lead = self.pivot - self.offset * self.arc;
+        (lead, lead + self.arc)
+    }
+}
+
+/// Tilting-pad journal bearing (SI units).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TiltingPadBearing {
+    /// Journal radius `R` (m).
+    pub radius: f64,
+    /// Pad length `L` (m).
+    pub length: f64,
+    /// Pad (machined) radial clearance `C` (m).
+    pub clearance: f64,
+    /// Oil dynamic viscosity `μ` (Pa·s).
+    pub viscosity: f64,
+    /// The pads.
+    pub pads: Vec<Pad>,
+}
+
+impl TiltingPadBearing {
+    fn film(&self) -> ShortFilm {
+        ShortFilm {
+            radius: self.radius,
+            length: self.length,
+            clearance: self.clearance,
+            viscosity: self.viscosity,
+        }
+    }
+
+    /// Assembled (bearing) clearance `C_b = C (1 − m)`, the smallest over the pads (m).
+    pub fn assembled_clearance(&self) -> f64 {
+        self.pads
+            .iter()
+            .map(|p| self.clearance * (1.0 - p.preload))
+            .fold(self.clearance, f64::min)
+    }
+
+    /// `(sin θp, cos θp)` and the effective journal state of pad `k`.
+    fn pad_state(&self, k: usize, q: &[f64], qdot: &[f64]) -> (f64, f64, JournalState) {
+        let pad = &self.pads[k];
+        let (s, c) = pad.pivot.sin_cos();
+        let shift = pad.preload * self.clearance;
+        let (eta, eta_dot) = (q[2 + k], qdot[2 + k]);
+        let state = JournalState {
+            position: Vector2::new(q[0] + shift * c - eta * s, q[1] + shift * s + eta * c),
+            velocity: Vector2::new(qdot[0] - eta_dot * s, qdot[1] + eta_dot * c),
+        };
+        (s, c, state)
+    }
+
+    /// Pad window normalized to start in `[0, 2π)`.
+    fn window(pad: &Pad) -> (f64, f64) {
+        let (lead, _) = pad.edges();
+        let start = lead.rem_euclid(2.0 * PI);
+        (start, start + pad.arc)
+    }
+
+    /// Film force on pad `k` alone at `q`, `q̇`: the force on the journal (N).
+    pub fn pad_force(
+        &self,
+        k: usize,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+    ) -> Result<Vector2<f64>, BearingError> {
+        let (_, _, state) = self.pad_state(k, q, qdot);
+        Ok(self
+            .film()
+            .force(&state, speed, Some(Self::window(&self.pads[k])))?
+            .force)
+    }
+}
+
+impl Bearing for TiltingPadBearing {
+    fn internal_dofs(&self) -> usize {
+        self.pads.len()
+    }
+
+    fn evaluate(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<(), BearingError> {
+        let n = 2 + self.pads.len();
+        check_state(n, q, qdot, speed, out)?;
+        out.clear();
+        let film = self.film();
+        let c_rest = PIVOT_REST * self.viscosity * self.radius * self.length.powi(3)
+            / self.clearance.powi(3);
+        let k_rest = c_rest * speed.abs().max(1.0);
+        for (k, pad) in self.pads.iter().enumerate() {
+            let (s, c, state) = self.pad_state(k, q, qdot);
+            let part = film.force(&state, speed, Some(Self::window(pad)))?;
+            out.add_transformed(&part, Some((k, -s, c)));
+            let i = 2 + k;
+            out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+            out.stiffness[i * n + i] += k_rest;
+            out.damping[i * n + i] += c_rest;
+        }
+        Ok(())
+    }
+
+    fn is_linear(&self) -> bool {
+        false
+    }
+
+    fn report(&self, q: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
+        let zero = vec![0.0; q.len()];
+        let film = self.film();
+        let mut friction_torque = 0.0;
+        let mut min_film = f64::INFINITY;
+        for (k, pad) in self.pads.iter().enumerate() {
+            let (_, _, state) = self.pad_state(k, q, &zero);
+            let window = Self::window(pad);
+            friction_torque += film.friction_torque(&state, speed, window);
+            // H = 1 − ε_e cos(θ − φ_e) is smallest at φ_e, or at the nearer edge.
+            let (x, y) = (state.position.x, state.position.y);
+            let phi = y.atan2(x);
+            let inside = (phi - window.0).rem_euclid(2.0 * PI) <= pad.arc;
+            let h = |t: f64| self.clearance - x * t.cos() - y * t.sin();
+            let pad_min = if inside {
+                h(phi)
+            } else {
+                h(window.0).min(h(window.1))
+            };
+            min_film = min_film.min(pad_min);
+        }
+        let position = Vector2::new(q[0], q[1]);
+        let force = eval.journal().force;
+        BearingReport {
+            eccentricity: position.norm() / self.assembled_clearance(),
+            attitude_angle: attitude_angle(&position, &force),
+            min_film_thickness: min_film,
+            friction_torque,
+            power_loss: friction_torque * speed,
+        }
+    }
+}
