@@ -111,3 +111,77 @@ fn static_and_info_run_on_every_shipped_model() {
         }
     }
 }
+
+#[test]
+fn bearing_coefficients_table_csv_and_png() {
+    let dir = out_dir("coefficients");
+    let (csv, png) = (dir.join("coef.csv"), dir.join("coef.png"));
+    let out = rotor()
+        .args(["coefficients", "--points", "25", "--csv"])
+        .arg(&csv)
+        .arg("--png")
+        .arg(&png)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 25);
+    // Interpolate K̄xx and C̄yy at ε = 0.58646 (reference equilibrium: 2.1081, 6.6230).
+    let eps = 0.586_462_858;
+    let i = rows.iter().position(|r| r[1] > eps).unwrap();
+    let (a, b) = (&rows[i - 1], &rows[i]);
+    let t = (eps - a[1]) / (b[1] - a[1]);
+    let lerp = |k: usize| a[k] + t * (b[k] - a[k]);
+    assert!((lerp(3) - 2.1081).abs() < 0.01, "K̄xx {}", lerp(3));
+    assert!((lerp(10) - 6.6230).abs() < 0.05, "C̄yy {}", lerp(10));
+    assert_eq!(&std::fs::read(&png).unwrap()[..4], b"\x89PNG");
+}
+
+#[test]
+fn coefficients_of_a_tilting_pad_bearing_in_a_model() {
+    let dir = out_dir("tilting_model");
+    let path = dir.join("tp.toml");
+    let text = rotor_bearing::model::DEFAULT_MODEL_TOML.to_string()
+        + "\n[[bearings]]\nname = \"guide\"\ntype = \"tilting_pad\"\nnode = 4\nradius = 0.05\nlength = 0.03\nclearance = 1e-4\nviscosity = 0.02\npads = 4\nfirst_pivot_deg = 45.0\npad_arc_deg = 80.0\n";
+    std::fs::write(&path, text).unwrap();
+    let out = rotor()
+        .arg("coefficients")
+        .arg(&path)
+        .args(["--bearing", "guide", "--points", "12"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // Load between pads: no cross-coupled stiffness (columns 4 and 5 of the table).
+    for line in stdout.lines().skip(2) {
+        let v: Vec<f64> = line
+            .split_whitespace()
+            .map(|x| x.parse().unwrap())
+            .collect();
+        assert!(
+            v[3].abs() < 1e-3 * v[2] && v[4].abs() < 1e-3 * v[2],
+            "{line}"
+        );
+    }
+    let missing = rotor()
+        .arg("coefficients")
+        .arg(&path)
+        .args(["--bearing", "nope"])
+        .output()
+        .unwrap();
+    assert!(!missing.status.success());
+    assert!(String::from_utf8_lossy(&missing.stderr).contains("\"nope\""));
+}

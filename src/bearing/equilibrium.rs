@@ -147,3 +147,45 @@ pub fn condensed_coefficients(eval: &BearingEval, frequency: f64) -> (Matrix2<f6
         }
     }
 }
+
+/// A point of a bearing's coefficient curve: equilibrium under a load along −y
+/// and the linearized coefficients there (internal coordinates condensed
+/// synchronously).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CoefficientPoint {
+    /// Load magnitude `W` (N), applied along −y.
+    pub load: f64,
+    /// Eccentricity ratio at equilibrium.
+    pub eccentricity: f64,
+    /// Attitude angle (rad).
+    pub attitude_angle: f64,
+    /// Stiffness (N/m).
+    pub stiffness: Matrix2<f64>,
+    /// Damping (N·s/m).
+    pub damping: Matrix2<f64>,
+}
+
+/// Equilibria and coefficients for each load of `loads` (N, along −y) at spin
+/// `speed`; loads without an equilibrium inside `scale` are skipped.
+pub fn coefficient_curve(
+    bearing: &dyn Bearing,
+    speed: f64,
+    scale: f64,
+    loads: &[f64],
+) -> Vec<CoefficientPoint> {
+    loads
+        .iter()
+        .filter_map(|&w| {
+            let eq = journal_equilibrium(bearing, Vector2::new(0.0, -w), speed, scale).ok()?;
+            let (stiffness, damping) = condensed_coefficients(&eq.eval, speed);
+            let report = bearing.report(&eq.q, speed, &eq.eval);
+            Some(CoefficientPoint {
+                load: w,
+                eccentricity: report.eccentricity,
+                attitude_angle: report.attitude_angle,
+                stiffness,
+                damping,
+            })
+        })
+        .collect()
+}

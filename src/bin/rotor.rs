@@ -5,8 +5,10 @@
 //! rotor static   [MODEL.toml] [--csv FILE]
 //! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE]
 //! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--csv FILE] [--png FILE]
+//! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--csv FILE] [--png FILE]
 //! ```
-//! Without MODEL.toml the built-in classic disk-on-shaft rotor is used.
+//! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
+//! `coefficients`, the reference plain short bearing).
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -17,9 +19,11 @@ use clap::{Args, Parser, Subcommand};
 use rotor_bearing::analysis::campbell::{campbell, critical_speeds};
 use rotor_bearing::analysis::linear::{node_xy, static_deflection};
 use rotor_bearing::analysis::modal::{ModalOptions, modes};
+use rotor_bearing::bearing::equilibrium::coefficient_curve;
+use rotor_bearing::bearing::{BearingKind, PlainBearing};
 use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::model::RotorModel;
-use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png};
+use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png, coefficients_png};
 
 #[derive(Parser)]
 #[command(
@@ -87,7 +91,37 @@ enum Command {
         #[arg(long)]
         png: Option<PathBuf>,
     },
+    /// Dimensionless stiffness and damping of a hydrodynamic bearing against
+    /// eccentricity ratio (paper Fig. 3), from equilibria under a swept load.
+    Coefficients {
+        /// Model file whose bearing to use; the reference plain short bearing when omitted.
+        model: Option<PathBuf>,
+        /// Bearing name in the model (default: its first hydrodynamic bearing).
+        #[arg(long)]
+        bearing: Option<String>,
+        /// Spin speed (rpm).
+        #[arg(long, default_value_t = 3000.0)]
+        rpm: f64,
+        /// Number of load steps.
+        #[arg(long, default_value_t = 60)]
+        points: usize,
+        /// Write the coefficients to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw them to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
 }
+
+/// The plain short bearing of the project's reference data: R = 50 mm, L = 30 mm,
+/// C = 0.1 mm, μ = 0.02 Pa·s.
+const REFERENCE_BEARING: PlainBearing = PlainBearing {
+    radius: 0.05,
+    length: 0.03,
+    clearance: 1e-4,
+    viscosity: 0.02,
+};
 
 fn main() -> ExitCode {
     match run(Cli::parse()) {
@@ -267,6 +301,144 @@ fn run(cli: Cli) -> Result<(), String> {
                 eprintln!("wrote {}", path.display());
             }
         }
+        Command::Coefficients {
+            model,
+            bearing,
+            rpm,
+            points,
+            csv,
+            png,
+        } => coefficients(model, bearing, rpm, points, csv, png)?,
+    }
+    Ok(())
+}
+
+fn coefficients(
+    model: Option<PathBuf>,
+    bearing: Option<String>,
+    rpm: f64,
+    points: usize,
+    csv: Option<PathBuf>,
+    png: Option<PathBuf>,
+) -> Result<(), String> {
+    if !(rpm.is_finite() && rpm > 0.0) || points < 2 {
+        return Err(format!(
+            "--rpm must be positive (got {rpm}) and --points at least 2 (got {points})"
+        ));
+    }
+    let (label, kind) = match &model {
+        None => (
+            "reference plain short bearing".to_string(),
+            BearingKind::Plain(REFERENCE_BEARING),
+        ),
+        Some(path) => {
+            let m = RotorModel::from_file(path).map_err(|e| e.to_string())?;
+            let found = m.bearings.iter().find(|b| match &bearing {
+                Some(name) => &b.name == name,
+                None => !matches!(b.kind, BearingKind::Linear { .. }),
+            });
+            let b = found.ok_or_else(|| {
+                let names: Vec<&str> = m.bearings.iter().map(|b| b.name.as_str()).collect();
+                format!(
+                    "{}: no {} among the bearings {names:?}",
+                    path.display(),
+                    bearing
+                        .as_deref()
+                        .map_or("hydrodynamic bearing".to_string(), |n| format!(
+                            "bearing named {n:?}"
+                        ))
+                )
+            })?;
+            (format!("bearing {} of {}", b.name, m.name), b.kind.clone())
+        }
+    };
+    let (radius, length, clearance, viscosity) = match &kind {
+        BearingKind::Plain(b) => (b.radius, b.length, b.clearance, b.viscosity),
+        BearingKind::TiltingPad(b) => (b.radius, b.length, b.clearance, b.viscosity),
+        BearingKind::Linear { .. } => {
+            return Err(format!("{label} is linear: its coefficients are constant"));
+        }
+    };
+    let speed = rpm / RAD_S_TO_RPM;
+    let model_bearing = kind.build();
+    // Load scale k0 = μωRL³/C²; sweep W/k0 from 0.08 to 50 (short bearing:
+    // ε ≈ 0.1 … 0.9, the range of the paper's Fig. 3).
+    let k0 = viscosity * speed * radius * length.powi(3) / clearance.powi(2);
+    let loads: Vec<f64> = (0..points)
+        .map(|i| k0 * 0.08 * 625f64.powf(i as f64 / (points - 1) as f64))
+        .collect();
+    let curve = coefficient_curve(model_bearing.as_ref(), speed, clearance, &loads);
+    if curve.len() < 2 {
+        return Err(format!("{label}: fewer than two equilibria found"));
+    }
+    let mut out = String::from(
+        "load_N,eccentricity,attitude_deg,Kxx_bar,Kxy_bar,Kyx_bar,Kyy_bar,Cxx_bar,Cxy_bar,Cyx_bar,Cyy_bar\n",
+    );
+    println!("{label} at {rpm} rpm (load along −y; K̄ = K C/W, C̄ = C ω C/W):");
+    println!("    ε     φ (°)     K̄xx     K̄xy     K̄yx     K̄yy     C̄xx     C̄xy     C̄yx     C̄yy");
+    let mut eps = Vec::new();
+    let mut kbar: Vec<Vec<f64>> = vec![Vec::new(); 4];
+    let mut cbar: Vec<Vec<f64>> = vec![Vec::new(); 4];
+    for p in &curve {
+        let k = p.stiffness * (clearance / p.load);
+        let c = p.damping * (speed * clearance / p.load);
+        let (kv, cv) = (
+            [k[(0, 0)], k[(0, 1)], k[(1, 0)], k[(1, 1)]],
+            [c[(0, 0)], c[(0, 1)], c[(1, 0)], c[(1, 1)]],
+        );
+        println!(
+            "{:6.3} {:8.2} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3}",
+            p.eccentricity,
+            p.attitude_angle.to_degrees(),
+            kv[0],
+            kv[1],
+            kv[2],
+            kv[3],
+            cv[0],
+            cv[1],
+            cv[2],
+            cv[3]
+        );
+        writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{},{},{}",
+            p.load,
+            p.eccentricity,
+            p.attitude_angle.to_degrees(),
+            kv[0],
+            kv[1],
+            kv[2],
+            kv[3],
+            cv[0],
+            cv[1],
+            cv[2],
+            cv[3]
+        )
+        .ok();
+        eps.push(p.eccentricity);
+        for i in 0..4 {
+            kbar[i].push(kv[i]);
+            cbar[i].push(cv[i]);
+        }
+    }
+    if let Some(path) = csv {
+        write_file(&path, &out)?;
+    }
+    if let Some(path) = png {
+        let names = ["xx", "xy", "yx", "yy"];
+        let k: Vec<(String, Vec<f64>)> = names
+            .iter()
+            .zip(kbar)
+            .map(|(n, v)| (format!("K{n}"), v))
+            .collect();
+        let c: Vec<(String, Vec<f64>)> = names
+            .iter()
+            .zip(cbar)
+            .map(|(n, v)| (format!("C{n}"), v))
+            .collect();
+        let title = format!("Dimensionless coefficients: {label}, {rpm} rpm");
+        coefficients_png(&path, &title, &eps, &k, &c).map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
     }
     Ok(())
 }

@@ -147,6 +147,32 @@ pub enum BearingEntry {
         /// Oil dynamic viscosity (Pa·s).
         viscosity: f64,
     },
+    /// Tilting-pad journal bearing: short-bearing film on each pad, pads tilt freely.
+    TiltingPad {
+        name: Option<String>,
+        node: Option<i64>,
+        z: Option<f64>,
+        /// Journal radius (m).
+        radius: f64,
+        /// Pad axial length (m).
+        length: f64,
+        /// Pad (machined) radial clearance (m).
+        clearance: f64,
+        /// Oil dynamic viscosity (Pa·s).
+        viscosity: f64,
+        /// Number of equally spaced pads (3–18), with `first_pivot_deg`.
+        pads: Option<i64>,
+        /// Pivot angle of the first pad (°, from +x toward +y), default 0.
+        first_pivot_deg: Option<f64>,
+        /// Explicit pivot angles (°), instead of `pads`/`first_pivot_deg`.
+        pivots_deg: Option<Vec<f64>>,
+        /// Arc extent of each pad (°).
+        pad_arc_deg: f64,
+        /// Pivot position from the leading edge as a fraction of the arc, default 0.5.
+        pivot_offset: Option<f64>,
+        /// Preload m = 1 − C_b/C, default 0.
+        preload: Option<f64>,
+    },
 }
 
 /// `[[unbalance]]`: an unbalance plane.

@@ -1,4 +1,5 @@
 use super::*;
+use crate::bearing::BearingKind;
 
 const BASE: &str = r#"
 name = "t"
@@ -174,4 +175,69 @@ fn missing_file_is_an_io_error() {
             .starts_with("/no/such/model.toml: cannot read"),
         "{e}"
     );
+}
+
+#[test]
+fn hydrodynamic_bearings_parse() {
+    let extra = r#"
+[[bearings]]
+name = "plain"
+type = "plain"
+node = 1
+radius = 0.05
+length = 0.03
+clearance = 1e-4
+viscosity = 0.02
+
+[[bearings]]
+name = "tilting"
+type = "tilting_pad"
+node = 7
+radius = 0.05
+length = 0.03
+clearance = 1e-4
+viscosity = 0.02
+pads = 4
+first_pivot_deg = 45.0
+pad_arc_deg = 80.0
+preload = 0.1
+"#;
+    let m = RotorModel::from_toml(&format!("{BASE}{extra}"), "m.toml").unwrap();
+    match &m.bearings[0].kind {
+        BearingKind::Plain(b) => assert_eq!(b.clearance, 1e-4),
+        k => panic!("{k:?}"),
+    }
+    match &m.bearings[1].kind {
+        BearingKind::TiltingPad(b) => {
+            assert_eq!(b.pads.len(), 4);
+            assert!((b.pads[1].pivot - 135f64.to_radians()).abs() < 1e-15);
+            assert_eq!(b.pads[0].offset, 0.5);
+            assert_eq!(b.pads[0].preload, 0.1);
+        }
+        k => panic!("{k:?}"),
+    }
+}
+
+#[test]
+fn hydrodynamic_bearing_errors() {
+    let tp = "\n[[bearings]]\ntype = \"tilting_pad\"\nnode = 1\nradius = 0.05\nlength = 0.03\nclearance = 1e-4\nviscosity = 0.02\n";
+    let cases = [
+        (format!("{tp}pads = 2\npad_arc_deg = 80.0\n"), "bearings[0].pads = 2"),
+        (format!("{tp}pads = 4\npad_arc_deg = 100.0\n"), "pads overlap"),
+        (format!("{tp}pads = 4\npivots_deg = [0.0, 90.0, 180.0, 270.0]\npad_arc_deg = 60.0\n"), "either pads"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npreload = 1.0\n"), "bearings[0].preload = 1"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_offset = 1.5\n"), "pivot_offset = 1.5"),
+        (
+            "\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = 0.05\nlength = 0.03\nclearance = 0.01\nviscosity = 0.02\n".to_string(),
+            "bearings[0].clearance = 0.01",
+        ),
+        (
+            "\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = 0.05\nlength = 0.03\nclearance = 1e-4\nviscosity = -0.02\n".to_string(),
+            "bearings[0].viscosity = -0.02",
+        ),
+    ];
+    for (extra, expect) in cases {
+        let e = err_of(&extra);
+        assert!(e.contains(expect), "expected {expect:?} in: {e}");
+    }
 }
