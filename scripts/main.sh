@@ -12,4 +12,5 @@ $rotor info
 $rotor static --csv out/static_deflection.csv
 $rotor modes --rpm 4000 --modes 8 --csv out/modes_4000rpm.csv
 $rotor campbell --max-rpm 6000 --steps 60 --modes 8 --csv out/campbell.csv --png out/campbell.png
-echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv, campbell.png)"
+$rotor coefficients --csv out/plain_bearing_coefficients.csv --png out/plain_bearing_coefficients.png
+echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png)"

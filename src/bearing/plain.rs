@@ -236,3 +236,36 @@ pub fn attitude_angle(position: &Vector2<f64>, force: &Vector2<f64>) -> f64 {
     let d = position.y.atan2(position.x) - (-force.y).atan2(-force.x);
     d.sin().atan2(d.cos())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Petroff with the film-thickness correction: the full-circle Couette torque is
+    /// `2π μ ω R³ L / (C √(1 − ε²))` (Hamrock, Fundamentals of Fluid Film Lubrication, eq. 8.58 without the pressure term).
+    #[test]
+    fn friction_torque_is_petroff_corrected_for_eccentricity() {
+        let b = PlainBearing {
+            radius: 0.05,
+            length: 0.03,
+            clearance: 1e-4,
+            viscosity: 0.02,
+        };
+        let speed = 314.16;
+        for eps in [0.0, 0.3, 0.8, 0.99] {
+            let state = JournalState {
+                position: Vector2::new(0.6, -0.8) * eps * b.clearance,
+                velocity: Vector2::zeros(),
+            };
+            let f = b.force_and_jacobian(&state, speed).unwrap();
+            let rep = b.journal_report(&state, speed, &f.force);
+            let petroff = 2.0 * PI * b.viscosity * speed * b.radius.powi(3) * b.length
+                / (b.clearance * (1.0 - eps * eps).sqrt());
+            assert!(
+                (rep.friction_torque - petroff).abs() < 1e-12 * petroff,
+                "ε = {eps}"
+            );
+            assert!((rep.power_loss - petroff * speed).abs() < 1e-9 * petroff * speed);
+        }
+    }
+}
