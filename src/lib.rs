@@ -13,3 +13,4 @@ pub mod fe;
 pub mod linalg;
 pub mod model;
 pub mod plot;
+pub mod solver;

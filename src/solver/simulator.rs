@@ -1,0 +1,1057 @@
+//! The time-domain simulator (see the module docs of [`crate::solver`]).
+
+use crate::bearing::{Bearing, BearingError, BearingEval, BearingReport};
+use crate::fe::assembly::Rotor;
+use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
+use crate::linalg::{BandLu, BandMatrix, LinalgError};
+
+use super::dense::{lu_in_place, lu_solve};
+
+/// Solver settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverOptions {
+    /// Largest internal time step (s).
+    pub time_step: f64,
+    /// Relative tolerance on residual and increment (–).
+    pub tolerance: f64,
+    /// Newton iterations per attempt of a step.
+    pub max_iterations: usize,
+    /// Largest number of step halvings before giving up.
+    pub max_step_cuts: usize,
+    /// Time constant τ of the unbalance ramp `1 − e^{−t/τ}` (s); 0 for none.
+    pub unbalance_ramp_time: f64,
+    /// Apply gravity.
+    pub gravity: bool,
+}
+
+impl Default for SolverOptions {
+    fn default() -> Self {
+        Self {
+            time_step: 1e-4,
+            tolerance: 1e-8,
+            max_iterations: 25,
+            max_step_cuts: 10,
+            unbalance_ramp_time: 0.0,
+            gravity: true,
+        }
+    }
+}
+
+/// The complete dynamic state: restoring it reproduces a run bit for bit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimState {
+    /// Time (s).
+    pub time: f64,
+    /// Rotor free DOFs: displacement, velocity, acceleration.
+    pub u: Vec<f64>,
+    /// Velocity.
+    pub ud: Vec<f64>,
+    /// Acceleration.
+    pub udd: Vec<f64>,
+    /// Bearing internal DOFs (pad tilts, m) and their rates.
+    pub p: Vec<f64>,
+    /// Rates of the internal DOFs.
+    pub pd: Vec<f64>,
+    /// Second derivatives of the internal DOFs (Newmark bookkeeping).
+    pub pdd: Vec<f64>,
+    /// Spin angle (rad).
+    pub spin_angle: f64,
+    /// Spin speed input at `speed_time` (rad/s).
+    pub speed: f64,
+    /// Spin acceleration input (rad/s²): `Ω(t) = speed + speed_rate (t − speed_time)`.
+    pub speed_rate: f64,
+    /// Time the speed input refers to (s).
+    pub speed_time: f64,
+    /// Unbalance of each plane (kg·m).
+    pub unbalance: Vec<f64>,
+    /// Angular position of each unbalance plane at spin angle 0 (rad).
+    pub unbalance_phase: Vec<f64>,
+}
+
+/// Counters of the work done, for reports.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StepStats {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Newton iterations.
+    pub iterations: usize,
+    /// Bearing-Jacobian refreshes after a stall.
+    pub refreshes: usize,
+    /// Step halvings.
+    pub step_cuts: usize,
+    /// Factorizations of the linear part.
+    pub factorizations: usize,
+}
+
+/// Why the solver stopped.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SolverError {
+    /// Newton did not converge even with the smallest allowed step.
+    #[error(
+        "Newton–Raphson did not converge at t = {time:.6} s (step {step:.3e} s after {cuts} halvings; residual {residual:.3e} of the force scale)"
+    )]
+    NotConverged {
+        time: f64,
+        step: f64,
+        cuts: usize,
+        residual: f64,
+    },
+    /// A bearing could not give a force (e.g. the journal reached the clearance).
+    #[error("bearing {name} at t = {time:.6} s: {source}")]
+    Bearing {
+        name: String,
+        time: f64,
+        source: BearingError,
+    },
+    /// The linear part could not be factored.
+    #[error("linear algebra: {0}")]
+    Linalg(#[from] LinalgError),
+    /// Bad input or option.
+    #[error("{0}")]
+    Input(String),
+    /// No static equilibrium was found.
+    #[error("static equilibrium: {0}")]
+    Static(String),
+}
+
+/// Outputs of one bearing.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BearingOutput {
+    /// Journal displacement (m).
+    pub x: f64,
+    /// Journal displacement (m).
+    pub y: f64,
+    /// Force of the bearing on the journal (N).
+    pub fx: f64,
+    /// Force of the bearing on the journal (N).
+    pub fy: f64,
+    /// Film reports (eccentricity, friction…).
+    pub report: BearingReport,
+}
+
+/// Displacements of one probe.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ProbeOutput {
+    /// Displacement (m).
+    pub x: f64,
+    /// Displacement (m).
+    pub y: f64,
+}
+
+/// Everything a front end reports at the current time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outputs {
+    /// Time (s).
+    pub time: f64,
+    /// Spin speed (rad/s).
+    pub speed: f64,
+    /// Spin angle (rad).
+    pub spin_angle: f64,
+    /// One entry per model bearing, in model order.
+    pub bearings: Vec<BearingOutput>,
+    /// One entry per probe, in model order.
+    pub probes: Vec<ProbeOutput>,
+    /// Sum of the bearings' friction torques (N·m).
+    pub friction_torque: f64,
+}
+
+/// A nonlinear bearing in the time integration.
+#[derive(Debug)]
+struct Site {
+    name: String,
+    bearing: Box<dyn Bearing>,
+    /// Free DOF indices of the journal.
+    journal: [usize; 2],
+    /// Offset of its internal DOFs in `p`.
+    offset: usize,
+    internal: usize,
+    eval: BearingEval,
+    /// Jacobians frozen for modified Newton–Raphson (row-major).
+    jk: Vec<f64>,
+    jc: Vec<f64>,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+}
+
+/// Factorized linear part and its Schur data.
+#[derive(Debug)]
+struct Factor {
+    step: f64,
+    speed: f64,
+    lu: BandLu<f64>,
+    /// `Z = A⁻¹E`, column-major `n × s_j`.
+    z: Vec<f64>,
+    /// `G = Eᵀ Z`, row-major `s_j × s_j`.
+    g: Vec<f64>,
+}
+
+/// Work vectors reused by every step.
+#[derive(Debug, Default)]
+struct Work {
+    u: Vec<f64>,
+    ud: Vec<f64>,
+    udd: Vec<f64>,
+    p: Vec<f64>,
+    pd: Vec<f64>,
+    pdd: Vec<f64>,
+    r: Vec<f64>,
+    mv: Vec<f64>,
+    du: Vec<f64>,
+    dp: Vec<f64>,
+    f_ext: Vec<f64>,
+    rp: Vec<f64>,
+    small: Vec<f64>,
+    small_rhs: Vec<f64>,
+    pivots: Vec<usize>,
+    ey: Vec<f64>,
+}
+
+/// Newmark/Newton–Raphson simulator of a rotor on nonlinear bearings.
+#[derive(Debug)]
+pub struct Simulator {
+    rotor: Rotor,
+    options: SolverOptions,
+    state: SimState,
+    sites: Vec<Site>,
+    /// All model bearings (for outputs), with the site index of nonlinear ones.
+    output_bearings: Vec<(Box<dyn Bearing>, Option<usize>)>,
+    n_journal: usize,
+    n_internal: usize,
+    length_scale: f64,
+    factor: Option<Factor>,
+    work: Work,
+    stats: StepStats,
+}
+
+impl Simulator {
+    /// A simulator at rest (zero state, zero speed) for `rotor`.
+    pub fn new(rotor: Rotor, options: SolverOptions) -> Result<Self, SolverError> {
+        check_options(&options)?;
+        let n = rotor.dof_count();
+        let mut sites = Vec::new();
+        let mut offset = 0;
+        for b in &rotor.model.bearings {
+            let bearing = b.kind.build();
+            if bearing.is_linear() && bearing.internal_dofs() == 0 {
+                continue;
+            }
+            let journal = match (
+                rotor.dofs.free(b.node, DOF_X),
+                rotor.dofs.free(b.node, DOF_Y),
+            ) {
+                (Some(x), Some(y)) => [x, y],
+                _ => {
+                    return Err(SolverError::Input(format!(
+                        "bearing {} sits on node {} whose x or y is fixed by a support",
+                        b.name,
+                        b.node + 1
+                    )));
+                }
+            };
+            let internal = bearing.internal_dofs();
+            sites.push(Site {
+                name: b.name.clone(),
+                journal,
+                offset,
+                internal,
+                eval: BearingEval::new(2 + internal),
+                jk: vec![0.0; (2 + internal) * (2 + internal)],
+                jc: vec![0.0; (2 + internal) * (2 + internal)],
+                q: vec![0.0; 2 + internal],
+                qd: vec![0.0; 2 + internal],
+                bearing,
+            });
+            offset += internal;
+        }
+        let mut site_of = sites.iter().enumerate();
+        let output_bearings = rotor
+            .model
+            .bearings
+            .iter()
+            .map(|b| {
+                let bearing = b.kind.build();
+                let site = if bearing.is_linear() && bearing.internal_dofs() == 0 {
+                    None
+                } else {
+                    site_of.next().map(|(k, _)| k)
+                };
+                (bearing, site)
+            })
+            .collect();
+        let length_scale = rotor
+            .model
+            .bearings
+            .iter()
+            .filter_map(|b| match &b.kind {
+                crate::bearing::BearingKind::Plain(p) => Some(p.clearance),
+                crate::bearing::BearingKind::TiltingPad(t) => Some(t.assembled_clearance()),
+                crate::bearing::BearingKind::Linear { .. } => None,
+            })
+            .fold(f64::INFINITY, f64::min);
+        let length_scale = if length_scale.is_finite() { length_scale } else { 1e-6 };
+        let n_journal = 2 * sites.len();
+        let n_internal = offset;
+        let s = n_journal + n_internal;
+        let state = SimState {
+            time: 0.0,
+            u: vec![0.0; n],
+            ud: vec![0.0; n],
+            udd: vec![0.0; n],
+            p: vec![0.0; n_internal],
+            pd: vec![0.0; n_internal],
+            pdd: vec![0.0; n_internal],
+            spin_angle: 0.0,
+            speed: 0.0,
+            speed_rate: 0.0,
+            speed_time: 0.0,
+            unbalance: rotor.model.unbalances.iter().map(|u| u.magnitude).collect(),
+            unbalance_phase: rotor.model.unbalances.iter().map(|u| u.phase).collect(),
+        };
+        let work = Work {
+            u: vec![0.0; n],
+            ud: vec![0.0; n],
+            udd: vec![0.0; n],
+            p: vec![0.0; n_internal],
+            pd: vec![0.0; n_internal],
+            pdd: vec![0.0; n_internal],
+            r: vec![0.0; n],
+            mv: vec![0.0; n],
+            du: vec![0.0; n],
+            dp: vec![0.0; n_internal],
+            f_ext: vec![0.0; n],
+            rp: vec![0.0; n_internal],
+            small: vec![0.0; s * s],
+            small_rhs: vec![0.0; s],
+            pivots: vec![0; s],
+            ey: vec![0.0; n_journal],
+        };
+        Ok(Self {
+            rotor,
+            options,
+            state,
+            sites,
+            output_bearings,
+            n_journal,
+            n_internal,
+            length_scale,
+            factor: None,
+            work,
+            stats: StepStats::default(),
+        })
+    }
+
+    /// The assembled rotor.
+    pub fn rotor(&self) -> &Rotor {
+        &self.rotor
+    }
+
+    /// Solver options.
+    pub fn options(&self) -> &SolverOptions {
+        &self.options
+    }
+
+    /// Change solver options (takes effect at the next step).
+    pub fn set_options(&mut self, options: SolverOptions) -> Result<(), SolverError> {
+        check_options(&options)?;
+        self.options = options;
+        self.factor = None;
+        Ok(())
+    }
+
+    /// Work counters since creation.
+    pub fn stats(&self) -> StepStats {
+        self.stats
+    }
+
+    /// The complete state (for rollback and serialization).
+    pub fn state(&self) -> &SimState {
+        &self.state
+    }
+
+    /// Restore a state obtained from [`Simulator::state`] of a simulator of the same rotor.
+    pub fn set_state(&mut self, state: SimState) -> Result<(), SolverError> {
+        let s = &self.state;
+        if state.u.len() != s.u.len()
+            || state.ud.len() != s.ud.len()
+            || state.udd.len() != s.udd.len()
+            || state.p.len() != s.p.len()
+            || state.pd.len() != s.pd.len()
+            || state.pdd.len() != s.pdd.len()
+            || state.unbalance.len() != s.unbalance.len()
+            || state.unbalance_phase.len() != s.unbalance_phase.len()
+        {
+            return Err(SolverError::Input(
+                "state does not belong to this rotor (sizes differ)".into(),
+            ));
+        }
+        self.state = state;
+        Ok(())
+    }
+
+    /// Current time (s).
+    pub fn time(&self) -> f64 {
+        self.state.time
+    }
+
+    /// Spin speed at time `t` (rad/s).
+    pub fn speed_at(&self, t: f64) -> f64 {
+        self.state.speed + self.state.speed_rate * (t - self.state.speed_time)
+    }
+
+    /// Set the spin speed (rad/s) now and its rate of change (rad/s²) from now on.
+    pub fn set_speed(&mut self, speed: f64, rate: f64) -> Result<(), SolverError> {
+        if !speed.is_finite() || !rate.is_finite() {
+            return Err(SolverError::Input(format!(
+                "speed {speed} rad/s and its rate {rate} rad/s² must be finite"
+            )));
+        }
+        self.state.speed = speed;
+        self.state.speed_rate = rate;
+        self.state.speed_time = self.state.time;
+        Ok(())
+    }
+
+    /// Set the unbalance (kg·m) of plane `plane` (model order).
+    pub fn set_unbalance(&mut self, plane: usize, magnitude: f64) -> Result<(), SolverError> {
+        if !(magnitude.is_finite() && magnitude >= 0.0) {
+            return Err(SolverError::Input(format!(
+                "unbalance {magnitude} kg·m must be finite and not negative"
+            )));
+        }
+        let slot = self.state.unbalance.get_mut(plane).ok_or_else(|| {
+            SolverError::Input(format!("no unbalance plane {plane}"))
+        })?;
+        *slot = magnitude;
+        Ok(())
+    }
+
+    /// Set the angular position (rad) of plane `plane` at spin angle zero.
+    pub fn set_unbalance_phase(&mut self, plane: usize, phase: f64) -> Result<(), SolverError> {
+        if !phase.is_finite() {
+            return Err(SolverError::Input(format!("unbalance phase {phase} must be finite")));
+        }
+        let slot = self.state.unbalance_phase.get_mut(plane).ok_or_else(|| {
+            SolverError::Input(format!("no unbalance plane {plane}"))
+        })?;
+        *slot = phase;
+        Ok(())
+    }
+
+    /// Put the rotor in static equilibrium under gravity at the current speed
+    /// (velocities and accelerations zero, nonlinear bearings included), by
+    /// Newton with backtracking on the full static Jacobian.
+    pub fn settle_static(&mut self) -> Result<(), SolverError> {
+        let speed = self.speed_at(self.state.time);
+        let tol = self.options.tolerance;
+        self.work.f_ext.fill(0.0);
+        if self.options.gravity {
+            self.work.f_ext.copy_from_slice(&self.rotor.gravity_load);
+        }
+        let mut u = self.state.u.clone();
+        let mut p = self.state.p.clone();
+        let mut residual = self.static_residual(&u, &p, speed)?;
+        for _ in 0..100 {
+            if residual <= tol {
+                self.state.u = u;
+                self.state.p = p;
+                self.state.ud.fill(0.0);
+                self.state.udd.fill(0.0);
+                self.state.pd.fill(0.0);
+                self.state.pdd.fill(0.0);
+                self.factor = None;
+                return Ok(());
+            }
+            // J = K + E K_b,jj Eᵀ in the band; pad blocks through the Schur step.
+            let mut a = self.rotor.stiffness.clone();
+            for site in &mut self.sites {
+                site.jk.copy_from_slice(&site.eval.stiffness);
+                site.jc.fill(0.0);
+                let n2 = site.eval.n();
+                for (i, &gi) in site.journal.iter().enumerate() {
+                    for (j, &gj) in site.journal.iter().enumerate() {
+                        a.add(gi, gj, site.jk[i * n2 + j])?;
+                    }
+                }
+            }
+            let factor = self.make_factor(a, 0.0, speed).map_err(|e| {
+                SolverError::Static(format!(
+                    "the static stiffness is singular ({e}): is the rotor supported at this speed? (a fluid film at zero speed carries no static load)"
+                ))
+            })?;
+            let mut du = self.work.r.clone();
+            let mut dp = self.work.rp.clone();
+            self.small_solve(&factor, 0.0, true, &mut du, &mut dp)?;
+            let mut t = 1.0;
+            let mut accepted = false;
+            for _ in 0..40 {
+                let trial_u: Vec<f64> = u.iter().zip(&du).map(|(a, d)| a + t * d).collect();
+                let trial_p: Vec<f64> = p.iter().zip(&dp).map(|(a, d)| a + t * d).collect();
+                if let Ok(r) = self.static_residual(&trial_u, &trial_p, speed) {
+                    if r < residual {
+                        u = trial_u;
+                        p = trial_p;
+                        residual = r;
+                        accepted = true;
+                        break;
+                    }
+                }
+                t *= 0.5;
+            }
+            if !accepted {
+                break;
+            }
+        }
+        // Leave the bearings' evaluations consistent with the state.
+        let (su, sp) = (self.state.u.clone(), self.state.p.clone());
+        let _ = self.static_residual(&su, &sp, speed);
+        Err(SolverError::Static(format!(
+            "Newton stalled with residual {residual:.3e} of the force scale"
+        )))
+    }
+
+    /// Evaluate the bearings at `u`, `u̇` (rotor) and `p`, `ṗ` (internal), adding
+    /// their journal forces to `work.r`, writing pad residuals to `work.rp`;
+    /// returns the largest bearing force.
+    fn add_bearing_forces(
+        &mut self,
+        u: &[f64],
+        ud: &[f64],
+        p: &[f64],
+        pd: &[f64],
+        speed: f64,
+        time: f64,
+    ) -> Result<f64, SolverError> {
+        let mut largest: f64 = 0.0;
+        for site in &mut self.sites {
+            site.q[0] = u[site.journal[0]];
+            site.q[1] = u[site.journal[1]];
+            site.qd[0] = ud[site.journal[0]];
+            site.qd[1] = ud[site.journal[1]];
+            let range = site.offset..site.offset + site.internal;
+            site.q[2..].copy_from_slice(&p[range.clone()]);
+            site.qd[2..].copy_from_slice(&pd[range]);
+            site.bearing
+                .evaluate(&site.q, &site.qd, speed, &mut site.eval)
+                .map_err(|source| SolverError::Bearing {
+                    name: site.name.clone(),
+                    time,
+                    source,
+                })?;
+            self.work.r[site.journal[0]] += site.eval.force[0];
+            self.work.r[site.journal[1]] += site.eval.force[1];
+            largest = largest.max(site.eval.force[0].abs()).max(site.eval.force[1].abs());
+            for k in 0..site.internal {
+                self.work.rp[site.offset + k] = site.eval.force[2 + k];
+            }
+        }
+        Ok(largest)
+    }
+
+    /// Static residual `f_g + E F_b − K u` (into `work.r`) and pad residual (into
+    /// `work.rp`), relative to the largest force term.
+    fn static_residual(&mut self, u: &[f64], p: &[f64], speed: f64) -> Result<f64, SolverError> {
+        self.rotor.stiffness.mul_vec(u, &mut self.work.mv)?;
+        let mut scale = inf_norm(&self.work.mv).max(inf_norm(&self.work.f_ext));
+        for (r, (f, k)) in self.work.r.iter_mut().zip(self.work.f_ext.iter().zip(&self.work.mv)) {
+            *r = f - k;
+        }
+        let zero_u = vec![0.0; u.len()];
+        let zero_p = vec![0.0; p.len()];
+        scale = scale.max(self.add_bearing_forces(u, &zero_u, p, &zero_p, speed, self.state.time)?);
+        let scale = scale.max(f64::MIN_POSITIVE);
+        Ok(inf_norm(&self.work.r).max(inf_norm(&self.work.rp)) / scale)
+    }
+
+    /// Dynamic residual at the iterate `work.u`, `work.p` of a step of size `h`
+    /// ending at `t1`: sets the Newmark rates in `work`, the residuals in
+    /// `work.r`, `work.rp`; returns the residual relative to the largest force term.
+    fn dynamic_residual(&mut self, h: f64, t1: f64, speed1: f64) -> Result<f64, SolverError> {
+        let (a0, a1, a2) = (4.0 / (h * h), 2.0 / h, 4.0 / h);
+        {
+            let (s, w) = (&self.state, &mut self.work);
+            for i in 0..s.u.len() {
+                let d = w.u[i] - s.u[i];
+                w.ud[i] = a1 * d - s.ud[i];
+                w.udd[i] = a0 * d - a2 * s.ud[i] - s.udd[i];
+            }
+            for i in 0..s.p.len() {
+                let d = w.p[i] - s.p[i];
+                w.pd[i] = a1 * d - s.pd[i];
+                w.pdd[i] = a0 * d - a2 * s.pd[i] - s.pdd[i];
+            }
+            w.r.copy_from_slice(&w.f_ext);
+        }
+        let mut scale = inf_norm(&self.work.f_ext);
+        let terms: [(&BandMatrix<f64>, f64, u8); 4] = [
+            (&self.rotor.mass, 1.0, 2),
+            (&self.rotor.damping, 1.0, 1),
+            (&self.rotor.gyroscopic, speed1, 1),
+            (&self.rotor.stiffness, 1.0, 0),
+        ];
+        for (matrix, coef, which) in terms {
+            if coef == 0.0 {
+                continue;
+            }
+            let x = match which {
+                2 => &self.work.udd,
+                1 => &self.work.ud,
+                _ => &self.work.u,
+            };
+            matrix.mul_vec(x, &mut self.work.mv)?;
+            let mut norm: f64 = 0.0;
+            for (r, m) in self.work.r.iter_mut().zip(&self.work.mv) {
+                *r -= coef * m;
+                norm = norm.max((coef * m).abs());
+            }
+            scale = scale.max(norm);
+        }
+        let (u, ud, p, pd) = (
+            std::mem::take(&mut self.work.u),
+            std::mem::take(&mut self.work.ud),
+            std::mem::take(&mut self.work.p),
+            std::mem::take(&mut self.work.pd),
+        );
+        let bearings = self.add_bearing_forces(&u, &ud, &p, &pd, speed1, t1);
+        self.work.u = u;
+        self.work.ud = ud;
+        self.work.p = p;
+        self.work.pd = pd;
+        let scale = scale.max(bearings?).max(f64::MIN_POSITIVE);
+        Ok(inf_norm(&self.work.r).max(inf_norm(&self.work.rp)) / scale)
+    }
+
+    /// Factor `a` and form `Z = A⁻¹E`, `G = EᵀZ`.
+    fn make_factor(&mut self, a: BandMatrix<f64>, step: f64, speed: f64) -> Result<Factor, LinalgError> {
+        let lu = a.lu()?;
+        self.stats.factorizations += 1;
+        let n = self.rotor.dof_count();
+        let sj = self.n_journal;
+        let mut z = vec![0.0; n * sj];
+        let mut col = 0;
+        for site in &self.sites {
+            for &dof in &site.journal {
+                let zc = &mut z[col * n..(col + 1) * n];
+                zc[dof] = 1.0;
+                lu.solve_in_place(zc)?;
+                col += 1;
+            }
+        }
+        let mut g = vec![0.0; sj * sj];
+        let mut row = 0;
+        for site in &self.sites {
+            for &dof in &site.journal {
+                for c in 0..sj {
+                    g[row * sj + c] = z[c * n + dof];
+                }
+                row += 1;
+            }
+        }
+        Ok(Factor {
+            step,
+            speed,
+            lu,
+            z,
+            g,
+        })
+    }
+
+    /// Schur solve of `J [δu; δp] = [y; dp]` in place, `J` = factored `A` plus the
+    /// frozen bearing blocks `(K_b + a1 C_b)`; with `journal_in_a` only the pad
+    /// blocks are added (the journal blocks are already in `A`).
+    fn small_solve(
+        &mut self,
+        factor: &Factor,
+        a1: f64,
+        journal_in_a: bool,
+        y: &mut [f64],
+        dp: &mut [f64],
+    ) -> Result<(), SolverError> {
+        let n = self.rotor.dof_count();
+        let sj = self.n_journal;
+        let s = sj + self.n_internal;
+        factor.lu.solve_in_place(y)?;
+        if s == 0 {
+            return Ok(());
+        }
+        let w = &mut self.work;
+        for (k, site) in self.sites.iter().enumerate() {
+            w.ey[2 * k] = y[site.journal[0]];
+            w.ey[2 * k + 1] = y[site.journal[1]];
+        }
+        w.small.fill(0.0);
+        w.small_rhs.fill(0.0);
+        for (k, site) in self.sites.iter().enumerate() {
+            let n2 = site.eval.n();
+            let jac = |i: usize, j: usize| site.jk[i * n2 + j] + a1 * site.jc[i * n2 + j];
+            let jr = 2 * k;
+            let pr = sj + site.offset;
+            for i in 0..2 {
+                // Rows of f: f + ΔK_jj G f − K_jp δp = ΔK_jj Eᵀy.
+                w.small[(jr + i) * s + jr + i] += 1.0;
+                if !journal_in_a {
+                    for a in 0..2 {
+                        let kia = jac(i, a);
+                        for c in 0..sj {
+                            w.small[(jr + i) * s + c] += kia * factor.g[(jr + a) * sj + c];
+                        }
+                        w.small_rhs[jr + i] += kia * w.ey[jr + a];
+                    }
+                }
+                for m in 0..site.internal {
+                    w.small[(jr + i) * s + pr + m] -= jac(i, 2 + m);
+                }
+            }
+            for m in 0..site.internal {
+                // Rows of δp: −K_pj G f + K_pp δp = r_p − K_pj Eᵀy.
+                let row = pr + m;
+                for a in 0..2 {
+                    let kma = jac(2 + m, a);
+                    for c in 0..sj {
+                        w.small[row * s + c] -= kma * factor.g[(jr + a) * sj + c];
+                    }
+                    w.small_rhs[row] -= kma * w.ey[jr + a];
+                }
+                w.small_rhs[row] += dp[site.offset + m];
+                for l in 0..site.internal {
+                    w.small[row * s + pr + l] += jac(2 + m, 2 + l);
+                }
+            }
+        }
+        if !lu_in_place(&mut w.small, s, &mut w.pivots) {
+            return Err(SolverError::Linalg(LinalgError::Singular { column: 0 }));
+        }
+        lu_solve(&w.small, s, &w.pivots, &mut w.small_rhs);
+        for c in 0..sj {
+            let f = w.small_rhs[c];
+            if f != 0.0 {
+                for (yi, zi) in y.iter_mut().zip(&factor.z[c * n..(c + 1) * n]) {
+                    *yi -= zi * f;
+                }
+            }
+        }
+        dp.copy_from_slice(&w.small_rhs[sj..]);
+        Ok(())
+    }
+
+    /// External force at time `t` (unbalance with ramp, gravity) into `work.f_ext`.
+    fn external_force(&mut self, t: f64, spin_angle: f64) {
+        let w = &mut self.work;
+        w.f_ext.fill(0.0);
+        if self.options.gravity {
+            w.f_ext.copy_from_slice(&self.rotor.gravity_load);
+        }
+        let speed = self.state.speed + self.state.speed_rate * (t - self.state.speed_time);
+        let rate = self.state.speed_rate;
+        let ramp = if self.options.unbalance_ramp_time > 0.0 {
+            1.0 - (-t / self.options.unbalance_ramp_time).exp()
+        } else {
+            1.0
+        };
+        for (k, plane) in self.rotor.model.unbalances.iter().enumerate() {
+            let me = self.state.unbalance[k] * ramp;
+            let (s, c) = (spin_angle + self.state.unbalance_phase[k]).sin_cos();
+            let fx = me * (speed * speed * c + rate * s);
+            let fy = me * (speed * speed * s - rate * c);
+            if let Some(i) = self.rotor.dofs.free(plane.node, DOF_X) {
+                w.f_ext[i] += fx;
+            }
+            if let Some(i) = self.rotor.dofs.free(plane.node, DOF_Y) {
+                w.f_ext[i] += fy;
+            }
+        }
+    }
+
+    /// Advance to time `t_end` in equal internal steps no longer than the
+    /// configured time step.
+    pub fn advance_to(&mut self, t_end: f64) -> Result<(), SolverError> {
+        if !t_end.is_finite() {
+            return Err(SolverError::Input(format!("target time {t_end} is not finite")));
+        }
+        let span = t_end - self.state.time;
+        if span < 0.0 {
+            return Err(SolverError::Input(format!(
+                "cannot step backwards from {} s to {t_end} s",
+                self.state.time
+            )));
+        }
+        if span == 0.0 {
+            return Ok(());
+        }
+        let count = (span / self.options.time_step - 1e-9).ceil().max(1.0) as usize;
+        let h = span / count as f64;
+        for k in 0..count {
+            self.step_with_cuts(h, 0)?;
+            if k + 1 == count {
+                self.state.time = t_end;
+            }
+        }
+        Ok(())
+    }
+
+    fn step_with_cuts(&mut self, h: f64, depth: usize) -> Result<(), SolverError> {
+        match self.try_step(h)? {
+            None => Ok(()),
+            Some(residual) => {
+                if depth >= self.options.max_step_cuts {
+                    return Err(SolverError::NotConverged {
+                        time: self.state.time,
+                        step: h,
+                        cuts: depth,
+                        residual,
+                    });
+                }
+                self.stats.step_cuts += 1;
+                self.step_with_cuts(h / 2.0, depth + 1)?;
+                self.step_with_cuts(h / 2.0, depth + 1)
+            }
+        }
+    }
+
+    /// One Newmark step of size `h`. `Ok(None)`: converged, state advanced;
+    /// `Ok(Some(residual))`: Newton failed, state untouched. A bearing error
+    /// (journal beyond the clearance) at an iterate counts as a failure of the
+    /// step, so a smaller step is tried before giving up.
+    fn try_step(&mut self, h: f64) -> Result<Option<f64>, SolverError> {
+        let t1 = self.state.time + h;
+        let speed0 = self.speed_at(self.state.time);
+        let speed1 = self.speed_at(t1);
+        let spin1 = self.state.spin_angle + 0.5 * (speed0 + speed1) * h;
+        self.external_force(t1, spin1);
+        {
+            let (s, w) = (&self.state, &mut self.work);
+            for i in 0..s.u.len() {
+                w.u[i] = s.u[i] + h * s.ud[i] + 0.5 * h * h * s.udd[i];
+            }
+            for i in 0..s.p.len() {
+                w.p[i] = s.p[i] + h * s.pd[i] + 0.5 * h * h * s.pdd[i];
+            }
+        }
+        let mut factor = self.factor.take();
+        let outcome = self.newton(h, t1, speed1, &mut factor);
+        self.factor = factor;
+        let outcome = match outcome {
+            Err(SolverError::Bearing { source: BearingError::ClearanceExceeded { .. }, .. })
+                if h > self.options.time_step * 0.5f64.powi(self.options.max_step_cuts as i32) =>
+            {
+                Some(f64::INFINITY)
+            }
+            other => other?,
+        };
+        if outcome.is_none() {
+            let (s, w) = (&mut self.state, &mut self.work);
+            std::mem::swap(&mut s.u, &mut w.u);
+            std::mem::swap(&mut s.ud, &mut w.ud);
+            std::mem::swap(&mut s.udd, &mut w.udd);
+            std::mem::swap(&mut s.p, &mut w.p);
+            std::mem::swap(&mut s.pd, &mut w.pd);
+            std::mem::swap(&mut s.pdd, &mut w.pdd);
+            s.time = t1;
+            s.spin_angle = spin1;
+            self.stats.steps += 1;
+        }
+        Ok(outcome)
+    }
+
+    fn newton(
+        &mut self,
+        h: f64,
+        t1: f64,
+        speed1: f64,
+        factor: &mut Option<Factor>,
+    ) -> Result<Option<f64>, SolverError> {
+        let (a0, a1) = (4.0 / (h * h), 2.0 / h);
+        let tol = self.options.tolerance;
+        let mut last = f64::INFINITY;
+        let mut refreshed = false;
+        let mut jacobian_current = false;
+        let mut increment_ok = false;
+        for iteration in 0..self.options.max_iterations {
+            self.stats.iterations += 1;
+            let residual = self.dynamic_residual(h, t1, speed1)?;
+            if residual <= tol && increment_ok {
+                return Ok(None);
+            }
+            let stalled = iteration > 0 && residual > 0.7 * last;
+            last = residual;
+            let mut refresh_now = false;
+            if stalled && !refreshed {
+                refreshed = true;
+                refresh_now = true;
+                jacobian_current = false;
+                self.stats.refreshes += 1;
+            }
+            let rebuild = match factor.as_ref() {
+                None => true,
+                Some(f) => {
+                    f.step != h
+                        || speed_band_changed(f.speed, speed1)
+                        || (refresh_now && f.speed != speed1)
+                }
+            };
+            if rebuild {
+                let mut a = self.rotor.stiffness.clone();
+                a.scale_add(a1, &self.rotor.damping)?;
+                a.scale_add(a1 * speed1, &self.rotor.gyroscopic)?;
+                a.scale_add(a0, &self.rotor.mass)?;
+                *factor = Some(self.make_factor(a, h, speed1)?);
+            }
+            if !jacobian_current {
+                for site in &mut self.sites {
+                    site.jk.copy_from_slice(&site.eval.stiffness);
+                    site.jc.copy_from_slice(&site.eval.damping);
+                }
+                jacobian_current = true;
+            }
+            let Some(f) = factor.as_ref() else {
+                return Err(SolverError::Input("internal: no factorization".into()));
+            };
+            let mut du = std::mem::take(&mut self.work.du);
+            let mut dp = std::mem::take(&mut self.work.dp);
+            du.copy_from_slice(&self.work.r);
+            dp.copy_from_slice(&self.work.rp);
+            let solved = self.small_solve(f, a1, false, &mut du, &mut dp);
+            if let Err(e) = solved {
+                self.work.du = du;
+                self.work.dp = dp;
+                return Err(e);
+            }
+            let mut inc: f64 = 0.0;
+            let mut mag: f64 = 0.0;
+            for (i, d) in du.iter().enumerate() {
+                if self.rotor.dofs.full(i) % DOF_PER_NODE < 2 {
+                    inc = inc.max(d.abs());
+                    mag = mag.max(self.work.u[i].abs());
+                }
+            }
+            for (d, v) in dp.iter().zip(&self.work.p) {
+                inc = inc.max(d.abs());
+                mag = mag.max(v.abs());
+            }
+            increment_ok = inc <= tol * mag.max(self.length_scale);
+            for (u, d) in self.work.u.iter_mut().zip(&du) {
+                *u += d;
+            }
+            for (p, d) in self.work.p.iter_mut().zip(&dp) {
+                *p += d;
+            }
+            self.work.du = du;
+            self.work.dp = dp;
+        }
+        Ok(Some(last))
+    }
+
+    /// Make the accelerations consistent with the equations of motion at the
+    /// current displacements and velocities: `M ü = f(t) + E F_b − (C + ΩG) u̇ − K u`
+    /// (pad rates are left as they are). Call after setting an arbitrary state.
+    pub fn consistent_acceleration(&mut self) -> Result<(), SolverError> {
+        let t = self.state.time;
+        let speed = self.speed_at(t);
+        self.external_force(t, self.state.spin_angle);
+        let w = &mut self.work;
+        w.r.copy_from_slice(&w.f_ext);
+        for (matrix, coef, x) in [
+            (&self.rotor.damping, 1.0, &self.state.ud),
+            (&self.rotor.gyroscopic, speed, &self.state.ud),
+            (&self.rotor.stiffness, 1.0, &self.state.u),
+        ] {
+            matrix.mul_vec(x, &mut w.mv)?;
+            for (r, m) in w.r.iter_mut().zip(&w.mv) {
+                *r -= coef * m;
+            }
+        }
+        let (u, ud, p, pd) = (
+            self.state.u.clone(),
+            self.state.ud.clone(),
+            self.state.p.clone(),
+            self.state.pd.clone(),
+        );
+        self.add_bearing_forces(&u, &ud, &p, &pd, speed, t)?;
+        let lu = self.rotor.mass.lu()?;
+        let mut acc = self.work.r.clone();
+        lu.solve_in_place(&mut acc)?;
+        self.state.udd = acc;
+        Ok(())
+    }
+
+    /// Outputs at the current state.
+    pub fn outputs(&mut self) -> Result<Outputs, SolverError> {
+        let t = self.state.time;
+        let speed = self.speed_at(t);
+        let mut bearings = Vec::with_capacity(self.output_bearings.len());
+        let mut friction_torque = 0.0;
+        for (k, (bearing, site)) in self.output_bearings.iter().enumerate() {
+            let node = self.rotor.model.bearings[k].node;
+            let at = |dof: usize, v: &[f64]| self.rotor.dofs.free(node, dof).map_or(0.0, |i| v[i]);
+            let (x, y) = (at(DOF_X, &self.state.u), at(DOF_Y, &self.state.u));
+            let (vx, vy) = (at(DOF_X, &self.state.ud), at(DOF_Y, &self.state.ud));
+            let internal = bearing.internal_dofs();
+            let mut q = vec![x, y];
+            let mut qd = vec![vx, vy];
+            if let Some(si) = site {
+                let s = &self.sites[*si];
+                q.extend_from_slice(&self.state.p[s.offset..s.offset + internal]);
+                qd.extend_from_slice(&self.state.pd[s.offset..s.offset + internal]);
+            }
+            let mut eval = BearingEval::new(2 + internal);
+            bearing
+                .evaluate(&q, &qd, speed, &mut eval)
+                .map_err(|source| SolverError::Bearing {
+                    name: self.rotor.model.bearings[k].name.clone(),
+                    time: t,
+                    source,
+                })?;
+            let report = bearing.report(&q, speed, &eval);
+            friction_torque += report.friction_torque;
+            bearings.push(BearingOutput {
+                x,
+                y,
+                fx: eval.force[0],
+                fy: eval.force[1],
+                report,
+            });
+        }
+        let probes = self
+            .rotor
+            .model
+            .probes
+            .iter()
+            .map(|p| ProbeOutput {
+                x: self.rotor.dofs.free(p.node, DOF_X).map_or(0.0, |i| self.state.u[i]),
+                y: self.rotor.dofs.free(p.node, DOF_Y).map_or(0.0, |i| self.state.u[i]),
+            })
+            .collect();
+        Ok(Outputs {
+            time: t,
+            speed,
+            spin_angle: self.state.spin_angle,
+            bearings,
+            probes,
+            friction_torque,
+        })
+    }
+}
+
+fn speed_band_changed(reference: f64, speed: f64) -> bool {
+    (speed - reference).abs() > 0.02 * reference.abs().max(1.0)
+}
+
+fn inf_norm(v: &[f64]) -> f64 {
+    v.iter().fold(0.0, |a, x| a.max(x.abs()))
+}
+
+fn check_options(o: &SolverOptions) -> Result<(), SolverError> {
+    let bad = |what: &str, v: f64| SolverError::Input(format!("solver option {what} = {v} is out of range"));
+    if !(o.time_step.is_finite() && o.time_step > 0.0) {
+        return Err(bad("time_step", o.time_step));
+    }
+    if !(o.tolerance.is_finite() && o.tolerance > 0.0 && o.tolerance < 1.0) {
+        return Err(bad("tolerance", o.tolerance));
+    }
+    if o.max_iterations == 0 {
+        return Err(bad("max_iterations", 0.0));
+    }
+    if !(o.unbalance_ramp_time.is_finite() && o.unbalance_ramp_time >= 0.0) {
+        return Err(bad("unbalance_ramp_time", o.unbalance_ramp_time));
+    }
+    Ok(())
+}
