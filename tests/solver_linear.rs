@@ -3,9 +3,9 @@
 use nalgebra::{Complex, Matrix3, Vector3};
 
 use rotor_bearing::analysis::linear::{node_xy, unbalance_response};
-use rotor_bearing::analysis::modal::{modes, ModalOptions};
+use rotor_bearing::analysis::modal::{ModalOptions, modes};
 use rotor_bearing::fe::assembly::Rotor;
-use rotor_bearing::model::{RotorModel, DEFAULT_MODEL_TOML};
+use rotor_bearing::model::{DEFAULT_MODEL_TOML, RotorModel};
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
 const RPM: f64 = std::f64::consts::PI / 30.0;
@@ -25,7 +25,8 @@ fn harmonic(ts: &[f64], xs: &[f64], omega: f64) -> Complex<f64> {
 }
 
 fn damped_classic(c: f64) -> Rotor {
-    let text = DEFAULT_MODEL_TOML.replace("kyy = 1e6\n", &format!("kyy = 1e6\ncxx = {c}\ncyy = {c}\n"));
+    let text =
+        DEFAULT_MODEL_TOML.replace("kyy = 1e6\n", &format!("kyy = 1e6\ncxx = {c}\ncyy = {c}\n"));
     Rotor::new(RotorModel::from_toml(&text, "classic_damped").unwrap()).unwrap()
 }
 
@@ -37,8 +38,19 @@ fn steady_unbalance_response_matches_frequency_domain() {
     let speed = 3000.0 * RPM;
     let exact = unbalance_response(&rotor, speed).unwrap();
     // Slowest transient: the least-damped mode sets how long to wait.
-    let ms = modes(&rotor, speed, &ModalOptions { modes: 4, target_frequency: 0.0 }).unwrap();
-    let decay = ms.iter().map(|m| m.damping_ratio * m.natural_frequency).fold(f64::INFINITY, f64::min);
+    let ms = modes(
+        &rotor,
+        speed,
+        &ModalOptions {
+            modes: 4,
+            target_frequency: 0.0,
+        },
+    )
+    .unwrap();
+    let decay = ms
+        .iter()
+        .map(|m| m.damping_ratio * m.natural_frequency)
+        .fold(f64::INFINITY, f64::min);
     let settle = 12.0 / decay; // e^-12 of the start transient remains
     let mut sim = Simulator::new(
         rotor,
@@ -63,10 +75,18 @@ fn steady_unbalance_response_matches_frequency_domain() {
         ys.push(o.probes[0].y);
     }
     let (ex, ey) = node_xy(&exact, 3);
-    for (got, want) in [(harmonic(&ts, &xs, speed), ex), (harmonic(&ts, &ys, speed), ey)] {
+    for (got, want) in [
+        (harmonic(&ts, &xs, speed), ex),
+        (harmonic(&ts, &ys, speed), ey),
+    ] {
         let amp = (got.norm() - want.norm()).abs() / want.norm();
         let phase = (got / want).arg().to_degrees().abs();
-        assert!(amp < 5e-3, "amplitude {} vs {} ({amp:e})", got.norm(), want.norm());
+        assert!(
+            amp < 5e-3,
+            "amplitude {} vs {} ({amp:e})",
+            got.norm(),
+            want.norm()
+        );
         assert!(phase < 1.0, "phase error {phase}°");
     }
     assert!(sim.stats().factorizations <= 2, "{:?}", sim.stats());
@@ -86,12 +106,22 @@ fn energy_is_conserved_and_period_error_is_second_order() {
 fn energy_and_period(speed: f64) {
     let model = RotorModel::default_model();
     let rotor = Rotor::new(model).unwrap();
-    let ms = modes(&rotor, speed, &ModalOptions { modes: 2, target_frequency: 0.0 }).unwrap();
+    let ms = modes(
+        &rotor,
+        speed,
+        &ModalOptions {
+            modes: 2,
+            target_frequency: 0.0,
+        },
+    )
+    .unwrap();
     let omega = ms[0].damped_frequency;
     let shape: Vec<f64> = {
         // Real part of the first mode on the free DOFs (normalized to 1e-4 m).
         let full: Vec<f64> = ms[0].shape.iter().map(|c| c.re * 1e-4).collect();
-        (0..rotor.dof_count()).map(|i| full[rotor.dofs.full(i)]).collect()
+        (0..rotor.dof_count())
+            .map(|i| full[rotor.dofs.full(i)])
+            .collect()
     };
     let energy = |sim: &Simulator| {
         let s = sim.state();
@@ -107,7 +137,12 @@ fn energy_and_period(speed: f64) {
         let h = 2.0 * std::f64::consts::PI / omega / steps_per_period;
         let mut sim = Simulator::new(
             Rotor::new(RotorModel::default_model()).unwrap(),
-            SolverOptions { time_step: h, gravity: false, tolerance: 1e-12, ..SolverOptions::default() },
+            SolverOptions {
+                time_step: h,
+                gravity: false,
+                tolerance: 1e-12,
+                ..SolverOptions::default()
+            },
         )
         .unwrap();
         sim.set_unbalance(0, 0.0).unwrap();
@@ -131,14 +166,21 @@ fn energy_and_period(speed: f64) {
             max_drift = max_drift.max((energy(&sim) - e0).abs() / e0);
         }
         assert!(max_drift < 1e-9, "energy drift {max_drift:e}");
-        let measured = (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
+        let measured =
+            (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
         period_errors.push((measured * omega / (2.0 * std::f64::consts::PI) - 1.0).abs());
     }
     if speed == 0.0 {
         // A pure mode: the measured elongation follows (ωh)²/12 and second order.
         let theory = (2.0 * std::f64::consts::PI / 20.0).powi(2) / 12.0;
-        assert!((period_errors[0] / theory - 1.0).abs() < 0.1, "{period_errors:?} vs {theory}");
+        assert!(
+            (period_errors[0] / theory - 1.0).abs() < 0.1,
+            "{period_errors:?} vs {theory}"
+        );
         let order = (period_errors[0] / period_errors[1]).log2();
-        assert!((1.9..2.1).contains(&order), "period errors {period_errors:?}, order {order}");
+        assert!(
+            (1.9..2.1).contains(&order),
+            "period errors {period_errors:?}, order {order}"
+        );
     }
 }

@@ -39,6 +39,5 @@ mod dense;
 mod simulator;
 
 pub use simulator::{
-    BearingOutput, Outputs, ProbeOutput, SimState, Simulator, SolverError, SolverOptions,
-    StepStats,
+    BearingOutput, Outputs, ProbeOutput, SimState, Simulator, SolverError, SolverOptions, StepStats,
 };

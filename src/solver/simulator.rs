@@ -288,7 +288,11 @@ impl Simulator {
                 crate::bearing::BearingKind::Linear { .. } => None,
             })
             .fold(f64::INFINITY, f64::min);
-        let length_scale = if length_scale.is_finite() { length_scale } else { 1e-6 };
+        let length_scale = if length_scale.is_finite() {
+            length_scale
+        } else {
+            1e-6
+        };
         let n_journal = 2 * sites.len();
         let n_internal = offset;
         let s = n_journal + n_internal;
@@ -418,9 +422,11 @@ impl Simulator {
                 "unbalance {magnitude} kg·m must be finite and not negative"
             )));
         }
-        let slot = self.state.unbalance.get_mut(plane).ok_or_else(|| {
-            SolverError::Input(format!("no unbalance plane {plane}"))
-        })?;
+        let slot = self
+            .state
+            .unbalance
+            .get_mut(plane)
+            .ok_or_else(|| SolverError::Input(format!("no unbalance plane {plane}")))?;
         *slot = magnitude;
         Ok(())
     }
@@ -428,11 +434,15 @@ impl Simulator {
     /// Set the angular position (rad) of plane `plane` at spin angle zero.
     pub fn set_unbalance_phase(&mut self, plane: usize, phase: f64) -> Result<(), SolverError> {
         if !phase.is_finite() {
-            return Err(SolverError::Input(format!("unbalance phase {phase} must be finite")));
+            return Err(SolverError::Input(format!(
+                "unbalance phase {phase} must be finite"
+            )));
         }
-        let slot = self.state.unbalance_phase.get_mut(plane).ok_or_else(|| {
-            SolverError::Input(format!("no unbalance plane {plane}"))
-        })?;
+        let slot = self
+            .state
+            .unbalance_phase
+            .get_mut(plane)
+            .ok_or_else(|| SolverError::Input(format!("no unbalance plane {plane}")))?;
         *slot = phase;
         Ok(())
     }
@@ -539,7 +549,9 @@ impl Simulator {
                 })?;
             self.work.r[site.journal[0]] += site.eval.force[0];
             self.work.r[site.journal[1]] += site.eval.force[1];
-            largest = largest.max(site.eval.force[0].abs()).max(site.eval.force[1].abs());
+            largest = largest
+                .max(site.eval.force[0].abs())
+                .max(site.eval.force[1].abs());
             for k in 0..site.internal {
                 self.work.rp[site.offset + k] = site.eval.force[2 + k];
             }
@@ -552,12 +564,18 @@ impl Simulator {
     fn static_residual(&mut self, u: &[f64], p: &[f64], speed: f64) -> Result<f64, SolverError> {
         self.rotor.stiffness.mul_vec(u, &mut self.work.mv)?;
         let mut scale = inf_norm(&self.work.mv).max(inf_norm(&self.work.f_ext));
-        for (r, (f, k)) in self.work.r.iter_mut().zip(self.work.f_ext.iter().zip(&self.work.mv)) {
+        for (r, (f, k)) in self
+            .work
+            .r
+            .iter_mut()
+            .zip(self.work.f_ext.iter().zip(&self.work.mv))
+        {
             *r = f - k;
         }
         let zero_u = vec![0.0; u.len()];
         let zero_p = vec![0.0; p.len()];
-        scale = scale.max(self.add_bearing_forces(u, &zero_u, p, &zero_p, speed, self.state.time)?);
+        scale =
+            scale.max(self.add_bearing_forces(u, &zero_u, p, &zero_p, speed, self.state.time)?);
         let scale = scale.max(f64::MIN_POSITIVE);
         Ok(inf_norm(&self.work.r).max(inf_norm(&self.work.rp)) / scale)
     }
@@ -621,7 +639,12 @@ impl Simulator {
     }
 
     /// Factor `a` and form `Z = A⁻¹E`, `G = EᵀZ`.
-    fn make_factor(&mut self, a: BandMatrix<f64>, step: f64, speed: f64) -> Result<Factor, LinalgError> {
+    fn make_factor(
+        &mut self,
+        a: BandMatrix<f64>,
+        step: f64,
+        speed: f64,
+    ) -> Result<Factor, LinalgError> {
         let lu = a.lu()?;
         self.stats.factorizations += 1;
         let n = self.rotor.dof_count();
@@ -765,7 +788,9 @@ impl Simulator {
     /// configured time step.
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), SolverError> {
         if !t_end.is_finite() {
-            return Err(SolverError::Input(format!("target time {t_end} is not finite")));
+            return Err(SolverError::Input(format!(
+                "target time {t_end} is not finite"
+            )));
         }
         let span = t_end - self.state.time;
         if span < 0.0 {
@@ -830,9 +855,10 @@ impl Simulator {
         let outcome = self.newton(h, t1, speed1, &mut factor);
         self.factor = factor;
         let outcome = match outcome {
-            Err(SolverError::Bearing { source: BearingError::ClearanceExceeded { .. }, .. })
-                if h > self.options.time_step * 0.5f64.powi(self.options.max_step_cuts as i32) =>
-            {
+            Err(SolverError::Bearing {
+                source: BearingError::ClearanceExceeded { .. },
+                ..
+            }) if h > self.options.time_step * 0.5f64.powi(self.options.max_step_cuts as i32) => {
                 Some(f64::INFINITY)
             }
             other => other?,
@@ -1016,8 +1042,16 @@ impl Simulator {
             .probes
             .iter()
             .map(|p| ProbeOutput {
-                x: self.rotor.dofs.free(p.node, DOF_X).map_or(0.0, |i| self.state.u[i]),
-                y: self.rotor.dofs.free(p.node, DOF_Y).map_or(0.0, |i| self.state.u[i]),
+                x: self
+                    .rotor
+                    .dofs
+                    .free(p.node, DOF_X)
+                    .map_or(0.0, |i| self.state.u[i]),
+                y: self
+                    .rotor
+                    .dofs
+                    .free(p.node, DOF_Y)
+                    .map_or(0.0, |i| self.state.u[i]),
             })
             .collect();
         Ok(Outputs {
@@ -1040,7 +1074,9 @@ fn inf_norm(v: &[f64]) -> f64 {
 }
 
 fn check_options(o: &SolverOptions) -> Result<(), SolverError> {
-    let bad = |what: &str, v: f64| SolverError::Input(format!("solver option {what} = {v} is out of range"));
+    let bad = |what: &str, v: f64| {
+        SolverError::Input(format!("solver option {what} = {v} is out of range"))
+    };
     if !(o.time_step.is_finite() && o.time_step > 0.0) {
         return Err(bad("time_step", o.time_step));
     }
