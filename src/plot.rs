@@ -218,3 +218,224 @@ pub fn coefficients_png(
     root.present().map_err(|e| err(&e))?;
     Ok(())
 }
+
+const SERIES_COLORS: [RGBColor; 6] = [
+    RGBColor(200, 30, 30),
+    RGBColor(30, 60, 200),
+    RGBColor(20, 140, 60),
+    RGBColor(150, 60, 160),
+    RGBColor(220, 130, 20),
+    RGBColor(20, 150, 170),
+];
+
+/// Orbits `(name, x, y)` in µm, one panel each, on equal axes.
+pub fn orbits_png(
+    path: &Path,
+    title: &str,
+    orbits: &[(String, Vec<f64>, Vec<f64>)],
+    clearance: Option<f64>,
+) -> Result<(), PlotError> {
+    let err = |e: &dyn std::fmt::Display| PlotError {
+        file: path.display().to_string(),
+        message: e.to_string(),
+    };
+    let count = orbits.len().max(1);
+    let cols = count.min(3);
+    let rows = count.div_ceil(cols);
+    let root =
+        BitMapBackend::new(path, (460 * cols as u32, 500 * rows as u32 + 50)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let root = root
+        .titled(title, ("sans-serif", 24))
+        .map_err(|e| err(&e))?;
+    let panels = root.split_evenly((rows, cols));
+    for (k, (panel, (name, x, y))) in panels.iter().zip(orbits).enumerate() {
+        // Equal axes centred on the orbit's mean position.
+        let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len().max(1) as f64 * 1e6;
+        let (cx, cy) = (mean(x), mean(y));
+        let half = x
+            .iter()
+            .map(|v| (v * 1e6 - cx).abs())
+            .chain(y.iter().map(|v| (v * 1e6 - cy).abs()))
+            .fold(0.0f64, f64::max);
+        let r = (half * 1.15).max(1e-3);
+        let mut chart = ChartBuilder::on(panel)
+            .caption(name, ("sans-serif", 18))
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(56)
+            .build_cartesian_2d((cx - r)..(cx + r), (cy - r)..(cy + r))
+            .map_err(|e| err(&e))?;
+        chart
+            .configure_mesh()
+            .x_desc("x (µm)")
+            .y_desc("y (µm)")
+            .label_style(("sans-serif", 14))
+            .draw()
+            .map_err(|e| err(&e))?;
+        let color = SERIES_COLORS[k % SERIES_COLORS.len()];
+        chart
+            .draw_series(LineSeries::new(
+                x.iter().zip(y).map(|(a, b)| (a * 1e6, b * 1e6)),
+                color.stroke_width(1),
+            ))
+            .map_err(|e| err(&e))?;
+        if let Some(c) = clearance.filter(|c| c * 1e6 <= r + cx.hypot(cy)) {
+            let circle: Vec<(f64, f64)> = (0..=180)
+                .map(|i| {
+                    let a = i as f64 * std::f64::consts::PI / 90.0;
+                    (c * 1e6 * a.cos(), c * 1e6 * a.sin())
+                })
+                .collect();
+            chart
+                .draw_series(LineSeries::new(circle, BLACK.stroke_width(1)))
+                .map_err(|e| err(&e))?;
+        }
+    }
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
+}
+
+/// Full spectra `(name, amplitude m)` over `freqs` (Hz, signed), in µm, with
+/// vertical markers at the given `(label, frequency)`.
+pub fn spectrum_png(
+    path: &Path,
+    title: &str,
+    freqs: &[f64],
+    spectra: &[(String, Vec<f64>)],
+    markers: &[(String, f64)],
+) -> Result<(), PlotError> {
+    let err = |e: &dyn std::fmt::Display| PlotError {
+        file: path.display().to_string(),
+        message: e.to_string(),
+    };
+    let root = BitMapBackend::new(path, (1100, 600)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let f0 = freqs.first().copied().unwrap_or(0.0);
+    let f1 = freqs.last().copied().unwrap_or(1.0);
+    let top = spectra
+        .iter()
+        .flat_map(|(_, a)| a.iter())
+        .fold(0.0f64, |a, v| a.max(*v))
+        * 1e6
+        * 1.1;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 24))
+        .margin(16)
+        .x_label_area_size(44)
+        .y_label_area_size(64)
+        .build_cartesian_2d(f0..f1, 0.0..top.max(1e-9))
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc("frequency (Hz), positive = forward whirl")
+        .y_desc("amplitude (µm)")
+        .label_style(("sans-serif", 16))
+        .draw()
+        .map_err(|e| err(&e))?;
+    for (label, f) in markers {
+        chart
+            .draw_series(LineSeries::new(
+                [(*f, 0.0), (*f, top)],
+                BLACK.mix(0.4).stroke_width(1),
+            ))
+            .map_err(|e| err(&e))?;
+        chart
+            .draw_series(std::iter::once(Text::new(
+                label.clone(),
+                (*f, top * 0.97),
+                ("sans-serif", 14),
+            )))
+            .map_err(|e| err(&e))?;
+    }
+    for (k, (name, amps)) in spectra.iter().enumerate() {
+        let color = SERIES_COLORS[k % SERIES_COLORS.len()];
+        chart
+            .draw_series(LineSeries::new(
+                freqs.iter().zip(amps).map(|(f, a)| (*f, a * 1e6)),
+                color.stroke_width(2),
+            ))
+            .map_err(|e| err(&e))?
+            .label(name.clone())
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2)));
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 16))
+        .draw()
+        .map_err(|e| err(&e))?;
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
+}
+
+/// Waterfall (cascade): full spectra of successive windows of a run, each line
+/// drawn at the window's mean speed (rpm) with height proportional to amplitude,
+/// with the 1× and 0.5× lines.
+pub fn waterfall_png(
+    path: &Path,
+    title: &str,
+    freqs: &[f64],
+    rows: &[(f64, Vec<f64>)],
+) -> Result<(), PlotError> {
+    let err = |e: &dyn std::fmt::Display| PlotError {
+        file: path.display().to_string(),
+        message: e.to_string(),
+    };
+    let root = BitMapBackend::new(path, (1100, 800)).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let (f0, f1) = (freqs[0], freqs[freqs.len() - 1]);
+    let s_min = rows.iter().map(|r| r.0).fold(f64::INFINITY, f64::min);
+    let s_max = rows.iter().map(|r| r.0).fold(0.0, f64::max);
+    let spacing = (s_max - s_min).max(1.0) / rows.len().max(1) as f64;
+    let peak = rows
+        .iter()
+        .flat_map(|r| r.1.iter())
+        .fold(0.0f64, |a, v| a.max(*v))
+        .max(f64::MIN_POSITIVE);
+    let scale = 4.0 * spacing / peak;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(title, ("sans-serif", 24))
+        .margin(16)
+        .x_label_area_size(44)
+        .y_label_area_size(70)
+        .build_cartesian_2d(f0..f1, (s_min - spacing)..(s_max + 5.0 * spacing))
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc("frequency (Hz), positive = forward whirl")
+        .y_desc("spin speed (rpm) + amplitude")
+        .label_style(("sans-serif", 16))
+        .draw()
+        .map_err(|e| err(&e))?;
+    for (order, color) in [(1.0, RGBColor(200, 30, 30)), (0.5, RGBColor(30, 60, 200))] {
+        chart
+            .draw_series(LineSeries::new(
+                [(order * s_min / 60.0, s_min), (order * s_max / 60.0, s_max)],
+                color.mix(0.5).stroke_width(1),
+            ))
+            .map_err(|e| err(&e))?
+            .label(format!("{order}×"))
+            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2)));
+    }
+    for (speed, amps) in rows {
+        chart
+            .draw_series(LineSeries::new(
+                freqs.iter().zip(amps).map(|(f, a)| (*f, speed + a * scale)),
+                BLACK.stroke_width(1),
+            ))
+            .map_err(|e| err(&e))?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperLeft)
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK)
+        .label_font(("sans-serif", 16))
+        .draw()
+        .map_err(|e| err(&e))?;
+    root.present().map_err(|e| err(&e))?;
+    Ok(())
+}

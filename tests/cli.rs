@@ -100,8 +100,18 @@ fn static_and_info_run_on_every_shipped_model() {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models");
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
-        for cmd in ["info", "modes"] {
-            let out = rotor().arg(cmd).arg(&path).output().unwrap();
+        for cmd in ["info", "static", "modes"] {
+            // Fluid-film bearings need speed to carry load.
+            let out = rotor()
+                .arg(cmd)
+                .arg(&path)
+                .args(if cmd == "info" {
+                    &[][..]
+                } else {
+                    &["--rpm", "3000"][..]
+                })
+                .output()
+                .unwrap();
             assert!(
                 out.status.success(),
                 "{cmd} {}: {}",

@@ -3,7 +3,7 @@
 
 use crate::fe::assembly::Rotor;
 
-use super::modal::{ModalError, ModalOptions, Mode, Whirl, modes};
+use super::modal::{ModalError, ModalOptions, Mode, Whirl, modes_at};
 
 /// One speed of a Campbell diagram: the modes sorted by damped frequency.
 #[derive(Debug, Clone, PartialEq)]
@@ -53,7 +53,8 @@ pub struct CriticalSpeed {
     pub damping_ratio: f64,
 }
 
-/// Modes at every speed of `speeds` (rad/s, increasing).
+/// Modes at every speed of `speeds` (rad/s, increasing); nonlinear bearings are
+/// linearized about the static equilibrium at each speed.
 pub fn campbell(
     rotor: &Rotor,
     speeds: &[f64],
@@ -64,7 +65,7 @@ pub fn campbell(
         .map(|&speed| {
             Ok(CampbellPoint {
                 speed,
-                modes: modes(rotor, speed, options)?
+                modes: modes_at(rotor, speed, options)?
                     .iter()
                     .map(ModeSummary::from)
                     .collect(),
@@ -92,7 +93,7 @@ pub fn critical_speeds(
                 continue;
             }
             let branch = |speed: f64| -> Result<(f64, Mode), ModalError> {
-                let ms = modes(rotor, speed, options)?;
+                let ms = modes_at(rotor, speed, options)?;
                 let m = ms.get(rank).cloned().ok_or_else(|| {
                     ModalError::Options(format!("branch {rank} vanished at {speed} rad/s"))
                 })?;

@@ -3,4 +3,6 @@
 
 pub mod campbell;
 pub mod linear;
+pub mod linearize;
 pub mod modal;
+pub mod spectrum;

@@ -88,6 +88,24 @@ pub enum ModalError {
     /// The model has nonlinear bearings that need linearizing first.
     #[error("modal analysis: bearing {0} is nonlinear; modal analysis uses linear bearings only")]
     NonlinearBearing(String),
+    /// Linearizing the nonlinear bearings failed.
+    #[error(transparent)]
+    Linearize(#[from] crate::analysis::linearize::LinearizeError),
+}
+
+/// Modes at `speed` of a rotor whose nonlinear bearings are first linearized about
+/// the static equilibrium at that speed (synchronous coefficients); linear rotors
+/// go straight to [`modes`].
+pub fn modes_at(
+    rotor: &Rotor,
+    speed: f64,
+    options: &ModalOptions,
+) -> Result<Vec<Mode>, ModalError> {
+    if rotor.nonlinear_bearings.is_empty() {
+        return modes(rotor, speed, options);
+    }
+    let linear = crate::analysis::linearize::linearized(rotor, speed, speed)?;
+    modes(&linear, speed, options)
 }
 
 /// `D = C + Ω G` as a band matrix.

@@ -170,6 +170,12 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
     /// can be assembled once into the global matrices.
     fn is_linear(&self) -> bool;
 
+    /// A starting guess of the internal coordinates for a static solve with the
+    /// journal at `journal` (m), spin `speed`, written into `internal`.
+    fn guess_internal(&self, _journal: [f64; 2], _speed: f64, internal: &mut [f64]) {
+        internal.fill(0.0);
+    }
+
     /// Eccentricity, attitude angle, film thickness and friction at `q`, with `eval`
     /// the evaluation there.
     fn report(&self, _q: &[f64], _speed: f64, _eval: &BearingEval) -> BearingReport {

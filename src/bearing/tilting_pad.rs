@@ -164,6 +164,59 @@ impl Bearing for TiltingPadBearing {
         false
     }
 
+    /// Each pad's stable zero-moment tilt with the journal held (pads alone, no
+    /// rates): the first sign change of `Q_η` from + to − on a scan of tilts that
+    /// keep the pad film open, refined by bisection. A pad with none (unloaded)
+    /// starts at zero. Newton from zero tilts can otherwise run to the unloaded
+    /// root, where the film vanishes.
+    fn guess_internal(&self, journal: [f64; 2], speed: f64, internal: &mut [f64]) {
+        let film = self.film();
+        let zero = [0.0; 3];
+        for (k, pad) in self.pads.iter().enumerate() {
+            internal[k] = 0.0;
+            let (s, c) = pad.pivot.sin_cos();
+            let moment = |eta: f64| -> Option<f64> {
+                let q = [journal[0], journal[1], eta];
+                let shift = pad.preload * self.clearance;
+                let state = JournalState {
+                    position: Vector2::new(q[0] + shift * c - eta * s, q[1] + shift * s + eta * c),
+                    velocity: Vector2::zeros(),
+                };
+                let f = film
+                    .force(&state, speed, Some(Self::window(pad)))
+                    .ok()?
+                    .force;
+                let _ = zero;
+                Some(c * f.y - s * f.x)
+            };
+            let reach = self.clearance * 0.98;
+            let samples = 64;
+            let mut prev: Option<(f64, f64)> = None;
+            for i in 0..=samples {
+                let eta = -reach + 2.0 * reach * i as f64 / samples as f64;
+                let Some(m) = moment(eta) else {
+                    prev = None;
+                    continue;
+                };
+                if let Some((e0, m0)) = prev {
+                    if m0 > 0.0 && m <= 0.0 {
+                        let (mut lo, mut hi) = (e0, eta);
+                        for _ in 0..60 {
+                            let mid = 0.5 * (lo + hi);
+                            match moment(mid) {
+                                Some(v) if v > 0.0 => lo = mid,
+                                _ => hi = mid,
+                            }
+                        }
+                        internal[k] = 0.5 * (lo + hi);
+                        break;
+                    }
+                }
+                prev = Some((eta, m));
+            }
+        }
+    }
+
     fn report(&self, q: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
         let zero = vec![0.0; q.len()];
         let film = self.film();

@@ -6,6 +6,8 @@
 //! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE]
 //! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--csv FILE] [--png FILE]
 //! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--csv FILE] [--png FILE]
+//! rotor simulate [MODEL.toml] (--rpm N | --ramp-rpm A:B | --speed-csv FILE) [--duration S] [--step S]
+//!                [--output-step S] [--ramp-time S] [--no-gravity] [--csv FILE] [--plots PREFIX]
 //! ```
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
 //! `coefficients`, the reference plain short bearing).
@@ -18,12 +20,16 @@ use clap::{Args, Parser, Subcommand};
 
 use rotor_bearing::analysis::campbell::{campbell, critical_speeds};
 use rotor_bearing::analysis::linear::{node_xy, static_deflection};
-use rotor_bearing::analysis::modal::{ModalOptions, modes};
+use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
+use rotor_bearing::analysis::spectrum::{frequency_grid, full_spectrum};
 use rotor_bearing::bearing::equilibrium::coefficient_curve;
 use rotor_bearing::bearing::{BearingKind, PlainBearing};
 use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::model::RotorModel;
-use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png, coefficients_png};
+use rotor_bearing::plot::{
+    RAD_S_TO_RPM, campbell_png, coefficients_png, orbits_png, spectrum_png, waterfall_png,
+};
+use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record};
 
 #[derive(Parser)]
 #[command(
@@ -53,6 +59,9 @@ enum Command {
     Static {
         #[command(flatten)]
         model: ModelArg,
+        /// Spin speed (rpm): fluid-film bearings carry load only when turning.
+        #[arg(long, default_value_t = 0.0)]
+        rpm: f64,
         /// Write node displacements to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
@@ -90,6 +99,42 @@ enum Command {
         /// Draw the diagram to this PNG file.
         #[arg(long)]
         png: Option<PathBuf>,
+    },
+    /// Time simulation (Newmark + Newton–Raphson) with nonlinear bearings: CSV of
+    /// bearing and probe outputs, orbit and full-spectrum plots.
+    Simulate {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Constant spin speed (rpm).
+        #[arg(long, conflicts_with_all = ["ramp_rpm", "speed_csv"])]
+        rpm: Option<f64>,
+        /// Linear run-up or coast-down FROM:TO (rpm) over the whole duration.
+        #[arg(long, conflicts_with = "speed_csv")]
+        ramp_rpm: Option<String>,
+        /// Speed table: CSV with columns time_s,speed_rpm (header line optional).
+        #[arg(long)]
+        speed_csv: Option<PathBuf>,
+        /// Simulated time (s).
+        #[arg(long, default_value_t = 1.0)]
+        duration: f64,
+        /// Internal time step (s).
+        #[arg(long, default_value_t = 1e-4)]
+        step: f64,
+        /// Output interval (s); defaults to the internal step, at least 1/20 000 of the duration.
+        #[arg(long)]
+        output_step: Option<f64>,
+        /// Unbalance ramp time constant (s), 0 for none.
+        #[arg(long, default_value_t = 0.0)]
+        ramp_time: f64,
+        /// Switch gravity off.
+        #[arg(long)]
+        no_gravity: bool,
+        /// Write the outputs to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Write PREFIX_orbits.png and PREFIX_spectrum.png (last half of the run).
+        #[arg(long)]
+        plots: Option<String>,
     },
     /// Dimensionless stiffness and damping of a hydrodynamic bearing against
     /// eccentricity ratio (paper Fig. 3), from equilibria under a swept load.
@@ -153,9 +198,23 @@ fn run(cli: Cli) -> Result<(), String> {
             let rotor = load(&model)?;
             print!("{}", info(&rotor));
         }
-        Command::Static { model, csv } => {
+        Command::Static { model, rpm, csv } => {
             let rotor = load(&model)?;
-            let q = static_deflection(&rotor).map_err(|e| e.to_string())?;
+            let q = if rotor.nonlinear_bearings.is_empty() {
+                static_deflection(&rotor).map_err(|e| e.to_string())?
+            } else {
+                let name = rotor.model.name.clone();
+                let mut sim = Simulator::new(
+                    rotor.clone_model().map_err(|e| e.to_string())?,
+                    SolverOptions::default(),
+                )
+                .map_err(|e| e.to_string())?;
+                sim.set_speed(rpm / RAD_S_TO_RPM, 0.0)
+                    .map_err(|e| e.to_string())?;
+                sim.settle_static()
+                    .map_err(|e| format!("{name} at {rpm} rpm: {e}"))?;
+                rotor.dofs.expand(&sim.state().u)
+            };
             let mut out = String::from("node,z_m,x_m,y_m,rx_rad,ry_rad\n");
             for (i, z) in rotor.model.node_z.iter().enumerate() {
                 let d = &q[4 * i..4 * i + 4];
@@ -199,7 +258,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 modes: count,
                 ..ModalOptions::default()
             };
-            let ms = modes(&rotor, speed, &options).map_err(|e| e.to_string())?;
+            let ms = modes_at(&rotor, speed, &options).map_err(|e| e.to_string())?;
             let mut out = String::from(
                 "mode,speed_rpm,damped_frequency_rad_s,damped_frequency_hz,natural_frequency_rad_s,damping_ratio,log_decrement,whirl\n",
             );
@@ -250,7 +309,9 @@ fn run(cli: Cli) -> Result<(), String> {
                 modes: count,
                 ..ModalOptions::default()
             };
-            let speeds: Vec<f64> = (0..=steps)
+            // Fluid-film bearings have no coefficients at standstill: start one step up.
+            let first = usize::from(!rotor.nonlinear_bearings.is_empty());
+            let speeds: Vec<f64> = (first..=steps)
                 .map(|k| max_rpm / RAD_S_TO_RPM * k as f64 / steps as f64)
                 .collect();
             let diagram = campbell(&rotor, &speeds, &options).map_err(|e| e.to_string())?;
@@ -309,6 +370,261 @@ fn run(cli: Cli) -> Result<(), String> {
             csv,
             png,
         } => coefficients(model, bearing, rpm, points, csv, png)?,
+        Command::Simulate {
+            model,
+            rpm,
+            ramp_rpm,
+            speed_csv,
+            duration,
+            step,
+            output_step,
+            ramp_time,
+            no_gravity,
+            csv,
+            plots,
+        } => {
+            let profile = speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
+            let rotor = load(&model)?;
+            let options = SolverOptions {
+                time_step: step,
+                unbalance_ramp_time: ramp_time,
+                gravity: !no_gravity,
+                ..SolverOptions::default()
+            };
+            let output_step = output_step.unwrap_or(step.max(duration / 20_000.0));
+            simulate(rotor, options, &profile, duration, output_step, csv, plots)?;
+        }
+    }
+    Ok(())
+}
+
+fn speed_profile(
+    rpm: Option<f64>,
+    ramp: Option<&str>,
+    table: Option<&Path>,
+    duration: f64,
+) -> Result<SpeedProfile, String> {
+    let to_rad = 1.0 / RAD_S_TO_RPM;
+    match (rpm, ramp, table) {
+        (Some(r), None, None) => Ok(SpeedProfile::Constant(r * to_rad)),
+        (None, Some(text), None) => {
+            let parts: Vec<&str> = text.split(':').collect();
+            let parse = |s: &str| {
+                s.trim().parse::<f64>().map_err(|_| {
+                    format!("--ramp-rpm {text:?}: {s:?} is not a number (expected FROM:TO)")
+                })
+            };
+            if parts.len() != 2 {
+                return Err(format!("--ramp-rpm {text:?}: expected FROM:TO in rpm"));
+            }
+            Ok(SpeedProfile::Ramp {
+                from: parse(parts[0])? * to_rad,
+                to: parse(parts[1])? * to_rad,
+                duration,
+            })
+        }
+        (None, None, Some(path)) => {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+            let mut points = Vec::new();
+            for (k, line) in text.lines().enumerate() {
+                let line = line.trim();
+                if line.is_empty() || line.starts_with('#') {
+                    continue;
+                }
+                let cols: Vec<&str> = line.split(',').collect();
+                let parsed: Option<(f64, f64)> = match cols.as_slice() {
+                    [a, b] => a.trim().parse().ok().zip(b.trim().parse().ok()),
+                    _ => None,
+                };
+                match parsed {
+                    Some((t, w)) => points.push((t, w * to_rad)),
+                    None if k == 0 => {}
+                    None => {
+                        return Err(format!(
+                            "{}:{}: expected two numbers time_s,speed_rpm, got {line:?}",
+                            path.display(),
+                            k + 1
+                        ));
+                    }
+                }
+            }
+            let profile = SpeedProfile::Table(points);
+            profile
+                .validate()
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            Ok(profile)
+        }
+        _ => Err("give exactly one of --rpm, --ramp-rpm, --speed-csv".into()),
+    }
+}
+
+fn simulate(
+    rotor: Rotor,
+    options: SolverOptions,
+    profile: &SpeedProfile,
+    duration: f64,
+    output_step: f64,
+    csv: Option<PathBuf>,
+    plots: Option<String>,
+) -> Result<(), String> {
+    let model = rotor.model.clone();
+    let mut sim = Simulator::new(rotor, options).map_err(|e| e.to_string())?;
+    let (w0, _) = profile.at(0.0);
+    sim.set_speed(w0, 0.0).map_err(|e| e.to_string())?;
+    sim.settle_static()
+        .map_err(|e| format!("{}: {e}", model.name))?;
+    let started = std::time::Instant::now();
+    let mut shown = 0;
+    let terminal = std::io::IsTerminal::is_terminal(&std::io::stderr());
+    let records = record(&mut sim, profile, duration, output_step, |f| {
+        let pct = (f * 100.0) as usize;
+        if terminal && pct >= shown + 5 {
+            shown = pct - pct % 5;
+            eprint!("\rsimulating {}: {shown:3}%", model.name);
+        }
+    })
+    .map_err(|e| format!("{}: {e}", model.name))?;
+    eprintln!(
+        "{}simulated {} s of {} in {:.2} s wall-clock ({:?})",
+        if terminal { "\r" } else { "" },
+        duration,
+        model.name,
+        started.elapsed().as_secs_f64(),
+        sim.stats()
+    );
+    let mut out = String::from("time_s,speed_rpm,spin_angle_rad");
+    for b in &model.bearings {
+        let n = &b.name;
+        write!(
+            out,
+            ",{n}_x_m,{n}_y_m,{n}_fx_N,{n}_fy_N,{n}_eccentricity,{n}_friction_torque_Nm"
+        )
+        .ok();
+    }
+    for p in &model.probes {
+        write!(out, ",{0}_x_m,{0}_y_m", p.name).ok();
+    }
+    out.push_str(",friction_torque_Nm\n");
+    for o in &records {
+        write!(
+            out,
+            "{},{},{}",
+            o.time,
+            o.speed * RAD_S_TO_RPM,
+            o.spin_angle
+        )
+        .ok();
+        for b in &o.bearings {
+            write!(
+                out,
+                ",{:e},{:e},{:e},{:e},{},{}",
+                b.x, b.y, b.fx, b.fy, b.report.eccentricity, b.report.friction_torque
+            )
+            .ok();
+        }
+        for p in &o.probes {
+            write!(out, ",{:e},{:e}", p.x, p.y).ok();
+        }
+        writeln!(out, ",{}", o.friction_torque).ok();
+    }
+    match csv {
+        Some(path) => write_file(&path, &out)?,
+        None if plots.is_none() => print!("{out}"),
+        None => {}
+    }
+    if let Some(prefix) = plots {
+        // The last half of the run: settled orbits and their spectra.
+        let tail = &records[records.len() / 2..];
+        let t: Vec<f64> = tail.iter().map(|o| o.time).collect();
+        let mut orbits = Vec::new();
+        for (k, b) in model.bearings.iter().enumerate() {
+            orbits.push((
+                format!("bearing {}", b.name),
+                tail.iter().map(|o| o.bearings[k].x).collect::<Vec<_>>(),
+                tail.iter().map(|o| o.bearings[k].y).collect::<Vec<_>>(),
+            ));
+        }
+        for (k, p) in model.probes.iter().enumerate() {
+            orbits.push((
+                format!("probe {}", p.name),
+                tail.iter().map(|o| o.probes[k].x).collect(),
+                tail.iter().map(|o| o.probes[k].y).collect(),
+            ));
+        }
+        let path = PathBuf::from(format!("{prefix}_orbits.png"));
+        orbits_png(
+            &path,
+            &format!("Orbits: {} (last half of the run)", model.name),
+            &orbits,
+            None,
+        )
+        .map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
+        let mean_speed = tail.iter().map(|o| o.speed).sum::<f64>() / tail.len() as f64;
+        let f_spin = mean_speed / (2.0 * std::f64::consts::PI);
+        let f_max = (2.5 * f_spin).max(1.0).min(0.5 / output_step);
+        let freqs = frequency_grid(-f_max, f_max, 1601);
+        let spectra: Vec<(String, Vec<f64>)> = orbits
+            .iter()
+            .map(|(name, x, y)| (name.clone(), full_spectrum(&t, x, y, &freqs)))
+            .collect();
+        let path = PathBuf::from(format!("{prefix}_spectrum.png"));
+        let markers = vec![
+            ("1×".to_string(), f_spin),
+            ("0.5×".to_string(), 0.5 * f_spin),
+            ("−1×".to_string(), -f_spin),
+        ];
+        spectrum_png(
+            &path,
+            &format!("Full spectrum: {}", model.name),
+            &freqs,
+            &spectra,
+            &markers,
+        )
+        .map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
+        // Waterfall over the whole run, of the first probe (else the first bearing).
+        let pick = |o: &rotor_bearing::solver::Outputs| match o.probes.first() {
+            Some(p) => (p.x, p.y),
+            None => (o.bearings[0].x, o.bearings[0].y),
+        };
+        let windows = 40.min(records.len() / 64).max(1);
+        let len = records.len() / windows;
+        let top_speed = records.iter().map(|o| o.speed.abs()).fold(0.0, f64::max);
+        let f_top = (1.5 * top_speed / (2.0 * std::f64::consts::PI))
+            .max(1.0)
+            .min(0.5 / output_step);
+        let wf_freqs = frequency_grid(-f_top, f_top, 801);
+        let mut rows = Vec::new();
+        println!("window  speed_rpm  dominant_Hz  ratio  amplitude_um");
+        for w in 0..windows {
+            let chunk = &records[w * len..(w + 1) * len];
+            let t: Vec<f64> = chunk.iter().map(|o| o.time).collect();
+            let (x, y): (Vec<f64>, Vec<f64>) = chunk.iter().map(pick).unzip();
+            let amps = full_spectrum(&t, &x, &y, &wf_freqs);
+            let speed = chunk.iter().map(|o| o.speed).sum::<f64>() / len as f64;
+            if let Some((f, a)) =
+                rotor_bearing::analysis::spectrum::peak_frequency(&wf_freqs, &amps)
+            {
+                let ratio = f * 2.0 * std::f64::consts::PI / speed;
+                println!(
+                    "{w:6} {:10.1} {f:12.3} {ratio:6.3} {:12.4}",
+                    speed * RAD_S_TO_RPM,
+                    a * 1e6
+                );
+            }
+            rows.push((speed * RAD_S_TO_RPM, amps));
+        }
+        let path = PathBuf::from(format!("{prefix}_waterfall.png"));
+        waterfall_png(
+            &path,
+            &format!("Waterfall: {}", model.name),
+            &wf_freqs,
+            &rows,
+        )
+        .map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
     }
     Ok(())
 }

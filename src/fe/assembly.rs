@@ -208,6 +208,11 @@ impl Rotor {
         self.dofs.free_count()
     }
 
+    /// A freshly assembled copy (bearing objects are not clonable).
+    pub fn clone_model(&self) -> Result<Self, AssemblyError> {
+        Self::new(self.model.clone())
+    }
+
     /// Unbalance force amplitude vector for synchronous excitation at unit speed²:
     /// complex `(F_x, F_y) = m e (1, −i) e^{i φ}` per plane, so that at speed `Ω`
     /// the force is `Re(Ω² F e^{iΩt})`.

@@ -36,8 +36,10 @@
 //! unconverged state is never returned.
 
 mod dense;
+pub mod run;
 mod simulator;
 
+pub use run::{SpeedProfile, record};
 pub use simulator::{
     BearingOutput, Outputs, ProbeOutput, SimState, Simulator, SolverError, SolverOptions, StepStats,
 };

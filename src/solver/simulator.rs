@@ -29,7 +29,7 @@ impl Default for SolverOptions {
         Self {
             time_step: 1e-4,
             tolerance: 1e-8,
-            max_iterations: 25,
+            max_iterations: 50,
             max_step_cuts: 10,
             unbalance_ramp_time: 0.0,
             gravity: true,
@@ -459,7 +459,13 @@ impl Simulator {
         }
         let mut u = self.state.u.clone();
         let mut p = self.state.p.clone();
+        for site in &self.sites {
+            let journal = [u[site.journal[0]], u[site.journal[1]]];
+            let range = site.offset..site.offset + site.internal;
+            site.bearing.guess_internal(journal, speed, &mut p[range]);
+        }
         let mut residual = self.static_residual(&u, &p, speed)?;
+        let mut absolute = self.static_absolute();
         for _ in 0..100 {
             if residual <= tol {
                 self.state.u = u;
@@ -497,10 +503,12 @@ impl Simulator {
                 let trial_u: Vec<f64> = u.iter().zip(&du).map(|(a, d)| a + t * d).collect();
                 let trial_p: Vec<f64> = p.iter().zip(&dp).map(|(a, d)| a + t * d).collect();
                 if let Ok(r) = self.static_residual(&trial_u, &trial_p, speed) {
-                    if r < residual {
+                    let a = self.static_absolute();
+                    if a < absolute {
                         u = trial_u;
                         p = trial_p;
                         residual = r;
+                        absolute = a;
                         accepted = true;
                         break;
                     }
@@ -555,12 +563,21 @@ impl Simulator {
             for k in 0..site.internal {
                 self.work.rp[site.offset + k] = site.eval.force[2 + k];
             }
+            // Each pad's own film force sets the scale of its moment balance.
+            for k in 0..site.internal {
+                largest = largest.max(site.eval.k(2 + k, 2 + k).abs() * self.length_scale);
+            }
         }
         Ok(largest)
     }
 
     /// Static residual `f_g + E F_b − K u` (into `work.r`) and pad residual (into
     /// `work.rp`), relative to the largest force term.
+    /// Largest absolute static residual (rotor and pads) of the last evaluation.
+    fn static_absolute(&self) -> f64 {
+        inf_norm(&self.work.r).max(inf_norm(&self.work.rp))
+    }
+
     fn static_residual(&mut self, u: &[f64], p: &[f64], speed: f64) -> Result<f64, SolverError> {
         self.rotor.stiffness.mul_vec(u, &mut self.work.mv)?;
         let mut scale = inf_norm(&self.work.mv).max(inf_norm(&self.work.f_ext));
@@ -899,17 +916,19 @@ impl Simulator {
             }
             let stalled = iteration > 0 && residual > 0.7 * last;
             last = residual;
+            // A stalled modified Newton gets the current bearing Jacobian (cheap: it
+            // lives on the few bearing DOFs) and, once per step, `A` at the current speed.
             let mut refresh_now = false;
-            if stalled && !refreshed {
+            if stalled {
+                refresh_now = !refreshed;
                 refreshed = true;
-                refresh_now = true;
                 jacobian_current = false;
                 self.stats.refreshes += 1;
             }
             let rebuild = match factor.as_ref() {
                 None => true,
                 Some(f) => {
-                    f.step != h
+                    (f.step - h).abs() > 1e-9 * h
                         || speed_band_changed(f.speed, speed1)
                         || (refresh_now && f.speed != speed1)
                 }
