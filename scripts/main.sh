@@ -13,4 +13,10 @@ $rotor static --csv out/static_deflection.csv
 $rotor modes --rpm 4000 --modes 8 --csv out/modes_4000rpm.csv
 $rotor campbell --max-rpm 6000 --steps 60 --modes 8 --csv out/campbell.csv --png out/campbell.png
 $rotor coefficients --csv out/plain_bearing_coefficients.csv --png out/plain_bearing_coefficients.png
-echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png)"
+# Nonlinear transient: a Jeffcott rotor on plain bearings run up through oil whirl into oil whip.
+$rotor simulate models/jeffcott.toml --ramp-rpm 3000:16000 --duration 8 --step 1e-4 --output-step 2e-4 \
+  --csv out/jeffcott_run_up.csv --plots out/jeffcott_run_up > out/jeffcott_run_up_windows.txt
+# The hydro unit at 150 rpm on tilting-pad guide bearings.
+$rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --output-step 5e-3 --ramp-time 2 \
+  --csv out/hydro_unit.csv --plots out/hydro_unit > out/hydro_unit_windows.txt
+echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, jeffcott_run_up*, hydro_unit*)"
