@@ -81,6 +81,7 @@ fn steady_unbalance_response_matches_frequency_domain() {
     ] {
         let amp = (got.norm() - want.norm()).abs() / want.norm();
         let phase = (got / want).arg().to_degrees().abs();
+        eprintln!("steady orbit: amplitude error {amp:.2e}, phase error {phase:.3e}°");
         assert!(
             amp < 5e-3,
             "amplitude {} vs {} ({amp:e})",
@@ -165,6 +166,9 @@ fn energy_and_period(speed: f64) {
             prev = (sim.time(), x);
             max_drift = max_drift.max((energy(&sim) - e0).abs() / e0);
         }
+        eprintln!(
+            "Ω = {speed:.1} rad/s, {steps_per_period} steps/period: energy drift {max_drift:.2e}"
+        );
         assert!(max_drift < 1e-9, "energy drift {max_drift:e}");
         let measured =
             (crossings[crossings.len() - 1] - crossings[0]) / (crossings.len() - 1) as f64;
@@ -178,6 +182,7 @@ fn energy_and_period(speed: f64) {
             "{period_errors:?} vs {theory}"
         );
         let order = (period_errors[0] / period_errors[1]).log2();
+        eprintln!("period errors {period_errors:?} (theory {theory:.4e}), order {order:.3}");
         assert!(
             (1.9..2.1).contains(&order),
             "period errors {period_errors:?}, order {order}"
