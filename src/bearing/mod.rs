@@ -183,6 +183,20 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
     }
 }
 
+/// Force and 2×2 Jacobians of a bearing without internal coordinates at a
+/// journal state (for journal-only bearings and tests).
+pub fn journal_force(
+    bearing: &dyn Bearing,
+    state: &JournalState,
+    speed: f64,
+) -> Result<BearingForce, BearingError> {
+    let mut out = BearingEval::new(2);
+    let q = [state.position.x, state.position.y];
+    let qd = [state.velocity.x, state.velocity.y];
+    bearing.evaluate(&q, &qd, speed, &mut out)?;
+    Ok(out.journal())
+}
+
 /// Check lengths and finiteness of a generalized state.
 pub(crate) fn check_state(
     n: usize,

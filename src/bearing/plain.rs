@@ -146,11 +146,7 @@ impl PlainBearing {
         state: &JournalState,
         speed: f64,
     ) -> Result<BearingForce, BearingError> {
-        let mut out = BearingEval::new(2);
-        let q = [state.position.x, state.position.y];
-        let qd = [state.velocity.x, state.velocity.y];
-        self.evaluate(&q, &qd, speed, &mut out)?;
-        Ok(out.journal())
+        super::journal_force(self, state, speed)
     }
 
     /// Eccentricity, attitude angle, film thickness and friction at `state`, with

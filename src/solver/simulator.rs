@@ -422,12 +422,7 @@ impl Simulator {
                 "unbalance {magnitude} kg·m must be finite and not negative"
             )));
         }
-        let slot = self
-            .state
-            .unbalance
-            .get_mut(plane)
-            .ok_or_else(|| SolverError::Input(format!("no unbalance plane {plane}")))?;
-        *slot = magnitude;
+        *plane_slot(&mut self.state.unbalance, plane)? = magnitude;
         Ok(())
     }
 
@@ -438,12 +433,7 @@ impl Simulator {
                 "unbalance phase {phase} must be finite"
             )));
         }
-        let slot = self
-            .state
-            .unbalance_phase
-            .get_mut(plane)
-            .ok_or_else(|| SolverError::Input(format!("no unbalance plane {plane}")))?;
-        *slot = phase;
+        *plane_slot(&mut self.state.unbalance_phase, plane)? = phase;
         Ok(())
     }
 
@@ -1082,6 +1072,15 @@ impl Simulator {
             friction_torque,
         })
     }
+}
+
+fn plane_slot(values: &mut [f64], plane: usize) -> Result<&mut f64, SolverError> {
+    let count = values.len();
+    values.get_mut(plane).ok_or_else(|| {
+        SolverError::Input(format!(
+            "no unbalance plane {plane} (the model has {count})"
+        ))
+    })
 }
 
 fn speed_band_changed(reference: f64, speed: f64) -> bool {
