@@ -10,6 +10,7 @@
 pub mod analysis;
 pub mod bearing;
 pub mod fe;
+pub mod fmi2;
 pub mod linalg;
 pub mod model;
 pub mod plot;

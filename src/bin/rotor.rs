@@ -136,6 +136,14 @@ enum Command {
         #[arg(long)]
         plots: Option<String>,
     },
+    /// Write the generated parts of an FMU for MODEL into DIR: modelDescription.xml,
+    /// resources/model.toml and documentation/index.html (fmu_pack.sh adds the binary).
+    FmuStage {
+        /// Model file.
+        model: PathBuf,
+        /// Staging directory.
+        dir: PathBuf,
+    },
     /// Dimensionless stiffness and damping of a hydrodynamic bearing against
     /// eccentricity ratio (paper Fig. 3), from equilibria under a swept load.
     Coefficients {
@@ -370,6 +378,23 @@ fn run(cli: Cli) -> Result<(), String> {
             csv,
             png,
         } => coefficients(model, bearing, rpm, points, csv, png)?,
+        Command::FmuStage { model, dir } => {
+            let m = RotorModel::from_file(&model).map_err(|e| e.to_string())?;
+            let text =
+                std::fs::read_to_string(&model).map_err(|e| format!("{}: {e}", model.display()))?;
+            let (xml, guid) = rotor_bearing::fmi2::xml::model_description(&m);
+            for sub in ["resources", "documentation", "binaries/linux64"] {
+                std::fs::create_dir_all(dir.join(sub))
+                    .map_err(|e| format!("{}: {e}", dir.join(sub).display()))?;
+            }
+            write_file(&dir.join("modelDescription.xml"), &xml)?;
+            write_file(&dir.join("resources/model.toml"), &text)?;
+            write_file(
+                &dir.join("documentation/index.html"),
+                &rotor_bearing::fmi2::docs::index_html(&m),
+            )?;
+            println!("{} {guid}", m.name);
+        }
         Command::Simulate {
             model,
             rpm,

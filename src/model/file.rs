@@ -22,6 +22,9 @@ pub struct ModelFile {
     /// that does not give its own.
     #[serde(default)]
     pub axial_force: Option<f64>,
+    /// Nominal spin speed (rpm): the start value of the speed input of an FMU.
+    #[serde(default)]
+    pub speed_rpm: Option<f64>,
     /// Axial position of the first node (m).
     #[serde(default)]
     pub start_z: Option<f64>,

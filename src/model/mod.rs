@@ -115,6 +115,8 @@ pub struct RotorModel {
     pub supports: Vec<Support>,
     /// Gravity vector (m/s²), `z` along the shaft.
     pub gravity: [f64; 3],
+    /// Nominal spin speed (rad/s), 0 when the file gives none.
+    pub nominal_speed: f64,
 }
 
 impl RotorModel {
@@ -754,7 +756,11 @@ fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError> {
         ctx.finite(root.key("gravity").index(k), *g)?;
     }
 
+    let nominal_speed = ctx.finite(root.key("speed_rpm"), raw.speed_rpm.unwrap_or(0.0))?
+        * std::f64::consts::PI
+        / 30.0;
     Ok(RotorModel {
+        nominal_speed,
         name: raw.name,
         description: raw.description,
         source: ctx.source.to_string(),

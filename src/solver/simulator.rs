@@ -60,10 +60,12 @@ pub struct SimState {
     pub speed: f64,
     /// Spin acceleration input (rad/s²): `Ω(t) = speed + speed_rate (t − speed_time)`.
     pub speed_rate: f64,
-    /// Time the speed input refers to (s).
+    /// Time the inputs (speed, unbalance) refer to (s).
     pub speed_time: f64,
-    /// Unbalance of each plane (kg·m).
+    /// Unbalance of each plane at `speed_time` (kg·m).
     pub unbalance: Vec<f64>,
+    /// Rate of change of each plane's unbalance (kg·m/s).
+    pub unbalance_rate: Vec<f64>,
     /// Angular position of each unbalance plane at spin angle 0 (rad).
     pub unbalance_phase: Vec<f64>,
 }
@@ -309,6 +311,7 @@ impl Simulator {
             speed_rate: 0.0,
             speed_time: 0.0,
             unbalance: rotor.model.unbalances.iter().map(|u| u.magnitude).collect(),
+            unbalance_rate: vec![0.0; rotor.model.unbalances.len()],
             unbalance_phase: rotor.model.unbalances.iter().map(|u| u.phase).collect(),
         };
         let work = Work {
@@ -382,6 +385,7 @@ impl Simulator {
             || state.pd.len() != s.pd.len()
             || state.pdd.len() != s.pdd.len()
             || state.unbalance.len() != s.unbalance.len()
+            || state.unbalance_rate.len() != s.unbalance_rate.len()
             || state.unbalance_phase.len() != s.unbalance_phase.len()
         {
             return Err(SolverError::Input(
@@ -402,6 +406,17 @@ impl Simulator {
         self.state.speed + self.state.speed_rate * (t - self.state.speed_time)
     }
 
+    /// Re-base the linearly extrapolated inputs to the current time.
+    fn rebase_inputs(&mut self) {
+        let s = &mut self.state;
+        let dt = s.time - s.speed_time;
+        s.speed += s.speed_rate * dt;
+        for (u, r) in s.unbalance.iter_mut().zip(&s.unbalance_rate) {
+            *u = (*u + r * dt).max(0.0);
+        }
+        s.speed_time = s.time;
+    }
+
     /// Set the spin speed (rad/s) now and its rate of change (rad/s²) from now on.
     pub fn set_speed(&mut self, speed: f64, rate: f64) -> Result<(), SolverError> {
         if !speed.is_finite() || !rate.is_finite() {
@@ -409,20 +424,67 @@ impl Simulator {
                 "speed {speed} rad/s and its rate {rate} rad/s² must be finite"
             )));
         }
+        self.rebase_inputs();
         self.state.speed = speed;
         self.state.speed_rate = rate;
-        self.state.speed_time = self.state.time;
         Ok(())
     }
 
-    /// Set the unbalance (kg·m) of plane `plane` (model order).
+    /// Set the unbalance (kg·m) of plane `plane` (model order), constant from now on.
     pub fn set_unbalance(&mut self, plane: usize, magnitude: f64) -> Result<(), SolverError> {
-        if !(magnitude.is_finite() && magnitude >= 0.0) {
+        self.set_unbalance_ramp(plane, magnitude, 0.0)
+    }
+
+    /// Set the unbalance (kg·m) of plane `plane` now and its rate of change (kg·m/s).
+    pub fn set_unbalance_ramp(
+        &mut self,
+        plane: usize,
+        magnitude: f64,
+        rate: f64,
+    ) -> Result<(), SolverError> {
+        if !(magnitude.is_finite() && magnitude >= 0.0 && rate.is_finite()) {
             return Err(SolverError::Input(format!(
-                "unbalance {magnitude} kg·m must be finite and not negative"
+                "unbalance {magnitude} kg·m must be finite and not negative, its rate {rate} kg·m/s finite"
             )));
         }
+        self.rebase_inputs();
         *plane_slot(&mut self.state.unbalance, plane)? = magnitude;
+        *plane_slot(&mut self.state.unbalance_rate, plane)? = rate;
+        Ok(())
+    }
+
+    /// Change the oil viscosity (Pa·s) of fluid-film bearing `index` (model order).
+    pub fn set_bearing_viscosity(
+        &mut self,
+        index: usize,
+        viscosity: f64,
+    ) -> Result<(), SolverError> {
+        if !(viscosity.is_finite() && viscosity > 0.0) {
+            return Err(SolverError::Input(format!(
+                "viscosity {viscosity} Pa·s must be finite and positive"
+            )));
+        }
+        let placed = self
+            .rotor
+            .model
+            .bearings
+            .get_mut(index)
+            .ok_or_else(|| SolverError::Input(format!("no bearing {index}")))?;
+        match &mut placed.kind {
+            crate::bearing::BearingKind::Plain(b) => b.viscosity = viscosity,
+            crate::bearing::BearingKind::TiltingPad(b) => b.viscosity = viscosity,
+            crate::bearing::BearingKind::Linear { .. } => {
+                return Err(SolverError::Input(format!(
+                    "bearing {} is linear: it has no oil viscosity",
+                    placed.name
+                )));
+            }
+        }
+        let (output, site) = &mut self.output_bearings[index];
+        *output = placed.kind.build();
+        if let Some(k) = site {
+            self.sites[*k].bearing = placed.kind.build();
+        }
         Ok(())
     }
 
@@ -777,8 +839,10 @@ impl Simulator {
         } else {
             1.0
         };
+        let since = t - self.state.speed_time;
         for (k, plane) in self.rotor.model.unbalances.iter().enumerate() {
-            let me = self.state.unbalance[k] * ramp;
+            let me =
+                (self.state.unbalance[k] + self.state.unbalance_rate[k] * since).max(0.0) * ramp;
             let (s, c) = (spin_angle + self.state.unbalance_phase[k]).sin_cos();
             let fx = me * (speed * speed * c + rate * s);
             let fy = me * (speed * speed * s - rate * c);

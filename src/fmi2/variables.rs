@@ -1,0 +1,396 @@
+//! The FMU's variable table, derived from the rotor model: the single source of
+//! the value references, the model description and the runtime bindings.
+//!
+//! Order (and so value references) is fixed: parameters, inputs, outputs, each
+//! in model order. The same function builds the table for `modelDescription.xml`
+//! (packing) and inside the FMU (from the model file in `resources/`), so the
+//! two can never drift apart; a GUID hashed from the description ties them.
+
+use crate::bearing::BearingKind;
+use crate::model::RotorModel;
+
+/// What a variable reads or writes in the simulator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Binding {
+    /// Internal step (s).
+    TimeStep,
+    /// Relative solver tolerance.
+    Tolerance,
+    /// Newton iterations per step attempt (Integer).
+    MaxIterations,
+    /// Unbalance ramp time constant (s).
+    RampTime,
+    /// Gravity on/off (Boolean).
+    Gravity,
+    /// Oil viscosity of model bearing `k` (Pa·s).
+    Viscosity(usize),
+    /// Angular position of unbalance plane `k` (rad).
+    UnbalancePhase(usize),
+    /// Spin speed input (rad/s).
+    Speed,
+    /// Unbalance of plane `k` (kg·m).
+    Unbalance(usize),
+    /// Journal x of bearing `k` (m).
+    BearingX(usize),
+    /// Journal y of bearing `k` (m).
+    BearingY(usize),
+    /// Force x of bearing `k` on the journal (N).
+    BearingFx(usize),
+    /// Force y of bearing `k` on the journal (N).
+    BearingFy(usize),
+    /// Eccentricity ratio of bearing `k`.
+    BearingEccentricity(usize),
+    /// Friction torque of bearing `k` (N·m).
+    BearingFriction(usize),
+    /// Probe `k` x (m).
+    ProbeX(usize),
+    /// Probe `k` y (m).
+    ProbeY(usize),
+    /// Spin angle (rad).
+    SpinAngle,
+    /// Total bearing friction torque (N·m).
+    FrictionTorque,
+}
+
+/// FMI base type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// fmi2Real.
+    Real,
+    /// fmi2Integer.
+    Integer,
+    /// fmi2Boolean.
+    Boolean,
+}
+
+/// FMI causality.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Causality {
+    /// A parameter.
+    Parameter,
+    /// An input.
+    Input,
+    /// An output.
+    Output,
+}
+
+/// FMI variability.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Variability {
+    /// Fixed after initialization.
+    Fixed,
+    /// Changeable between steps.
+    Tunable,
+    /// Continuous in time.
+    Continuous,
+}
+
+/// One scalar variable.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Variable {
+    /// Structured name, e.g. `bearings.generator_guide.x`.
+    pub name: String,
+    /// Value reference (its index in the table).
+    pub value_reference: u32,
+    /// Description with the physics and sign convention.
+    pub description: String,
+    /// Base type.
+    pub kind: Kind,
+    /// Causality.
+    pub causality: Causality,
+    /// Variability.
+    pub variability: Variability,
+    /// SI unit name (declared in `UnitDefinitions`), if any.
+    pub unit: Option<&'static str>,
+    /// Display unit, if any.
+    pub display_unit: Option<&'static str>,
+    /// Start value (parameters and inputs).
+    pub start: Option<f64>,
+    /// What it is bound to.
+    pub binding: Binding,
+    /// Output depends directly on the speed input (film forces and friction).
+    pub feedthrough_speed: bool,
+}
+
+/// An output of a bearing: name suffix, description, unit, display unit, binding.
+type OutputSpec = (
+    &'static str,
+    String,
+    Option<&'static str>,
+    Option<&'static str>,
+    Binding,
+);
+
+/// Defaults of the solver parameters.
+pub const DEFAULT_TIME_STEP: f64 = 1e-3;
+/// Default relative tolerance.
+pub const DEFAULT_TOLERANCE: f64 = 1e-8;
+/// Default Newton iteration limit.
+pub const DEFAULT_MAX_ITERATIONS: f64 = 50.0;
+
+/// The variable table of `model`.
+pub fn variables(model: &RotorModel) -> Vec<Variable> {
+    let mut out: Vec<Variable> = Vec::new();
+    let mut push = |name: String,
+                    description: String,
+                    kind: Kind,
+                    causality: Causality,
+                    variability: Variability,
+                    unit: Option<&'static str>,
+                    display_unit: Option<&'static str>,
+                    start: Option<f64>,
+                    binding: Binding| {
+        let feedthrough_speed = matches!(
+            binding,
+            Binding::BearingFx(_)
+                | Binding::BearingFy(_)
+                | Binding::BearingFriction(_)
+                | Binding::FrictionTorque
+        );
+        out.push(Variable {
+            value_reference: out.len() as u32,
+            name,
+            description,
+            kind,
+            causality,
+            variability,
+            unit,
+            display_unit,
+            start,
+            binding,
+            feedthrough_speed,
+        });
+    };
+    use Causality::*;
+    use Kind::*;
+    use Variability::*;
+    push(
+        "solver.time_step".into(),
+        "Largest internal Newmark time step; each fmi2DoStep is split into equal sub-steps no longer than this".into(),
+        Real,
+        Parameter,
+        Fixed,
+        Some("s"),
+        None,
+        Some(DEFAULT_TIME_STEP),
+        Binding::TimeStep,
+    );
+    push(
+        "solver.tolerance".into(),
+        "Relative tolerance of the Newton-Raphson iterations on residual and increment".into(),
+        Real,
+        Parameter,
+        Fixed,
+        Some("1"),
+        None,
+        Some(DEFAULT_TOLERANCE),
+        Binding::Tolerance,
+    );
+    push(
+        "solver.max_iterations".into(),
+        "Newton-Raphson iterations per step attempt before the step is halved".into(),
+        Integer,
+        Parameter,
+        Fixed,
+        None,
+        None,
+        Some(DEFAULT_MAX_ITERATIONS),
+        Binding::MaxIterations,
+    );
+    push(
+        "unbalance_ramp_time".into(),
+        "Time constant of the unbalance ramp-in 1 - exp(-t/tau); 0 applies the unbalance at once"
+            .into(),
+        Real,
+        Parameter,
+        Fixed,
+        Some("s"),
+        None,
+        Some(0.0),
+        Binding::RampTime,
+    );
+    push(
+        "gravity".into(),
+        "Apply the model's gravity vector".into(),
+        Boolean,
+        Parameter,
+        Fixed,
+        None,
+        None,
+        Some(1.0),
+        Binding::Gravity,
+    );
+    for (k, b) in model.bearings.iter().enumerate() {
+        let mu = match &b.kind {
+            BearingKind::Plain(p) => p.viscosity,
+            BearingKind::TiltingPad(t) => t.viscosity,
+            BearingKind::Linear { .. } => continue,
+        };
+        push(
+            format!("bearings.{}.viscosity", b.name),
+            format!(
+                "Oil dynamic viscosity of bearing {} (node {})",
+                b.name,
+                b.node + 1
+            ),
+            Real,
+            Parameter,
+            Tunable,
+            Some("Pa.s"),
+            None,
+            Some(mu),
+            Binding::Viscosity(k),
+        );
+    }
+    for (k, u) in model.unbalances.iter().enumerate() {
+        push(
+            format!("unbalance.{}.phase", u.name),
+            format!(
+                "Angular position of unbalance plane {} (node {}) at spin angle 0, from +x toward +y",
+                u.name,
+                u.node + 1
+            ),
+            Real,
+            Parameter,
+            Tunable,
+            Some("rad"),
+            Some("deg"),
+            Some(u.phase),
+            Binding::UnbalancePhase(k),
+        );
+    }
+    push(
+        "shaft.speed".into(),
+        "Spin speed of the shaft about +z (input; a first-order input derivative gives a ramp within a step)".into(),
+        Real,
+        Input,
+        Continuous,
+        Some("rad/s"),
+        Some("rpm"),
+        Some(model.nominal_speed),
+        Binding::Speed,
+    );
+    for (k, u) in model.unbalances.iter().enumerate() {
+        push(
+            format!("unbalance.{}", u.name),
+            format!("Unbalance m*e of plane {} (node {})", u.name, u.node + 1),
+            Real,
+            Input,
+            Continuous,
+            Some("kg.m"),
+            None,
+            Some(u.magnitude),
+            Binding::Unbalance(k),
+        );
+    }
+    for (k, b) in model.bearings.iter().enumerate() {
+        let node = b.node + 1;
+        let n = &b.name;
+        let outputs: [OutputSpec; 6] = [
+            (
+                "x",
+                format!("Journal displacement x at bearing {n} (node {node})"),
+                Some("m"),
+                Some("um"),
+                Binding::BearingX(k),
+            ),
+            (
+                "y",
+                format!("Journal displacement y at bearing {n} (node {node})"),
+                Some("m"),
+                Some("um"),
+                Binding::BearingY(k),
+            ),
+            (
+                "fx",
+                format!("Force x of bearing {n} on the journal"),
+                Some("N"),
+                None,
+                Binding::BearingFx(k),
+            ),
+            (
+                "fy",
+                format!("Force y of bearing {n} on the journal"),
+                Some("N"),
+                None,
+                Binding::BearingFy(k),
+            ),
+            (
+                "eccentricity",
+                format!("Eccentricity ratio e/C of bearing {n} (0 for linear bearings)"),
+                Some("1"),
+                None,
+                Binding::BearingEccentricity(k),
+            ),
+            (
+                "friction_torque",
+                format!("Viscous friction torque of bearing {n} on the journal, opposing the spin"),
+                Some("N.m"),
+                None,
+                Binding::BearingFriction(k),
+            ),
+        ];
+        for (suffix, description, unit, display, binding) in outputs {
+            push(
+                format!("bearings.{n}.{suffix}"),
+                description,
+                Real,
+                Output,
+                Continuous,
+                unit,
+                display,
+                None,
+                binding,
+            );
+        }
+    }
+    for (k, p) in model.probes.iter().enumerate() {
+        let node = p.node + 1;
+        push(
+            format!("probes.{}.x", p.name),
+            format!("Displacement x at probe {} (node {node})", p.name),
+            Real,
+            Output,
+            Continuous,
+            Some("m"),
+            Some("um"),
+            None,
+            Binding::ProbeX(k),
+        );
+        push(
+            format!("probes.{}.y", p.name),
+            format!("Displacement y at probe {} (node {node})", p.name),
+            Real,
+            Output,
+            Continuous,
+            Some("m"),
+            Some("um"),
+            None,
+            Binding::ProbeY(k),
+        );
+    }
+    push(
+        "shaft.spin_angle".into(),
+        "Spin angle of the shaft (integral of the speed)".into(),
+        Real,
+        Output,
+        Continuous,
+        Some("rad"),
+        Some("deg"),
+        None,
+        Binding::SpinAngle,
+    );
+    push(
+        "friction_torque".into(),
+        "Sum of the bearings' friction torques on the shaft (for a generator torque balance)"
+            .into(),
+        Real,
+        Output,
+        Continuous,
+        Some("N.m"),
+        None,
+        None,
+        Binding::FrictionTorque,
+    );
+    out
+}
