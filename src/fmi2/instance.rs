@@ -474,7 +474,7 @@ impl Instance {
             return s;
         }
         let now = self.sim.time();
-        if !(current.is_finite() && (current - now).abs() <= 1e-9 * now.abs().max(1.0)) {
+        if self.sim.align_time(current).is_err() {
             return self.report(
                 Status::Error,
                 format!(
@@ -489,7 +489,7 @@ impl Instance {
             );
         }
         self.outputs = None;
-        match self.sim.advance_to(now + step) {
+        match self.sim.advance_to(current + step) {
             Ok(()) => match self.current_outputs() {
                 Ok(_) => Status::Ok,
                 Err(s) => s,
@@ -499,7 +499,7 @@ impl Instance {
                 let reached = self.sim.time();
                 self.report(
                     Status::Discard,
-                    format!("{call} from {now} s by {step} s discarded at {reached} s: {e}. Roll back with fmi2SetFMUstate or reset."),
+                    format!("{call} from {current} s by {step} s discarded at {reached} s: {e}. Roll back with fmi2SetFMUstate or reset."),
                 )
             }
         }
@@ -569,6 +569,7 @@ impl Instance {
                 Phase::StepComplete,
                 Phase::StepFailed,
                 Phase::Terminated,
+                Phase::Error,
             ],
         ) {
             return s;

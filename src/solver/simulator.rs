@@ -401,6 +401,19 @@ impl Simulator {
         self.state.time
     }
 
+    /// Adopt a master's clock `t` that differs from the current time only by
+    /// rounding (≤ 1e-9 relative), so that repeated `t + h` sums cannot drift.
+    pub fn align_time(&mut self, t: f64) -> Result<(), SolverError> {
+        let now = self.state.time;
+        if !(t.is_finite() && (t - now).abs() <= 1e-9 * now.abs().max(1.0)) {
+            return Err(SolverError::Input(format!(
+                "time {t} s is not the simulator's time {now} s"
+            )));
+        }
+        self.state.time = t;
+        Ok(())
+    }
+
     /// Spin speed at time `t` (rad/s).
     pub fn speed_at(&self, t: f64) -> f64 {
         self.state.speed + self.state.speed_rate * (t - self.state.speed_time)

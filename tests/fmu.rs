@@ -1,0 +1,658 @@
+//! The FMU binary (`librotor_bearing.so`) loaded and driven through its C ABI by an
+//! independent importer (`fmi-sys`' libloading bindings), as a master would.
+
+#![allow(non_snake_case)]
+
+use std::collections::{BTreeSet, HashSet};
+use std::ffi::{CStr, CString, c_char, c_void};
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+
+use fmi_sys::fmi2::*;
+use quick_xml::Reader;
+use quick_xml::events::Event;
+
+use rotor_bearing::fmi2::xml::model_description;
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::solver::{Simulator, SolverOptions};
+
+static LOG: Mutex<Vec<(u32, String)>> = Mutex::new(Vec::new());
+
+/// Logger with the fixed arguments of the variadic `fmi2CallbackLogger` (the
+/// messages carry no format arguments; extra variadic slots are ignored by the C ABI).
+extern "C" fn logger(
+    _env: *mut c_void,
+    _name: fmi2String,
+    status: fmi2Status,
+    _category: fmi2String,
+    message: fmi2String,
+) {
+    let text = unsafe { CStr::from_ptr(message) }
+        .to_string_lossy()
+        .replace("%%", "%");
+    LOG.lock().unwrap().push((status, text));
+}
+
+fn callbacks() -> fmi2CallbackFunctions {
+    fmi2CallbackFunctions {
+        // SAFETY: same fixed-argument prefix; see `logger`.
+        logger: unsafe {
+            std::mem::transmute::<
+                extern "C" fn(*mut c_void, fmi2String, fmi2Status, fmi2String, fmi2String),
+                fmi2CallbackLogger,
+            >(logger)
+        },
+        allocateMemory: None,
+        freeMemory: None,
+        stepFinished: None,
+        componentEnvironment: std::ptr::null_mut(),
+    }
+}
+
+fn library_path() -> PathBuf {
+    let exe = std::env::current_exe().unwrap();
+    exe.parent()
+        .unwrap()
+        .parent()
+        .unwrap()
+        .join("librotor_bearing.so")
+}
+
+fn model_path() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/hydro_unit.toml")
+}
+
+/// A resources directory holding the model, as inside an unpacked FMU.
+fn resources(tag: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("fmu_resources_{tag}"));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::copy(model_path(), dir.join("model.toml")).unwrap();
+    dir
+}
+
+struct Fmu {
+    lib: Fmi2Binding,
+    c: fmi2Component,
+    vars: Vec<rotor_bearing::fmi2::variables::Variable>,
+    _callbacks: Box<fmi2CallbackFunctions>,
+}
+
+impl Fmu {
+    fn new(name: &str) -> Self {
+        Self::try_new(name, None).expect("instantiation failed")
+    }
+
+    fn try_new(name: &str, guid: Option<&str>) -> Option<Self> {
+        let lib = unsafe { Fmi2Binding::new(library_path()) }.expect("load librotor_bearing.so");
+        let model = RotorModel::from_file(&model_path()).unwrap();
+        let (_, real_guid) = model_description(&model);
+        let guid = CString::new(guid.unwrap_or(&real_guid)).unwrap();
+        let uri = CString::new(format!("file://{}", resources(name).display())).unwrap();
+        let cname = CString::new(name).unwrap();
+        let cb = Box::new(callbacks());
+        let c = unsafe {
+            lib.fmi2Instantiate(
+                cname.as_ptr(),
+                fmi2Type_fmi2CoSimulation,
+                guid.as_ptr(),
+                uri.as_ptr(),
+                &*cb,
+                0,
+                1,
+            )
+        };
+        if c.is_null() {
+            return None;
+        }
+        Some(Self {
+            lib,
+            c,
+            vars: rotor_bearing::fmi2::variables::variables(&model),
+            _callbacks: cb,
+        })
+    }
+
+    fn vr(&self, name: &str) -> u32 {
+        self.vars
+            .iter()
+            .find(|v| v.name == name)
+            .unwrap_or_else(|| panic!("no variable {name}"))
+            .value_reference
+    }
+
+    fn init(&self) {
+        unsafe {
+            assert_eq!(
+                self.lib.fmi2SetupExperiment(self.c, 0, 0.0, 0.0, 0, 0.0),
+                fmi2Status_fmi2OK
+            );
+            assert_eq!(
+                self.lib.fmi2EnterInitializationMode(self.c),
+                fmi2Status_fmi2OK
+            );
+            assert_eq!(
+                self.lib.fmi2ExitInitializationMode(self.c),
+                fmi2Status_fmi2OK
+            );
+        }
+    }
+
+    fn set(&self, name: &str, value: f64) -> fmi2Status {
+        let vr = self.vr(name);
+        unsafe { self.lib.fmi2SetReal(self.c, &vr, 1, &value) }
+    }
+
+    fn get(&self, names: &[&str]) -> Vec<f64> {
+        let refs: Vec<u32> = names.iter().map(|n| self.vr(n)).collect();
+        let mut out = vec![0.0; refs.len()];
+        let s = unsafe {
+            self.lib
+                .fmi2GetReal(self.c, refs.as_ptr(), refs.len(), out.as_mut_ptr())
+        };
+        assert_eq!(s, fmi2Status_fmi2OK);
+        out
+    }
+
+    fn step(&self, t: f64, h: f64) -> fmi2Status {
+        unsafe { self.lib.fmi2DoStep(self.c, t, h, 1) }
+    }
+}
+
+impl Drop for Fmu {
+    fn drop(&mut self) {
+        unsafe { self.lib.fmi2FreeInstance(self.c) };
+    }
+}
+
+const OUTPUTS: [&str; 6] = [
+    "bearings.generator_guide.x",
+    "bearings.generator_guide.y",
+    "bearings.generator_guide.fx",
+    "bearings.turbine_guide.fy",
+    "probes.pickup_2.x",
+    "friction_torque",
+];
+
+#[test]
+fn model_description_at_repo_root_is_the_generated_one() {
+    let model = RotorModel::from_file(&model_path()).unwrap();
+    let (xml, _) = model_description(&model);
+    let file = std::fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("modelDescription.xml"),
+    )
+    .unwrap();
+    assert!(
+        xml == file,
+        "modelDescription.xml is stale: regenerate it with `rotor fmu-stage models/hydro_unit.toml DIR`"
+    );
+}
+
+#[test]
+fn model_description_is_consistent() {
+    let model = RotorModel::from_file(&model_path()).unwrap();
+    let (xml, guid) = model_description(&model);
+    let mut reader = Reader::from_str(&xml);
+    let (mut vrs, mut names, mut units, mut used) =
+        (Vec::new(), HashSet::new(), HashSet::new(), BTreeSet::new());
+    let mut display = HashSet::new();
+    loop {
+        match reader.read_event().unwrap() {
+            Event::Eof => break,
+            Event::Start(e) | Event::Empty(e) => {
+                let attr = |k: &str| {
+                    e.try_get_attribute(k)
+                        .unwrap()
+                        .map(|a| a.unescape_value().unwrap().into_owned())
+                };
+                match e.name().as_ref() {
+                    b"ScalarVariable" => {
+                        vrs.push(attr("valueReference").unwrap().parse::<u32>().unwrap());
+                        assert!(names.insert(attr("name").unwrap()), "duplicate name");
+                        assert!(!attr("description").unwrap().is_empty());
+                    }
+                    b"Unit" => {
+                        units.insert(attr("name").unwrap());
+                    }
+                    b"DisplayUnit" => {
+                        display.insert(attr("name").unwrap());
+                    }
+                    b"Real" => {
+                        if let Some(u) = attr("unit") {
+                            used.insert(u);
+                        }
+                        if let Some(d) = attr("displayUnit") {
+                            assert!(display.contains(&d), "display unit {d} not declared");
+                        }
+                    }
+                    b"fmiModelDescription" => assert_eq!(attr("guid").unwrap(), guid),
+                    _ => {}
+                }
+            }
+            _ => {}
+        }
+    }
+    assert_eq!(
+        vrs,
+        (0..vrs.len() as u32).collect::<Vec<_>>(),
+        "value references are 0..n in order"
+    );
+    for u in &used {
+        assert!(units.contains(u), "unit {u} not declared");
+    }
+}
+
+#[test]
+fn exports_every_fmi2_function() {
+    let lib = unsafe { libloading::Library::new(library_path()) }.unwrap();
+    for name in [
+        "fmi2GetTypesPlatform",
+        "fmi2GetVersion",
+        "fmi2SetDebugLogging",
+        "fmi2Instantiate",
+        "fmi2FreeInstance",
+        "fmi2SetupExperiment",
+        "fmi2EnterInitializationMode",
+        "fmi2ExitInitializationMode",
+        "fmi2Terminate",
+        "fmi2Reset",
+        "fmi2GetReal",
+        "fmi2GetInteger",
+        "fmi2GetBoolean",
+        "fmi2GetString",
+        "fmi2SetReal",
+        "fmi2SetInteger",
+        "fmi2SetBoolean",
+        "fmi2SetString",
+        "fmi2GetFMUstate",
+        "fmi2SetFMUstate",
+        "fmi2FreeFMUstate",
+        "fmi2SerializedFMUstateSize",
+        "fmi2SerializeFMUstate",
+        "fmi2DeSerializeFMUstate",
+        "fmi2GetDirectionalDerivative",
+        "fmi2SetRealInputDerivatives",
+        "fmi2GetRealOutputDerivatives",
+        "fmi2DoStep",
+        "fmi2CancelStep",
+        "fmi2GetStatus",
+        "fmi2GetRealStatus",
+        "fmi2GetIntegerStatus",
+        "fmi2GetBooleanStatus",
+        "fmi2GetStringStatus",
+    ] {
+        let sym: Result<libloading::Symbol<*const c_void>, _> = unsafe { lib.get(name.as_bytes()) };
+        assert!(sym.is_ok(), "{name} is not exported");
+    }
+    let version: libloading::Symbol<unsafe extern "C" fn() -> *const c_char> =
+        unsafe { lib.get(b"fmi2GetVersion") }.unwrap();
+    assert_eq!(
+        unsafe { CStr::from_ptr(version()) }.to_str().unwrap(),
+        "2.0"
+    );
+}
+
+/// The FMU and the Rust simulator driven directly with the same inputs (a speed
+/// ramp through input derivatives) give the same numbers.
+#[test]
+fn fmu_equals_the_direct_simulator() {
+    let fmu = Fmu::new("direct");
+    fmu.init();
+    let model = RotorModel::from_file(&model_path()).unwrap();
+    let mut sim = Simulator::new(
+        rotor_bearing::fe::assembly::Rotor::new(model.clone()).unwrap(),
+        SolverOptions {
+            time_step: 1e-3,
+            ..SolverOptions::default()
+        },
+    )
+    .unwrap();
+    sim.set_speed(model.nominal_speed, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    let speed_vr = fmu.vr("shaft.speed");
+    let h = 0.01;
+    for _ in 0..50 {
+        let t = sim.time();
+        let rate = 2.0; // rad/s² ramp
+        let order = 1;
+        assert_eq!(
+            unsafe {
+                fmu.lib
+                    .fmi2SetRealInputDerivatives(fmu.c, &speed_vr, 1, &order, &rate)
+            },
+            fmi2Status_fmi2OK
+        );
+        sim.set_speed(sim.speed_at(t), rate).unwrap();
+        assert_eq!(fmu.step(t, h), fmi2Status_fmi2OK);
+        sim.advance_to(t + h).unwrap();
+        let got = fmu.get(&OUTPUTS);
+        let o = sim.outputs().unwrap();
+        let want = [
+            o.bearings[0].x,
+            o.bearings[0].y,
+            o.bearings[0].fx,
+            o.bearings[1].fy,
+            o.probes[1].x,
+            o.friction_torque,
+        ];
+        for (g, w) in got.iter().zip(want) {
+            assert!(
+                (g - w).abs() <= 1e-12 * w.abs().max(1e-30),
+                "t = {}: {g} vs {w}",
+                t + h
+            );
+        }
+    }
+    let speed = fmu.get(&["shaft.speed"])[0];
+    assert!(
+        (speed - (model.nominal_speed + 2.0 * 0.5)).abs() < 1e-12,
+        "{speed}"
+    );
+}
+
+/// Outputs at common times do not depend on the communication step.
+#[test]
+fn results_do_not_depend_on_the_communication_step() {
+    let run = |h: f64| {
+        let fmu = Fmu::new(&format!("comm{h}"));
+        fmu.init();
+        let mut out = Vec::new();
+        let n = (0.2 / h).round() as usize;
+        for k in 0..n {
+            assert_eq!(fmu.step(k as f64 * h, h), fmi2Status_fmi2OK);
+            let t = (k + 1) as f64 * h;
+            if ((t / 0.05).round() * 0.05 - t).abs() < 1e-9 {
+                out.push(fmu.get(&OUTPUTS));
+            }
+        }
+        out
+    };
+    let (a, b, c) = (run(0.001), run(0.01), run(0.05));
+    assert_eq!(a.len(), 4);
+    for ((x, y), z) in a.iter().zip(&b).zip(&c) {
+        for i in 0..OUTPUTS.len() {
+            let scale = x[i].abs().max(1e-12);
+            assert!(
+                (x[i] - y[i]).abs() <= 1e-8 * scale && (x[i] - z[i]).abs() <= 1e-8 * scale,
+                "{}: {} {} {}",
+                OUTPUTS[i],
+                x[i],
+                y[i],
+                z[i]
+            );
+        }
+    }
+}
+
+#[test]
+fn rollback_and_serialized_state_continue_identically() {
+    let fmu = Fmu::new("rollback");
+    fmu.init();
+    assert_eq!(fmu.step(0.0, 0.1), fmi2Status_fmi2OK);
+    let mut state: fmi2FMUstate = std::ptr::null_mut();
+    assert_eq!(
+        unsafe { fmu.lib.fmi2GetFMUstate(fmu.c, &mut state) },
+        fmi2Status_fmi2OK
+    );
+    assert_eq!(fmu.step(0.1, 0.1), fmi2Status_fmi2OK);
+    let first = fmu.get(&OUTPUTS);
+    let restored = unsafe { fmu.lib.fmi2SetFMUstate(fmu.c, state) };
+    assert_eq!(restored, fmi2Status_fmi2OK, "{}", last_log());
+    assert_eq!(fmu.step(0.1, 0.1), fmi2Status_fmi2OK);
+    let second = fmu.get(&OUTPUTS);
+    assert_eq!(
+        first.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        second.iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+    );
+
+    // Serialize, deserialize into a fresh instance, continue there.
+    let mut size = 0usize;
+    assert_eq!(
+        unsafe { fmu.lib.fmi2SerializedFMUstateSize(fmu.c, state, &mut size) },
+        fmi2Status_fmi2OK
+    );
+    let mut bytes = vec![0 as c_char; size];
+    assert_eq!(
+        unsafe {
+            fmu.lib
+                .fmi2SerializeFMUstate(fmu.c, state, bytes.as_mut_ptr(), size)
+        },
+        fmi2Status_fmi2OK
+    );
+    let fresh = Fmu::new("fresh");
+    let mut restored: fmi2FMUstate = std::ptr::null_mut();
+    assert_eq!(
+        unsafe {
+            fresh
+                .lib
+                .fmi2DeSerializeFMUstate(fresh.c, bytes.as_ptr(), size, &mut restored)
+        },
+        fmi2Status_fmi2OK
+    );
+    assert_eq!(
+        unsafe { fresh.lib.fmi2SetFMUstate(fresh.c, restored) },
+        fmi2Status_fmi2OK
+    );
+    assert_eq!(fresh.step(0.1, 0.1), fmi2Status_fmi2OK);
+    assert_eq!(fresh.get(&OUTPUTS), first);
+    // A corrupted image is refused with a message, not a crash.
+    LOG.lock().unwrap().clear();
+    let mut junk: fmi2FMUstate = std::ptr::null_mut();
+    let bad = [7 as c_char; 40];
+    assert_eq!(
+        unsafe {
+            fresh
+                .lib
+                .fmi2DeSerializeFMUstate(fresh.c, bad.as_ptr(), bad.len(), &mut junk)
+        },
+        fmi2Status_fmi2Error
+    );
+    unsafe {
+        fmu.lib.fmi2FreeFMUstate(fmu.c, &mut state);
+        fresh.lib.fmi2FreeFMUstate(fresh.c, &mut restored);
+    }
+    assert!(state.is_null());
+}
+
+#[test]
+fn instances_are_independent_across_threads() {
+    let run = |name: String, unbalance: f64| {
+        let fmu = Fmu::new(&name);
+        assert_eq!(fmu.set("unbalance.generator", unbalance), fmi2Status_fmi2OK);
+        fmu.init();
+        for k in 0..20 {
+            assert_eq!(fmu.step(k as f64 * 0.01, 0.01), fmi2Status_fmi2OK);
+        }
+        fmu.get(&OUTPUTS)
+    };
+    let alone_a = run("alone_a".into(), 15.0);
+    let alone_b = run("alone_b".into(), 40.0);
+    assert_ne!(alone_a, alone_b);
+    let ta = std::thread::spawn(move || run("thread_a".into(), 15.0));
+    let tb = std::thread::spawn(move || run("thread_b".into(), 40.0));
+    assert_eq!(ta.join().unwrap(), alone_a);
+    assert_eq!(tb.join().unwrap(), alone_b);
+}
+
+fn last_log() -> String {
+    LOG.lock()
+        .unwrap()
+        .last()
+        .map(|(_, m)| m.clone())
+        .unwrap_or_default()
+}
+
+/// Wrong call sequences and bad inputs: the prescribed status and a message.
+#[test]
+fn wrong_calls_and_bad_inputs_are_reported() {
+    let _guard = LOG.lock().map(|mut l| l.clear());
+    assert!(Fmu::try_new("wrong_guid", Some("{bad}")).is_none());
+    assert!(last_log().contains("GUID"), "{}", last_log());
+
+    let fmu = Fmu::new("checks");
+    assert_eq!(
+        fmu.step(0.0, 0.1),
+        fmi2Status_fmi2Error,
+        "DoStep before initialization"
+    );
+    assert!(
+        last_log().contains("fmi2DoStep is not allowed"),
+        "{}",
+        last_log()
+    );
+    unsafe { fmu.lib.fmi2Reset(fmu.c) };
+    let bad_vr = 9999u32;
+    let mut v = 0.0;
+    assert_eq!(
+        unsafe { fmu.lib.fmi2SetReal(fmu.c, &bad_vr, 1, &v) },
+        fmi2Status_fmi2Error
+    );
+    assert!(
+        last_log().contains("unknown value reference 9999"),
+        "{}",
+        last_log()
+    );
+    unsafe { fmu.lib.fmi2Reset(fmu.c) };
+    assert_eq!(fmu.set("shaft.speed", f64::NAN), fmi2Status_fmi2Error);
+    assert!(last_log().contains("not finite"), "{}", last_log());
+    unsafe { fmu.lib.fmi2Reset(fmu.c) };
+    assert_eq!(
+        fmu.set("bearings.generator_guide.x", 1.0),
+        fmi2Status_fmi2Error
+    );
+    assert!(last_log().contains("is an output"), "{}", last_log());
+    unsafe { fmu.lib.fmi2Reset(fmu.c) };
+    fmu.init();
+    assert_eq!(
+        fmu.set("solver.time_step", 1e-4),
+        fmi2Status_fmi2Error,
+        "fixed parameter after initialization"
+    );
+    assert_eq!(unsafe { fmu.lib.fmi2Reset(fmu.c) }, fmi2Status_fmi2OK);
+    fmu.init();
+    assert_eq!(fmu.step(0.0, -0.1), fmi2Status_fmi2Error);
+    assert!(last_log().contains("must be positive"), "{}", last_log());
+    unsafe { fmu.lib.fmi2Reset(fmu.c) };
+    fmu.init();
+    assert_eq!(
+        fmu.step(0.5, 0.1),
+        fmi2Status_fmi2Error,
+        "communication point mismatch"
+    );
+    unsafe { fmu.lib.fmi2Reset(fmu.c) };
+    fmu.init();
+    let mut t = -1.0;
+    assert_eq!(
+        unsafe {
+            fmu.lib
+                .fmi2GetRealStatus(fmu.c, fmi2StatusKind_fmi2LastSuccessfulTime, &mut t)
+        },
+        fmi2Status_fmi2OK
+    );
+    assert_eq!(t, 0.0);
+    assert_eq!(
+        unsafe { fmu.lib.fmi2CancelStep(fmu.c) },
+        fmi2Status_fmi2Error
+    );
+    assert!(
+        last_log().contains("no asynchronous step"),
+        "{}",
+        last_log()
+    );
+
+    // A solver failure: an absurd unbalance drives the journal into the clearance.
+    unsafe { fmu.lib.fmi2Reset(fmu.c) };
+    fmu.init();
+    assert_eq!(fmu.step(0.0, 0.1), fmi2Status_fmi2OK);
+    let mut state: fmi2FMUstate = std::ptr::null_mut();
+    assert_eq!(
+        unsafe { fmu.lib.fmi2GetFMUstate(fmu.c, &mut state) },
+        fmi2Status_fmi2OK
+    );
+    assert_eq!(fmu.set("unbalance.generator", 1e6), fmi2Status_fmi2OK);
+    assert_eq!(fmu.step(0.1, 1.0), fmi2Status_fmi2Discard);
+    assert!(last_log().contains("discarded"), "{}", last_log());
+    assert_eq!(
+        unsafe {
+            fmu.lib
+                .fmi2GetRealStatus(fmu.c, fmi2StatusKind_fmi2LastSuccessfulTime, &mut t)
+        },
+        fmi2Status_fmi2OK
+    );
+    assert!(t >= 0.1 && t < 1.1, "{t}");
+    assert_eq!(
+        fmu.step(t, 0.1),
+        fmi2Status_fmi2Error,
+        "no stepping after a discard without rollback"
+    );
+    // Rollback (allowed even after fmi2Error) makes the instance usable again.
+    let restored = unsafe { fmu.lib.fmi2SetFMUstate(fmu.c, state) };
+    assert_eq!(restored, fmi2Status_fmi2OK, "{}", last_log());
+    assert_eq!(fmu.set("unbalance.generator", 15.0), fmi2Status_fmi2OK);
+    assert_eq!(fmu.step(0.1, 0.1), fmi2Status_fmi2OK);
+    assert_eq!(unsafe { fmu.lib.fmi2Terminate(fmu.c) }, fmi2Status_fmi2OK);
+    unsafe { fmu.lib.fmi2FreeFMUstate(fmu.c, &mut state) };
+    let _ = &mut v;
+}
+
+/// A missing or broken model in the resources gives a logged error and NULL.
+#[test]
+fn broken_resources_give_null_and_a_message() {
+    let lib = unsafe { Fmi2Binding::new(library_path()) }.unwrap();
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fmu_broken");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(
+        dir.join("model.toml"),
+        "name = \"x\"\n[[shaft]]\nlength = -1\n",
+    )
+    .unwrap();
+    let cb = callbacks();
+    let name = CString::new("broken").unwrap();
+    let guid = CString::new("{x}").unwrap();
+    let uri = CString::new(format!("file://{}", dir.display())).unwrap();
+    let c = unsafe {
+        lib.fmi2Instantiate(
+            name.as_ptr(),
+            fmi2Type_fmi2CoSimulation,
+            guid.as_ptr(),
+            uri.as_ptr(),
+            &cb,
+            0,
+            1,
+        )
+    };
+    assert!(c.is_null());
+    assert!(
+        LOG.lock()
+            .unwrap()
+            .iter()
+            .any(|(_, m)| m.contains("model.toml")),
+        "{:?}",
+        LOG.lock().unwrap()
+    );
+    let missing = CString::new("file:///no/such/dir").unwrap();
+    let c = unsafe {
+        lib.fmi2Instantiate(
+            name.as_ptr(),
+            fmi2Type_fmi2CoSimulation,
+            guid.as_ptr(),
+            missing.as_ptr(),
+            &cb,
+            0,
+            1,
+        )
+    };
+    assert!(c.is_null());
+    let me = unsafe {
+        lib.fmi2Instantiate(
+            name.as_ptr(),
+            fmi2Type_fmi2ModelExchange,
+            guid.as_ptr(),
+            uri.as_ptr(),
+            &cb,
+            0,
+            1,
+        )
+    };
+    assert!(me.is_null());
+    let _ = Path::new("");
+}

@@ -1,0 +1,71 @@
+"""FMPy against the FMU: validation of every packed FMU, and a speed ramp given as
+an input compared with the Rust simulator run directly (examples/reference_run).
+
+Run by tests/fmpy.rs with the project's venv; argv: repo root, reference_run binary.
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+from fmpy import read_model_description, simulate_fmu
+from fmpy.validation import validate_fmu
+
+root, reference_run = sys.argv[1], sys.argv[2]
+out = os.path.join(root, "out")
+failures = []
+
+# 1. Validation of the default FMU and one packed from each shipped model.
+fmus = ["RotorBearing.fmu"] + [m[:-5] + ".fmu" for m in sorted(os.listdir(os.path.join(root, "models")))
+                               if m.endswith(".toml") and m != "hydro_unit.toml"]
+for name in fmus:
+    path = os.path.join(out, name)
+    if not os.path.exists(path):
+        failures.append(f"{path} missing: run fmu_pack.sh (scripts/test.sh packs every model)")
+        continue
+    problems = validate_fmu(path)
+    if problems:
+        failures.append(f"{name}: " + "; ".join(problems))
+
+# 2. A speed ramp 150 → 165 rpm over 1 s as an input, against the direct run.
+fmu = os.path.join(out, "RotorBearing.fmu")
+md = read_model_description(fmu)
+bearings = sorted({v.name.split(".")[1] for v in md.modelVariables if v.name.startswith("bearings.")},
+                  key=lambda b: [v.name for v in md.modelVariables].index(f"bearings.{b}.x"))
+names = [f"bearings.{b}.{q}" for b in bearings for q in ("x", "y", "fx", "fy")]
+h, stop = 0.01, 1.0
+t = np.arange(0, 101) * h
+w = (150.0 + 15.0 * t) * np.pi / 30.0
+signal = np.array(list(zip(t, w)), dtype=[("time", np.float64), ("shaft.speed", np.float64)])
+res = simulate_fmu(fmu, stop_time=stop, output_interval=h, input=signal, output=names)
+with tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False) as f:
+    for ti, wi in zip(t, w):
+        f.write(f"{float(ti)!r},{float(wi)!r}\n")
+    table = f.name
+ref = subprocess.run([reference_run, os.path.join(root, "models", "hydro_unit.toml"), table, repr(stop), repr(h)],
+                     capture_output=True, text=True)
+os.unlink(table)
+if ref.returncode != 0:
+    failures.append("reference_run failed: " + ref.stderr)
+else:
+    rows = [list(map(float, line.split(","))) for line in ref.stdout.split()]
+    if len(rows) != len(res):
+        failures.append(f"{len(res)} FMPy rows vs {len(rows)} reference rows")
+    worst = 0.0
+    for k, (row, rec) in enumerate(zip(rows, res)):
+        if abs(row[0] - rec["time"]) > 1e-12:
+            failures.append(f"row {k}: time {rec['time']} vs {row[0]}")
+            break
+        for j, n in enumerate(names):
+            a, b = rec[n], row[1 + j]
+            scale = max(abs(b), 1e-9 if n.endswith(("x", "y")) else 1e-6)
+            worst = max(worst, abs(a - b) / scale)
+    print(f"FMPy vs direct simulator over {len(rows)} points, {len(names)} outputs: worst relative difference {worst:.3e}")
+    if worst > 1e-12:
+        failures.append(f"FMPy and the direct run differ by {worst:.3e} (relative)")
+
+if failures:
+    print("\n".join(failures), file=sys.stderr)
+    sys.exit(1)
+print(f"{len(fmus)} FMUs valid; FMPy run matches the Rust simulator")
