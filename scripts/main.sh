@@ -19,4 +19,7 @@ $rotor simulate models/jeffcott.toml --ramp-rpm 3000:16000 --duration 8 --step 1
 # The hydro unit at 150 rpm on tilting-pad guide bearings.
 $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --output-step 5e-3 --ramp-time 2 \
   --csv out/hydro_unit.csv --plots out/hydro_unit > out/hydro_unit_windows.txt
-echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, jeffcott_run_up*, hydro_unit*)"
+# The FMU: build, pack, validate with FMPy, and simulate it with FMPy.
+bash fmu_pack.sh
+.venv/bin/python scripts/fmpy_demo.py out/RotorBearing.fmu out/fmpy_hydro_unit
+echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, jeffcott_run_up*, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png)"

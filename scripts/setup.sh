@@ -5,7 +5,7 @@
 set -euo pipefail
 
 need=()
-for pkg in pkg-config libclang-dev libfontconfig1-dev libfreetype-dev fonts-dejavu-core; do
+for pkg in pkg-config libclang-dev libfontconfig1-dev libfreetype-dev fonts-dejavu-core valgrind; do
   dpkg -s "$pkg" >/dev/null 2>&1 || need+=("$pkg")
 done
 if [ ${#need[@]} -gt 0 ]; then
