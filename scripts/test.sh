@@ -8,7 +8,7 @@ cargo fmt --all -- --check
 cargo clippy --all-targets --quiet -- -D warnings
 # The FMU tests load the cdylib, which `cargo test` does not relink; the Python
 # tests use the packed FMU (fmu_pack.sh builds, packs and validates it with FMPy).
-cargo build --lib --quiet
+cargo build --lib --examples --quiet
 bash fmu_pack.sh
 for model in models/*.toml; do
   [ "$model" = models/hydro_unit.toml ] || bash fmu_pack.sh --model "$model"
