@@ -181,9 +181,7 @@ struct Factor {
     step: f64,
     speed: f64,
     lu: BandLu<f64>,
-    /// `Z = A⁻¹E`, column-major `n × s_j`.
-    z: Vec<f64>,
-    /// `G = Eᵀ Z`, row-major `s_j × s_j`.
+    /// `G = Eᵀ A⁻¹ E`, row-major `s_j × s_j` (the journal block of the inverse).
     g: Vec<f64>,
 }
 
@@ -197,6 +195,8 @@ struct Work {
     pd: Vec<f64>,
     pdd: Vec<f64>,
     r: Vec<f64>,
+    /// Linear part of the dynamic residual, `f − M ü − D u̇ − K u`.
+    lin: Vec<f64>,
     mv: Vec<f64>,
     du: Vec<f64>,
     dp: Vec<f64>,
@@ -322,6 +322,7 @@ impl Simulator {
             pd: vec![0.0; n_internal],
             pdd: vec![0.0; n_internal],
             r: vec![0.0; n],
+            lin: vec![0.0; n],
             mv: vec![0.0; n],
             du: vec![0.0; n],
             dp: vec![0.0; n_internal],
@@ -662,25 +663,27 @@ impl Simulator {
         Ok(inf_norm(&self.work.r).max(inf_norm(&self.work.rp)) / scale)
     }
 
-    /// Dynamic residual at the iterate `work.u`, `work.p` of a step of size `h`
-    /// ending at `t1`: sets the Newmark rates in `work`, the residuals in
-    /// `work.r`, `work.rp`; returns the residual relative to the largest force term.
-    fn dynamic_residual(&mut self, h: f64, t1: f64, speed1: f64) -> Result<f64, SolverError> {
+    /// Newmark rates at the iterate `work.u`, `work.p` of a step of size `h`.
+    fn update_rates(&mut self, h: f64) {
         let (a0, a1, a2) = (4.0 / (h * h), 2.0 / h, 4.0 / h);
-        {
-            let (s, w) = (&self.state, &mut self.work);
-            for i in 0..s.u.len() {
-                let d = w.u[i] - s.u[i];
-                w.ud[i] = a1 * d - s.ud[i];
-                w.udd[i] = a0 * d - a2 * s.ud[i] - s.udd[i];
-            }
-            for i in 0..s.p.len() {
-                let d = w.p[i] - s.p[i];
-                w.pd[i] = a1 * d - s.pd[i];
-                w.pdd[i] = a0 * d - a2 * s.pd[i] - s.pdd[i];
-            }
-            w.r.copy_from_slice(&w.f_ext);
+        let (s, w) = (&self.state, &mut self.work);
+        for i in 0..s.u.len() {
+            let d = w.u[i] - s.u[i];
+            w.ud[i] = a1 * d - s.ud[i];
+            w.udd[i] = a0 * d - a2 * s.ud[i] - s.udd[i];
         }
+        for i in 0..s.p.len() {
+            let d = w.p[i] - s.p[i];
+            w.pd[i] = a1 * d - s.pd[i];
+            w.pdd[i] = a0 * d - a2 * s.pd[i] - s.pdd[i];
+        }
+    }
+
+    /// Linear part of the dynamic residual at the iterate, `work.lin = f − M ü −
+    /// (C + Ω G) u̇ − K u` (rates updated first); returns the largest force term.
+    fn linear_residual(&mut self, h: f64, speed1: f64) -> Result<f64, SolverError> {
+        self.update_rates(h);
+        self.work.lin.copy_from_slice(&self.work.f_ext);
         let mut scale = inf_norm(&self.work.f_ext);
         let terms: [(&BandMatrix<f64>, f64, u8); 4] = [
             (&self.rotor.mass, 1.0, 2),
@@ -699,12 +702,25 @@ impl Simulator {
             };
             matrix.mul_vec(x, &mut self.work.mv)?;
             let mut norm: f64 = 0.0;
-            for (r, m) in self.work.r.iter_mut().zip(&self.work.mv) {
+            for (r, m) in self.work.lin.iter_mut().zip(&self.work.mv) {
                 *r -= coef * m;
                 norm = norm.max((coef * m).abs());
             }
             scale = scale.max(norm);
         }
+        Ok(scale)
+    }
+
+    /// Full residual `work.r = work.lin + E F_b` and pad residual `work.rp` with the
+    /// bearings evaluated at the iterate; returns it relative to the force scale
+    /// (`scale` grows with the bearing forces).
+    fn residual_with_bearings(
+        &mut self,
+        t1: f64,
+        speed1: f64,
+        scale: &mut f64,
+    ) -> Result<f64, SolverError> {
+        self.work.r.copy_from_slice(&self.work.lin);
         let (u, ud, p, pd) = (
             std::mem::take(&mut self.work.u),
             std::mem::take(&mut self.work.ud),
@@ -716,11 +732,11 @@ impl Simulator {
         self.work.ud = ud;
         self.work.p = p;
         self.work.pd = pd;
-        let scale = scale.max(bearings?).max(f64::MIN_POSITIVE);
-        Ok(inf_norm(&self.work.r).max(inf_norm(&self.work.rp)) / scale)
+        *scale = scale.max(bearings?).max(f64::MIN_POSITIVE);
+        Ok(inf_norm(&self.work.r).max(inf_norm(&self.work.rp)) / *scale)
     }
 
-    /// Factor `a` and form `Z = A⁻¹E`, `G = EᵀZ`.
+    /// Factor `a` and form `G = Eᵀ A⁻¹ E` (one solve per journal DOF).
     fn make_factor(
         &mut self,
         a: BandMatrix<f64>,
@@ -731,33 +747,18 @@ impl Simulator {
         self.stats.factorizations += 1;
         let n = self.rotor.dof_count();
         let sj = self.n_journal;
-        let mut z = vec![0.0; n * sj];
-        let mut col = 0;
-        for site in &self.sites {
-            for &dof in &site.journal {
-                let zc = &mut z[col * n..(col + 1) * n];
-                zc[dof] = 1.0;
-                lu.solve_in_place(zc)?;
-                col += 1;
-            }
-        }
+        let journal: Vec<usize> = self.sites.iter().flat_map(|s| s.journal).collect();
         let mut g = vec![0.0; sj * sj];
-        let mut row = 0;
-        for site in &self.sites {
-            for &dof in &site.journal {
-                for c in 0..sj {
-                    g[row * sj + c] = z[c * n + dof];
-                }
-                row += 1;
+        let mut column = vec![0.0; n];
+        for (c, &dof) in journal.iter().enumerate() {
+            column.fill(0.0);
+            column[dof] = 1.0;
+            lu.solve_in_place(&mut column)?;
+            for (r, &row_dof) in journal.iter().enumerate() {
+                g[r * sj + c] = column[row_dof];
             }
         }
-        Ok(Factor {
-            step,
-            speed,
-            lu,
-            z,
-            g,
-        })
+        Ok(Factor { step, speed, lu, g })
     }
 
     /// Schur solve of `J [δu; δp] = [y; dp]` in place, `J` = factored `A` plus the
@@ -771,7 +772,6 @@ impl Simulator {
         y: &mut [f64],
         dp: &mut [f64],
     ) -> Result<(), SolverError> {
-        let n = self.rotor.dof_count();
         let sj = self.n_journal;
         let s = sj + self.n_internal;
         factor.lu.solve_in_place(y)?;
@@ -826,12 +826,16 @@ impl Simulator {
             return Err(SolverError::Linalg(LinalgError::Singular { column: 0 }));
         }
         lu_solve(&w.small, s, &w.pivots, &mut w.small_rhs);
-        for c in 0..sj {
-            let f = w.small_rhs[c];
-            if f != 0.0 {
-                for (yi, zi) in y.iter_mut().zip(&factor.z[c * n..(c + 1) * n]) {
-                    *yi -= zi * f;
-                }
+        // δu = A⁻¹ r − A⁻¹ E f: a second solve with the journal forces f.
+        if sj > 0 {
+            w.mv.fill(0.0);
+            for (k, site) in self.sites.iter().enumerate() {
+                w.mv[site.journal[0]] += w.small_rhs[2 * k];
+                w.mv[site.journal[1]] += w.small_rhs[2 * k + 1];
+            }
+            factor.lu.solve_in_place(&mut w.mv)?;
+            for (yi, zi) in y.iter_mut().zip(&w.mv) {
+                *yi -= zi;
             }
         }
         dp.copy_from_slice(&w.small_rhs[sj..]);
@@ -975,9 +979,10 @@ impl Simulator {
         let mut refreshed = false;
         let mut jacobian_current = false;
         let mut increment_ok = false;
+        let mut scale = self.linear_residual(h, speed1)?;
+        let mut residual = self.residual_with_bearings(t1, speed1, &mut scale)?;
         for iteration in 0..self.options.max_iterations {
             self.stats.iterations += 1;
-            let residual = self.dynamic_residual(h, t1, speed1)?;
             if residual <= tol && increment_ok {
                 return Ok(None);
             }
@@ -1017,6 +1022,7 @@ impl Simulator {
             let Some(f) = factor.as_ref() else {
                 return Err(SolverError::Input("internal: no factorization".into()));
             };
+            let exact = f.step == h && f.speed == speed1;
             let mut du = std::mem::take(&mut self.work.du);
             let mut dp = std::mem::take(&mut self.work.dp);
             du.copy_from_slice(&self.work.r);
@@ -1048,6 +1054,20 @@ impl Simulator {
             }
             self.work.du = du;
             self.work.dp = dp;
+            if exact {
+                // With the exact A, A δu = r − E f and r = lin + E F_b, so the new
+                // linear residual is E (f − F_b): it lives on the journal DOFs only.
+                self.update_rates(h);
+                self.work.lin.fill(0.0);
+                for (k, site) in self.sites.iter().enumerate() {
+                    for (a, &dof) in site.journal.iter().enumerate() {
+                        self.work.lin[dof] = self.work.small_rhs[2 * k + a] - site.eval.force[a];
+                    }
+                }
+            } else {
+                scale = scale.max(self.linear_residual(h, speed1)?);
+            }
+            residual = self.residual_with_bearings(t1, speed1, &mut scale)?;
         }
         Ok(Some(last))
     }
