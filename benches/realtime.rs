@@ -1,0 +1,56 @@
+//! Real-time factors (simulated seconds per wall-clock second) of the simulator
+//! the FMU drives: the hydro unit on tilting pads at the paper's 5 ms step and at
+//! 0.1 ms, and the Jeffcott rotor on plain bearings. `cargo bench --bench realtime`.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use rotor_bearing::fe::assembly::Rotor;
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::solver::{Simulator, SolverOptions};
+
+fn realtime(name: &str, step: f64, seconds: f64) -> (f64, f64) {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("models")
+        .join(format!("{name}.toml"));
+    let model = RotorModel::from_file(&path).unwrap();
+    let mut sim = Simulator::new(
+        Rotor::new(model.clone()).unwrap(),
+        SolverOptions {
+            time_step: step,
+            ..SolverOptions::default()
+        },
+    )
+    .unwrap();
+    sim.set_speed(model.nominal_speed, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    sim.advance_to(0.1 * seconds).unwrap();
+    let t0 = Instant::now();
+    // Communication points every 10 ms, as an FMU master would call fmi2DoStep.
+    let comm = 0.01f64.max(step);
+    let start = sim.time();
+    let count = (seconds / comm).round() as usize;
+    for k in 1..=count {
+        sim.advance_to(start + k as f64 * comm).unwrap();
+        std::hint::black_box(sim.outputs().unwrap());
+    }
+    let wall = t0.elapsed().as_secs_f64();
+    (seconds / wall, wall / (seconds / step) * 1e6)
+}
+
+fn main() {
+    if std::env::args().any(|a| a == "--list") {
+        return;
+    }
+    println!("| model | internal step | real-time factor | µs per step |");
+    println!("|---|---:|---:|---:|");
+    for (name, step, seconds) in [
+        ("hydro_unit", 5e-3, 60.0),
+        ("hydro_unit", 1e-4, 4.0),
+        ("hydro_unit_plain", 5e-3, 60.0),
+        ("jeffcott", 1e-4, 4.0),
+    ] {
+        let (factor, per_step) = realtime(name, step, seconds);
+        println!("| {name} | {step} s | {factor:.0}× | {per_step:.1} |");
+    }
+}
