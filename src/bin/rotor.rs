@@ -129,6 +129,9 @@ enum Command {
         /// Switch gravity off.
         #[arg(long)]
         no_gravity: bool,
+        /// Start from rest at the bearing centres instead of the static equilibrium.
+        #[arg(long)]
+        no_settle: bool,
         /// Write the outputs to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
@@ -405,6 +408,7 @@ fn run(cli: Cli) -> Result<(), String> {
             output_step,
             ramp_time,
             no_gravity,
+            no_settle,
             csv,
             plots,
         } => {
@@ -417,7 +421,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 ..SolverOptions::default()
             };
             let output_step = output_step.unwrap_or(step.max(duration / 20_000.0));
-            simulate(rotor, options, &profile, duration, output_step, csv, plots)?;
+            simulate(rotor, options, &profile, duration, output_step, !no_settle, csv, plots)?;
         }
     }
     Ok(())
@@ -490,6 +494,7 @@ fn simulate(
     profile: &SpeedProfile,
     duration: f64,
     output_step: f64,
+    settle: bool,
     csv: Option<PathBuf>,
     plots: Option<String>,
 ) -> Result<(), String> {
@@ -497,8 +502,10 @@ fn simulate(
     let mut sim = Simulator::new(rotor, options).map_err(|e| e.to_string())?;
     let (w0, _) = profile.at(0.0);
     sim.set_speed(w0, 0.0).map_err(|e| e.to_string())?;
-    sim.settle_static()
-        .map_err(|e| format!("{}: {e}", model.name))?;
+    if settle {
+        sim.settle_static()
+            .map_err(|e| format!("{}: {e}", model.name))?;
+    }
     let started = std::time::Instant::now();
     let mut shown = 0;
     let terminal = std::io::IsTerminal::is_terminal(&std::io::stderr());
@@ -511,7 +518,7 @@ fn simulate(
     })
     .map_err(|e| format!("{}: {e}", model.name))?;
     eprintln!(
-        "{}simulated {} s of {} in {:.2} s wall-clock ({:?})",
+        "{}simulated {} s of {} in {:.4} s wall-clock ({:?})",
         if terminal { "\r" } else { "" },
         duration,
         model.name,
