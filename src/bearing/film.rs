@@ -18,50 +18,66 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// Truncated bivariate Taylor series `Σ c[i][j] dxⁱ dyʲ`, `i + j ≤ 3`.
+/// Truncated bivariate Taylor series `Σ c_k dxⁱ dyʲ`, `i + j ≤ 3`, stored flat in
+/// the monomial order `1, x, y, x², xy, y², x³, x²y, xy², y³`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Jet3 {
-    c: [[f64; 4]; 4],
+    c: [f64; 10],
 }
+
+/// Exponents `(i, j)` of the flat monomials.
+const MONOMIALS: [(usize, usize); 10] = [
+    (0, 0),
+    (1, 0),
+    (0, 1),
+    (2, 0),
+    (1, 1),
+    (0, 2),
+    (3, 0),
+    (2, 1),
+    (1, 2),
+    (0, 3),
+];
 
 impl Jet3 {
     /// A constant.
     pub fn constant(v: f64) -> Self {
-        let mut c = [[0.0; 4]; 4];
-        c[0][0] = v;
+        let mut c = [0.0; 10];
+        c[0] = v;
         Self { c }
     }
 
     /// The first variable `x` at `x0`.
     pub fn var_x(x0: f64) -> Self {
         let mut j = Self::constant(x0);
-        j.c[1][0] = 1.0;
+        j.c[1] = 1.0;
         j
     }
 
     /// The second variable `y` at `y0`.
     pub fn var_y(y0: f64) -> Self {
         let mut j = Self::constant(y0);
-        j.c[0][1] = 1.0;
+        j.c[2] = 1.0;
         j
     }
 
     /// Value at the expansion point.
     pub fn value(&self) -> f64 {
-        self.c[0][0]
+        self.c[0]
     }
 
     /// Partial derivative `∂^{i+j}/∂xⁱ∂yʲ` at the expansion point (`i + j ≤ 3`).
     pub fn derivative(&self, i: usize, j: usize) -> f64 {
         const FACT: [f64; 4] = [1.0, 1.0, 2.0, 6.0];
-        self.c[i][j] * FACT[i] * FACT[j]
+        MONOMIALS
+            .iter()
+            .position(|&m| m == (i, j))
+            .map_or(0.0, |k| self.c[k] * FACT[i] * FACT[j])
     }
 
     fn scale(mut self, s: f64) -> Self {
-        for row in &mut self.c {
-            for v in row {
-                *v *= s;
-            }
+        for v in &mut self.c {
+            *v *= s;
         }
         self
     }
@@ -69,10 +85,15 @@ impl Jet3 {
     /// `f(u)` from `f` and its first three derivatives at `u0 = self.value()`.
     fn compose(self, f: [f64; 4]) -> Self {
         let mut d = self;
-        d.c[0][0] = 0.0;
+        d.c[0] = 0.0;
         let d2 = d * d;
         let d3 = d2 * d;
-        Self::constant(f[0]) + d.scale(f[1]) + d2.scale(f[2] / 2.0) + d3.scale(f[3] / 6.0)
+        let mut out = [0.0; 10];
+        out[0] = f[0];
+        for (k, o) in out.iter_mut().enumerate().skip(1) {
+            *o = f[1] * d.c[k] + 0.5 * f[2] * d2.c[k] + f[3] / 6.0 * d3.c[k];
+        }
+        Self { c: out }
     }
 
     /// Square root (value must be positive).
@@ -105,10 +126,8 @@ impl Jet3 {
 impl Add for Jet3 {
     type Output = Self;
     fn add(mut self, o: Self) -> Self {
-        for i in 0..4 {
-            for j in 0..4 - i {
-                self.c[i][j] += o.c[i][j];
-            }
+        for (a, b) in self.c.iter_mut().zip(o.c) {
+            *a += b;
         }
         self
     }
@@ -130,22 +149,23 @@ impl Neg for Jet3 {
 
 impl Mul for Jet3 {
     type Output = Self;
+    /// Truncated product, written out term by term (the hot path of the bearings).
     fn mul(self, o: Self) -> Self {
-        let mut c = [[0.0; 4]; 4];
-        for i1 in 0..4 {
-            for j1 in 0..4 - i1 {
-                let a = self.c[i1][j1];
-                if a == 0.0 {
-                    continue;
-                }
-                for i2 in 0..4 - i1 - j1 {
-                    for j2 in 0..4 - i1 - j1 - i2 {
-                        c[i1 + i2][j1 + j2] += a * o.c[i2][j2];
-                    }
-                }
-            }
+        let (a, b) = (&self.c, &o.c);
+        Self {
+            c: [
+                a[0] * b[0],
+                a[0] * b[1] + a[1] * b[0],
+                a[0] * b[2] + a[2] * b[0],
+                a[0] * b[3] + a[1] * b[1] + a[3] * b[0],
+                a[0] * b[4] + a[1] * b[2] + a[2] * b[1] + a[4] * b[0],
+                a[0] * b[5] + a[2] * b[2] + a[5] * b[0],
+                a[0] * b[6] + a[1] * b[3] + a[3] * b[1] + a[6] * b[0],
+                a[0] * b[7] + a[1] * b[4] + a[2] * b[3] + a[3] * b[2] + a[4] * b[1] + a[7] * b[0],
+                a[0] * b[8] + a[1] * b[5] + a[2] * b[4] + a[4] * b[2] + a[5] * b[1] + a[8] * b[0],
+                a[0] * b[9] + a[2] * b[5] + a[5] * b[2] + a[9] * b[0],
+            ],
         }
-        Self { c }
     }
 }
 

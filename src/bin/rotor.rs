@@ -421,7 +421,16 @@ fn run(cli: Cli) -> Result<(), String> {
                 ..SolverOptions::default()
             };
             let output_step = output_step.unwrap_or(step.max(duration / 20_000.0));
-            simulate(rotor, options, &profile, duration, output_step, !no_settle, csv, plots)?;
+            simulate(
+                rotor,
+                options,
+                &profile,
+                duration,
+                output_step,
+                !no_settle,
+                csv,
+                plots,
+            )?;
         }
     }
     Ok(())
