@@ -421,16 +421,15 @@ fn run(cli: Cli) -> Result<(), String> {
                 ..SolverOptions::default()
             };
             let output_step = output_step.unwrap_or(step.max(duration / 20_000.0));
-            simulate(
-                rotor,
-                options,
-                &profile,
+            let run = Run {
+                profile,
                 duration,
                 output_step,
-                !no_settle,
+                settle: !no_settle,
                 csv,
                 plots,
-            )?;
+            };
+            simulate(rotor, options, run)?;
         }
     }
     Ok(())
@@ -497,16 +496,26 @@ fn speed_profile(
     }
 }
 
-fn simulate(
-    rotor: Rotor,
-    options: SolverOptions,
-    profile: &SpeedProfile,
+/// What `rotor simulate` records and writes.
+struct Run {
+    profile: SpeedProfile,
     duration: f64,
     output_step: f64,
     settle: bool,
     csv: Option<PathBuf>,
     plots: Option<String>,
-) -> Result<(), String> {
+}
+
+fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String> {
+    let Run {
+        profile,
+        duration,
+        output_step,
+        settle,
+        csv,
+        plots,
+    } = run;
+    let profile = &profile;
     let model = rotor.model.clone();
     let mut sim = Simulator::new(rotor, options).map_err(|e| e.to_string())?;
     let (w0, _) = profile.at(0.0);
