@@ -56,6 +56,20 @@ struct Params {
     gravity: bool,
 }
 
+impl Params {
+    /// The simulator options these parameters select.
+    fn options(&self) -> SolverOptions {
+        SolverOptions {
+            time_step: self.time_step,
+            tolerance: self.tolerance,
+            max_iterations: self.max_iterations.max(1) as usize,
+            unbalance_ramp_time: self.ramp_time,
+            gravity: self.gravity,
+            ..SolverOptions::default()
+        }
+    }
+}
+
 impl Default for Params {
     fn default() -> Self {
         Self {
@@ -207,14 +221,7 @@ impl Instance {
             return s;
         }
         let p = self.params;
-        let options = SolverOptions {
-            time_step: p.time_step,
-            tolerance: p.tolerance,
-            max_iterations: p.max_iterations.max(1) as usize,
-            unbalance_ramp_time: p.ramp_time,
-            gravity: p.gravity,
-            ..SolverOptions::default()
-        };
+        let options = p.options();
         let mut state = self.sim.state().clone();
         state.time = self.start_time;
         state.speed_time = self.start_time;
@@ -593,14 +600,7 @@ impl Instance {
             }
         }
         let p = snap.params;
-        let options = SolverOptions {
-            time_step: p.time_step,
-            tolerance: p.tolerance,
-            max_iterations: p.max_iterations.max(1) as usize,
-            unbalance_ramp_time: p.ramp_time,
-            gravity: p.gravity,
-            ..SolverOptions::default()
-        };
+        let options = p.options();
         if let Err(e) = self
             .sim
             .set_options(options)
