@@ -214,12 +214,10 @@ impl Instance {
         Status::Ok
     }
 
-    /// fmi2ExitInitializationMode: apply the parameters and put the rotor in static
-    /// equilibrium at the start speed.
-    pub fn exit_initialization_mode(&mut self) -> Status {
-        if let Err(s) = self.require("fmi2ExitInitializationMode", &[Phase::InitializationMode]) {
-            return s;
-        }
+    /// Apply the parameters and put the rotor in static equilibrium at the start
+    /// speed (at fmi2ExitInitializationMode, and when outputs are read during
+    /// Initialization Mode).
+    fn settle(&mut self) -> Result<(), Status> {
         let p = self.params;
         let options = p.options();
         let mut state = self.sim.state().clone();
@@ -231,15 +229,25 @@ impl Instance {
             .and_then(|()| self.sim.set_state(state))
             .and_then(|()| self.sim.settle_static());
         self.outputs = None;
-        match result {
+        result.map_err(|e| {
+            self.report(
+                Status::Error,
+                format!("initialization of {}: {e}", self.model.name),
+            )
+        })
+    }
+
+    /// fmi2ExitInitializationMode.
+    pub fn exit_initialization_mode(&mut self) -> Status {
+        if let Err(s) = self.require("fmi2ExitInitializationMode", &[Phase::InitializationMode]) {
+            return s;
+        }
+        match self.settle() {
             Ok(()) => {
                 self.phase = Phase::StepComplete;
                 Status::Ok
             }
-            Err(e) => self.report(
-                Status::Error,
-                format!("initialization of {}: {e}", self.model.name),
-            ),
+            Err(s) => s,
         }
     }
 
@@ -298,16 +306,10 @@ impl Instance {
             Binding::UnbalancePhase(k) => s.unbalance_phase[k],
             Binding::Speed => self.sim.speed_at(s.time),
             Binding::Unbalance(k) => s.unbalance[k] + s.unbalance_rate[k] * (s.time - s.speed_time),
-            _ if self.phase == Phase::InitializationMode => {
-                return Err(self.report(
-                    Status::Error,
-                    format!(
-                        "{call}: output {} is available after fmi2ExitInitializationMode",
-                        v.name
-                    ),
-                ));
-            }
             binding => {
+                if self.phase == Phase::InitializationMode && self.outputs.is_none() {
+                    self.settle()?;
+                }
                 let o = self.current_outputs()?;
                 match binding {
                     Binding::BearingX(k) => o.bearings[k].x,

@@ -1,0 +1,113 @@
+"""Governor + turbine + generator of a hydro unit as an FMI 2.0 Co-Simulation FMU
+(built with pythonfmu: `pythonfmu build -f system/hydro_plant.py`).
+
+Swing equation of the rotating masses with the rotor-bearing FMU's friction
+torque in the balance:
+
+    J dω/dt = T_turbine − T_electric − T_friction
+    T_turbine = T_rated · [g · (2 − ω/ω_rated) − k_loss (ω/ω_rated)²]   (Francis-like;
+                windage and water friction k_loss make a closed gate decelerate the unit)
+    T_electric = P_load / ω_rated · (1 + D (ω − ω_rated)/ω_rated)   until load rejection
+    governor: gate command = g_ff + Kp e + Ki ∫e,  e = (ω_ref − ω)/ω_rated,
+              integral frozen while the command saturates (anti-windup)
+    gate servo: dg/dt = (command − g)/T_servo, |dg/dt| ≤ rate limit, 0 ≤ g ≤ 1
+    set point ω_ref ramps from the start speed to ω_rated over `ramp_time`.
+
+Integrated with RK4 in sub-steps of at most 5 ms inside each do_step.
+"""
+from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability, Real
+
+
+class HydroPlant(Fmi2Slave):
+    author = "rotor_bearing"
+    description = "Hydro unit speed governor (PI + gate servo), Francis turbine torque and generator swing equation"
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        self.inertia = 4.8e6          # kg·m², generator + runner + shaft
+        self.rated_speed = 15.707963  # rad/s (150 rpm)
+        self.rated_torque = 1.02e7    # N·m (160 MW at 150 rpm)
+        self.start_speed = 0.0        # rad/s
+        self.ramp_time = 60.0         # s, set-point ramp at start-up
+        self.load = 0.0               # per unit of rated power
+        self.load_damping = 1.0       # D, per unit
+        self.rejection_time = -1.0    # s, negative: never
+        self.kp = 3.0
+        self.ki = 0.6                 # 1/s
+        self.servo_time = 0.5         # s
+        self.gate_rate = 0.2          # 1/s
+        self.loss = 0.05              # no-load losses, per unit torque at rated speed
+        self.friction_torque = 0.0    # input, N·m
+        self.speed = 0.0
+        self.gate = 0.0
+        self.setpoint = 0.0
+        self.electric_torque = 0.0
+        self.turbine_torque = 0.0
+        self.integral = 0.0
+        params = [
+            ("inertia", "Rotating inertia of generator, runner and shaft", "kg.m2"),
+            ("rated_speed", "Rated speed", "rad/s"),
+            ("rated_torque", "Turbine torque at rated speed and full gate", "N.m"),
+            ("start_speed", "Initial speed and start of the set-point ramp", "rad/s"),
+            ("ramp_time", "Duration of the set-point ramp to rated speed", "s"),
+            ("load", "Electrical load before rejection (per unit of rated power)", "1"),
+            ("load_damping", "Load speed sensitivity D (per unit)", "1"),
+            ("rejection_time", "Time of a full load rejection (negative: none)", "s"),
+            ("kp", "Governor proportional gain (per unit gate per unit speed)", "1"),
+            ("ki", "Governor integral gain", "1/s"),
+            ("servo_time", "Gate servo time constant", "s"),
+            ("gate_rate", "Gate rate limit (per unit per second)", "1/s"),
+            ("loss", "No-load windage and water-friction torque at rated speed (per unit)", "1"),
+        ]
+        for name, text, unit in params:
+            self.register_variable(Real(name, causality=Fmi2Causality.parameter,
+                                        variability=Fmi2Variability.fixed, description=f"{text} [{unit}]"))
+        self.register_variable(Real("friction_torque", causality=Fmi2Causality.input,
+                                    description="Bearing friction torque on the shaft [N.m]"))
+        for name, text in [("speed", "Shaft speed [rad/s]"), ("gate", "Gate opening [1]"),
+                           ("setpoint", "Speed set point [rad/s]"),
+                           ("electric_torque", "Electrical torque [N.m]"),
+                           ("turbine_torque", "Turbine torque [N.m]")]:
+            self.register_variable(Real(name, causality=Fmi2Causality.output, description=text))
+        self.started = False
+
+    def _rates(self, t, speed, gate, integral):
+        w0 = self.rated_speed
+        ramp = min(1.0, t / self.ramp_time) if self.ramp_time > 0 else 1.0
+        ref = self.start_speed + (w0 - self.start_speed) * ramp
+        error = (ref - speed) / w0
+        loaded = self.rejection_time < 0 or t < self.rejection_time
+        p_load = self.load if loaded else 0.0
+        raw = p_load + self.loss + self.kp * error + self.ki * integral
+        command = min(1.0, max(0.0, raw))
+        # Anti-windup: the integral stops where the command saturates.
+        windup = (raw <= 0.0 and error < 0.0) or (raw >= 1.0 and error > 0.0)
+        dgate = max(-self.gate_rate, min(self.gate_rate, (command - gate) / self.servo_time))
+        if (gate <= 0.0 and dgate < 0.0) or (gate >= 1.0 and dgate > 0.0):
+            dgate = 0.0
+        t_turbine = self.rated_torque * (gate * (2.0 - speed / w0) - self.loss * (speed / w0) ** 2)
+        t_electric = p_load * self.rated_torque * (1.0 + self.load_damping * (speed - w0) / w0)
+        dspeed = (t_turbine - t_electric - self.friction_torque) / self.inertia
+        return dspeed, dgate, 0.0 if windup else error, ref, t_turbine, t_electric
+
+    def do_step(self, current_time, step_size):
+        if not self.started:
+            self.speed = self.start_speed
+            self.gate = self.load + self.loss if self.start_speed > 0.5 * self.rated_speed else 0.0
+            self.started = True
+        n = max(1, int(step_size / 0.005 + 0.999))
+        h = step_size / n
+        t = current_time
+        s, g, i = self.speed, self.gate, self.integral
+        for _ in range(n):
+            k1 = self._rates(t, s, g, i)[:3]
+            k2 = self._rates(t + h / 2, s + h / 2 * k1[0], g + h / 2 * k1[1], i + h / 2 * k1[2])[:3]
+            k3 = self._rates(t + h / 2, s + h / 2 * k2[0], g + h / 2 * k2[1], i + h / 2 * k2[2])[:3]
+            k4 = self._rates(t + h, s + h * k3[0], g + h * k3[1], i + h * k3[2])[:3]
+            s += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+            g = min(1.0, max(0.0, g + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])))
+            i += h / 6 * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2])
+            t += h
+        self.speed, self.gate, self.integral = s, g, i
+        _, _, _, self.setpoint, self.turbine_torque, self.electric_torque = self._rates(t, s, g, i)
+        return True
