@@ -36,7 +36,7 @@ fn status_code(s: Status) -> fmi2Status {
     }
 }
 
-/// Send a message to the master's logger (errors always, others when enabled).
+/// Send a message to the master's logger (discards and errors always, others when enabled).
 fn log_to(
     callbacks: &fmi2CallbackFunctions,
     name: &CStr,
@@ -45,7 +45,7 @@ fn log_to(
     category: &str,
     text: &str,
 ) {
-    let always = matches!(status, Status::Error | Status::Fatal);
+    let always = matches!(status, Status::Discard | Status::Error | Status::Fatal);
     if !(enabled || always) {
         return;
     }
