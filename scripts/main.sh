@@ -22,4 +22,12 @@ $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --out
 # The FMU: build, pack, validate with FMPy, and simulate it with FMPy.
 bash fmu_pack.sh
 .venv/bin/python scripts/fmpy_demo.py out/RotorBearing.fmu out/fmpy_hydro_unit
-echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, jeffcott_run_up*, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png)"
+# System level: the rotor FMU coupled to a governor/turbine/generator FMU by libcosim
+# (start-up and load rejection, tilting-pad and plain bearings), and a Dask sweep.
+.venv/bin/pythonfmu build -f system/hydro_plant.py --dest out > /dev/null
+bash fmu_pack.sh --model models/hydro_unit_plain.toml
+bash fmu_pack.sh --model models/jeffcott.toml
+.venv/bin/python system/couple.py all 2>&1 | grep '→'
+.venv/bin/python system/sweep.py --fmu out/jeffcott.fmu --rpm 4000:16000:13 \
+  --param "bearings.left.viscosity,bearings.right.viscosity=0.01,0.02,0.04" --duration 0.6 --out out/sweep_jeffcott
+echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, jeffcott_run_up*, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*)"
