@@ -24,9 +24,10 @@ bash fmu_pack.sh
 .venv/bin/python scripts/fmpy_demo.py out/RotorBearing.fmu out/fmpy_hydro_unit
 # System level: the rotor FMU coupled to a governor/turbine/generator FMU by libcosim
 # (start-up and load rejection, tilting-pad and plain bearings), and a Dask sweep.
-.venv/bin/pythonfmu build -f system/hydro_plant.py --dest out > /dev/null
+.venv/bin/python system/build_plant.py out
 bash fmu_pack.sh --model models/hydro_unit_plain.toml
 bash fmu_pack.sh --model models/jeffcott.toml
+bash fmu_pack.sh --model models/classic_disk_rotor_damped.toml
 .venv/bin/python system/couple.py all 2>&1 | grep '→'
 .venv/bin/python system/sweep.py --fmu out/jeffcott.fmu --rpm 4000:16000:13 \
   --param "bearings.left.viscosity,bearings.right.viscosity=0.01,0.02,0.04" --duration 0.6 --out out/sweep_jeffcott

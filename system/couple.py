@@ -5,9 +5,10 @@ libcosim (libcosimpy, the Open Simulation Platform's FMI 2.0 master).
     rotor.friction_torque → plant.friction_torque
 
 Scenarios (CSV + PNG each, into out/):
-  startup   run-up from 5 rpm to 150 rpm, no load
+  startup   run-up of the hydro unit from 5 rpm to 150 rpm, no load
   rejection full load rejection at rated speed: overspeed, then governor recovery
-both for the tilting-pad (RotorBearing.fmu) and the plain-bearing hydro unit.
+            (both for the tilting-pad and the plain-bearing hydro unit)
+  critical  run-up from standstill through the first critical speed (classic rotor)
 
 usage: python system/couple.py [startup|rejection|all] [--duration S]
 """
@@ -25,12 +26,20 @@ ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 OUT = os.path.join(ROOT, "out")
 RATED = 150.0 * np.pi / 30.0
 
+HYDRO = {"tilting_pad": "RotorBearing.fmu", "plain": "hydro_unit_plain.fmu"}
 SCENARIOS = {
-    "startup": dict(duration=90.0, plant={"start_speed": 0.5, "ramp_time": 60.0, "load": 0.0}),
-    "rejection": dict(duration=60.0, plant={"start_speed": RATED, "ramp_time": 0.0, "load": 0.9,
-                                             "rejection_time": 5.0}),
+    "startup": dict(duration=90.0, rotors=HYDRO, rotor_params={},
+                    plant={"start_speed": 0.5, "ramp_time": 60.0, "load": 0.0}),
+    "rejection": dict(duration=60.0, rotors=HYDRO, rotor_params={},
+                      plant={"start_speed": RATED, "ramp_time": 0.0, "load": 0.9, "rejection_time": 5.0}),
+    # A run-up from standstill through a critical speed: the classic disk rotor on
+    # damped bearings (first critical 1111 rpm) driven by the same governor/turbine
+    # model scaled to a 2000 rpm, 0.5 kg·m² drive.
+    "critical": dict(duration=30.0, rotors={"linear": "classic_disk_rotor_damped.fmu"},
+                     rotor_params={"solver.time_step": 1e-3, "unbalance_ramp_time": 0.0},
+                     plant={"start_speed": 0.0, "ramp_time": 20.0, "load": 0.0, "inertia": 0.5,
+                            "rated_speed": 2000.0 * np.pi / 30.0, "rated_torque": 30.0, "loss": 0.02}),
 }
-ROTORS = {"tilting_pad": "RotorBearing.fmu", "plain": "hydro_unit_plain.fmu"}
 
 
 def references(execution, index):
@@ -117,10 +126,11 @@ def main():
     plant_fmu = os.path.join(OUT, "HydroPlant.fmu")
     for name in ([args.scenario] if args.scenario != "all" else list(SCENARIOS)):
         spec = SCENARIOS[name]
-        for bearing, fmu in ROTORS.items():
-            result = run(os.path.join(OUT, fmu), plant_fmu, args.duration or spec["duration"], spec["plant"])
+        for bearing, fmu in spec["rotors"].items():
+            result = run(os.path.join(OUT, fmu), plant_fmu, args.duration or spec["duration"], spec["plant"],
+                         rotor_params=spec["rotor_params"])
             prefix = os.path.join(OUT, f"coupled_{name}_{bearing}")
-            save(result, prefix, f"Hydro unit {name}, {bearing.replace('_', '-')} guide bearings (libcosim)")
+            save(result, prefix, f"{os.path.splitext(fmu)[0]}: {name}, {bearing.replace('_', '-')} bearings (libcosim)")
             peak = max(result[f"plant.speed"]) * 30 / np.pi
             print(f"{name} / {bearing}: final speed {result['plant.speed'][-1] * 30 / np.pi:.1f} rpm, peak {peak:.1f} rpm → {prefix}.csv/.png")
 

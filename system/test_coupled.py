@@ -50,6 +50,21 @@ check(abs(speed[-1] / RATED - 1.0) < 0.02, f"governor recovers rated speed: {spe
 after = t > 6.0
 check(np.all(np.abs(r["plant.electric_torque"][after]) < 1e-9), "no electrical torque after rejection")
 
+# Run-up from standstill through a critical speed (damped classic rotor, first critical
+# 116.4 rad/s = 1111 rpm): the orbit peaks near the critical and falls after it.
+spec = SCENARIOS["critical"]
+r = run(os.path.join(OUT, "classic_disk_rotor_damped.fmu"), plant, spec["duration"], spec["plant"],
+        rotor_params=spec["rotor_params"])
+speed = r["plant.speed"] * 30 / np.pi
+# Orbit about the static (gravity) position of the journal.
+x, y = r["rotor.bearings.drive_end.x"], r["rotor.bearings.drive_end.y"]
+radius = np.hypot(x - x[0], y - y[0])
+k = int(np.argmax(radius))
+check(speed[0] < 1.0 and speed[-1] > 1900.0, f"run-up from standstill to {speed[-1]:.0f} rpm")
+check(abs(speed[k] / 1111.3 - 1.0) < 0.1, f"orbit peaks at {speed[k]:.0f} rpm, near the 1111 rpm critical")
+check(radius[-1] < 0.5 * radius[k] and radius[k] > 3.0 * radius[np.searchsorted(speed, 700.0)],
+      f"response rises into and falls after the critical: {radius[np.searchsorted(speed, 700.0)] * 1e6:.2f} → {radius[k] * 1e6:.2f} → {radius[-1] * 1e6:.2f} µm")
+
 if failures:
     sys.exit(f"{len(failures)} coupled-system checks failed")
 print("coupled system: all checks passed")
