@@ -203,6 +203,8 @@ struct Work {
     f_ext: Vec<f64>,
     rp: Vec<f64>,
     small: Vec<f64>,
+    /// `small` holds the LU factors for the current Jacobians and factorization.
+    small_ready: bool,
     small_rhs: Vec<f64>,
     pivots: Vec<usize>,
     ey: Vec<f64>,
@@ -329,6 +331,7 @@ impl Simulator {
             f_ext: vec![0.0; n],
             rp: vec![0.0; n_internal],
             small: vec![0.0; s * s],
+            small_ready: false,
             small_rhs: vec![0.0; s],
             pivots: vec![0; s],
             ey: vec![0.0; n_journal],
@@ -562,6 +565,7 @@ impl Simulator {
             })?;
             let mut du = self.work.r.clone();
             let mut dp = self.work.rp.clone();
+            self.work.small_ready = false;
             self.small_solve(&factor, 0.0, true, &mut du, &mut dp)?;
             let mut t = 1.0;
             let mut accepted = false;
@@ -783,47 +787,68 @@ impl Simulator {
             w.ey[2 * k] = y[site.journal[0]];
             w.ey[2 * k + 1] = y[site.journal[1]];
         }
-        w.small.fill(0.0);
+        // The matrix depends only on the frozen Jacobians and G: factor it once per
+        // refresh (modified Newton), then only the right-hand side changes.
+        if !w.small_ready {
+            w.small.fill(0.0);
+            for (k, site) in self.sites.iter().enumerate() {
+                let n2 = site.eval.n();
+                let jac = |i: usize, j: usize| site.jk[i * n2 + j] + a1 * site.jc[i * n2 + j];
+                let jr = 2 * k;
+                let pr = sj + site.offset;
+                for i in 0..2 {
+                    // Rows of f: f + ΔK_jj G f − K_jp δp = ΔK_jj Eᵀy.
+                    w.small[(jr + i) * s + jr + i] += 1.0;
+                    if !journal_in_a {
+                        for a in 0..2 {
+                            let kia = jac(i, a);
+                            for c in 0..sj {
+                                w.small[(jr + i) * s + c] += kia * factor.g[(jr + a) * sj + c];
+                            }
+                        }
+                    }
+                    for m in 0..site.internal {
+                        w.small[(jr + i) * s + pr + m] -= jac(i, 2 + m);
+                    }
+                }
+                for m in 0..site.internal {
+                    // Rows of δp: −K_pj G f + K_pp δp = r_p − K_pj Eᵀy.
+                    let row = pr + m;
+                    for a in 0..2 {
+                        let kma = jac(2 + m, a);
+                        for c in 0..sj {
+                            w.small[row * s + c] -= kma * factor.g[(jr + a) * sj + c];
+                        }
+                    }
+                    for l in 0..site.internal {
+                        w.small[row * s + pr + l] += jac(2 + m, 2 + l);
+                    }
+                }
+            }
+            if !lu_in_place(&mut w.small, s, &mut w.pivots) {
+                return Err(SolverError::Linalg(LinalgError::Singular { column: 0 }));
+            }
+            w.small_ready = true;
+        }
         w.small_rhs.fill(0.0);
         for (k, site) in self.sites.iter().enumerate() {
             let n2 = site.eval.n();
             let jac = |i: usize, j: usize| site.jk[i * n2 + j] + a1 * site.jc[i * n2 + j];
             let jr = 2 * k;
-            let pr = sj + site.offset;
-            for i in 0..2 {
-                // Rows of f: f + ΔK_jj G f − K_jp δp = ΔK_jj Eᵀy.
-                w.small[(jr + i) * s + jr + i] += 1.0;
-                if !journal_in_a {
+            if !journal_in_a {
+                for i in 0..2 {
                     for a in 0..2 {
-                        let kia = jac(i, a);
-                        for c in 0..sj {
-                            w.small[(jr + i) * s + c] += kia * factor.g[(jr + a) * sj + c];
-                        }
-                        w.small_rhs[jr + i] += kia * w.ey[jr + a];
+                        w.small_rhs[jr + i] += jac(i, a) * w.ey[jr + a];
                     }
-                }
-                for m in 0..site.internal {
-                    w.small[(jr + i) * s + pr + m] -= jac(i, 2 + m);
                 }
             }
             for m in 0..site.internal {
-                // Rows of δp: −K_pj G f + K_pp δp = r_p − K_pj Eᵀy.
-                let row = pr + m;
+                let row = sj + site.offset + m;
                 for a in 0..2 {
-                    let kma = jac(2 + m, a);
-                    for c in 0..sj {
-                        w.small[row * s + c] -= kma * factor.g[(jr + a) * sj + c];
-                    }
-                    w.small_rhs[row] -= kma * w.ey[jr + a];
+                    w.small_rhs[row] -= jac(2 + m, a) * w.ey[jr + a];
                 }
                 w.small_rhs[row] += dp[site.offset + m];
-                for l in 0..site.internal {
-                    w.small[row * s + pr + l] += jac(2 + m, 2 + l);
-                }
             }
-        }
-        if !lu_in_place(&mut w.small, s, &mut w.pivots) {
-            return Err(SolverError::Linalg(LinalgError::Singular { column: 0 }));
         }
         lu_solve(&w.small, s, &w.pivots, &mut w.small_rhs);
         // δu = A⁻¹ r − A⁻¹ E f: a second solve with the journal forces f.
@@ -1011,8 +1036,10 @@ impl Simulator {
                 a.scale_add(a1 * speed1, &self.rotor.gyroscopic)?;
                 a.scale_add(a0, &self.rotor.mass)?;
                 *factor = Some(self.make_factor(a, h, speed1)?);
+                self.work.small_ready = false;
             }
             if !jacobian_current {
+                self.work.small_ready = false;
                 for site in &mut self.sites {
                     site.jk.copy_from_slice(&site.eval.stiffness);
                     site.jc.copy_from_slice(&site.eval.damping);
