@@ -2,7 +2,8 @@
 //! Timoshenko elements on 2 … 20 nonlinear plain bearings. Prints the time per
 //! step against DOF count, the fitted exponent, the time of one triangular solve
 //! of the same banded system (the floor for an implicit method) and the memory
-//! per DOF (counted by a global allocator). `cargo bench --bench scaling`.
+//! per DOF (counted by a global allocator). `cargo bench --bench scaling`;
+//! `SCALING_STATS=1` also prints the solver counters (steps, Newton iterations).
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -96,6 +97,9 @@ fn measure(elements: usize, bearings: usize) -> Row {
         sim.advance_to((20 + k) as f64 * h).unwrap();
     }
     let step_us = t0.elapsed().as_secs_f64() / steps as f64 * 1e6;
+    if std::env::var("SCALING_STATS").is_ok() {
+        eprintln!("{elements} elements: {:?}", sim.stats());
+    }
     let bytes_per_dof = (PEAK.load(Ordering::Relaxed) - base) as f64 / dofs as f64;
     // Floor: one forward/back substitution with the factored banded matrix.
     let r = sim.rotor();
