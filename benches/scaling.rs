@@ -15,10 +15,12 @@ use rotor_bearing::solver::{Simulator, SolverOptions};
 
 struct Counting;
 static LIVE: AtomicUsize = AtomicUsize::new(0);
+static CALLS: AtomicUsize = AtomicUsize::new(0);
 static PEAK: AtomicUsize = AtomicUsize::new(0);
 
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        CALLS.fetch_add(1, Ordering::Relaxed);
         let now = LIVE.fetch_add(layout.size(), Ordering::Relaxed) + layout.size();
         PEAK.fetch_max(now, Ordering::Relaxed);
         unsafe { System.alloc(layout) }
@@ -70,6 +72,7 @@ struct Row {
     step_us: f64,
     solve_us: f64,
     bytes_per_dof: f64,
+    allocations: f64,
 }
 
 fn measure(elements: usize, bearings: usize) -> Row {
@@ -92,11 +95,13 @@ fn measure(elements: usize, bearings: usize) -> Row {
     sim.settle_static().unwrap();
     sim.advance_to(20.0 * h).unwrap();
     let steps = (200_000 / elements).clamp(20, 4000);
+    let calls_before = CALLS.load(Ordering::Relaxed);
     let t0 = Instant::now();
     for k in 1..=steps {
         sim.advance_to((20 + k) as f64 * h).unwrap();
     }
     let step_us = t0.elapsed().as_secs_f64() / steps as f64 * 1e6;
+    let allocations = (CALLS.load(Ordering::Relaxed) - calls_before) as f64 / steps as f64;
     if std::env::var("SCALING_STATS").is_ok() {
         eprintln!("{elements} elements: {:?}", sim.stats());
     }
@@ -120,6 +125,7 @@ fn measure(elements: usize, bearings: usize) -> Row {
         step_us,
         solve_us,
         bytes_per_dof,
+        allocations,
     }
 }
 
@@ -138,21 +144,22 @@ fn main() {
         return;
     }
     println!(
-        "| elements | bearings | DOFs | µs per step | µs per banded solve | step / solve | peak bytes per DOF |"
+        "| elements | bearings | DOFs | µs per step | µs per banded solve | step / solve | peak bytes per DOF | allocations per step |"
     );
-    println!("|---:|---:|---:|---:|---:|---:|---:|");
+    println!("|---:|---:|---:|---:|---:|---:|---:|---:|");
     let mut series = Vec::new();
     for (elements, bearings) in [(10, 2), (10, 11), (100, 20), (1_000, 20), (10_000, 20)] {
         let r = measure(elements, bearings);
         println!(
-            "| {} | {} | {} | {:.1} | {:.2} | {:.1} | {:.0} |",
+            "| {} | {} | {} | {:.1} | {:.2} | {:.1} | {:.0} | {:.2} |",
             r.elements,
             r.bearings,
             r.dofs,
             r.step_us,
             r.solve_us,
             r.step_us / r.solve_us,
-            r.bytes_per_dof
+            r.bytes_per_dof,
+            r.allocations
         );
         series.push(r);
     }

@@ -1013,6 +1013,11 @@ impl Simulator {
             }
             let stalled = iteration > 0 && residual > 0.7 * last;
             last = residual;
+            // The predictor can be far from the solution: take the Jacobian once more
+            // at the first corrected iterate, then keep it (modified Newton).
+            if iteration == 1 {
+                jacobian_current = false;
+            }
             // A stalled modified Newton gets the current bearing Jacobian (cheap: it
             // lives on the few bearing DOFs) and, once per step, `A` at the current speed.
             let mut refresh_now = false;
