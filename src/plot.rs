@@ -18,6 +18,27 @@ pub struct PlotError {
     message: String,
 }
 
+fn failed(path: &Path, e: impl std::fmt::Display) -> PlotError {
+    PlotError {
+        file: path.display().to_string(),
+        message: e.to_string(),
+    }
+}
+
+/// The legend box every figure uses, at `$position`.
+macro_rules! legend {
+    ($chart:expr, $position:expr, $path:expr) => {
+        $chart
+            .configure_series_labels()
+            .position($position)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 16))
+            .draw()
+            .map_err(|e| failed($path, e))
+    };
+}
+
 fn whirl_color(w: Whirl) -> RGBColor {
     match w {
         Whirl::Forward => RGBColor(200, 30, 30),
@@ -36,10 +57,6 @@ pub fn campbell_png(
     harmonics: &[f64],
     criticals: &[CriticalSpeed],
 ) -> Result<(), PlotError> {
-    let err = |e: &dyn std::fmt::Display| PlotError {
-        file: path.display().to_string(),
-        message: e.to_string(),
-    };
     let hz = 1.0 / (2.0 * std::f64::consts::PI);
     let s_max = diagram
         .iter()
@@ -61,14 +78,14 @@ pub fn campbell_png(
         * 1.08;
 
     let root = BitMapBackend::new(path, (1100, 760)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
+    root.fill(&WHITE).map_err(|e| failed(path, e))?;
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 26))
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(70)
         .build_cartesian_2d(s_min..s_max, 0.0..f_max)
-        .map_err(|e| err(&e))?;
+        .map_err(|e| failed(path, e))?;
     chart
         .configure_mesh()
         .x_desc("spin speed (rpm)")
@@ -77,7 +94,7 @@ pub fn campbell_png(
         .x_label_formatter(&|v| format!("{v:.0}"))
         .y_label_formatter(&|v| format!("{v:.0}"))
         .draw()
-        .map_err(|e| err(&e))?;
+        .map_err(|e| failed(path, e))?;
 
     let ranks = diagram.iter().map(|p| p.modes.len()).min().unwrap_or(0);
     for rank in 0..ranks {
@@ -90,7 +107,7 @@ pub fn campbell_png(
                 line,
                 RGBColor(180, 180, 180).stroke_width(1),
             ))
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
         chart
             .draw_series(diagram.iter().map(|p| {
                 let m = &p.modes[rank];
@@ -100,7 +117,7 @@ pub fn campbell_png(
                     whirl_color(m.whirl).filled(),
                 )
             }))
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
     }
     for &h in harmonics {
         chart
@@ -108,7 +125,7 @@ pub fn campbell_png(
                 [(s_min, h * s_min / 60.0), (s_max, h * s_max / 60.0)],
                 BLACK.stroke_width(2),
             ))
-            .map_err(|e| err(&e))?
+            .map_err(|e| failed(path, e))?
             .label(format!("{h}× excitation"))
             .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLACK.stroke_width(2)));
     }
@@ -120,7 +137,7 @@ pub fn campbell_png(
                 BLACK.stroke_width(2),
             )
         }))
-        .map_err(|e| err(&e))?
+        .map_err(|e| failed(path, e))?
         .label("critical speed")
         .legend(|(x, y)| Circle::new((x + 10, y), 6, BLACK.stroke_width(2)));
     for (w, name) in [
@@ -130,19 +147,12 @@ pub fn campbell_png(
     ] {
         chart
             .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
-            .map_err(|e| err(&e))?
+            .map_err(|e| failed(path, e))?
             .label(name)
             .legend(move |(x, y)| Circle::new((x + 10, y), 4, whirl_color(w).filled()));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 16))
-        .draw()
-        .map_err(|e| err(&e))?;
-    root.present().map_err(|e| err(&e))?;
+    legend!(chart, SeriesLabelPosition::UpperLeft, path)?;
+    root.present().map_err(|e| failed(path, e))?;
     Ok(())
 }
 
@@ -155,15 +165,11 @@ pub fn coefficients_png(
     stiffness: &[(String, Vec<f64>)],
     damping: &[(String, Vec<f64>)],
 ) -> Result<(), PlotError> {
-    let err = |e: &dyn std::fmt::Display| PlotError {
-        file: path.display().to_string(),
-        message: e.to_string(),
-    };
     let root = BitMapBackend::new(path, (1400, 640)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
+    root.fill(&WHITE).map_err(|e| failed(path, e))?;
     let root = root
         .titled(title, ("sans-serif", 26))
-        .map_err(|e| err(&e))?;
+        .map_err(|e| failed(path, e))?;
     let panels = root.split_evenly((1, 2));
     let colors = [
         RGBColor(200, 30, 30),
@@ -185,14 +191,14 @@ pub fn coefficients_png(
             .x_label_area_size(44)
             .y_label_area_size(64)
             .build_cartesian_2d(e_min..e_max, (lo - pad)..(hi + pad))
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
         chart
             .configure_mesh()
             .x_desc("eccentricity ratio ε")
             .y_desc(label)
             .label_style(("sans-serif", 16))
             .draw()
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
         for (k, (name, v)) in series.iter().enumerate() {
             let color = colors[k % colors.len()];
             chart
@@ -200,22 +206,15 @@ pub fn coefficients_png(
                     eccentricity.iter().copied().zip(v.iter().copied()),
                     color.stroke_width(2),
                 ))
-                .map_err(|e| err(&e))?
+                .map_err(|e| failed(path, e))?
                 .label(name.clone())
                 .legend(move |(x, y)| {
                     PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2))
                 });
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperLeft)
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK)
-            .label_font(("sans-serif", 16))
-            .draw()
-            .map_err(|e| err(&e))?;
+        legend!(chart, SeriesLabelPosition::UpperLeft, path)?;
     }
-    root.present().map_err(|e| err(&e))?;
+    root.present().map_err(|e| failed(path, e))?;
     Ok(())
 }
 
@@ -235,19 +234,15 @@ pub fn orbits_png(
     orbits: &[(String, Vec<f64>, Vec<f64>)],
     clearance: Option<f64>,
 ) -> Result<(), PlotError> {
-    let err = |e: &dyn std::fmt::Display| PlotError {
-        file: path.display().to_string(),
-        message: e.to_string(),
-    };
     let count = orbits.len().max(1);
     let cols = count.min(3);
     let rows = count.div_ceil(cols);
     let root =
         BitMapBackend::new(path, (460 * cols as u32, 500 * rows as u32 + 50)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
+    root.fill(&WHITE).map_err(|e| failed(path, e))?;
     let root = root
         .titled(title, ("sans-serif", 24))
-        .map_err(|e| err(&e))?;
+        .map_err(|e| failed(path, e))?;
     let panels = root.split_evenly((rows, cols));
     for (k, (panel, (name, x, y))) in panels.iter().zip(orbits).enumerate() {
         // Equal axes centred on the orbit's mean position.
@@ -265,21 +260,21 @@ pub fn orbits_png(
             .x_label_area_size(40)
             .y_label_area_size(56)
             .build_cartesian_2d((cx - r)..(cx + r), (cy - r)..(cy + r))
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
         chart
             .configure_mesh()
             .x_desc("x (µm)")
             .y_desc("y (µm)")
             .label_style(("sans-serif", 14))
             .draw()
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
         let color = SERIES_COLORS[k % SERIES_COLORS.len()];
         chart
             .draw_series(LineSeries::new(
                 x.iter().zip(y).map(|(a, b)| (a * 1e6, b * 1e6)),
                 color.stroke_width(1),
             ))
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
         if let Some(c) = clearance.filter(|c| c * 1e6 <= r + cx.hypot(cy)) {
             let circle: Vec<(f64, f64)> = (0..=180)
                 .map(|i| {
@@ -289,10 +284,10 @@ pub fn orbits_png(
                 .collect();
             chart
                 .draw_series(LineSeries::new(circle, BLACK.stroke_width(1)))
-                .map_err(|e| err(&e))?;
+                .map_err(|e| failed(path, e))?;
         }
     }
-    root.present().map_err(|e| err(&e))?;
+    root.present().map_err(|e| failed(path, e))?;
     Ok(())
 }
 
@@ -305,12 +300,8 @@ pub fn spectrum_png(
     spectra: &[(String, Vec<f64>)],
     markers: &[(String, f64)],
 ) -> Result<(), PlotError> {
-    let err = |e: &dyn std::fmt::Display| PlotError {
-        file: path.display().to_string(),
-        message: e.to_string(),
-    };
     let root = BitMapBackend::new(path, (1100, 600)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
+    root.fill(&WHITE).map_err(|e| failed(path, e))?;
     let f0 = freqs.first().copied().unwrap_or(0.0);
     let f1 = freqs.last().copied().unwrap_or(1.0);
     let top = spectra
@@ -325,28 +316,28 @@ pub fn spectrum_png(
         .x_label_area_size(44)
         .y_label_area_size(64)
         .build_cartesian_2d(f0..f1, 0.0..top.max(1e-9))
-        .map_err(|e| err(&e))?;
+        .map_err(|e| failed(path, e))?;
     chart
         .configure_mesh()
         .x_desc("frequency (Hz), positive = forward whirl")
         .y_desc("amplitude (µm)")
         .label_style(("sans-serif", 16))
         .draw()
-        .map_err(|e| err(&e))?;
+        .map_err(|e| failed(path, e))?;
     for (label, f) in markers {
         chart
             .draw_series(LineSeries::new(
                 [(*f, 0.0), (*f, top)],
                 BLACK.mix(0.4).stroke_width(1),
             ))
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
         chart
             .draw_series(std::iter::once(Text::new(
                 label.clone(),
                 (*f, top * 0.97),
                 ("sans-serif", 14),
             )))
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
     }
     for (k, (name, amps)) in spectra.iter().enumerate() {
         let color = SERIES_COLORS[k % SERIES_COLORS.len()];
@@ -355,19 +346,12 @@ pub fn spectrum_png(
                 freqs.iter().zip(amps).map(|(f, a)| (*f, a * 1e6)),
                 color.stroke_width(2),
             ))
-            .map_err(|e| err(&e))?
+            .map_err(|e| failed(path, e))?
             .label(name.clone())
             .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2)));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 16))
-        .draw()
-        .map_err(|e| err(&e))?;
-    root.present().map_err(|e| err(&e))?;
+    legend!(chart, SeriesLabelPosition::UpperRight, path)?;
+    root.present().map_err(|e| failed(path, e))?;
     Ok(())
 }
 
@@ -380,12 +364,8 @@ pub fn waterfall_png(
     freqs: &[f64],
     rows: &[(f64, Vec<f64>)],
 ) -> Result<(), PlotError> {
-    let err = |e: &dyn std::fmt::Display| PlotError {
-        file: path.display().to_string(),
-        message: e.to_string(),
-    };
     let root = BitMapBackend::new(path, (1100, 800)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
+    root.fill(&WHITE).map_err(|e| failed(path, e))?;
     let (f0, f1) = (freqs[0], freqs[freqs.len() - 1]);
     let s_min = rows.iter().map(|r| r.0).fold(f64::INFINITY, f64::min);
     let s_max = rows.iter().map(|r| r.0).fold(0.0, f64::max);
@@ -402,21 +382,21 @@ pub fn waterfall_png(
         .x_label_area_size(44)
         .y_label_area_size(70)
         .build_cartesian_2d(f0..f1, (s_min - spacing)..(s_max + 5.0 * spacing))
-        .map_err(|e| err(&e))?;
+        .map_err(|e| failed(path, e))?;
     chart
         .configure_mesh()
         .x_desc("frequency (Hz), positive = forward whirl")
         .y_desc("spin speed (rpm) + amplitude")
         .label_style(("sans-serif", 16))
         .draw()
-        .map_err(|e| err(&e))?;
+        .map_err(|e| failed(path, e))?;
     for (order, color) in [(1.0, RGBColor(200, 30, 30)), (0.5, RGBColor(30, 60, 200))] {
         chart
             .draw_series(LineSeries::new(
                 [(order * s_min / 60.0, s_min), (order * s_max / 60.0, s_max)],
                 color.mix(0.5).stroke_width(1),
             ))
-            .map_err(|e| err(&e))?
+            .map_err(|e| failed(path, e))?
             .label(format!("{order}×"))
             .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2)));
     }
@@ -426,16 +406,9 @@ pub fn waterfall_png(
                 freqs.iter().zip(amps).map(|(f, a)| (*f, speed + a * scale)),
                 BLACK.stroke_width(1),
             ))
-            .map_err(|e| err(&e))?;
+            .map_err(|e| failed(path, e))?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 16))
-        .draw()
-        .map_err(|e| err(&e))?;
-    root.present().map_err(|e| err(&e))?;
+    legend!(chart, SeriesLabelPosition::UpperLeft, path)?;
+    root.present().map_err(|e| failed(path, e))?;
     Ok(())
 }

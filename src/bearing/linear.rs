@@ -1,6 +1,6 @@
 //! Linear bearing: constant stiffness and damping, cross-coupling allowed.
 
-use nalgebra::{Matrix2, Vector2};
+use nalgebra::Matrix2;
 
 use super::{Bearing, BearingError, BearingEval, BearingForce, JournalState, check_state};
 
@@ -44,9 +44,9 @@ impl Bearing for LinearBearing {
         out: &mut BearingEval,
     ) -> Result<(), BearingError> {
         check_state(2, q, qdot, speed, out)?;
-        let (x, v) = (Vector2::new(q[0], q[1]), Vector2::new(qdot[0], qdot[1]));
+        let state = JournalState::from_coordinates(q, qdot);
         let part = BearingForce {
-            force: -(self.stiffness * x + self.damping * v),
+            force: -(self.stiffness * state.position + self.damping * state.velocity),
             stiffness: self.stiffness,
             damping: self.damping,
         };
@@ -63,6 +63,7 @@ impl Bearing for LinearBearing {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::Vector2;
 
     #[test]
     fn force_opposes_displacement_and_matches_jacobians() {

@@ -26,6 +26,16 @@ pub struct JournalState {
     pub velocity: Vector2<f64>,
 }
 
+impl JournalState {
+    /// The journal part `(x, y)`, `(ẋ, ẏ)` of generalized coordinates `q`, `q̇`.
+    pub fn from_coordinates(q: &[f64], qdot: &[f64]) -> Self {
+        Self {
+            position: Vector2::new(q[0], q[1]),
+            velocity: Vector2::new(qdot[0], qdot[1]),
+        }
+    }
+}
+
 /// Force on the journal with its stiffness and damping Jacobians.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BearingForce {

@@ -200,10 +200,7 @@ impl Bearing for PlainBearing {
         out: &mut BearingEval,
     ) -> Result<(), BearingError> {
         check_state(2, q, qdot, speed, out)?;
-        let state = JournalState {
-            position: Vector2::new(q[0], q[1]),
-            velocity: Vector2::new(qdot[0], qdot[1]),
-        };
+        let state = JournalState::from_coordinates(q, qdot);
         let part = self.film().force(&state, speed, None)?;
         out.clear();
         out.add_transformed(&part, None);
