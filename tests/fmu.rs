@@ -312,6 +312,7 @@ fn fmu_equals_the_direct_simulator() {
     sim.settle_static().unwrap();
     let speed_vr = fmu.vr("shaft.speed");
     let h = 0.01;
+    let mut rows = Vec::new();
     for _ in 0..50 {
         let t = sim.time();
         let rate = 2.0; // rad/s² ramp
@@ -336,11 +337,19 @@ fn fmu_equals_the_direct_simulator() {
             o.probes[1].x,
             o.friction_torque,
         ];
-        for (g, w) in got.iter().zip(want) {
+        rows.push((t + h, got, want));
+    }
+    // Same code, same operations: differences are allowed at the round-off of
+    // each output's magnitude only (the test binary and the FMU library are built
+    // with different optimization levels; in practice they agree bit for bit).
+    for column in 0..OUTPUTS.len() {
+        let scale = rows.iter().fold(0.0f64, |m, r| m.max(r.2[column].abs()));
+        for (t, got, want) in &rows {
+            let (g, w) = (got[column], want[column]);
             assert!(
-                (g - w).abs() <= 1e-12 * w.abs().max(1e-30),
-                "t = {}: {g} vs {w}",
-                t + h
+                (g - w).abs() <= 1e-12 * scale,
+                "{} at t = {t}: {g} vs {w}",
+                OUTPUTS[column]
             );
         }
     }

@@ -97,20 +97,34 @@ impl<T: Scalar> BandMatrix<T> {
 
     /// `y = A x` without allocation.
     pub fn mul_vec(&self, x: &[T], y: &mut [T]) -> Result<(), LinalgError> {
-        check_len(self.n, x.len())?;
         check_len(self.n, y.len())?;
         y.fill(T::zero());
+        self.mul_add_vec(T::one(), x, y)
+    }
+
+    /// `y += alpha A x` without allocation.
+    pub fn mul_add_vec(&self, alpha: T, x: &[T], y: &mut [T]) -> Result<(), LinalgError> {
+        check_len(self.n, x.len())?;
+        check_len(self.n, y.len())?;
         let kv = self.kl + self.ku;
         for (j, &xj) in x.iter().enumerate() {
             let i0 = j.saturating_sub(self.ku);
             let i1 = (j + self.kl).min(self.n - 1);
             let base = j * self.ldab + kv - j;
             let col = &self.data[base + i0..=base + i1];
+            let axj = alpha * xj;
             for (yi, &a) in y[i0..=i1].iter_mut().zip(col) {
-                *yi += a * xj;
+                *yi += a * axj;
             }
         }
         Ok(())
+    }
+
+    /// `self = other` without allocation; the band of `other` must lie within
+    /// the band of `self`.
+    pub fn assign(&mut self, other: &BandMatrix<T>) -> Result<(), LinalgError> {
+        self.data.fill(T::zero());
+        self.scale_add(T::one(), other)
     }
 
     /// Dense copy (for tests and small problems).
@@ -147,6 +161,22 @@ impl<T: Scalar> BandMatrix<T> {
     /// zero or whose modulus is below `n * EPSILON * max|a_ij|` is reported as
     /// [`LinalgError::Singular`].
     pub fn lu(&self) -> Result<BandLu<T>, LinalgError> {
+        let mut lu = BandLu {
+            n: self.n,
+            kl: self.kl,
+            ku: self.ku,
+            ldab: self.ldab,
+            data: Vec::new(),
+            ipiv: Vec::new(),
+        };
+        self.lu_into(&mut lu)?;
+        Ok(lu)
+    }
+
+    /// [`BandMatrix::lu`] into the storage of an earlier factorization (no
+    /// allocation when the sizes match, as in a time stepper refactoring at a
+    /// new speed).
+    pub fn lu_into(&self, lu: &mut BandLu<T>) -> Result<(), LinalgError> {
         let (n, kl, ku, ldab) = (self.n, self.kl, self.ku, self.ldab);
         let kv = kl + ku;
         let mut amax = 0.0_f64;
@@ -162,12 +192,19 @@ impl<T: Scalar> BandMatrix<T> {
             }
         }
         let thresh = n as f64 * f64::EPSILON * amax;
-        let mut a = self.data.clone();
+        lu.n = n;
+        lu.kl = kl;
+        lu.ku = ku;
+        lu.ldab = ldab;
+        lu.data.clear();
+        lu.data.extend_from_slice(&self.data);
+        lu.ipiv.clear();
+        lu.ipiv.resize(n, 0);
+        let (a, ipiv) = (&mut lu.data, &mut lu.ipiv);
         // The fill-in rows are zero by construction; clear them anyway.
         for col in a.chunks_exact_mut(ldab) {
             col[..kl].fill(T::zero());
         }
-        let mut ipiv = vec![0usize; n];
         let mut ju = 0usize;
         for (j, piv) in ipiv.iter_mut().enumerate() {
             let km = kl.min(n - 1 - j);
@@ -210,14 +247,7 @@ impl<T: Scalar> BandMatrix<T> {
                 }
             }
         }
-        Ok(BandLu {
-            n,
-            kl,
-            ku,
-            ldab,
-            data: a,
-            ipiv,
-        })
+        Ok(())
     }
 }
 
