@@ -13,10 +13,10 @@ impl Scalar for Complex<f64> {}
 
 /// Square `n × n` matrix with `kl` sub- and `ku` super-diagonals.
 ///
-/// Column-major LAPACK band storage with leading dimension `ldab = 2*kl + ku + 1`:
-/// entry `(i, j)` lives at `data[(kl + ku + i - j) + j * ldab]`. The first `kl`
-/// rows of every column are reserved for the fill-in produced by row pivoting,
-/// so [`BandMatrix::lu`] factorizes a plain copy of the storage.
+/// Column-major LAPACK band storage with leading dimension `ldab = kl + ku + 1`:
+/// entry `(i, j)` lives at `data[(ku + i - j) + j * ldab]`. Only the band is
+/// stored (mat-vecs stream no padding); [`BandMatrix::lu`] copies it into
+/// factor storage with `kl` extra rows for the fill-in of row pivoting.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BandMatrix<T> {
     n: usize,
@@ -32,7 +32,7 @@ impl<T: Scalar> BandMatrix<T> {
     pub fn new(n: usize, kl: usize, ku: usize) -> Self {
         let kl = kl.min(n.saturating_sub(1));
         let ku = ku.min(n.saturating_sub(1));
-        let ldab = 2 * kl + ku + 1;
+        let ldab = kl + ku + 1;
         Self {
             n,
             kl,
@@ -66,7 +66,7 @@ impl<T: Scalar> BandMatrix<T> {
     #[inline]
     fn index(&self, i: usize, j: usize) -> Option<usize> {
         if i < self.n && j < self.n && i + self.ku >= j && i <= j + self.kl {
-            Some(self.kl + self.ku + i - j + j * self.ldab)
+            Some(self.ku + i - j + j * self.ldab)
         } else {
             None
         }
@@ -106,11 +106,10 @@ impl<T: Scalar> BandMatrix<T> {
     pub fn mul_add_vec(&self, alpha: T, x: &[T], y: &mut [T]) -> Result<(), LinalgError> {
         check_len(self.n, x.len())?;
         check_len(self.n, y.len())?;
-        let kv = self.kl + self.ku;
         for (j, &xj) in x.iter().enumerate() {
             let i0 = j.saturating_sub(self.ku);
             let i1 = (j + self.kl).min(self.n - 1);
-            let base = j * self.ldab + kv - j;
+            let base = j * self.ldab + self.ku - j;
             let col = &self.data[base + i0..=base + i1];
             let axj = alpha * xj;
             for (yi, &a) in y[i0..=i1].iter_mut().zip(col) {
@@ -138,8 +137,7 @@ impl<T: Scalar> BandMatrix<T> {
         if other.kl > self.kl || other.ku > self.ku {
             return Err(LinalgError::IncompatibleBand);
         }
-        let kv = self.kl + self.ku;
-        let okv = other.kl + other.ku;
+        let (kv, okv) = (self.ku, other.ku);
         for j in 0..self.n {
             let i0 = j.saturating_sub(other.ku);
             let i1 = (j + other.kl).min(self.n - 1);
@@ -165,7 +163,7 @@ impl<T: Scalar> BandMatrix<T> {
             n: self.n,
             kl: self.kl,
             ku: self.ku,
-            ldab: self.ldab,
+            ldab: 0,
             data: Vec::new(),
             ipiv: Vec::new(),
         };
@@ -177,13 +175,14 @@ impl<T: Scalar> BandMatrix<T> {
     /// allocation when the sizes match, as in a time stepper refactoring at a
     /// new speed).
     pub fn lu_into(&self, lu: &mut BandLu<T>) -> Result<(), LinalgError> {
-        let (n, kl, ku, ldab) = (self.n, self.kl, self.ku, self.ldab);
+        let (n, kl, ku) = (self.n, self.kl, self.ku);
         let kv = kl + ku;
+        let ldab = 2 * kl + ku + 1;
         let mut amax = 0.0_f64;
         for j in 0..n {
             let i0 = j.saturating_sub(ku);
             let i1 = (j + kl).min(n - 1);
-            let base = j * ldab + kv - j;
+            let base = j * self.ldab + ku - j;
             for a in &self.data[base + i0..=base + i1] {
                 if !a.is_finite() {
                     return Err(LinalgError::NotFinite);
@@ -197,14 +196,17 @@ impl<T: Scalar> BandMatrix<T> {
         lu.ku = ku;
         lu.ldab = ldab;
         lu.data.clear();
-        lu.data.extend_from_slice(&self.data);
+        lu.data.resize(ldab * n, T::zero());
+        for (dst, src) in lu
+            .data
+            .chunks_exact_mut(ldab)
+            .zip(self.data.chunks_exact(self.ldab))
+        {
+            dst[kl..].copy_from_slice(src);
+        }
         lu.ipiv.clear();
         lu.ipiv.resize(n, 0);
         let (a, ipiv) = (&mut lu.data, &mut lu.ipiv);
-        // The fill-in rows are zero by construction; clear them anyway.
-        for col in a.chunks_exact_mut(ldab) {
-            col[..kl].fill(T::zero());
-        }
         let mut ju = 0usize;
         for (j, piv) in ipiv.iter_mut().enumerate() {
             let km = kl.min(n - 1 - j);
