@@ -15,25 +15,38 @@
 //! `1 − e^{−t/τ}`.
 //!
 //! # Step
-//! Newmark gives `ü = a0 (u − uₙ) − a2 u̇ₙ − a3 üₙ`, `u̇ = a1 (u − uₙ) − a4 u̇ₙ − a5 üₙ`
-//! (`a0 = 4/h²`, `a1 = 2/h`, `a2 = 4/h`, `a3 = a4 = 1`, `a5 = 0`). Newton on the
-//! residual uses `J = A + E (K_b + a1 C_b) Eᵀ` (plus the pad blocks) with the
-//! linear part `A = K + a1 (C + Ω_ref G) + a0 M` factored once per step size and
-//! speed band (banded LU, O(n)). The bearing part enters through a Schur
-//! complement on the few journal and pad DOFs: with `Z = A⁻¹E` kept with the
-//! factorization, one Newton iteration costs one banded solve, `O(n·s)` for
-//! `Z f`, and a dense solve of size `s = 2·bearings + pads`. Cost per step grows
-//! linearly with the rotor size.
+//! Newmark gives `ü = a0 (u − uₙ) − a2 u̇ₙ − üₙ`, `u̇ = a1 (u − uₙ) − u̇ₙ`
+//! (`a0 = 4/h²`, `a1 = 2/h`, `a2 = 4/h`), so the rotor equations of a step are
+//! `A u = b + E F_b` with `A = K + a1 (C + Ω G) + a0 M` (banded LU, O(n)) and the
+//! effective load `b = f + M (a0 uₙ + a2 u̇ₙ + üₙ) + (C + Ω G)(a1 uₙ + u̇ₙ)`.
+//!
+//! **Exact factorization** (the usual case): `u = A⁻¹ b + A⁻¹ E F_b`, so Newton
+//! runs on the journal coordinates `j = Eᵀu` and pad tilts alone,
+//! `j = Eᵀ A⁻¹ b + G F_b(j, p)`, `Q_p(j, p) = 0`, `G = Eᵀ A⁻¹ E` kept with the
+//! factorization. Full Newton: the bearing Jacobians (`K_b + a1 C_b`) are fresh
+//! at every iterate, the pads are condensed bearing by bearing, and the dense
+//! system has the size of the journal DOFs. A step costs two banded mat-vecs,
+//! one banded solve, and `A⁻¹ E F_b` (a stored `Z = A⁻¹E` when there are few
+//! journals, else a second solve), whatever the number of iterations.
+//! `A` is refactored (into the same storage) when the step size changes, and at
+//! every speed change when the journal DOFs are few (≤ 8); sub-steps that differ
+//! from the factored step by time-grid round-off take the factored step.
+//!
+//! **Stale factorization** (many journals, speed within ±2 % of the factored
+//! one): modified Newton on the full residual with `J = A + E (K_b + a1 C_b) Eᵀ`
+//! (plus pad blocks) through a Schur complement on the bearing DOFs.
 //!
 //! # Convergence and failure
-//! A step has converged when the residual is below `tolerance` times the largest
-//! force term, and the increment is below `tolerance` times the displacement scale
-//! (largest translational displacement, at least the smallest bearing clearance).
-//! *Modified* Newton keeps the bearing Jacobian of the first iteration; when the
-//! residual stops contracting (ratio > 0.7) it is refreshed (and `A` refactored at
-//! the current speed); when that fails within `max_iterations` the step is cut in
-//! half, down to `2^-max_step_cuts`. A step that still fails is an error: an
-//! unconverged state is never returned.
+//! Exact path: a step has converged when the Newton correction of the journal
+//! and pad coordinates is below `tolerance` times the displacement scale (their
+//! largest value, at least the smallest bearing clearance); the journal forces at
+//! the corrected point are taken to first order, which satisfies the condensed
+//! equations exactly. Stale path: the residual is below `tolerance` times the
+//! largest force term and the increment below `tolerance` times the displacement
+//! scale; the bearing Jacobian is refreshed when the residual stops contracting
+//! (ratio > 0.7). A step that fails within `max_iterations` (or takes a journal
+//! beyond the clearance) is cut in half, down to `2^-max_step_cuts`. A step that
+//! still fails is an error: an unconverged state is never returned.
 
 mod dense;
 pub mod run;
