@@ -82,18 +82,40 @@ impl Jet3 {
         self
     }
 
-    /// `f(u)` from `f` and its first three derivatives at `u0 = self.value()`.
+    /// `f(u)` from `f` and its first three derivatives at `u0 = self.value()`:
+    /// `f0 + f1 d + f2 d²/2 + f3 d³/6` with `d = u − u0`. As `d` has no constant
+    /// term, `d²` starts at degree 2 and `d³` is pure degree 3; both are written
+    /// out term by term.
     fn compose(self, f: [f64; 4]) -> Self {
-        let mut d = self;
-        d.c[0] = 0.0;
-        let d2 = d * d;
-        let d3 = d2 * d;
-        let mut out = [0.0; 10];
-        out[0] = f[0];
-        for (k, o) in out.iter_mut().enumerate().skip(1) {
-            *o = f[1] * d.c[k] + 0.5 * f[2] * d2.c[k] + f[3] / 6.0 * d3.c[k];
+        let d = &self.c;
+        let (h2, h3) = (0.5 * f[2], f[3] / 6.0);
+        let (a, b) = (d[1], d[2]);
+        // d²: degree 2 and 3 coefficients.
+        let sq = [
+            a * a,
+            2.0 * a * b,
+            b * b,
+            2.0 * a * d[3],
+            2.0 * (a * d[4] + b * d[3]),
+            2.0 * (a * d[5] + b * d[4]),
+            2.0 * b * d[5],
+        ];
+        // d³: degree 3 only.
+        let cube = [a * a * a, 3.0 * a * a * b, 3.0 * a * b * b, b * b * b];
+        Self {
+            c: [
+                f[0],
+                f[1] * a,
+                f[1] * b,
+                f[1] * d[3] + h2 * sq[0],
+                f[1] * d[4] + h2 * sq[1],
+                f[1] * d[5] + h2 * sq[2],
+                f[1] * d[6] + h2 * sq[3] + h3 * cube[0],
+                f[1] * d[7] + h2 * sq[4] + h3 * cube[1],
+                f[1] * d[8] + h2 * sq[5] + h3 * cube[2],
+                f[1] * d[9] + h2 * sq[6] + h3 * cube[3],
+            ],
         }
-        Self { c: out }
     }
 
     /// Square root (value must be positive).
@@ -237,15 +259,16 @@ impl Add for FilmIntegrals {
 impl FilmIntegrals {
     /// The film integrals over `[θ1, θ2]` at `(x, y)`.
     pub fn over_arc(x: f64, y: f64, theta1: f64, theta2: f64) -> Self {
-        let phi = arc_potential(x, y, theta1, theta2);
+        // Taylor coefficients times i! j! (monomial order of [`Jet3`]).
+        let c = arc_potential(x, y, theta1, theta2).c;
         Self {
-            xx: phi.derivative(2, 0),
-            xy: phi.derivative(1, 1),
-            yy: phi.derivative(0, 2),
-            xxx: phi.derivative(3, 0),
-            xxy: phi.derivative(2, 1),
-            xyy: phi.derivative(1, 2),
-            yyy: phi.derivative(0, 3),
+            xx: 2.0 * c[3],
+            xy: c[4],
+            yy: 2.0 * c[5],
+            xxx: 6.0 * c[6],
+            xxy: 2.0 * c[7],
+            xyy: 2.0 * c[8],
+            yyy: 6.0 * c[9],
         }
     }
 }

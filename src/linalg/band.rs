@@ -107,16 +107,54 @@ impl<T: Scalar> BandMatrix<T> {
         check_len(self.n, x.len())?;
         check_len(self.n, y.len())?;
         for (j, &xj) in x.iter().enumerate() {
-            let i0 = j.saturating_sub(self.ku);
-            let i1 = (j + self.kl).min(self.n - 1);
-            let base = j * self.ldab + self.ku - j;
-            let col = &self.data[base + i0..=base + i1];
-            let axj = alpha * xj;
-            for (yi, &a) in y[i0..=i1].iter_mut().zip(col) {
-                *yi += a * axj;
+            self.add_column(j, alpha * xj, y);
+        }
+        Ok(())
+    }
+
+    /// `y += A x + B z` in one pass over both bands, with `(x_j, z_j)` given per
+    /// column by `xz(j)` (so the operands need not be stored); two passes when
+    /// the bands differ.
+    pub fn mul_add_pair(
+        a: &BandMatrix<T>,
+        b: &BandMatrix<T>,
+        y: &mut [T],
+        xz: impl Fn(usize) -> (T, T),
+    ) -> Result<(), LinalgError> {
+        check_len(a.n, y.len())?;
+        check_len(b.n, y.len())?;
+        if a.kl != b.kl || a.ku != b.ku {
+            for (m, pick) in [(a, 0), (b, 1)] {
+                for j in 0..m.n {
+                    let (x, z) = xz(j);
+                    m.add_column(j, if pick == 0 { x } else { z }, y);
+                }
+            }
+            return Ok(());
+        }
+        let (n, kl, ku, ldab) = (a.n, a.kl, a.ku, a.ldab);
+        for j in 0..n {
+            let (xj, zj) = xz(j);
+            let i0 = j.saturating_sub(ku);
+            let i1 = (j + kl).min(n - 1);
+            let base = j * ldab + ku - j;
+            let ca = &a.data[base + i0..=base + i1];
+            let cb = &b.data[base + i0..=base + i1];
+            for ((yi, &p), &q) in y[i0..=i1].iter_mut().zip(ca).zip(cb) {
+                *yi += p * xj + q * zj;
             }
         }
         Ok(())
+    }
+
+    /// `y += A[:, j] x_j`.
+    fn add_column(&self, j: usize, xj: T, y: &mut [T]) {
+        let i0 = j.saturating_sub(self.ku);
+        let i1 = (j + self.kl).min(self.n - 1);
+        let base = j * self.ldab + self.ku - j;
+        for (yi, &a) in y[i0..=i1].iter_mut().zip(&self.data[base + i0..=base + i1]) {
+            *yi += a * xj;
+        }
     }
 
     /// `self = other` without allocation; the band of `other` must lie within
@@ -387,6 +425,32 @@ mod tests {
             }
         }
         a
+    }
+
+    /// `y += A x + B z` in one pass equals the dense products, for equal bands
+    /// (fused) and different bands (two passes).
+    #[test]
+    fn paired_mat_vec_matches_dense_products() {
+        let mut rng = Rng(7);
+        for (bl, bu) in [(3, 2), (1, 4)] {
+            let n = 17;
+            let a: BandMatrix<f64> = random_band(&mut rng, n, 3, 2, false);
+            let b: BandMatrix<f64> = random_band(&mut rng, n, bl, bu, false);
+            let x: Vec<f64> = (0..n).map(|_| rng.uniform()).collect();
+            let z: Vec<f64> = (0..n).map(|_| rng.uniform()).collect();
+            let y0: Vec<f64> = (0..n).map(|_| rng.uniform()).collect();
+            let mut y = y0.clone();
+            BandMatrix::mul_add_pair(&a, &b, &mut y, |j| (x[j], z[j])).unwrap();
+            let want = nalgebra::DVector::from_column_slice(&y0)
+                + a.to_dense() * nalgebra::DVector::from_column_slice(&x)
+                + b.to_dense() * nalgebra::DVector::from_column_slice(&z);
+            for (got, want) in y.iter().zip(want.iter()) {
+                assert!(
+                    (got - want).abs() < 1e-13 * want.abs().max(1.0),
+                    "{got} vs {want}"
+                );
+            }
+        }
     }
 
     fn norm<T: Scalar>(v: &[T]) -> f64 {

@@ -1063,17 +1063,27 @@ impl Simulator {
         let speed1 = self.speed_at(t1);
         let spin1 = self.state.spin_angle + 0.5 * (speed0 + speed1) * h;
         self.external_force(t1, spin1);
+        let mut factor = self.factor.take();
+        let exact = self.prepare_factor(h, speed1, &mut factor);
+        // Predictor `u + h u̇ + h²/2 ü`: the condensed Newton only needs it on the
+        // journal and pad coordinates.
         {
             let (s, w) = (&self.state, &mut self.work);
-            for i in 0..s.u.len() {
-                w.u[i] = s.u[i] + h * s.ud[i] + 0.5 * h * h * s.udd[i];
+            let predict = |i: usize| s.u[i] + h * s.ud[i] + 0.5 * h * h * s.udd[i];
+            if matches!(exact, Ok(true)) {
+                for &i in &self.journal_dofs {
+                    w.u[i] = predict(i);
+                }
+            } else {
+                for (i, u) in w.u.iter_mut().enumerate() {
+                    *u = predict(i);
+                }
             }
             for i in 0..s.p.len() {
                 w.p[i] = s.p[i] + h * s.pd[i] + 0.5 * h * h * s.pdd[i];
             }
         }
-        let mut factor = self.factor.take();
-        let outcome = match self.prepare_factor(h, speed1, &mut factor) {
+        let outcome = match exact {
             Ok(true) => match factor.as_ref() {
                 Some(f) => self.newton_condensed(h, t1, speed1, f),
                 None => Err(SolverError::Input("internal: no factorization".into())),
@@ -1136,6 +1146,25 @@ impl Simulator {
         Ok(false)
     }
 
+    /// End of a condensed step: `u = work.lin` (plus `work.mv` with `add_mv`),
+    /// then the Newmark rates of the rotor DOFs, in one pass (pad rates too).
+    fn finish_condensed(&mut self, h: f64, add_mv: bool) {
+        let (a0, a1, a2) = (4.0 / (h * h), 2.0 / h, 4.0 / h);
+        let (s, w) = (&self.state, &mut self.work);
+        for i in 0..s.u.len() {
+            let u = if add_mv { w.lin[i] + w.mv[i] } else { w.lin[i] };
+            w.u[i] = u;
+            let d = u - s.u[i];
+            w.ud[i] = a1 * d - s.ud[i];
+            w.udd[i] = a0 * d - a2 * s.ud[i] - s.udd[i];
+        }
+        for i in 0..s.p.len() {
+            let d = w.p[i] - s.p[i];
+            w.pd[i] = a1 * d - s.pd[i];
+            w.pdd[i] = a0 * d - a2 * s.pd[i] - s.pdd[i];
+        }
+    }
+
     /// Newton–Raphson on the bearing coordinates alone, with an exact
     /// factorization of `A = K + a1 (C + Ω G) + a0 M`. The rotor equations of
     /// the step are `A u = b + E F` with the Newmark effective load
@@ -1162,19 +1191,15 @@ impl Simulator {
         let sj = self.n_journal;
         {
             let (s, w) = (&self.state, &mut self.work);
-            for i in 0..s.u.len() {
-                w.du[i] = a0 * s.u[i] + a2 * s.ud[i] + s.udd[i];
-                w.mv[i] = a1 * s.u[i] + s.ud[i];
-            }
             w.lin.copy_from_slice(&w.f_ext);
-            self.rotor.mass.mul_add_vec(1.0, &w.du, &mut w.lin)?;
-            f.damping.mul_add_vec(1.0, &w.mv, &mut w.lin)?;
+            BandMatrix::mul_add_pair(&self.rotor.mass, &f.damping, &mut w.lin, |j| {
+                (a0 * s.u[j] + a2 * s.ud[j] + s.udd[j], a1 * s.u[j] + s.ud[j])
+            })?;
             f.lu.solve_in_place(&mut w.lin)?;
         }
         if sj == 0 {
             self.stats.iterations += 1;
-            std::mem::swap(&mut self.work.u, &mut self.work.lin);
-            self.update_rates(h);
+            self.finish_condensed(h, false);
             return Ok(None);
         }
         let tol = self.options.tolerance;
@@ -1286,18 +1311,15 @@ impl Simulator {
                         w.mv[dof] = *fk;
                     }
                     f.lu.solve_in_place(&mut w.mv)?;
-                    for (u, (l, z)) in w.u.iter_mut().zip(w.lin.iter().zip(&w.mv)) {
-                        *u = l + z;
-                    }
+                    self.finish_condensed(h, true);
                 } else {
-                    w.u.copy_from_slice(&w.lin);
-                    for (zc, fk) in f.z.chunks_exact(w.u.len()).zip(&w.fj) {
-                        for (u, z) in w.u.iter_mut().zip(zc) {
-                            *u += z * fk;
+                    for (zc, fk) in f.z.chunks_exact(w.lin.len()).zip(&w.fj) {
+                        for (l, z) in w.lin.iter_mut().zip(zc) {
+                            *l += z * fk;
                         }
                     }
+                    self.finish_condensed(h, false);
                 }
-                self.update_rates(h);
                 return Ok(None);
             }
             last = inc / scale;
