@@ -208,17 +208,22 @@ impl Div for Jet3 {
 /// `Φ(x, y) = ∫_{θ1}^{θ2} dθ / (1 − x cos θ − y sin θ)` as a degree-3 Taylor jet at
 /// `(x, y)`, `x² + y² < 1`, arc ends held fixed.
 pub fn arc_potential(x: f64, y: f64, theta1: f64, theta2: f64) -> Jet3 {
+    arc_potential_sc(x, y, theta2 - theta1, theta1.sin_cos(), theta2.sin_cos())
+}
+
+/// [`arc_potential`] over an arc of length `span` whose ends have the given
+/// `(sin θ, cos θ)` (callers that know them algebraically skip the trigonometry).
+pub fn arc_potential_sc(x: f64, y: f64, span: f64, end1: (f64, f64), end2: (f64, f64)) -> Jet3 {
     let (jx, jy) = (Jet3::var_x(x), Jet3::var_y(y));
     let one = Jet3::constant(1.0);
     let m = one - jx * jx - jy * jy;
     let root = m.sqrt();
-    let end = |theta: f64| {
-        let (s, c) = theta.sin_cos();
+    let end = |(s, c): (f64, f64)| {
         let num = jx * s - jy * c;
         let den = one + root - jx * c - jy * s;
         (num / den).atan()
     };
-    (Jet3::constant(theta2 - theta1) + (end(theta2) - end(theta1)) * 2.0) / root
+    (Jet3::constant(span) + (end(end2) - end(end1)) * 2.0) / root
 }
 
 /// The second and third derivatives of [`arc_potential`], named by the trig
@@ -259,8 +264,13 @@ impl Add for FilmIntegrals {
 impl FilmIntegrals {
     /// The film integrals over `[θ1, θ2]` at `(x, y)`.
     pub fn over_arc(x: f64, y: f64, theta1: f64, theta2: f64) -> Self {
+        Self::from_potential(arc_potential(x, y, theta1, theta2))
+    }
+
+    /// The film integrals from the potential's jet.
+    pub fn from_potential(phi: Jet3) -> Self {
         // Taylor coefficients times i! j! (monomial order of [`Jet3`]).
-        let c = arc_potential(x, y, theta1, theta2).c;
+        let c = phi.c;
         Self {
             xx: 2.0 * c[3],
             xy: c[4],

@@ -70,10 +70,25 @@ impl ShortFilm {
         let (a, b) = source_coefficients(state, speed);
         // With S ≡ 0 there is no pressure; any half circle gives the one-sided
         // limit of the Jacobian (the force is not differentiable there).
-        let start = pressure_arc_start(state, speed).unwrap_or_else(|| y.atan2(x) + 0.5 * PI);
+        let pressure = !source_vanishes(state, speed);
+        let start = || pressure_arc_start(state, speed).unwrap_or_else(|| y.atan2(x) + 0.5 * PI);
         let f = match window {
-            None => FilmIntegrals::over_arc(x, y, start, start + PI),
+            // The half circle from α = atan2(B, A) + π: its ends are known without
+            // trigonometry, (sin α, cos α) = −(B, A)/|(A, B)|.
+            None if pressure => {
+                let r = a.hypot(b);
+                let (s, c) = (b / r, a / r);
+                FilmIntegrals::from_potential(super::film::arc_potential_sc(
+                    x,
+                    y,
+                    PI,
+                    (-s, -c),
+                    (s, c),
+                ))
+            }
+            None => FilmIntegrals::over_arc(x, y, start(), start() + PI),
             Some((w1, w2)) => {
+                let start = start();
                 let mut sum = FilmIntegrals::default();
                 for k in -2..=1 {
                     let lo = (start + 2.0 * PI * k as f64).max(w1);
@@ -180,15 +195,21 @@ impl PlainBearing {
 /// centre at exactly ω/2).
 pub fn pressure_arc_start(state: &JournalState, speed: f64) -> Option<f64> {
     let (a, b) = source_coefficients(state, speed);
-    let scale = (speed * state.position.x).abs()
-        + (speed * state.position.y).abs()
-        + 2.0 * state.velocity.x.abs()
-        + 2.0 * state.velocity.y.abs();
-    if a.hypot(b) <= 1e-14 * scale || (a == 0.0 && b == 0.0) {
+    if source_vanishes(state, speed) {
         None
     } else {
         Some(b.atan2(a) + PI)
     }
+}
+
+/// `S ≡ 0` to round-off: `|(A, B)|` below 1e-14 of its terms' size.
+fn source_vanishes(state: &JournalState, speed: f64) -> bool {
+    let (a, b) = source_coefficients(state, speed);
+    let scale = (speed * state.position.x).abs()
+        + (speed * state.position.y).abs()
+        + 2.0 * state.velocity.x.abs()
+        + 2.0 * state.velocity.y.abs();
+    a.hypot(b) <= 1e-14 * scale || (a == 0.0 && b == 0.0)
 }
 
 /// `A = ωX − 2Ẏ`, `B = ωY + 2Ẋ` (m/s): `S(θ) = A sin θ − B cos θ`.
