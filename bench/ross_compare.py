@@ -11,7 +11,9 @@
    pressure, the same physics as the Rust closed form). Checks that the bearing
    orbits agree within 1 % of the clearance.
 
-Prints the wall-clock times and ratios, and writes bench/ross_results.md.
+Prints the wall-clock times (medians: 5 runs of rotor_bearing and of ROSS's
+linear solvers, 3 of ROSS's nonlinear run) and their ratios, and writes
+bench/ross_results.md.
 usage: .venv-ross/bin/python bench/ross_compare.py target/release/rotor
 """
 import os
@@ -41,7 +43,23 @@ def ross_rotor(k, c):
     return rs.Rotor(shaft, [disk], bearings)
 
 
-def rust_run(model_text, duration, extra):
+def median_time(run, repeats):
+    """Median wall-clock time of `run()` over `repeats` calls, and its last result."""
+    times, result = [], None
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        result = run()
+        times.append(time.perf_counter() - t0)
+    return float(np.median(times)), result
+
+
+def rust_run(model_text, duration, extra, repeats=5):
+    """Median integration time of `rotor simulate` over `repeats` runs, and its outputs."""
+    walls = [rust_run_once(model_text, duration, extra) for _ in range(repeats)]
+    return walls[-1][0], float(np.median([w for _, w in walls]))
+
+
+def rust_run_once(model_text, duration, extra):
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "model.toml")
         with open(path, "w") as f:
@@ -74,12 +92,8 @@ F[:, ndof * 3 + 0] = me * w**2 * np.cos(w * t)
 F[:, ndof * 3 + 1] = me * w**2 * np.sin(w * t)
 # Warm up numba outside the timing.
 rotor.run_time_response(w, F[:200], t[:200], method="newmark")
-t0 = time.perf_counter()
-newmark = rotor.run_time_response(w, F, t, method="newmark")
-ross_newmark = time.perf_counter() - t0
-t0 = time.perf_counter()
-state_space = rotor.run_time_response(w, F, t)
-ross_ss = time.perf_counter() - t0
+ross_newmark, newmark = median_time(lambda: rotor.run_time_response(w, F, t, method="newmark"), 5)
+ross_ss, state_space = median_time(lambda: rotor.run_time_response(w, F, t), 5)
 last = t > 1.9
 amp_ross = np.max(np.hypot(newmark.yout[last, ndof * 3], newmark.yout[last, ndof * 3 + 1]))
 amp_ss = np.max(np.hypot(state_space.yout[last, ndof * 3], state_space.yout[last, ndof * 3 + 1]))
@@ -135,9 +149,8 @@ def add_to_rhs(step, **state):
 
 
 rotor.run_time_response(w, F[:50], t[:50], method="newmark", add_to_RHS=add_to_rhs, newmark_type="robust")
-t0 = time.perf_counter()
-nl = rotor.run_time_response(w, F, t, method="newmark", add_to_RHS=add_to_rhs, newmark_type="robust")
-ross_nl = time.perf_counter() - t0
+ross_nl, nl = median_time(
+    lambda: rotor.run_time_response(w, F, t, method="newmark", add_to_RHS=add_to_rhs, newmark_type="robust"), 3)
 last = t > 0.4
 rl = data["time_s"] > 0.4
 worst = 0.0

@@ -94,14 +94,22 @@ fn measure(elements: usize, bearings: usize) -> Row {
         .unwrap();
     sim.settle_static().unwrap();
     sim.advance_to(20.0 * h).unwrap();
-    let steps = (200_000 / elements).clamp(20, 4000);
+    // Five batches of steps; the median batch gives the time per step.
+    let per_batch = (40_000 / elements).clamp(10, 800);
     let calls_before = CALLS.load(Ordering::Relaxed);
-    let t0 = Instant::now();
-    for k in 1..=steps {
-        sim.advance_to((20 + k) as f64 * h).unwrap();
+    let mut batches = Vec::new();
+    let mut k = 20;
+    for _ in 0..5 {
+        let t0 = Instant::now();
+        for _ in 0..per_batch {
+            k += 1;
+            sim.advance_to(k as f64 * h).unwrap();
+        }
+        batches.push(t0.elapsed().as_secs_f64() / per_batch as f64 * 1e6);
     }
-    let step_us = t0.elapsed().as_secs_f64() / steps as f64 * 1e6;
-    let allocations = (CALLS.load(Ordering::Relaxed) - calls_before) as f64 / steps as f64;
+    let step_us = median(&mut batches);
+    let allocations =
+        (CALLS.load(Ordering::Relaxed) - calls_before) as f64 / (5 * per_batch) as f64;
     if std::env::var("SCALING_STATS").is_ok() {
         eprintln!("{elements} elements: {:?}", sim.stats());
     }
@@ -112,12 +120,16 @@ fn measure(elements: usize, bearings: usize) -> Row {
     a.scale_add(4.0 / (h * h), &r.mass).unwrap();
     let lu = a.lu().unwrap();
     let mut x = vec![1.0; dofs];
-    let reps = (2_000_000 / dofs).clamp(10, 20_000);
-    let t0 = Instant::now();
-    for _ in 0..reps {
-        lu.solve_in_place(std::hint::black_box(&mut x)).unwrap();
+    let reps = (400_000 / dofs).clamp(10, 4_000);
+    let mut batches = Vec::new();
+    for _ in 0..5 {
+        let t0 = Instant::now();
+        for _ in 0..reps {
+            lu.solve_in_place(std::hint::black_box(&mut x)).unwrap();
+        }
+        batches.push(t0.elapsed().as_secs_f64() / reps as f64 * 1e6);
     }
-    let solve_us = t0.elapsed().as_secs_f64() / reps as f64 * 1e6;
+    let solve_us = median(&mut batches);
     Row {
         elements,
         bearings,
@@ -127,6 +139,11 @@ fn measure(elements: usize, bearings: usize) -> Row {
         bytes_per_dof,
         allocations,
     }
+}
+
+fn median(v: &mut [f64]) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
 }
 
 fn fit(rows: &[Row]) -> f64 {

@@ -195,6 +195,17 @@ struct Factor {
     z: Vec<f64>,
 }
 
+/// Where the displacement of a step comes from when its rates are formed.
+#[derive(Debug, Clone, Copy)]
+enum Displacement {
+    /// `work.u` as it stands (the Newton iterate).
+    Iterate,
+    /// `work.lin` (the condensed step's `A⁻¹ b`, corrected in place).
+    Linear,
+    /// `work.lin + work.mv` (`A⁻¹ b + A⁻¹ E F_b` by a second solve).
+    LinearPlusCorrection,
+}
+
 /// Work vectors reused by every step.
 #[derive(Debug, Default)]
 struct Work {
@@ -724,10 +735,22 @@ impl Simulator {
 
     /// Newmark rates at the iterate `work.u`, `work.p` of a step of size `h`.
     fn update_rates(&mut self, h: f64) {
+        self.set_displacement_and_rates(h, Displacement::Iterate);
+    }
+
+    /// Set `work.u` from `from` and form the Newmark rates of the step, rotor and
+    /// pads, in one pass.
+    fn set_displacement_and_rates(&mut self, h: f64, from: Displacement) {
         let (a0, a1, a2) = (4.0 / (h * h), 2.0 / h, 4.0 / h);
         let (s, w) = (&self.state, &mut self.work);
         for i in 0..s.u.len() {
-            let d = w.u[i] - s.u[i];
+            let u = match from {
+                Displacement::Iterate => w.u[i],
+                Displacement::Linear => w.lin[i],
+                Displacement::LinearPlusCorrection => w.lin[i] + w.mv[i],
+            };
+            w.u[i] = u;
+            let d = u - s.u[i];
             w.ud[i] = a1 * d - s.ud[i];
             w.udd[i] = a0 * d - a2 * s.ud[i] - s.udd[i];
         }
@@ -1146,25 +1169,6 @@ impl Simulator {
         Ok(false)
     }
 
-    /// End of a condensed step: `u = work.lin` (plus `work.mv` with `add_mv`),
-    /// then the Newmark rates of the rotor DOFs, in one pass (pad rates too).
-    fn finish_condensed(&mut self, h: f64, add_mv: bool) {
-        let (a0, a1, a2) = (4.0 / (h * h), 2.0 / h, 4.0 / h);
-        let (s, w) = (&self.state, &mut self.work);
-        for i in 0..s.u.len() {
-            let u = if add_mv { w.lin[i] + w.mv[i] } else { w.lin[i] };
-            w.u[i] = u;
-            let d = u - s.u[i];
-            w.ud[i] = a1 * d - s.ud[i];
-            w.udd[i] = a0 * d - a2 * s.ud[i] - s.udd[i];
-        }
-        for i in 0..s.p.len() {
-            let d = w.p[i] - s.p[i];
-            w.pd[i] = a1 * d - s.pd[i];
-            w.pdd[i] = a0 * d - a2 * s.pd[i] - s.pdd[i];
-        }
-    }
-
     /// Newton–Raphson on the bearing coordinates alone, with an exact
     /// factorization of `A = K + a1 (C + Ω G) + a0 M`. The rotor equations of
     /// the step are `A u = b + E F` with the Newmark effective load
@@ -1199,7 +1203,7 @@ impl Simulator {
         }
         if sj == 0 {
             self.stats.iterations += 1;
-            self.finish_condensed(h, false);
+            self.set_displacement_and_rates(h, Displacement::Linear);
             return Ok(None);
         }
         let tol = self.options.tolerance;
@@ -1311,14 +1315,14 @@ impl Simulator {
                         w.mv[dof] = *fk;
                     }
                     f.lu.solve_in_place(&mut w.mv)?;
-                    self.finish_condensed(h, true);
+                    self.set_displacement_and_rates(h, Displacement::LinearPlusCorrection);
                 } else {
                     for (zc, fk) in f.z.chunks_exact(w.lin.len()).zip(&w.fj) {
                         for (l, z) in w.lin.iter_mut().zip(zc) {
                             *l += z * fk;
                         }
                     }
-                    self.finish_condensed(h, false);
+                    self.set_displacement_and_rates(h, Displacement::Linear);
                 }
                 return Ok(None);
             }
