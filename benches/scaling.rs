@@ -96,8 +96,8 @@ fn measure(elements: usize, bearings: usize) -> Row {
     sim.advance_to(20.0 * h).unwrap();
     // Five batches of steps; the median batch gives the time per step.
     let per_batch = (40_000 / elements).clamp(10, 800);
+    let mut batches = Vec::with_capacity(5);
     let calls_before = CALLS.load(Ordering::Relaxed);
-    let mut batches = Vec::new();
     let mut k = 20;
     for _ in 0..5 {
         let t0 = Instant::now();
