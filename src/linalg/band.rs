@@ -287,6 +287,12 @@ impl<T: Scalar> BandMatrix<T> {
                 }
             }
         }
+        // Back substitution multiplies by the inverse pivots: a division on the
+        // critical path of every column costs more than the column's update.
+        for j in 0..n {
+            let d = &mut a[j * ldab + kv];
+            *d = T::one() / *d;
+        }
         Ok(())
     }
 }
@@ -310,7 +316,8 @@ fn check_len(expected: usize, found: usize) -> Result<(), LinalgError> {
     }
 }
 
-/// Banded LU factors `P A = L U` produced by [`BandMatrix::lu`].
+/// Banded LU factors `P A = L U` produced by [`BandMatrix::lu`] (LAPACK layout,
+/// except that the diagonal of `U` is stored inverted).
 #[derive(Debug, Clone)]
 pub struct BandLu<T> {
     n: usize,
@@ -350,7 +357,7 @@ impl<T: Scalar> BandLu<T> {
         }
         for j in (0..n).rev() {
             let diag = j * ldab + kv;
-            let bj = b[j] / self.data[diag];
+            let bj = b[j] * self.data[diag];
             b[j] = bj;
             let i0 = j.saturating_sub(kv);
             let col = &self.data[diag - (j - i0)..diag];

@@ -2,7 +2,8 @@
 //! for the bearing-sized systems of the Newton step.
 
 /// Factor the row-major `n × n` matrix `a` in place; `pivots[k]` records the row
-/// swapped with row `k`. Returns `false` when a pivot is zero or not finite.
+/// swapped with row `k`, and the diagonal of `U` is stored inverted (the solve
+/// multiplies). Returns `false` when a pivot is zero or not finite.
 pub fn lu_in_place(a: &mut [f64], n: usize, pivots: &mut [usize]) -> bool {
     for k in 0..n {
         let (mut p, mut best) = (k, a[k * n + k].abs());
@@ -32,6 +33,7 @@ pub fn lu_in_place(a: &mut [f64], n: usize, pivots: &mut [usize]) -> bool {
                 }
             }
         }
+        a[k * n + k] = inv;
     }
     true
 }
@@ -53,7 +55,7 @@ pub fn lu_solve(a: &[f64], n: usize, pivots: &[usize], b: &mut [f64]) {
         for j in i + 1..n {
             s -= a[i * n + j] * b[j];
         }
-        b[i] = s / a[i * n + i];
+        b[i] = s * a[i * n + i];
     }
 }
 
