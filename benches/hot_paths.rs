@@ -38,11 +38,13 @@ fn bearings(c: &mut Criterion) {
             clearance: 1e-4,
             viscosity: 0.02,
             pads: (0..pads)
-                .map(|k| Pad {
-                    pivot: (45.0 + 360.0 * k as f64 / pads as f64).to_radians(),
-                    arc: (0.8 * 360.0 / pads as f64).to_radians(),
-                    offset: 0.5,
-                    preload: 0.2,
+                .map(|k| {
+                    Pad::new(
+                        (45.0 + 360.0 * k as f64 / pads as f64).to_radians(),
+                        (0.8 * 360.0 / pads as f64).to_radians(),
+                        0.5,
+                        0.2,
+                    )
                 })
                 .collect(),
         };

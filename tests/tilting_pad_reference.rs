@@ -29,11 +29,13 @@ fn bearing(r: &Value) -> (TiltingPadBearing, f64) {
         .as_array()
         .unwrap()
         .iter()
-        .map(|d| Pad {
-            pivot: num(d).to_radians(),
-            arc: num(&p["pad_arc_deg"]).to_radians(),
-            offset: num(&p["pivot_offset"]),
-            preload: num(&p["preload"]),
+        .map(|d| {
+            Pad::new(
+                num(d).to_radians(),
+                num(&p["pad_arc_deg"]).to_radians(),
+                num(&p["pivot_offset"]),
+                num(&p["preload"]),
+            )
         })
         .collect();
     (
@@ -87,7 +89,7 @@ fn equilibrium_journal_position_and_pad_tilts() {
                 "pad {k}: {f:?} vs {want:?}"
             );
             // Zero pivot moment: the pad force points through the pivot.
-            let (s, co) = b.pads[k].pivot.sin_cos();
+            let (s, co) = b.pads[k].pivot().sin_cos();
             assert!((co * f.y - s * f.x).abs() < 1e-6 * f.norm());
         } else {
             // The journal moves away from this pad: it must carry (next to) nothing.
@@ -262,11 +264,13 @@ fn many_pads_and_contact_are_handled() {
             clearance: 3e-4,
             viscosity: 0.03,
             pads: (0..pads)
-                .map(|k| Pad {
-                    pivot: 2.0 * std::f64::consts::PI * k as f64 / pads as f64 + 0.3,
-                    arc,
-                    offset: 0.6,
-                    preload: 0.2,
+                .map(|k| {
+                    Pad::new(
+                        2.0 * std::f64::consts::PI * k as f64 / pads as f64 + 0.3,
+                        arc,
+                        0.6,
+                        0.2,
+                    )
                 })
                 .collect(),
         };

@@ -140,20 +140,36 @@ impl BearingEval {
     /// `internal` (`None`: the journal itself), i.e. with `T = [[1, 0, a], [0, 1, b]]`:
     /// `Q += Tᵀ f`, `K += Tᵀ K T`, `C += Tᵀ C T`.
     fn add_transformed(&mut self, part: &BearingForce, internal: Option<(usize, f64, f64)>) {
-        let idx: [(usize, [f64; 2]); 3] = match internal {
-            Some((k, a, b)) => [(0, [1.0, 0.0]), (1, [0.0, 1.0]), (2 + k, [a, b])],
-            None => [(0, [1.0, 0.0]), (1, [0.0, 1.0]), (usize::MAX, [0.0, 0.0])],
-        };
         let n = self.n;
-        for &(i, ti) in idx.iter().filter(|(i, _)| *i != usize::MAX) {
-            self.force[i] += ti[0] * part.force.x + ti[1] * part.force.y;
-            for &(j, tj) in idx.iter().filter(|(j, _)| *j != usize::MAX) {
-                let (a, b) = (Vector2::from(ti), Vector2::from(tj));
-                let kv = a.dot(&(part.stiffness * b));
-                let cv = a.dot(&(part.damping * b));
-                self.stiffness[i * n + j] += kv;
-                self.damping[i * n + j] += cv;
+        let (f, k, c) = (&part.force, &part.stiffness, &part.damping);
+        self.force[0] += f.x;
+        self.force[1] += f.y;
+        for i in 0..2 {
+            for j in 0..2 {
+                self.stiffness[i * n + j] += k[(i, j)];
+                self.damping[i * n + j] += c[(i, j)];
             }
+        }
+        let Some((m, a, b)) = internal else {
+            return;
+        };
+        // Third row and column of T = [[1, 0, a], [0, 1, b]]: t = (a, b).
+        let p = 2 + m;
+        self.force[p] += a * f.x + b * f.y;
+        for (mat, out) in [(k, &mut self.stiffness), (c, &mut self.damping)] {
+            let col = [
+                mat[(0, 0)] * a + mat[(0, 1)] * b,
+                mat[(1, 0)] * a + mat[(1, 1)] * b,
+            ];
+            let row = [
+                a * mat[(0, 0)] + b * mat[(1, 0)],
+                a * mat[(0, 1)] + b * mat[(1, 1)],
+            ];
+            for i in 0..2 {
+                out[i * n + p] += col[i];
+                out[p * n + i] += row[i];
+            }
+            out[p * n + p] += a * col[0] + b * col[1];
         }
     }
 }

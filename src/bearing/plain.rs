@@ -52,14 +52,34 @@ pub(crate) struct ShortFilm {
     pub viscosity: f64,
 }
 
+/// An arc `[from, to]` of the film (rad) with the sines and cosines of its ends.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct FilmWindow {
+    pub from: f64,
+    pub to: f64,
+    pub from_sc: (f64, f64),
+    pub to_sc: (f64, f64),
+}
+
+impl FilmWindow {
+    pub(crate) fn new(from: f64, to: f64) -> Self {
+        Self {
+            from,
+            to,
+            from_sc: from.sin_cos(),
+            to_sc: to.sin_cos(),
+        }
+    }
+}
+
 impl ShortFilm {
     /// Force and Jacobians of the film over the positive-pressure part of the
-    /// window `[θ1, θ2]` (`None`: the whole circle, i.e. the π-film half circle).
+    /// window (`None`: the whole circle, i.e. the π-film half circle).
     pub(crate) fn force(
         &self,
         state: &JournalState,
         speed: f64,
-        window: Option<(f64, f64)>,
+        window: Option<&FilmWindow>,
     ) -> Result<BearingForce, BearingError> {
         let cl = self.clearance;
         let (x, y) = (state.position.x / cl, state.position.y / cl);
@@ -68,33 +88,49 @@ impl ShortFilm {
             return Err(BearingError::ClearanceExceeded { eccentricity });
         }
         let (a, b) = source_coefficients(state, speed);
-        // With S ≡ 0 there is no pressure; any half circle gives the one-sided
-        // limit of the Jacobian (the force is not differentiable there).
+        // The positive-pressure half circle [α, α + π], α = atan2(B, A) + π, has
+        // its ends' sines and cosines without trigonometry:
+        // (sin α, cos α) = −(B, A)/|(A, B)|. With S ≡ 0 there is no pressure; any
+        // half circle gives the one-sided limit of the Jacobian (the force is
+        // not differentiable there).
         let pressure = !source_vanishes(state, speed);
-        let start = || pressure_arc_start(state, speed).unwrap_or_else(|| y.atan2(x) + 0.5 * PI);
+        let start_sc = if pressure {
+            let r = a.hypot(b);
+            (-b / r, -a / r)
+        } else {
+            (y.atan2(x) + 0.5 * PI).sin_cos()
+        };
+        let end_sc = (-start_sc.0, -start_sc.1);
         let f = match window {
-            // The half circle from α = atan2(B, A) + π: its ends are known without
-            // trigonometry, (sin α, cos α) = −(B, A)/|(A, B)|.
-            None if pressure => {
-                let r = a.hypot(b);
-                let (s, c) = (b / r, a / r);
-                FilmIntegrals::from_potential(super::film::arc_potential_sc(
-                    x,
-                    y,
-                    PI,
-                    (-s, -c),
-                    (s, c),
-                ))
-            }
-            None => FilmIntegrals::over_arc(x, y, start(), start() + PI),
-            Some((w1, w2)) => {
-                let start = start();
+            None => FilmIntegrals::from_potential(super::film::arc_potential_sc(
+                x, y, PI, start_sc, end_sc,
+            )),
+            Some(w) => {
+                let start =
+                    pressure_arc_start(state, speed).unwrap_or_else(|| y.atan2(x) + 0.5 * PI);
                 let mut sum = FilmIntegrals::default();
                 for k in -2..=1 {
-                    let lo = (start + 2.0 * PI * k as f64).max(w1);
-                    let hi = (start + PI + 2.0 * PI * k as f64).min(w2);
+                    let from = start + 2.0 * PI * k as f64;
+                    let to = from + PI;
+                    let (lo, lo_sc) = if from >= w.from {
+                        (from, start_sc)
+                    } else {
+                        (w.from, w.from_sc)
+                    };
+                    let (hi, hi_sc) = if to <= w.to {
+                        (to, end_sc)
+                    } else {
+                        (w.to, w.to_sc)
+                    };
                     if hi > lo {
-                        sum = sum + FilmIntegrals::over_arc(x, y, lo, hi);
+                        sum = sum
+                            + FilmIntegrals::from_potential(super::film::arc_potential_sc(
+                                x,
+                                y,
+                                hi - lo,
+                                lo_sc,
+                                hi_sc,
+                            ));
                     }
                 }
                 sum

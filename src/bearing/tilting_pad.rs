@@ -33,26 +33,63 @@ use std::f64::consts::PI;
 
 use nalgebra::Vector2;
 
-use super::plain::{ShortFilm, attitude_angle};
+use super::plain::{FilmWindow, ShortFilm, attitude_angle};
 use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, check_state};
 
 /// Relative size of the pivot's restoring moment (see the module docs).
 const PIVOT_REST: f64 = 1e-9;
 
-/// One pad of a tilting-pad bearing.
+/// One pad of a tilting-pad bearing, with its fixed geometry's trigonometry
+/// worked out once ([`Pad::new`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pad {
-    /// Pivot angle `θp` from +x toward +y (rad).
-    pub pivot: f64,
-    /// Arc extent of the pad (rad).
-    pub arc: f64,
-    /// Pivot position as a fraction of the arc from the leading edge (0.5 = centred).
-    pub offset: f64,
-    /// Preload `m = 1 − C_b/C` (0 = pad curvature centred on the bearing).
-    pub preload: f64,
+    pivot: f64,
+    arc: f64,
+    offset: f64,
+    preload: f64,
+    /// `(sin θp, cos θp)`.
+    pivot_sc: (f64, f64),
+    /// The pad's arc from the leading edge, normalized to start in `[0, 2π)`.
+    window: FilmWindow,
 }
 
 impl Pad {
+    /// Pad with pivot angle `θp` from +x toward +y (rad), arc extent (rad),
+    /// pivot `offset` as a fraction of the arc from the leading edge (0.5 =
+    /// centred) and preload `m = 1 − C_b/C` (0 = pad curvature centred on the
+    /// bearing).
+    pub fn new(pivot: f64, arc: f64, offset: f64, preload: f64) -> Self {
+        let lead = (pivot - offset * arc).rem_euclid(2.0 * PI);
+        Self {
+            pivot,
+            arc,
+            offset,
+            preload,
+            pivot_sc: pivot.sin_cos(),
+            window: FilmWindow::new(lead, lead + arc),
+        }
+    }
+
+    /// Pivot angle `θp` (rad).
+    pub fn pivot(&self) -> f64 {
+        self.pivot
+    }
+
+    /// Arc extent (rad).
+    pub fn arc(&self) -> f64 {
+        self.arc
+    }
+
+    /// Pivot position as a fraction of the arc from the leading edge.
+    pub fn offset(&self) -> f64 {
+        self.offset
+    }
+
+    /// Preload `m` (–).
+    pub fn preload(&self) -> f64 {
+        self.preload
+    }
+
     /// Leading and trailing edge angles (rad); the spin carries oil from leading to trailing.
     pub fn edges(&self) -> (f64, f64) {
         let lead = self.pivot - self.offset * self.arc;
@@ -96,7 +133,7 @@ impl TiltingPadBearing {
     /// `(sin θp, cos θp)` and the effective journal state of pad `k`.
     fn pad_state(&self, k: usize, q: &[f64], qdot: &[f64]) -> (f64, f64, JournalState) {
         let pad = &self.pads[k];
-        let (s, c) = pad.pivot.sin_cos();
+        let (s, c) = pad.pivot_sc;
         let shift = pad.preload * self.clearance;
         let (eta, eta_dot) = (q[2 + k], qdot[2 + k]);
         let state = JournalState {
@@ -104,13 +141,6 @@ impl TiltingPadBearing {
             velocity: Vector2::new(qdot[0] - eta_dot * s, qdot[1] + eta_dot * c),
         };
         (s, c, state)
-    }
-
-    /// Pad window normalized to start in `[0, 2π)`.
-    fn window(pad: &Pad) -> (f64, f64) {
-        let (lead, _) = pad.edges();
-        let start = lead.rem_euclid(2.0 * PI);
-        (start, start + pad.arc)
     }
 
     /// Film force on pad `k` alone at `q`, `q̇`: the force on the journal (N).
@@ -124,7 +154,7 @@ impl TiltingPadBearing {
         let (_, _, state) = self.pad_state(k, q, qdot);
         Ok(self
             .film()
-            .force(&state, speed, Some(Self::window(&self.pads[k])))?
+            .force(&state, speed, Some(&self.pads[k].window))?
             .force)
     }
 }
@@ -150,7 +180,7 @@ impl Bearing for TiltingPadBearing {
         let k_rest = c_rest * speed.abs().max(1.0);
         for (k, pad) in self.pads.iter().enumerate() {
             let (s, c, state) = self.pad_state(k, q, qdot);
-            let part = film.force(&state, speed, Some(Self::window(pad)))?;
+            let part = film.force(&state, speed, Some(&pad.window))?;
             out.add_transformed(&part, Some((k, -s, c)));
             let i = 2 + k;
             out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
@@ -171,10 +201,9 @@ impl Bearing for TiltingPadBearing {
     /// root, where the film vanishes.
     fn guess_internal(&self, journal: [f64; 2], speed: f64, internal: &mut [f64]) {
         let film = self.film();
-        let zero = [0.0; 3];
         for (k, pad) in self.pads.iter().enumerate() {
             internal[k] = 0.0;
-            let (s, c) = pad.pivot.sin_cos();
+            let (s, c) = pad.pivot_sc;
             let moment = |eta: f64| -> Option<f64> {
                 let q = [journal[0], journal[1], eta];
                 let shift = pad.preload * self.clearance;
@@ -182,11 +211,7 @@ impl Bearing for TiltingPadBearing {
                     position: Vector2::new(q[0] + shift * c - eta * s, q[1] + shift * s + eta * c),
                     velocity: Vector2::zeros(),
                 };
-                let f = film
-                    .force(&state, speed, Some(Self::window(pad)))
-                    .ok()?
-                    .force;
-                let _ = zero;
+                let f = film.force(&state, speed, Some(&pad.window)).ok()?.force;
                 Some(c * f.y - s * f.x)
             };
             let reach = self.clearance * 0.98;
@@ -224,7 +249,7 @@ impl Bearing for TiltingPadBearing {
         let mut min_film = f64::INFINITY;
         for (k, pad) in self.pads.iter().enumerate() {
             let (_, _, state) = self.pad_state(k, q, &zero);
-            let window = Self::window(pad);
+            let window = (pad.window.from, pad.window.to);
             friction_torque += film.friction_torque(&state, speed, window);
             // H = 1 − ε_e cos(θ − φ_e) is smallest at φ_e, or at the nearer edge.
             let (x, y) = (state.position.x, state.position.y);

@@ -677,12 +677,7 @@ fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError> {
                     viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
                     pads: pivots
                         .iter()
-                        .map(|d| Pad {
-                            pivot: d.to_radians(),
-                            arc: arc.to_radians(),
-                            offset,
-                            preload,
-                        })
+                        .map(|d| Pad::new(d.to_radians(), arc.to_radians(), offset, preload))
                         .collect(),
                 };
                 (name, node, BearingKind::TiltingPad(bearing))

@@ -210,9 +210,9 @@ preload = 0.1
     match &m.bearings[1].kind {
         BearingKind::TiltingPad(b) => {
             assert_eq!(b.pads.len(), 4);
-            assert!((b.pads[1].pivot - 135f64.to_radians()).abs() < 1e-15);
-            assert_eq!(b.pads[0].offset, 0.5);
-            assert_eq!(b.pads[0].preload, 0.1);
+            assert!((b.pads[1].pivot() - 135f64.to_radians()).abs() < 1e-15);
+            assert_eq!(b.pads[0].offset(), 0.5);
+            assert_eq!(b.pads[0].preload(), 0.1);
         }
         k => panic!("{k:?}"),
     }
