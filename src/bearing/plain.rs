@@ -93,12 +93,19 @@ impl ShortFilm {
         // (sin α, cos α) = −(B, A)/|(A, B)|. With S ≡ 0 there is no pressure; any
         // half circle gives the one-sided limit of the Jacobian (the force is
         // not differentiable there).
-        let pressure = !source_vanishes(state, speed);
+        let r = a.hypot(b);
+        let pressure = !source_vanishes(state, speed, r);
+        let start = || {
+            if pressure {
+                b.atan2(a) + PI
+            } else {
+                y.atan2(x) + 0.5 * PI
+            }
+        };
         let start_sc = if pressure {
-            let r = a.hypot(b);
             (-b / r, -a / r)
         } else {
-            (y.atan2(x) + 0.5 * PI).sin_cos()
+            start().sin_cos()
         };
         let end_sc = (-start_sc.0, -start_sc.1);
         let f = match window {
@@ -106,8 +113,7 @@ impl ShortFilm {
                 x, y, PI, start_sc, end_sc,
             )),
             Some(w) => {
-                let start =
-                    pressure_arc_start(state, speed).unwrap_or_else(|| y.atan2(x) + 0.5 * PI);
+                let start = start();
                 let mut sum = FilmIntegrals::default();
                 for k in -2..=1 {
                     let from = start + 2.0 * PI * k as f64;
@@ -160,14 +166,15 @@ impl ShortFilm {
         }
     }
 
-    /// Couette (Petroff-corrected) friction torque of the film over `[θ1, θ2]`,
+    /// Couette (Petroff-corrected) friction torque of the film over the window
+    /// (`None`: the whole circle),
     /// shear `μωR/h` on the journal surface: `T = (μωR³L/C) ∫ dθ/H` (N·m). The
     /// cavitated film is taken to carry shear too (striated oil).
     pub(crate) fn friction_torque(
         &self,
         state: &JournalState,
         speed: f64,
-        window: (f64, f64),
+        window: Option<&FilmWindow>,
     ) -> f64 {
         let (x, y) = (
             state.position.x / self.clearance,
@@ -178,10 +185,11 @@ impl ShortFilm {
         }
         // Over the whole circle the antiderivative's atan terms cancel:
         // `∫₀^{2π} dθ/H = 2π/√(1 − ε²)`.
-        let phi = if window.1 - window.0 >= 2.0 * PI {
-            2.0 * PI / (1.0 - x * x - y * y).sqrt()
-        } else {
-            super::film::arc_potential(x, y, window.0, window.1).value()
+        let phi = match window {
+            None => 2.0 * PI / (1.0 - x * x - y * y).sqrt(),
+            Some(w) => {
+                super::film::arc_potential_sc(x, y, w.to - w.from, w.from_sc, w.to_sc).value()
+            }
         };
         self.viscosity * speed * self.radius.powi(3) * self.length / self.clearance * phi
     }
@@ -215,7 +223,7 @@ impl PlainBearing {
         force: &Vector2<f64>,
     ) -> BearingReport {
         let eccentricity = state.position.norm() / self.clearance;
-        let friction_torque = self.film().friction_torque(state, speed, (0.0, 2.0 * PI));
+        let friction_torque = self.film().friction_torque(state, speed, None);
         BearingReport {
             eccentricity,
             attitude_angle: attitude_angle(&state.position, force),
@@ -231,21 +239,20 @@ impl PlainBearing {
 /// centre at exactly ω/2).
 pub fn pressure_arc_start(state: &JournalState, speed: f64) -> Option<f64> {
     let (a, b) = source_coefficients(state, speed);
-    if source_vanishes(state, speed) {
+    if source_vanishes(state, speed, a.hypot(b)) {
         None
     } else {
         Some(b.atan2(a) + PI)
     }
 }
 
-/// `S ≡ 0` to round-off: `|(A, B)|` below 1e-14 of its terms' size.
-fn source_vanishes(state: &JournalState, speed: f64) -> bool {
-    let (a, b) = source_coefficients(state, speed);
+/// `S ≡ 0` to round-off: `|(A, B)|` (given) below 1e-14 of its terms' size.
+fn source_vanishes(state: &JournalState, speed: f64, magnitude: f64) -> bool {
     let scale = (speed * state.position.x).abs()
         + (speed * state.position.y).abs()
         + 2.0 * state.velocity.x.abs()
         + 2.0 * state.velocity.y.abs();
-    a.hypot(b) <= 1e-14 * scale || (a == 0.0 && b == 0.0)
+    magnitude <= 1e-14 * scale || magnitude == 0.0
 }
 
 /// `A = ωX − 2Ẏ`, `B = ωY + 2Ẋ` (m/s): `S(θ) = A sin θ − B cos θ`.

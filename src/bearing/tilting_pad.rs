@@ -130,14 +130,21 @@ impl TiltingPadBearing {
             .fold(self.clearance, f64::min)
     }
 
-    /// `(sin θp, cos θp)` and the effective journal state of pad `k`.
-    fn pad_state(&self, k: usize, q: &[f64], qdot: &[f64]) -> (f64, f64, JournalState) {
+    /// Effective journal position of pad `k` with the journal at `(x, y)` and
+    /// the pad tilted by `η`.
+    fn pad_position(&self, k: usize, x: f64, y: f64, eta: f64) -> Vector2<f64> {
         let pad = &self.pads[k];
         let (s, c) = pad.pivot_sc;
         let shift = pad.preload * self.clearance;
-        let (eta, eta_dot) = (q[2 + k], qdot[2 + k]);
+        Vector2::new(x + shift * c - eta * s, y + shift * s + eta * c)
+    }
+
+    /// `(sin θp, cos θp)` and the effective journal state of pad `k`.
+    fn pad_state(&self, k: usize, q: &[f64], qdot: &[f64]) -> (f64, f64, JournalState) {
+        let (s, c) = self.pads[k].pivot_sc;
+        let eta_dot = qdot[2 + k];
         let state = JournalState {
-            position: Vector2::new(q[0] + shift * c - eta * s, q[1] + shift * s + eta * c),
+            position: self.pad_position(k, q[0], q[1], q[2 + k]),
             velocity: Vector2::new(qdot[0] - eta_dot * s, qdot[1] + eta_dot * c),
         };
         (s, c, state)
@@ -205,10 +212,8 @@ impl Bearing for TiltingPadBearing {
             internal[k] = 0.0;
             let (s, c) = pad.pivot_sc;
             let moment = |eta: f64| -> Option<f64> {
-                let q = [journal[0], journal[1], eta];
-                let shift = pad.preload * self.clearance;
                 let state = JournalState {
-                    position: Vector2::new(q[0] + shift * c - eta * s, q[1] + shift * s + eta * c),
+                    position: self.pad_position(k, journal[0], journal[1], eta),
                     velocity: Vector2::zeros(),
                 };
                 let f = film.force(&state, speed, Some(&pad.window)).ok()?.force;
@@ -243,23 +248,25 @@ impl Bearing for TiltingPadBearing {
     }
 
     fn report(&self, q: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
-        let zero = vec![0.0; q.len()];
         let film = self.film();
         let mut friction_torque = 0.0;
         let mut min_film = f64::INFINITY;
         for (k, pad) in self.pads.iter().enumerate() {
-            let (_, _, state) = self.pad_state(k, q, &zero);
-            let window = (pad.window.from, pad.window.to);
-            friction_torque += film.friction_torque(&state, speed, window);
+            let state = JournalState {
+                position: self.pad_position(k, q[0], q[1], q[2 + k]),
+                velocity: Vector2::zeros(),
+            };
+            friction_torque += film.friction_torque(&state, speed, Some(&pad.window));
+            let window = &pad.window;
             // H = 1 − ε_e cos(θ − φ_e) is smallest at φ_e, or at the nearer edge.
             let (x, y) = (state.position.x, state.position.y);
             let phi = y.atan2(x);
-            let inside = (phi - window.0).rem_euclid(2.0 * PI) <= pad.arc;
+            let inside = (phi - window.from).rem_euclid(2.0 * PI) <= pad.arc;
             let h = |t: f64| self.clearance - x * t.cos() - y * t.sin();
             let pad_min = if inside {
                 h(phi)
             } else {
-                h(window.0).min(h(window.1))
+                h(window.from).min(h(window.to))
             };
             min_film = min_film.min(pad_min);
         }
