@@ -22,8 +22,12 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ -f "$model" ] || { echo "fmu_pack.sh: model file $model not found" >&2; exit 2; }
-bash scripts/setup.sh
-bash scripts/python_env.sh
+# Packing installs nothing: scripts/setup.sh and scripts/python_env.sh (run by
+# both README commands) provide the toolchain, libclang and the venv with FMPy.
+for tool in cargo nm; do
+  command -v "$tool" >/dev/null 2>&1 || { echo "fmu_pack.sh: $tool not found: run scripts/setup.sh" >&2; exit 2; }
+done
+[ -x .venv/bin/python ] || { echo "fmu_pack.sh: .venv missing: run scripts/python_env.sh" >&2; exit 2; }
 cargo build --release --quiet --lib --bin rotor
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT

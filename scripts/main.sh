@@ -5,6 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+bash scripts/python_env.sh
 cargo build --release --quiet
 mkdir -p out
 rotor=target/release/rotor

@@ -4,6 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+bash scripts/python_env.sh
 cargo fmt --all -- --check
 cargo clippy --all-targets --quiet -- -D warnings
 # The FMU tests load the cdylib, which `cargo test` does not relink; the Python
@@ -18,7 +19,9 @@ done
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 status=0
-cargo test --all-targets 2>&1 | tee "$log" || status=$?
+# --no-fail-fast: every test binary runs even when an earlier one fails; the
+# exit status is still non-zero on any failure.
+cargo test --all-targets --no-fail-fast 2>&1 | tee "$log" || status=$?
 awk '/^test result:/ { for (i = 1; i <= NF; i++) { if ($(i+1) ~ /^passed/) p += $i; if ($(i+1) ~ /^failed/) f += $i } }
      END { printf "tests: %d passed, %d failed\n", p, f }' "$log"
 exit "$status"

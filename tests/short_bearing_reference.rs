@@ -1,5 +1,5 @@
 //! Plain short bearing against the independent numerical-quadrature oracle in
-//! `../shared/reference/` (forces from quadrature of the cavitated pressure field,
+//! `tests/data/` (see `tests/data/README.md`; forces from quadrature of the cavitated pressure field,
 //! Jacobians from finite differences of those forces), against central finite
 //! differences of our own force, and against the textbook closed forms.
 
@@ -13,7 +13,7 @@ use rotor_bearing::bearing::{Bearing, BearingError, JournalState, PlainBearing};
 
 fn reference(name: &str) -> Value {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/reference")
+        .join("tests/data")
         .join(name);
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     serde_json::from_str(&text).unwrap()

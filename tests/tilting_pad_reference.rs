@@ -1,5 +1,5 @@
 //! Tilting-pad bearing against the independent oracle in
-//! `../shared/reference/tilting_pad_reference.json` (per-pad quadrature of the
+//! `tests/data/tilting_pad_reference.json` (per-pad quadrature of the
 //! short-bearing film, pad tilts from moment equilibrium, finite-difference
 //! coefficients) and against finite differences of our own forces.
 
@@ -13,8 +13,8 @@ use rotor_bearing::bearing::tilting_pad::{Pad, TiltingPadBearing};
 use rotor_bearing::bearing::{Bearing, BearingError, BearingEval};
 
 fn reference() -> Value {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../shared/reference/tilting_pad_reference.json");
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/tilting_pad_reference.json");
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     serde_json::from_str(&text).unwrap()
 }

@@ -18,7 +18,7 @@
 //! `η̇` (the pad's own squeeze film), so the tilt has first-order dynamics of its
 //! own. Solving it inside Newton–Raphson with the journal keeps that dynamics;
 //! a quasi-static inner solve (η̇ = 0) would invent cross-coupled damping
-//! (`../shared/reference/tilting_pad_reference.json`, `quasi_static_reduced`).
+//! (`tests/data/tilting_pad_reference.json`, `quasi_static_reduced`).
 //!
 //! **Unloaded pads.** A pad the journal moves away from has no zero-moment
 //! tilt that carries load in short-bearing/Gümbel theory: its film force
