@@ -9,9 +9,9 @@ use criterion::{Criterion, criterion_group, criterion_main};
 
 use rotor_bearing::bearing::tilting_pad::{Pad, TiltingPadBearing};
 use rotor_bearing::bearing::{Bearing, BearingEval, PlainBearing};
-use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::fmi2::instance::{Instance, Status};
 use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
 fn bearings(c: &mut Criterion) {

@@ -6,8 +6,8 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
 fn realtime(name: &str, step: f64, seconds: f64) -> (f64, f64) {

@@ -9,9 +9,9 @@
 
 use std::path::Path;
 
-use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::fmi2::variables::DEFAULT_TIME_STEP;
 use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
 fn main() -> Result<(), String> {

@@ -3,7 +3,7 @@
 //! response, complex modes, Campbell diagram).
 //!
 //! Data flow: model file ([`model`]) → validated [`model::RotorModel`] →
-//! assembled [`fe::assembly::Rotor`] (banded `M`, `K`, `C`, `G`) → analyses
+//! assembled [`rotor::Rotor`] (banded `M`, `K`, `C`, `G`) → analyses
 //! ([`analysis`]). Physics lives in [`fe`] and [`bearing`]; [`linalg`] holds the
 //! banded solver and the shift-invert eigen-solver; [`plot`] draws PNG figures.
 
@@ -14,4 +14,5 @@ pub mod fmi2;
 pub mod linalg;
 pub mod model;
 pub mod plot;
+pub mod rotor;
 pub mod solver;

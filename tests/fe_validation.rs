@@ -5,8 +5,8 @@
 use rotor_bearing::analysis::campbell::{campbell, critical_speeds};
 use rotor_bearing::analysis::linear::{node_xy, static_deflection, unbalance_response};
 use rotor_bearing::analysis::modal::{ModalOptions, Mode, Whirl, modes};
-use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
 
 const RPM: f64 = std::f64::consts::PI / 30.0;
 

@@ -301,7 +301,7 @@ fn fmu_equals_the_direct_simulator() {
     fmu.init();
     let model = RotorModel::from_file(&model_path()).unwrap();
     let mut sim = Simulator::new(
-        rotor_bearing::fe::assembly::Rotor::new(model.clone()).unwrap(),
+        rotor_bearing::rotor::Rotor::new(model.clone()).unwrap(),
         SolverOptions {
             time_step: 1e-3,
             ..SolverOptions::default()

@@ -5,8 +5,8 @@ use std::path::PathBuf;
 
 use rotor_bearing::analysis::modal::{ModalOptions, Whirl, modes};
 use rotor_bearing::analysis::spectrum::{frequency_grid, full_spectrum, peak_frequency};
-use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Outputs, Simulator, SolverOptions, SpeedProfile, record};
 
 const RPM: f64 = std::f64::consts::PI / 30.0;

@@ -4,8 +4,8 @@ use nalgebra::{Complex, Matrix3, Vector3};
 
 use rotor_bearing::analysis::linear::{node_xy, unbalance_response};
 use rotor_bearing::analysis::modal::{ModalOptions, modes};
-use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::model::{DEFAULT_MODEL_TOML, RotorModel};
+use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
 const RPM: f64 = std::f64::consts::PI / 30.0;

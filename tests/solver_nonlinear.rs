@@ -5,8 +5,8 @@ use nalgebra::{Complex, Matrix2, Vector2};
 
 use rotor_bearing::bearing::PlainBearing;
 use rotor_bearing::bearing::equilibrium::journal_equilibrium;
-use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
 const BEARING: PlainBearing = PlainBearing {

@@ -1,7 +1,7 @@
 //! Campbell diagram (damped natural frequencies against spin speed) and critical
 //! speeds, where a frequency branch meets an excitation line `ω = h·Ω`.
 
-use crate::fe::assembly::Rotor;
+use crate::rotor::Rotor;
 
 use super::modal::{ModalError, ModalOptions, Mode, Whirl, modes_at};
 

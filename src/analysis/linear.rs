@@ -2,9 +2,9 @@
 
 use nalgebra::Complex;
 
-use crate::fe::assembly::Rotor;
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::{LinalgError, map_to_complex};
+use crate::rotor::Rotor;
 
 use super::modal::damping_at_speed;
 

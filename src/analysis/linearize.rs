@@ -4,7 +4,7 @@
 
 use crate::bearing::equilibrium::condensed_coefficients;
 use crate::bearing::{BearingEval, BearingKind};
-use crate::fe::assembly::{AssemblyError, Rotor};
+use crate::rotor::{AssemblyError, Rotor};
 use crate::solver::{Simulator, SolverError, SolverOptions};
 
 /// Why a rotor could not be linearized.

@@ -9,9 +9,9 @@
 
 use nalgebra::Complex;
 
-use crate::fe::assembly::Rotor;
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::{ArnoldiOptions, BandMatrix, LinalgError, largest_eigenpairs, map_to_complex};
+use crate::rotor::Rotor;
 
 type C64 = Complex<f64>;
 

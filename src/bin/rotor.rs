@@ -24,11 +24,11 @@ use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
 use rotor_bearing::analysis::spectrum::{frequency_grid, full_spectrum};
 use rotor_bearing::bearing::equilibrium::coefficient_curve;
 use rotor_bearing::bearing::{BearingKind, PlainBearing};
-use rotor_bearing::fe::assembly::Rotor;
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::plot::{
     RAD_S_TO_RPM, campbell_png, coefficients_png, orbits_png, spectrum_png, waterfall_png,
 };
+use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record};
 
 #[derive(Parser)]

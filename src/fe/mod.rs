@@ -1,5 +1,6 @@
-//! Finite elements of the rotor: Timoshenko shaft elements, lumped disks, and
-//! the global assembly.
+//! Finite elements of the rotor: Timoshenko shaft elements, lumped disks and
+//! their sections. Pure functions of their inputs; the global assembly lives in
+//! the `rotor` module, one layer up (it reads the model, these files do not).
 //!
 //! # Coordinates, degrees of freedom and signs (stated once, used everywhere)
 //!
@@ -29,7 +30,6 @@
 //! `G[θx, θy] = +I_p`, `G[θy, θx] = −I_p`: forward whirl is stiffened, backward
 //! whirl softened.
 
-pub mod assembly;
 pub mod disk;
 pub mod section;
 pub mod shaft;

@@ -2,8 +2,8 @@
 //! of the [`Simulator`]. The C exports ([`super::exports`]) only translate
 //! pointers and call these methods; messages for the logger are queued here.
 
-use crate::fe::assembly::Rotor;
 use crate::model::RotorModel;
+use crate::rotor::Rotor;
 use crate::solver::{Outputs, SimState, Simulator, SolverError, SolverOptions};
 
 use super::variables::{

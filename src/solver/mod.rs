@@ -3,7 +3,7 @@
 //! [`Simulator`] API that front ends (CLI, FMI layer) drive.
 //!
 //! # Equations
-//! Rotor DOFs `u` (free DOFs of [`crate::fe::assembly::Rotor`]) and the internal
+//! Rotor DOFs `u` (free DOFs of [`crate::rotor::Rotor`]) and the internal
 //! DOFs `p` of the bearings (pad tilts, massless):
 //!
 //! `M ü + (C + Ω G) u̇ + K u = f_unb(t) + f_g + E F_b(Eᵀu, Eᵀu̇, p, ṗ, Ω)`,

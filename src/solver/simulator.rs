@@ -1,9 +1,9 @@
 //! The time-domain simulator (see the module docs of [`crate::solver`]).
 
 use crate::bearing::{Bearing, BearingError, BearingEval, BearingReport};
-use crate::fe::assembly::Rotor;
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::{BandLu, BandMatrix, LinalgError};
+use crate::rotor::Rotor;
 
 use super::dense::{lu_in_place, lu_solve};
 

@@ -1,10 +1,14 @@
-//! Global assembly of a [`RotorModel`] into banded matrices.
+//! The assembled rotor: global assembly of a [`RotorModel`] into banded matrices.
+//!
+//! Layer 4 of the crate (above the element physics in [`crate::fe`] and
+//! [`crate::bearing`] and the validated model in [`crate::model`], below the
+//! solver and the analyses).
 //!
 //! Nodes along one shaft couple only to their neighbours, so with node-major DOF
 //! numbering every matrix is banded with half-bandwidth 7 (less after removing
 //! constrained DOFs). Storage and solves are O(n); nothing here is dense.
 
-use crate::bearing::{Bearing, BearingEval};
+use crate::bearing::BearingEval;
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::{BandMatrix, LinalgError};
 use crate::model::RotorModel;
@@ -70,17 +74,12 @@ impl DofMap {
     }
 }
 
-/// A bearing that is not linear and is therefore kept out of the matrices.
-#[derive(Debug)]
+/// A bearing that is not linear and is therefore kept out of the matrices (the
+/// solver builds its force model from the model's bearing of the same index).
+#[derive(Debug, Clone, PartialEq)]
 pub struct BearingSite {
     /// Bearing name from the model.
     pub name: String,
-    /// Node index.
-    pub node: usize,
-    /// Free DOF indices of the journal `(x, y)`.
-    pub dofs: [Option<usize>; 2],
-    /// The bearing model.
-    pub bearing: Box<dyn Bearing>,
 }
 
 /// The assembled rotor: `M q̈ + (C + Ω G) q̇ + K q = f` on the free DOFs, with the
@@ -172,9 +171,6 @@ impl Rotor {
             } else {
                 nonlinear_bearings.push(BearingSite {
                     name: b.name.clone(),
-                    node: b.node,
-                    dofs: journal,
-                    bearing,
                 });
             }
         }
