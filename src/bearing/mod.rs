@@ -286,4 +286,72 @@ impl BearingKind {
             BearingKind::TiltingPad(b) => Box::new(b.clone()),
         }
     }
+
+    /// Whether the force depends nonlinearly on the journal state (a fluid film).
+    pub fn is_nonlinear(&self) -> bool {
+        !matches!(self, BearingKind::Linear { .. })
+    }
+
+    /// Film geometry and oil of a fluid-film bearing, `None` for a linear one.
+    /// For tilting pads the clearance is the pad (machined) clearance.
+    pub fn film_geometry(&self) -> Option<FilmGeometry> {
+        let (radius, length, clearance, viscosity) = match self {
+            BearingKind::Linear { .. } => return None,
+            BearingKind::Plain(b) => (b.radius, b.length, b.clearance, b.viscosity),
+            BearingKind::TiltingPad(b) => (b.radius, b.length, b.clearance, b.viscosity),
+        };
+        Some(FilmGeometry {
+            radius,
+            length,
+            clearance,
+            viscosity,
+        })
+    }
+
+    /// Oil dynamic viscosity (Pa·s) of a fluid-film bearing, `None` for a linear one.
+    pub fn viscosity(&self) -> Option<f64> {
+        self.film_geometry().map(|g| g.viscosity)
+    }
+
+    /// Set the oil viscosity (Pa·s); `false` (and nothing changed) for a linear bearing.
+    pub fn set_viscosity(&mut self, viscosity: f64) -> bool {
+        match self {
+            BearingKind::Linear { .. } => return false,
+            BearingKind::Plain(b) => b.viscosity = viscosity,
+            BearingKind::TiltingPad(b) => b.viscosity = viscosity,
+        }
+        true
+    }
+
+    /// Radial clearance (m) the journal moves in: the bushing clearance of a plain
+    /// bearing, the assembled clearance `C (1 − preload)` of tilting pads; `None`
+    /// for a linear bearing.
+    pub fn journal_clearance(&self) -> Option<f64> {
+        match self {
+            BearingKind::Linear { .. } => None,
+            BearingKind::Plain(b) => Some(b.clearance),
+            BearingKind::TiltingPad(b) => Some(b.assembled_clearance()),
+        }
+    }
+}
+
+/// Geometry and oil of a fluid-film bearing (SI units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FilmGeometry {
+    /// Journal radius R (m).
+    pub radius: f64,
+    /// Axial length L (m).
+    pub length: f64,
+    /// Radial clearance C (m); for tilting pads the pad clearance.
+    pub clearance: f64,
+    /// Dynamic viscosity μ (Pa·s).
+    pub viscosity: f64,
+}
+
+impl FilmGeometry {
+    /// Short-bearing load scale `k0 = μ ω R L³ / C²` (N) at spin `speed` (rad/s):
+    /// the dimensionless load is `W / k0` (Ocvirk's Sommerfeld-type number).
+    pub fn load_scale(&self, speed: f64) -> f64 {
+        self.viscosity * speed * self.radius * self.length.powi(3) / self.clearance.powi(2)
+    }
 }

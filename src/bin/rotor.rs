@@ -701,7 +701,7 @@ fn coefficients(
             let m = RotorModel::from_file(path).map_err(|e| e.to_string())?;
             let found = m.bearings.iter().find(|b| match &bearing {
                 Some(name) => &b.name == name,
-                None => !matches!(b.kind, BearingKind::Linear { .. }),
+                None => b.kind.is_nonlinear(),
             });
             let b = found.ok_or_else(|| {
                 let names: Vec<&str> = m.bearings.iter().map(|b| b.name.as_str()).collect();
@@ -718,18 +718,15 @@ fn coefficients(
             (format!("bearing {} of {}", b.name, m.name), b.kind.clone())
         }
     };
-    let (radius, length, clearance, viscosity) = match &kind {
-        BearingKind::Plain(b) => (b.radius, b.length, b.clearance, b.viscosity),
-        BearingKind::TiltingPad(b) => (b.radius, b.length, b.clearance, b.viscosity),
-        BearingKind::Linear { .. } => {
-            return Err(format!("{label} is linear: its coefficients are constant"));
-        }
+    let Some(film) = kind.film_geometry() else {
+        return Err(format!("{label} is linear: its coefficients are constant"));
     };
     let speed = rpm / RAD_S_TO_RPM;
     let model_bearing = kind.build();
     // Load scale k0 = μωRL³/C²; sweep W/k0 from 0.08 to 50 (short bearing:
     // ε ≈ 0.1 … 0.9, the range of the paper's Fig. 3).
-    let k0 = viscosity * speed * radius * length.powi(3) / clearance.powi(2);
+    let k0 = film.load_scale(speed);
+    let clearance = film.clearance;
     let loads: Vec<f64> = (0..points)
         .map(|i| k0 * 0.08 * 625f64.powf(i as f64 / (points - 1) as f64))
         .collect();

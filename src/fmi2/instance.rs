@@ -126,11 +126,7 @@ impl Instance {
         let viscosity = model
             .bearings
             .iter()
-            .map(|b| match &b.kind {
-                crate::bearing::BearingKind::Plain(p) => p.viscosity,
-                crate::bearing::BearingKind::TiltingPad(t) => t.viscosity,
-                crate::bearing::BearingKind::Linear { .. } => 0.0,
-            })
+            .map(|b| b.kind.viscosity().unwrap_or(0.0))
             .collect();
         let sim = Self::fresh_simulator(&model)?;
         Ok(Self {

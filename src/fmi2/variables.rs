@@ -6,7 +6,6 @@
 //! (packing) and inside the FMU (from the model file in `resources/`), so the
 //! two can never drift apart; a GUID hashed from the description ties them.
 
-use crate::bearing::BearingKind;
 use crate::model::RotorModel;
 
 /// What a variable reads or writes in the simulator.
@@ -221,10 +220,8 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         Binding::Gravity,
     );
     for (k, b) in model.bearings.iter().enumerate() {
-        let mu = match &b.kind {
-            BearingKind::Plain(p) => p.viscosity,
-            BearingKind::TiltingPad(t) => t.viscosity,
-            BearingKind::Linear { .. } => continue,
+        let Some(mu) = b.kind.viscosity() else {
+            continue;
         };
         push(
             format!("bearings.{}.viscosity", b.name),

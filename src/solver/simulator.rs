@@ -332,11 +332,7 @@ impl Simulator {
             .model
             .bearings
             .iter()
-            .filter_map(|b| match &b.kind {
-                crate::bearing::BearingKind::Plain(p) => Some(p.clearance),
-                crate::bearing::BearingKind::TiltingPad(t) => Some(t.assembled_clearance()),
-                crate::bearing::BearingKind::Linear { .. } => None,
-            })
+            .filter_map(|b| b.kind.journal_clearance())
             .fold(f64::INFINITY, f64::min);
         let length_scale = if length_scale.is_finite() {
             length_scale
@@ -553,15 +549,11 @@ impl Simulator {
             .bearings
             .get_mut(index)
             .ok_or_else(|| SolverError::Input(format!("no bearing {index}")))?;
-        match &mut placed.kind {
-            crate::bearing::BearingKind::Plain(b) => b.viscosity = viscosity,
-            crate::bearing::BearingKind::TiltingPad(b) => b.viscosity = viscosity,
-            crate::bearing::BearingKind::Linear { .. } => {
-                return Err(SolverError::Input(format!(
-                    "bearing {} is linear: it has no oil viscosity",
-                    placed.name
-                )));
-            }
+        if !placed.kind.set_viscosity(viscosity) {
+            return Err(SolverError::Input(format!(
+                "bearing {} is linear: it has no oil viscosity",
+                placed.name
+            )));
         }
         let (output, site) = &mut self.output_bearings[index];
         *output = placed.kind.build();
