@@ -1,34 +1,142 @@
-"""Sweep tool checks (run by tests/sweep.rs; argv: repo root): a small sweep on a
-2-worker Dask LocalCluster gives exactly the numbers of the same runs made
-serially, and a failing point is a row of the table, not the end of the sweep."""
+"""Sweep tool checks (run by tests/sweep.rs; argv: repo root), each against a
+known answer:
+- the whirl metrics of synthetic orbits: a pure 1× orbit, a growing and a
+  decaying 0.45× whirl with known rates, a saturated half-speed whirl;
+- a 2-worker Dask LocalCluster gives exactly the numbers of the serial runs,
+  with the FMU shipped from the client (its file is deleted before the run);
+- a failing point is a row of the table, not the end of the sweep;
+- a run too short to tell 0.5× from 1× is flagged and never classified;
+- the Jeffcott rotor's response at 6000 rpm is 1.00× and at 10000 rpm a 0.50×
+  whirl;
+- the onset of whirl found by bisection agrees within 1 % with the threshold of
+  the linearized modes (`rotor modes`: the least damped mode's damping ratio
+  crosses zero) at three viscosities.
+"""
 import os
+import re
+import shutil
+import subprocess
 import sys
+import tempfile
+
+import numpy as np
 
 root = os.path.abspath(sys.argv[1]) if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..")
 sys.path.insert(0, os.path.join(root, "system"))
 from dask.distributed import Client, LocalCluster  # noqa: E402
-from sweep import run_sweep  # noqa: E402
+import sweep  # noqa: E402
 
-def main():
-    fmu = os.path.join(root, "out", "jeffcott.fmu")
+FMU = os.path.join(root, "out", "jeffcott.fmu")
+ROTOR = os.path.join(root, "target", "release", "rotor")
+VISC = "bearings.left.viscosity,bearings.right.viscosity"
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def synthetic():
+    f_spin = 50.0
+    t = np.arange(0, 1.0, 2e-4)
+    w = 2 * np.pi * f_spin
+    sync = 1e-6 * np.exp(1j * w * t)
+    m = sweep.whirl_metrics(t, sync.real, sync.imag, f_spin)
+    check(abs(m["dominant_order"] - 1.0) < 0.01 and m["subsync_share"] < 1e-3 and m["growth_per_s"] == -np.inf,
+          f"pure 1× orbit: order {m['dominant_order']:.4f}, share {m['subsync_share']:.1e}, no whirl")
+    for sigma in (0.7, -3.0):
+        z = sync + 2e-7 * np.exp((sigma + 1j * 0.45 * w) * t)
+        m = sweep.whirl_metrics(t, z.real, z.imag, f_spin)
+        check(abs(m["growth_per_s"] - sigma) < 0.01 * abs(sigma),
+              f"0.45× whirl with σ = {sigma}/s: measured {m['growth_per_s']:.4f}/s")
+    z = 0.05e-6 * np.exp(1j * w * t) + 1e-6 * np.exp(1j * 0.5 * w * t)
+    m = sweep.whirl_metrics(t, z.real, z.imag, f_spin)
+    check(abs(m["dominant_order"] - 0.5) < 0.01 and m["subsync_share"] >= sweep.SATURATED_SHARE,
+          f"saturated half-speed whirl: order {m['dominant_order']:.4f}, share {m['subsync_share']:.4f}")
+
+
+def cluster_equals_serial_and_failures_are_rows():
     rpms = [6000.0, 10000.0]
     params = {"unbalance.disk": [2e-5, 20.0]}  # 20 kg·m drives the journal into the clearance
-    serial = run_sweep(fmu, rpms, params, 0.3, 5e-4)
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True) as cluster, Client(cluster) as client:
-        parallel = run_sweep(fmu, rpms, params, 0.3, 5e-4, client)
-    failures = []
-    if [r for r in serial] != [r for r in parallel]:
-        failures.append("the 2-worker LocalCluster sweep differs from the serial one")
-    bad = [r for r in parallel if r["status"] != "ok"]
+    serial = sweep.run_sweep(FMU, rpms, params, 0.5, 5e-4)
+    with tempfile.TemporaryDirectory() as tmp:
+        copy = os.path.join(tmp, "shipped.fmu")
+        shutil.copy(FMU, copy)
+        payload = sweep.fmu_payload(copy)
+        os.remove(copy)  # the workers must get the FMU from the client, not the file system
+        with LocalCluster(n_workers=2, threads_per_worker=1, processes=True) as cluster, Client(cluster) as client:
+            parallel = sweep.run_points(payload, list(sweep.grid(rpms, params)), 0.5, 5e-4, client)
+    check(serial == parallel, "a 2-worker LocalCluster with the FMU shipped from the client equals the serial sweep")
+    bad = [r for r in parallel if r["status"].startswith("error")]
     good = [r for r in parallel if r["status"] == "ok"]
-    if not bad or not all(r["unbalance.disk"] == 20.0 for r in bad):
-        failures.append(f"the 20 kg·m points must fail and be reported: {[(r['rpm'], r['status'][:60]) for r in parallel]}")
-    if len(good) != 2 or any(r["unbalance.disk"] != 2e-5 for r in good):
-        failures.append("the normal points must succeed")
-    print(f"{len(parallel)} points, {len(bad)} reported failures: " + "; ".join(r["status"][:80] for r in bad))
+    check(bool(bad) and all(r["unbalance.disk"] == 20.0 for r in bad),
+          f"the 20 kg·m points fail and are reported: {[(r['rpm'], r['status'][:60]) for r in parallel]}")
+    check(len(good) == 2 and all(r["unbalance.disk"] == 2e-5 for r in good), "the normal points succeed")
+    at = {r["rpm"]: r for r in good}
+    order6 = at[6000.0]["right.dominant_order"]
+    order10 = at[10000.0]["right.dominant_order"]
+    check(abs(order6 - 1.0) <= 0.01 and not at[6000.0]["whirl"], f"6000 rpm: 1× response, order {order6:.4f}, stable")
+    check(abs(order10 - 0.5) <= 0.01 and at[10000.0]["whirl"], f"10000 rpm: half-speed whirl, order {order10:.4f}")
+
+
+def short_runs_are_flagged():
+    rows = sweep.run_sweep(FMU, [1000.0], {}, 0.4, 5e-4)
+    r = rows[0]
+    check(r["status"].startswith("too_short") and "whirl" not in r and "right.subsync_share" not in r,
+          f"0.4 s at 1000 rpm ({r['revolutions']:.1f} revolutions analysed) is flagged, not classified: {r['status'][:70]}")
+    onsets, _ = sweep.find_onsets(FMU, rows, {}, 0.4, 5e-4, 3)
+    check(not np.isfinite(onsets[0]["onset_rpm"]), "no onset is reported from unclassified points")
+
+
+def linear_threshold(viscosity):
+    """Speed (rpm) where the least damped mode of the linearized rotor crosses ζ = 0."""
+    text = re.sub(r"viscosity\s*=\s*[0-9.eE+-]+", f"viscosity = {viscosity}",
+                  open(os.path.join(root, "models", "jeffcott.toml")).read())
+    with tempfile.TemporaryDirectory() as tmp:
+        model = os.path.join(tmp, "jeffcott.toml")
+        with open(model, "w") as f:
+            f.write(text)
+
+        def zeta(rpm):
+            out = subprocess.run([ROTOR, "modes", model, "--rpm", str(rpm), "--modes", "6"],
+                                 capture_output=True, text=True, check=True).stdout
+            return min(float(line.split()[3]) for line in out.splitlines()[2:] if line.strip())
+
+        lo, hi = 4000.0, 10000.0
+        assert zeta(lo) > 0 > zeta(hi)
+        for _ in range(30):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if zeta(mid) < 0 else (mid, hi)
+        return 0.5 * (lo + hi)
+
+
+def onsets_match_the_linear_thresholds():
+    viscosities = [0.01, 0.02, 0.04]
+    params = {VISC: viscosities}
+    rows = sweep.run_sweep(FMU, list(np.linspace(5000, 9000, 5)), params, 1.0, 5e-4)
+    onsets, refinement = sweep.find_onsets(FMU, rows, params, 1.0, 5e-4, 7)
+    check(len(refinement) >= 3 * 7, f"{len(refinement)} refinement runs")
+    found = []
+    for o in onsets:
+        mu = o[sweep.column_name(VISC)]
+        linear = linear_threshold(mu)
+        err = abs(o["onset_rpm"] - linear) / linear
+        found.append(o["onset_rpm"])
+        check(err < 0.01, f"μ = {mu}: onset {o['onset_rpm']:.1f} ± {o['bracket_rpm']:.1f} rpm, "
+                          f"linear threshold {linear:.1f} rpm ({100 * err:.2f} %)")
+    check(len(set(round(x) for x in found)) == 3, "the three viscosities give three different onsets")
+
+
+def main():
+    synthetic()
+    cluster_equals_serial_and_failures_are_rows()
+    short_runs_are_flagged()
+    onsets_match_the_linear_thresholds()
     if failures:
-        sys.exit("\n".join(failures))
-    print("sweep: LocalCluster equals serial; failures reported in the table")
+        sys.exit(f"{len(failures)} sweep checks failed:\n" + "\n".join(failures))
+    print("sweep: all checks passed")
 
 
 if __name__ == "__main__":

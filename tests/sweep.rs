@@ -6,5 +6,9 @@ mod common;
 #[test]
 fn dask_sweep_matches_serial_and_reports_failures() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    common::run_python("system/test_sweep.py", &[root], &["out/jeffcott.fmu"]);
+    common::run_python(
+        "system/test_sweep.py",
+        &[root],
+        &["out/jeffcott.fmu", "target/release/rotor"],
+    );
 }
