@@ -43,10 +43,15 @@ pub enum EquilibriumError {
 }
 
 /// Coordinates where the bearing's forces balance `load` (the steady force applied
-/// to the journal, N) with all velocities zero: `Q(q) + [load, 0…] = 0`. Newton
-/// steps `δ = K⁻¹ (Q + load)` with backtracking keep the journal inside the
-/// radius `scale` and the residual decreasing; converged when
-/// `|Q + load| ≤ 1e-10 |load|`.
+/// to the journal, N) with all velocities zero: `Q(q) + [load, 0…] = 0`.
+///
+/// Newton steps `δ = K⁻¹ (Q + load)` with backtracking keep the journal inside
+/// the radius `scale` and the residual decreasing; converged when
+/// `|Q + load| ≤ 1e-10 |load|`. The start is the centred journal with each
+/// internal coordinate (a pad's tilt) at the bearing's own guess
+/// ([`Bearing::guess_internal`]: the tilt of zero pivot moment); when Newton
+/// stalls from there, the load is applied in eight increments, each solved from
+/// the previous equilibrium (continuation in load).
 pub fn journal_equilibrium(
     bearing: &dyn Bearing,
     load: Vector2<f64>,
@@ -54,6 +59,40 @@ pub fn journal_equilibrium(
     scale: f64,
 ) -> Result<Equilibrium, EquilibriumError> {
     let n = 2 + bearing.internal_dofs();
+    let mut start = vec![0.0; n];
+    bearing.guess_internal([0.0, 0.0], speed, &mut start[2..]);
+    let direct = newton(bearing, load, speed, scale, start.clone());
+    if direct.is_ok() || n == 2 {
+        return direct;
+    }
+    let mut q = start;
+    let steps = 8;
+    let mut last = direct;
+    for k in 1..=steps {
+        last = newton(
+            bearing,
+            load * (k as f64 / steps as f64),
+            speed,
+            scale,
+            q.clone(),
+        );
+        match &last {
+            Ok(eq) => q.clone_from(&eq.q),
+            Err(_) => return last,
+        }
+    }
+    last
+}
+
+/// Newton's method with backtracking from `q` (see [`journal_equilibrium`]).
+fn newton(
+    bearing: &dyn Bearing,
+    load: Vector2<f64>,
+    speed: f64,
+    scale: f64,
+    mut q: Vec<f64>,
+) -> Result<Equilibrium, EquilibriumError> {
+    let n = q.len();
     let zero = vec![0.0; n];
     let residual_of = |eval: &BearingEval| -> DVector<f64> {
         DVector::from_fn(n, |i, _| {
@@ -66,7 +105,6 @@ pub fn journal_equilibrium(
         })
     };
     let tol = 1e-10 * load.norm().max(f64::MIN_POSITIVE);
-    let mut q = vec![0.0; n];
     let mut eval = BearingEval::new(n);
     bearing.evaluate(&q, &zero, speed, &mut eval)?;
     let mut trial_eval = eval.clone();
@@ -165,27 +203,55 @@ pub struct CoefficientPoint {
     pub damping: Matrix2<f64>,
 }
 
-/// Equilibria and coefficients for each load of `loads` (N, along −y) at spin
-/// `speed`; loads without an equilibrium inside `scale` are skipped.
+/// Equilibrium and coefficients at every load of `loads` (N, along −y) at spin
+/// `speed`, each load continued from the previous equilibrium (a fresh
+/// [`journal_equilibrium`] when that fails). Every load is returned with its
+/// point or the reason it has none.
+pub fn coefficient_points(
+    bearing: &dyn Bearing,
+    speed: f64,
+    scale: f64,
+    loads: &[f64],
+) -> Vec<(f64, Result<CoefficientPoint, EquilibriumError>)> {
+    let mut previous: Option<Vec<f64>> = None;
+    loads
+        .iter()
+        .map(|&w| {
+            let load = Vector2::new(0.0, -w);
+            let continued = previous
+                .take()
+                .map(|q| newton(bearing, load, speed, scale, q));
+            let eq = match continued {
+                Some(Ok(eq)) => Ok(eq),
+                _ => journal_equilibrium(bearing, load, speed, scale),
+            };
+            let point = eq.map(|eq| {
+                let (stiffness, damping) = condensed_coefficients(&eq.eval, speed);
+                let report = bearing.report(&eq.q, speed, &eq.eval);
+                previous = Some(eq.q);
+                CoefficientPoint {
+                    load: w,
+                    eccentricity: report.eccentricity,
+                    attitude_angle: report.attitude_angle,
+                    stiffness,
+                    damping,
+                }
+            });
+            (w, point)
+        })
+        .collect()
+}
+
+/// The solved points of [`coefficient_points`] (loads without an equilibrium
+/// inside `scale` left out; use `coefficient_points` to report them).
 pub fn coefficient_curve(
     bearing: &dyn Bearing,
     speed: f64,
     scale: f64,
     loads: &[f64],
 ) -> Vec<CoefficientPoint> {
-    loads
-        .iter()
-        .filter_map(|&w| {
-            let eq = journal_equilibrium(bearing, Vector2::new(0.0, -w), speed, scale).ok()?;
-            let (stiffness, damping) = condensed_coefficients(&eq.eval, speed);
-            let report = bearing.report(&eq.q, speed, &eq.eval);
-            Some(CoefficientPoint {
-                load: w,
-                eccentricity: report.eccentricity,
-                attitude_angle: report.attitude_angle,
-                stiffness,
-                damping,
-            })
-        })
+    coefficient_points(bearing, speed, scale, loads)
+        .into_iter()
+        .filter_map(|(_, p)| p.ok())
         .collect()
 }
