@@ -35,12 +35,10 @@ fn check_mirror(bearing: &dyn Bearing, partner: &[usize], states: &[(Vec<f64>, V
             .unwrap();
         let mirrored_force = mirror_q(&fwd.force, partner);
         let scale = fwd.force.iter().fold(1e-9_f64, |m, f| m.max(f.abs()));
-        for i in 0..n {
+        for (i, (r, m)) in rev.force.iter().zip(&mirrored_force).enumerate() {
             assert!(
-                (rev.force[i] - mirrored_force[i]).abs() <= 1e-10 * scale,
-                "force {i}: reverse {:.6e}, mirrored forward {:.6e} at q = {q:?}",
-                rev.force[i],
-                mirrored_force[i]
+                (r - m).abs() <= 1e-10 * scale,
+                "force {i}: reverse {r:.6e}, mirrored forward {m:.6e} at q = {q:?}"
             );
         }
         // Jacobians: K_rev = M K M with M the mirror (and pad permutation).
