@@ -660,3 +660,67 @@ fn broken_resources_give_null_and_a_message() {
     assert!(me.is_null());
     let _ = Path::new("");
 }
+
+/// Calls outside the states the FMI 2.0 Co-Simulation state table allows them
+/// in give fmi2Error and a message naming the call and the state; the calls the
+/// standard allows after an error (state save, reset) still work.
+#[test]
+fn calls_in_forbidden_states_are_refused() {
+    let logged = |text: &str| LOG.lock().unwrap().iter().any(|(_, m)| m.contains(text));
+    let fmu = Fmu::new("forbidden");
+    let speed = fmu.vr("shaft.speed");
+    let mut v = 0.0;
+    let mut t = 0.0;
+    unsafe {
+        assert_eq!(
+            fmu.lib.fmi2GetReal(fmu.c, &speed, 1, &mut v),
+            fmi2Status_fmi2Error
+        );
+        assert!(logged("fmi2GetReal is not allowed in state Instantiated"));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        assert_eq!(
+            fmu.lib.fmi2ExitInitializationMode(fmu.c),
+            fmi2Status_fmi2Error
+        );
+        assert!(logged(
+            "fmi2ExitInitializationMode is not allowed in state Instantiated (allowed: InitializationMode)"
+        ));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        assert_eq!(
+            fmu.lib
+                .fmi2GetRealStatus(fmu.c, fmi2StatusKind_fmi2LastSuccessfulTime, &mut t),
+            fmi2Status_fmi2Error
+        );
+        assert!(logged(
+            "fmi2GetRealStatus is not allowed in state Instantiated"
+        ));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        fmu.init();
+        assert_eq!(
+            fmu.lib.fmi2SetupExperiment(fmu.c, 0, 0.0, 0.0, 0, 0.0),
+            fmi2Status_fmi2Error
+        );
+        assert!(logged(
+            "fmi2SetupExperiment is not allowed in state StepComplete"
+        ));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        fmu.init();
+        assert_eq!(fmu.lib.fmi2Terminate(fmu.c), fmi2Status_fmi2OK);
+        assert_eq!(fmu.step(0.0, 0.1), fmi2Status_fmi2Error);
+        assert!(logged("fmi2DoStep is not allowed in state Terminated"));
+        // In the error state: saving the state and reset are allowed.
+        let mut state: fmi2FMUstate = std::ptr::null_mut();
+        assert_eq!(
+            fmu.lib.fmi2GetFMUstate(fmu.c, &mut state),
+            fmi2Status_fmi2OK
+        );
+        assert_eq!(fmu.set("shaft.speed", 50.0), fmi2Status_fmi2Error);
+        assert!(logged("fmi2SetReal is not allowed in state Error"));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        assert_eq!(fmu.set("shaft.speed", 50.0), fmi2Status_fmi2OK);
+        assert_eq!(
+            fmu.lib.fmi2FreeFMUstate(fmu.c, &mut state),
+            fmi2Status_fmi2OK
+        );
+    }
+}
