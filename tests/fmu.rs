@@ -724,3 +724,31 @@ fn calls_in_forbidden_states_are_refused() {
         );
     }
 }
+
+/// With a stop time set in fmi2SetupExperiment, a step ending past it is an
+/// error (FMI 2.0 §4.2.4); a step ending at it is fine.
+#[test]
+fn steps_past_the_stop_time_are_errors() {
+    let fmu = Fmu::new("stop_time");
+    unsafe {
+        assert_eq!(
+            fmu.lib.fmi2SetupExperiment(fmu.c, 0, 0.0, 0.0, 1, 1.0),
+            fmi2Status_fmi2OK
+        );
+        assert_eq!(
+            fmu.lib.fmi2EnterInitializationMode(fmu.c),
+            fmi2Status_fmi2OK
+        );
+        assert_eq!(fmu.lib.fmi2ExitInitializationMode(fmu.c), fmi2Status_fmi2OK);
+    }
+    assert_eq!(fmu.step(0.0, 0.5), fmi2Status_fmi2OK);
+    assert_eq!(fmu.step(0.5, 1.5), fmi2Status_fmi2Error);
+    assert!(
+        LOG.lock()
+            .unwrap()
+            .iter()
+            .any(|(_, m)| m.contains("past the stop time 1 s")),
+        "{:?}",
+        LOG.lock().unwrap()
+    );
+}

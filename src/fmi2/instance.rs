@@ -56,6 +56,10 @@ pub enum Status {
     Fatal,
 }
 
+/// Relative slack on the stop time of fmi2SetupExperiment, for communication
+/// points the master accumulates in floating point.
+const STOP_SLACK: f64 = 1e-9;
+
 /// A message for the logger: status, category, text.
 pub type LogMessage = (Status, &'static str, String);
 
@@ -498,6 +502,18 @@ impl Instance {
             return self.report(
                 Status::Error,
                 format!("{call}: communication step {step} s must be positive"),
+            );
+        }
+        let end = current + step;
+        if let Some(stop) = self
+            .stop_time
+            .filter(|&t| end > t + STOP_SLACK * t.abs().max(1.0))
+        {
+            return self.report(
+                Status::Error,
+                format!(
+                    "{call}: the step from {current} s by {step} s ends at {end} s, past the stop time {stop} s of fmi2SetupExperiment"
+                ),
             );
         }
         self.outputs = None;
