@@ -752,3 +752,24 @@ fn steps_past_the_stop_time_are_errors() {
         LOG.lock().unwrap()
     );
 }
+
+/// fmi2Reset restores the model's viscosity: a tuned value does not survive it.
+#[test]
+fn reset_restores_the_model_viscosity() {
+    let fmu = Fmu::new("reset_viscosity");
+    let name = "bearings.generator_guide.viscosity";
+    let read = || unsafe {
+        assert_eq!(
+            fmu.lib.fmi2EnterInitializationMode(fmu.c),
+            fmi2Status_fmi2OK
+        );
+        fmu.get(&[name])[0]
+    };
+    let model = read();
+    assert_eq!(model, 0.03);
+    unsafe { assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK) };
+    assert_eq!(fmu.set(name, 0.05), fmi2Status_fmi2OK);
+    assert_eq!(read(), 0.05);
+    unsafe { assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK) };
+    assert_eq!(read(), model);
+}

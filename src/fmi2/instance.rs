@@ -132,16 +132,22 @@ fn category(status: Status) -> &'static str {
     }
 }
 
+/// The viscosity of each model bearing as the model file gives it (0 where the
+/// bearing has none).
+fn model_viscosity(model: &RotorModel) -> Vec<f64> {
+    model
+        .bearings
+        .iter()
+        .map(|b| b.kind.viscosity().unwrap_or(0.0))
+        .collect()
+}
+
 impl Instance {
     /// A new instance of `model`, named `name`.
     pub fn new(name: &str, model: RotorModel) -> Result<Self, String> {
         let vars = variables(&model);
         let (_, guid) = model_description(&model);
-        let viscosity = model
-            .bearings
-            .iter()
-            .map(|b| b.kind.viscosity().unwrap_or(0.0))
-            .collect();
+        let viscosity = model_viscosity(&model);
         let sim = Self::fresh_simulator(&model)?;
         Ok(Self {
             name: name.to_string(),
@@ -557,6 +563,7 @@ impl Instance {
             Ok(sim) => {
                 self.sim = sim;
                 self.params = Params::default();
+                self.viscosity = model_viscosity(&self.model);
                 self.phase = Phase::Instantiated;
                 self.outputs = None;
                 self.start_time = 0.0;
