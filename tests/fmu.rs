@@ -475,10 +475,14 @@ fn instances_are_independent_across_threads() {
     assert_eq!(tb.join().unwrap(), alone_b);
 }
 
+/// The last warning or error logged (informative `logAll` messages such as
+/// step statistics of concurrently running tests are skipped).
 fn last_log() -> String {
     LOG.lock()
         .unwrap()
-        .last()
+        .iter()
+        .rev()
+        .find(|(status, _)| *status != fmi2Status_fmi2OK)
         .map(|(_, m)| m.clone())
         .unwrap_or_default()
 }
@@ -772,4 +776,41 @@ fn reset_restores_the_model_viscosity() {
     assert_eq!(read(), 0.05);
     unsafe { assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK) };
     assert_eq!(read(), model);
+}
+
+/// With logging on and `logAll` enabled, every fmi2DoStep logs its step
+/// statistics; with `logAll` disabled it does not.
+#[test]
+fn step_statistics_are_logged_under_log_all() {
+    let logged = |text: &str| LOG.lock().unwrap().iter().any(|(_, m)| m.contains(text));
+    let fmu = Fmu::new("statistics");
+    fmu.init();
+    assert_eq!(fmu.step(0.0, 0.0375), fmi2Status_fmi2OK);
+    let message = LOG
+        .lock()
+        .unwrap()
+        .iter()
+        .find(|(_, m)| m.starts_with("fmi2DoStep from 0 s by 0.0375 s: "))
+        .map(|(_, m)| m.clone())
+        .expect("step statistics logged");
+    let counts: Vec<usize> = message["fmi2DoStep from 0 s by 0.0375 s: ".len()..]
+        .split(|c: char| !c.is_ascii_digit())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    // Steps, iterations, cuts, refreshes, factorizations.
+    assert_eq!(counts.len(), 5, "{message}");
+    let (steps, iterations) = (counts[0], counts[1]);
+    assert!(steps >= 38, "{message}");
+    assert!(iterations > 0, "{message}");
+    assert!(message.contains("internal steps") && message.contains("step cuts"));
+    let errors = CString::new("logStatusError").unwrap();
+    let list = [errors.as_ptr()];
+    unsafe {
+        assert_eq!(
+            fmu.lib.fmi2SetDebugLogging(fmu.c, 1, 1, list.as_ptr()),
+            fmi2Status_fmi2OK
+        );
+    }
+    assert_eq!(fmu.step(0.0375, 0.0375), fmi2Status_fmi2OK);
+    assert!(!logged("fmi2DoStep from 0.0375 s by 0.0375 s"));
 }

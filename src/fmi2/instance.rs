@@ -120,6 +120,7 @@ pub struct Instance {
     stop_time: Option<f64>,
     outputs: Option<Outputs>,
     messages: Vec<LogMessage>,
+    step_statistics: bool,
 }
 
 fn category(status: Status) -> &'static str {
@@ -163,6 +164,7 @@ impl Instance {
             stop_time: None,
             outputs: None,
             messages: Vec::new(),
+            step_statistics: false,
         })
     }
 
@@ -192,6 +194,13 @@ impl Instance {
     /// Take the queued log messages.
     pub fn drain_messages(&mut self) -> Vec<LogMessage> {
         std::mem::take(&mut self.messages)
+    }
+
+    /// Whether each fmi2DoStep queues its step statistics (internal steps,
+    /// Newton iterations, step cuts) as a `logAll` message; the C layer turns it
+    /// on when the master enables that category.
+    pub fn set_step_statistics(&mut self, on: bool) {
+        self.step_statistics = on;
     }
 
     /// Queue a message and return its status.
@@ -523,7 +532,24 @@ impl Instance {
             );
         }
         self.outputs = None;
-        match self.sim.advance_to(current + step) {
+        let before = self.sim.stats();
+        let result = self.sim.advance_to(current + step);
+        if self.step_statistics {
+            let after = self.sim.stats();
+            self.messages.push((
+                Status::Ok,
+                category(Status::Ok),
+                format!(
+                    "{call} from {current} s by {step} s: {} internal steps, {} Newton iterations, {} step cuts ({} Jacobian refreshes, {} factorizations)",
+                    after.steps - before.steps,
+                    after.iterations - before.iterations,
+                    after.step_cuts - before.step_cuts,
+                    after.refreshes - before.refreshes,
+                    after.factorizations - before.factorizations,
+                ),
+            ));
+        }
+        match result {
             Ok(()) => match self.current_outputs() {
                 Ok(_) => Status::Ok,
                 Err(s) => s,

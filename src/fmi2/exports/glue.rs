@@ -68,6 +68,14 @@ pub(super) fn log_to(
 }
 
 impl Component {
+    /// Tell the instance whether step statistics are wanted: logging on and the
+    /// `logAll` category enabled.
+    pub(super) fn sync_step_statistics(&mut self) {
+        let all = LOG_CATEGORIES.iter().position(|(c, _)| *c == "logAll");
+        let on = self.logging_on && all.is_none_or(|i| self.categories[i]);
+        self.instance.set_step_statistics(on);
+    }
+
     pub(super) fn flush(&mut self) {
         for (status, category, text) in self.instance.drain_messages() {
             let index = LOG_CATEGORIES.iter().position(|(c, _)| *c == category);

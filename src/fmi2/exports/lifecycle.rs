@@ -63,14 +63,17 @@ fn instantiate(
     };
     let guid = guid.unwrap_or_default();
     match resources::instantiate(&name, &guid, &location) {
-        Ok(instance) => Box::into_raw(Box::new(Component {
-            instance,
-            name: cname.clone(),
-            callbacks,
-            logging_on,
-            categories: [true; LOG_CATEGORIES.len()],
-        }))
-        .cast(),
+        Ok(instance) => {
+            let mut comp = Box::new(Component {
+                instance,
+                name: cname.clone(),
+                callbacks,
+                logging_on,
+                categories: [true; LOG_CATEGORIES.len()],
+            });
+            comp.sync_step_statistics();
+            Box::into_raw(comp).cast()
+        }
         Err(e) => fail(format!("{name}: {e}")),
     }
 }
@@ -176,6 +179,7 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
         Status::Ok
     }));
     let status = result.unwrap_or(Status::Fatal);
+    comp.sync_step_statistics();
     comp.flush();
     status_code(status)
 }
