@@ -1,7 +1,7 @@
 //! The FMU state (`fmi2FMUstate`): everything `fmi2GetFMUstate` saves, and its
 //! byte image for `fmi2SerializeFMUstate`.
 //!
-//! One field list, [`SCALARS`] and [`VECTORS`], declares what a state holds;
+//! One field list, `SCALARS` and `VECTORS`, declares what a state holds;
 //! serialization, deserialization and the shape check before `fmi2SetFMUstate`
 //! all walk it, so a field cannot be saved but forgotten on reading.
 //!
