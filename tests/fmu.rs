@@ -475,10 +475,14 @@ fn instances_are_independent_across_threads() {
     assert_eq!(tb.join().unwrap(), alone_b);
 }
 
+/// The last warning or error logged (informative `logAll` messages such as
+/// step statistics of concurrently running tests are skipped).
 fn last_log() -> String {
     LOG.lock()
         .unwrap()
-        .last()
+        .iter()
+        .rev()
+        .find(|(status, _)| *status != fmi2Status_fmi2OK)
         .map(|(_, m)| m.clone())
         .unwrap_or_default()
 }
@@ -659,4 +663,154 @@ fn broken_resources_give_null_and_a_message() {
     };
     assert!(me.is_null());
     let _ = Path::new("");
+}
+
+/// Calls outside the states the FMI 2.0 Co-Simulation state table allows them
+/// in give fmi2Error and a message naming the call and the state; the calls the
+/// standard allows after an error (state save, reset) still work.
+#[test]
+fn calls_in_forbidden_states_are_refused() {
+    let logged = |text: &str| LOG.lock().unwrap().iter().any(|(_, m)| m.contains(text));
+    let fmu = Fmu::new("forbidden");
+    let speed = fmu.vr("shaft.speed");
+    let mut v = 0.0;
+    let mut t = 0.0;
+    unsafe {
+        assert_eq!(
+            fmu.lib.fmi2GetReal(fmu.c, &speed, 1, &mut v),
+            fmi2Status_fmi2Error
+        );
+        assert!(logged("fmi2GetReal is not allowed in state Instantiated"));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        assert_eq!(
+            fmu.lib.fmi2ExitInitializationMode(fmu.c),
+            fmi2Status_fmi2Error
+        );
+        assert!(logged(
+            "fmi2ExitInitializationMode is not allowed in state Instantiated (allowed: InitializationMode)"
+        ));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        assert_eq!(
+            fmu.lib
+                .fmi2GetRealStatus(fmu.c, fmi2StatusKind_fmi2LastSuccessfulTime, &mut t),
+            fmi2Status_fmi2Error
+        );
+        assert!(logged(
+            "fmi2GetRealStatus is not allowed in state Instantiated"
+        ));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        fmu.init();
+        assert_eq!(
+            fmu.lib.fmi2SetupExperiment(fmu.c, 0, 0.0, 0.0, 0, 0.0),
+            fmi2Status_fmi2Error
+        );
+        assert!(logged(
+            "fmi2SetupExperiment is not allowed in state StepComplete"
+        ));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        fmu.init();
+        assert_eq!(fmu.lib.fmi2Terminate(fmu.c), fmi2Status_fmi2OK);
+        assert_eq!(fmu.step(0.0, 0.1), fmi2Status_fmi2Error);
+        assert!(logged("fmi2DoStep is not allowed in state Terminated"));
+        // In the error state: saving the state and reset are allowed.
+        let mut state: fmi2FMUstate = std::ptr::null_mut();
+        assert_eq!(
+            fmu.lib.fmi2GetFMUstate(fmu.c, &mut state),
+            fmi2Status_fmi2OK
+        );
+        assert_eq!(fmu.set("shaft.speed", 50.0), fmi2Status_fmi2Error);
+        assert!(logged("fmi2SetReal is not allowed in state Error"));
+        assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK);
+        assert_eq!(fmu.set("shaft.speed", 50.0), fmi2Status_fmi2OK);
+        assert_eq!(
+            fmu.lib.fmi2FreeFMUstate(fmu.c, &mut state),
+            fmi2Status_fmi2OK
+        );
+    }
+}
+
+/// With a stop time set in fmi2SetupExperiment, a step ending past it is an
+/// error (FMI 2.0 §4.2.4); a step ending at it is fine.
+#[test]
+fn steps_past_the_stop_time_are_errors() {
+    let fmu = Fmu::new("stop_time");
+    unsafe {
+        assert_eq!(
+            fmu.lib.fmi2SetupExperiment(fmu.c, 0, 0.0, 0.0, 1, 1.0),
+            fmi2Status_fmi2OK
+        );
+        assert_eq!(
+            fmu.lib.fmi2EnterInitializationMode(fmu.c),
+            fmi2Status_fmi2OK
+        );
+        assert_eq!(fmu.lib.fmi2ExitInitializationMode(fmu.c), fmi2Status_fmi2OK);
+    }
+    assert_eq!(fmu.step(0.0, 0.5), fmi2Status_fmi2OK);
+    assert_eq!(fmu.step(0.5, 1.5), fmi2Status_fmi2Error);
+    assert!(
+        LOG.lock()
+            .unwrap()
+            .iter()
+            .any(|(_, m)| m.contains("past the stop time 1 s")),
+        "{:?}",
+        LOG.lock().unwrap()
+    );
+}
+
+/// fmi2Reset restores the model's viscosity: a tuned value does not survive it.
+#[test]
+fn reset_restores_the_model_viscosity() {
+    let fmu = Fmu::new("reset_viscosity");
+    let name = "bearings.generator_guide.viscosity";
+    let read = || unsafe {
+        assert_eq!(
+            fmu.lib.fmi2EnterInitializationMode(fmu.c),
+            fmi2Status_fmi2OK
+        );
+        fmu.get(&[name])[0]
+    };
+    let model = read();
+    assert_eq!(model, 0.03);
+    unsafe { assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK) };
+    assert_eq!(fmu.set(name, 0.05), fmi2Status_fmi2OK);
+    assert_eq!(read(), 0.05);
+    unsafe { assert_eq!(fmu.lib.fmi2Reset(fmu.c), fmi2Status_fmi2OK) };
+    assert_eq!(read(), model);
+}
+
+/// With logging on and `logAll` enabled, every fmi2DoStep logs its step
+/// statistics; with `logAll` disabled it does not.
+#[test]
+fn step_statistics_are_logged_under_log_all() {
+    let logged = |text: &str| LOG.lock().unwrap().iter().any(|(_, m)| m.contains(text));
+    let fmu = Fmu::new("statistics");
+    fmu.init();
+    assert_eq!(fmu.step(0.0, 0.0375), fmi2Status_fmi2OK);
+    let message = LOG
+        .lock()
+        .unwrap()
+        .iter()
+        .find(|(_, m)| m.starts_with("fmi2DoStep from 0 s by 0.0375 s: "))
+        .map(|(_, m)| m.clone())
+        .expect("step statistics logged");
+    let counts: Vec<usize> = message["fmi2DoStep from 0 s by 0.0375 s: ".len()..]
+        .split(|c: char| !c.is_ascii_digit())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    // Steps, iterations, cuts, refreshes, factorizations.
+    assert_eq!(counts.len(), 5, "{message}");
+    let (steps, iterations) = (counts[0], counts[1]);
+    assert!(steps >= 38, "{message}");
+    assert!(iterations > 0, "{message}");
+    assert!(message.contains("internal steps") && message.contains("step cuts"));
+    let errors = CString::new("logStatusError").unwrap();
+    let list = [errors.as_ptr()];
+    unsafe {
+        assert_eq!(
+            fmu.lib.fmi2SetDebugLogging(fmu.c, 1, 1, list.as_ptr()),
+            fmi2Status_fmi2OK
+        );
+    }
+    assert_eq!(fmu.step(0.0375, 0.0375), fmi2Status_fmi2OK);
+    assert!(!logged("fmi2DoStep from 0.0375 s by 0.0375 s"));
 }

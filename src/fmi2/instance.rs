@@ -1,15 +1,45 @@
-//! One FMU instance in safe Rust: the FMI 2.0 Co-Simulation state machine on top
-//! of the [`Simulator`]. The C exports ([`super::exports`]) only translate
-//! pointers and call these methods; messages for the logger are queued here.
+//! One FMU instance in safe Rust: get/set dispatch and steps of the FMI 2.0
+//! Co-Simulation calls onto the [`Simulator`]. Each call first asks the state
+//! table ([`super::states`]) whether it is allowed now; the FMU state lives in
+//! [`super::snapshot`]. The C exports only translate pointers and call these
+//! methods; messages for the logger are queued here.
+//!
+//! ```
+//! use rotor_bearing::fmi2::instance::{Instance, Status};
+//! use rotor_bearing::fmi2::variables::{Kind, variables};
+//! use rotor_bearing::model::RotorModel;
+//!
+//! let model = RotorModel::from_file("models/jeffcott.toml".as_ref()).unwrap();
+//! let vr = |name: &str| {
+//!     variables(&model)
+//!         .iter()
+//!         .find(|v| v.name == name)
+//!         .map(|v| v.value_reference)
+//!         .unwrap()
+//! };
+//! let (speed, x) = (vr("shaft.speed"), vr("bearings.left.x"));
+//! let mut fmu = Instance::new("doc", model.clone()).unwrap();
+//! assert_eq!(fmu.set(speed, Kind::Real, 100.0), Status::Ok);
+//! assert_eq!(fmu.enter_initialization_mode(), Status::Ok);
+//! assert_eq!(fmu.exit_initialization_mode(), Status::Ok);
+//! assert_eq!(fmu.do_step(0.0, 0.01), Status::Ok);
+//! let journal_x = fmu.get(x, Kind::Real).unwrap();
+//! assert!(journal_x.is_finite());
+//! assert_eq!(fmu.get(speed, Kind::Real), Ok(100.0));
+//! ```
 
 use crate::model::RotorModel;
 use crate::rotor::Rotor;
-use crate::solver::{Outputs, SimState, Simulator, SolverError, SolverOptions};
+use crate::solver::{Outputs, Simulator, SolverError, SolverOptions};
 
+use super::snapshot::{Snapshot, fingerprint};
+use super::states::Call;
+pub use super::states::Phase;
 use super::variables::{
     Binding, Causality, DEFAULT_MAX_ITERATIONS, DEFAULT_TIME_STEP, DEFAULT_TOLERANCE, Kind,
     Variability, Variable, variables,
 };
+use super::xml::model_description;
 
 /// FMI status codes (the subset an instance returns).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -26,34 +56,26 @@ pub enum Status {
     Fatal,
 }
 
-/// Where the instance is in the FMI 2.0 Co-Simulation state machine.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Phase {
-    /// After fmi2Instantiate (and fmi2Reset).
-    Instantiated,
-    /// Between fmi2EnterInitializationMode and fmi2ExitInitializationMode.
-    InitializationMode,
-    /// Initialized; the last step (if any) completed.
-    StepComplete,
-    /// The last fmi2DoStep was discarded; only rollback, reset or terminate help.
-    StepFailed,
-    /// After fmi2Terminate.
-    Terminated,
-    /// After an fmi2Error: only reset or free.
-    Error,
-}
+/// Relative slack on the stop time of fmi2SetupExperiment, for communication
+/// points the master accumulates in floating point.
+const STOP_SLACK: f64 = 1e-9;
 
 /// A message for the logger: status, category, text.
 pub type LogMessage = (Status, &'static str, String);
 
 /// Solver parameters held by the instance.
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Params {
-    time_step: f64,
-    tolerance: f64,
-    max_iterations: i32,
-    ramp_time: f64,
-    gravity: bool,
+pub(super) struct Params {
+    /// Internal step (s).
+    pub(super) time_step: f64,
+    /// Relative Newton tolerance.
+    pub(super) tolerance: f64,
+    /// Newton iterations per step attempt.
+    pub(super) max_iterations: i32,
+    /// Unbalance ramp time constant (s).
+    pub(super) ramp_time: f64,
+    /// Gravity on/off.
+    pub(super) gravity: bool,
 }
 
 impl Params {
@@ -82,20 +104,13 @@ impl Default for Params {
     }
 }
 
-/// Everything `fmi2GetFMUstate` saves.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Snapshot {
-    sim: SimState,
-    params: Params,
-    viscosity: Vec<f64>,
-    phase: Phase,
-}
-
 /// An FMU instance.
 #[derive(Debug)]
 pub struct Instance {
     name: String,
     model: RotorModel,
+    guid: String,
+    fingerprint: u64,
     vars: Vec<Variable>,
     sim: Simulator,
     params: Params,
@@ -105,9 +120,8 @@ pub struct Instance {
     stop_time: Option<f64>,
     outputs: Option<Outputs>,
     messages: Vec<LogMessage>,
+    step_statistics: bool,
 }
-
-const MAGIC: &[u8; 8] = b"RBFMU01\0";
 
 fn category(status: Status) -> &'static str {
     match status {
@@ -119,19 +133,28 @@ fn category(status: Status) -> &'static str {
     }
 }
 
+/// The viscosity of each model bearing as the model file gives it (0 where the
+/// bearing has none).
+fn model_viscosity(model: &RotorModel) -> Vec<f64> {
+    model
+        .bearings
+        .iter()
+        .map(|b| b.kind.viscosity().unwrap_or(0.0))
+        .collect()
+}
+
 impl Instance {
     /// A new instance of `model`, named `name`.
     pub fn new(name: &str, model: RotorModel) -> Result<Self, String> {
         let vars = variables(&model);
-        let viscosity = model
-            .bearings
-            .iter()
-            .map(|b| b.kind.viscosity().unwrap_or(0.0))
-            .collect();
+        let (_, guid) = model_description(&model);
+        let viscosity = model_viscosity(&model);
         let sim = Self::fresh_simulator(&model)?;
         Ok(Self {
             name: name.to_string(),
             model,
+            fingerprint: fingerprint(&guid),
+            guid,
             vars,
             sim,
             params: Params::default(),
@@ -141,6 +164,7 @@ impl Instance {
             stop_time: None,
             outputs: None,
             messages: Vec::new(),
+            step_statistics: false,
         })
     }
 
@@ -157,6 +181,11 @@ impl Instance {
         &self.name
     }
 
+    /// The GUID of the model description of this instance's model.
+    pub fn guid(&self) -> &str {
+        &self.guid
+    }
+
     /// Current phase.
     pub fn phase(&self) -> Phase {
         self.phase
@@ -165,6 +194,13 @@ impl Instance {
     /// Take the queued log messages.
     pub fn drain_messages(&mut self) -> Vec<LogMessage> {
         std::mem::take(&mut self.messages)
+    }
+
+    /// Whether each fmi2DoStep queues its step statistics (internal steps,
+    /// Newton iterations, step cuts) as a `logAll` message; the C layer turns it
+    /// on when the master enables that category.
+    pub fn set_step_statistics(&mut self, on: bool) {
+        self.step_statistics = on;
     }
 
     /// Queue a message and return its status.
@@ -176,21 +212,16 @@ impl Instance {
         status
     }
 
-    fn require(&mut self, call: &str, allowed: &[Phase]) -> Result<(), Status> {
-        if allowed.contains(&self.phase) {
-            Ok(())
-        } else {
-            let phase = self.phase;
-            Err(self.report(
-                Status::Error,
-                format!("{call} is not allowed in state {phase:?} (allowed: {allowed:?})"),
-            ))
-        }
+    /// `Ok` if `call` is allowed in the current phase (the table in
+    /// [`super::states`]), else fmi2Error with a message.
+    pub fn check(&mut self, call: Call) -> Result<(), Status> {
+        call.check(self.phase)
+            .map_err(|text| self.report(Status::Error, text))
     }
 
     /// fmi2SetupExperiment.
     pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> Status {
-        if let Err(s) = self.require("fmi2SetupExperiment", &[Phase::Instantiated]) {
+        if let Err(s) = self.check(Call::SetupExperiment) {
             return s;
         }
         if !start.is_finite() || stop.is_some_and(|t| !(t.is_finite() && t >= start)) {
@@ -203,7 +234,7 @@ impl Instance {
 
     /// fmi2EnterInitializationMode.
     pub fn enter_initialization_mode(&mut self) -> Status {
-        if let Err(s) = self.require("fmi2EnterInitializationMode", &[Phase::Instantiated]) {
+        if let Err(s) = self.check(Call::EnterInitializationMode) {
             return s;
         }
         self.phase = Phase::InitializationMode;
@@ -235,7 +266,7 @@ impl Instance {
 
     /// fmi2ExitInitializationMode.
     pub fn exit_initialization_mode(&mut self) -> Status {
-        if let Err(s) = self.require("fmi2ExitInitializationMode", &[Phase::InitializationMode]) {
+        if let Err(s) = self.check(Call::ExitInitializationMode) {
             return s;
         }
         match self.settle() {
@@ -279,16 +310,13 @@ impl Instance {
 
     /// fmi2GetReal / fmi2GetInteger / fmi2GetBoolean: value of `vr` as f64.
     pub fn get(&mut self, vr: u32, kind: Kind) -> Result<f64, Status> {
-        let call = "fmi2Get";
-        self.require(
-            call,
-            &[
-                Phase::InitializationMode,
-                Phase::StepComplete,
-                Phase::StepFailed,
-                Phase::Terminated,
-            ],
-        )?;
+        let call = match kind {
+            Kind::Real => Call::GetReal,
+            Kind::Integer => Call::GetInteger,
+            Kind::Boolean => Call::GetBoolean,
+        };
+        self.check(call)?;
+        let call = call.name();
         let v = self.variable(vr, kind, call)?;
         let s = self.sim.state();
         let p = self.params;
@@ -334,12 +362,20 @@ impl Instance {
 
     /// fmi2SetReal / fmi2SetInteger / fmi2SetBoolean.
     pub fn set(&mut self, vr: u32, kind: Kind, value: f64) -> Status {
-        let call = "fmi2Set";
+        let call = match kind {
+            Kind::Real => Call::SetReal,
+            Kind::Integer => Call::SetInteger,
+            Kind::Boolean => Call::SetBoolean,
+        };
+        if let Err(s) = self.check(call) {
+            return s;
+        }
+        let call = call.name();
         let v = match self.variable(vr, kind, call) {
             Ok(v) => v,
             Err(s) => return s,
         };
-        let allowed: &[Phase] = match (v.causality, v.variability) {
+        match (v.causality, v.variability) {
             (Causality::Output, _) => {
                 return self.report(
                     Status::Error,
@@ -347,21 +383,11 @@ impl Instance {
                 );
             }
             (Causality::Parameter, Variability::Fixed) => {
-                &[Phase::Instantiated, Phase::InitializationMode]
+                if let Err(s) = self.check(Call::SetFixedParameter) {
+                    return s;
+                }
             }
-            (Causality::Parameter, _) => &[
-                Phase::Instantiated,
-                Phase::InitializationMode,
-                Phase::StepComplete,
-            ],
-            (Causality::Input, _) => &[
-                Phase::Instantiated,
-                Phase::InitializationMode,
-                Phase::StepComplete,
-            ],
-        };
-        if let Err(s) = self.require(&format!("{call} of {}", v.name), allowed) {
-            return s;
+            (Causality::Parameter | Causality::Input, _) => {}
         }
         if !value.is_finite() {
             return self.report(
@@ -424,10 +450,10 @@ impl Instance {
 
     /// fmi2SetRealInputDerivatives (first order: a ramp over the next step).
     pub fn set_input_derivative(&mut self, vr: u32, order: i32, value: f64) -> Status {
-        let call = "fmi2SetRealInputDerivatives";
-        if let Err(s) = self.require(call, &[Phase::InitializationMode, Phase::StepComplete]) {
+        if let Err(s) = self.check(Call::SetRealInputDerivatives) {
             return s;
         }
+        let call = Call::SetRealInputDerivatives.name();
         let v = match self.variable(vr, Kind::Real, call) {
             Ok(v) => v,
             Err(s) => return s,
@@ -474,10 +500,10 @@ impl Instance {
 
     /// fmi2DoStep.
     pub fn do_step(&mut self, current: f64, step: f64) -> Status {
-        let call = "fmi2DoStep";
-        if let Err(s) = self.require(call, &[Phase::StepComplete]) {
+        if let Err(s) = self.check(Call::DoStep) {
             return s;
         }
+        let call = Call::DoStep.name();
         let now = self.sim.time();
         if self.sim.align_time(current).is_err() {
             return self.report(
@@ -493,8 +519,37 @@ impl Instance {
                 format!("{call}: communication step {step} s must be positive"),
             );
         }
+        let end = current + step;
+        if let Some(stop) = self
+            .stop_time
+            .filter(|&t| end > t + STOP_SLACK * t.abs().max(1.0))
+        {
+            return self.report(
+                Status::Error,
+                format!(
+                    "{call}: the step from {current} s by {step} s ends at {end} s, past the stop time {stop} s of fmi2SetupExperiment"
+                ),
+            );
+        }
         self.outputs = None;
-        match self.sim.advance_to(current + step) {
+        let before = self.sim.stats();
+        let result = self.sim.advance_to(current + step);
+        if self.step_statistics {
+            let after = self.sim.stats();
+            self.messages.push((
+                Status::Ok,
+                category(Status::Ok),
+                format!(
+                    "{call} from {current} s by {step} s: {} internal steps, {} Newton iterations, {} step cuts ({} Jacobian refreshes, {} factorizations)",
+                    after.steps - before.steps,
+                    after.iterations - before.iterations,
+                    after.step_cuts - before.step_cuts,
+                    after.refreshes - before.refreshes,
+                    after.factorizations - before.factorizations,
+                ),
+            ));
+        }
+        match result {
             Ok(()) => match self.current_outputs() {
                 Ok(_) => Status::Ok,
                 Err(s) => s,
@@ -512,16 +567,13 @@ impl Instance {
 
     /// fmi2GetRealStatus(fmi2LastSuccessfulTime).
     pub fn last_successful_time(&mut self) -> Result<f64, Status> {
-        self.require(
-            "fmi2GetRealStatus",
-            &[Phase::StepComplete, Phase::StepFailed, Phase::Terminated],
-        )?;
+        self.check(Call::GetRealStatus)?;
         Ok(self.sim.time())
     }
 
     /// fmi2Terminate.
     pub fn terminate(&mut self) -> Status {
-        if let Err(s) = self.require("fmi2Terminate", &[Phase::StepComplete, Phase::StepFailed]) {
+        if let Err(s) = self.check(Call::Terminate) {
             return s;
         }
         self.phase = Phase::Terminated;
@@ -530,10 +582,14 @@ impl Instance {
 
     /// fmi2Reset: back to the state after instantiation.
     pub fn reset(&mut self) -> Status {
+        if let Err(s) = self.check(Call::Reset) {
+            return s;
+        }
         match Self::fresh_simulator(&self.model) {
             Ok(sim) => {
                 self.sim = sim;
                 self.params = Params::default();
+                self.viscosity = model_viscosity(&self.model);
                 self.phase = Phase::Instantiated;
                 self.outputs = None;
                 self.start_time = 0.0;
@@ -544,46 +600,31 @@ impl Instance {
         }
     }
 
-    /// fmi2GetFMUstate.
-    pub fn snapshot(&mut self) -> Result<Snapshot, Status> {
-        self.require(
-            "fmi2GetFMUstate",
-            &[
-                Phase::Instantiated,
-                Phase::InitializationMode,
-                Phase::StepComplete,
-                Phase::StepFailed,
-                Phase::Terminated,
-            ],
-        )?;
-        Ok(Snapshot {
+    /// The state `fmi2GetFMUstate` would save now.
+    fn current_snapshot(&self) -> Snapshot {
+        Snapshot {
             sim: self.sim.state().clone(),
             params: self.params,
             viscosity: self.viscosity.clone(),
             phase: self.phase,
-        })
+            fingerprint: self.fingerprint,
+        }
+    }
+
+    /// fmi2GetFMUstate.
+    pub fn snapshot(&mut self) -> Result<Snapshot, Status> {
+        self.check(Call::GetFmuState)?;
+        Ok(self.current_snapshot())
     }
 
     /// fmi2SetFMUstate.
     pub fn restore(&mut self, snap: &Snapshot) -> Status {
-        if let Err(s) = self.require(
-            "fmi2SetFMUstate",
-            &[
-                Phase::Instantiated,
-                Phase::InitializationMode,
-                Phase::StepComplete,
-                Phase::StepFailed,
-                Phase::Terminated,
-                Phase::Error,
-            ],
-        ) {
+        let call = Call::SetFmuState;
+        if let Err(s) = self.check(call) {
             return s;
         }
-        if snap.viscosity.len() != self.viscosity.len() {
-            return self.report(
-                Status::Error,
-                "fmi2SetFMUstate: the state belongs to another model".into(),
-            );
+        if let Err(why) = snap.fits(&self.current_snapshot()) {
+            return self.report(Status::Error, format!("{}: {why}", call.name()));
         }
         for (k, (&mu, &now)) in snap
             .viscosity
@@ -593,18 +634,17 @@ impl Instance {
         {
             if mu != now && mu > 0.0 {
                 if let Err(e) = self.sim.set_bearing_viscosity(k, mu) {
-                    return self.report(Status::Error, format!("fmi2SetFMUstate: {e}"));
+                    return self.report(Status::Error, format!("{}: {e}", call.name()));
                 }
             }
         }
-        let p = snap.params;
-        let options = p.options();
+        let options = snap.params.options();
         if let Err(e) = self
             .sim
             .set_options(options)
             .and_then(|()| self.sim.set_state(snap.sim.clone()))
         {
-            return self.report(Status::Error, format!("fmi2SetFMUstate: {e}"));
+            return self.report(Status::Error, format!("{}: {e}", call.name()));
         }
         self.params = snap.params;
         self.viscosity = snap.viscosity.clone();
@@ -613,144 +653,24 @@ impl Instance {
         Status::Ok
     }
 
-    /// fmi2SerializeFMUstate: a self-describing little-endian byte image.
-    pub fn serialize(snap: &Snapshot) -> Vec<u8> {
-        let mut out = MAGIC.to_vec();
-        let mut put = |v: f64| out.extend_from_slice(&v.to_le_bytes());
-        let s = &snap.sim;
-        for v in [s.time, s.spin_angle, s.speed, s.speed_rate, s.speed_time] {
-            put(v);
-        }
-        let p = snap.params;
-        for v in [
-            p.time_step,
-            p.tolerance,
-            f64::from(p.max_iterations),
-            p.ramp_time,
-            f64::from(u8::from(p.gravity)),
-        ] {
-            put(v);
-        }
-        put(match snap.phase {
-            Phase::Instantiated => 0.0,
-            Phase::InitializationMode => 1.0,
-            Phase::StepComplete => 2.0,
-            Phase::StepFailed => 3.0,
-            Phase::Terminated => 4.0,
-            Phase::Error => 5.0,
-        });
-        for v in [
-            &s.u,
-            &s.ud,
-            &s.udd,
-            &s.p,
-            &s.pd,
-            &s.pdd,
-            &s.unbalance,
-            &s.unbalance_rate,
-            &s.unbalance_phase,
-            &snap.viscosity,
-        ] {
-            put(v.len() as f64);
-            for x in v {
-                put(*x);
-            }
-        }
-        out
+    /// fmi2SerializedFMUstateSize: the length of the byte image of `snap`.
+    pub fn serialized_size(&mut self, snap: &Snapshot) -> Result<usize, Status> {
+        self.check(Call::SerializedFmuStateSize)?;
+        Ok(snap.to_bytes().len())
     }
 
-    /// fmi2DeSerializeFMUstate: the inverse of [`Instance::serialize`], checked
-    /// against this instance's model sizes.
+    /// fmi2SerializeFMUstate: the byte image of `snap`.
+    pub fn serialize(&mut self, snap: &Snapshot) -> Result<Vec<u8>, Status> {
+        self.check(Call::SerializeFmuState)?;
+        Ok(snap.to_bytes())
+    }
+
+    /// fmi2DeSerializeFMUstate: the state in `bytes`, checked against this
+    /// instance's model (fingerprint, sizes), format version and checksum.
     pub fn deserialize(&mut self, bytes: &[u8]) -> Result<Snapshot, Status> {
-        let fail = |this: &mut Self, why: &str| {
-            this.report(Status::Error, format!("fmi2DeSerializeFMUstate: {why}"))
-        };
-        if bytes.len() < MAGIC.len()
-            || &bytes[..MAGIC.len()] != MAGIC
-            || (bytes.len() - MAGIC.len()) % 8 != 0
-        {
-            return Err(fail(self, "not a serialized state of this FMU"));
-        }
-        let words: Vec<f64> = bytes[MAGIC.len()..]
-            .chunks_exact(8)
-            .map(|c| f64::from_le_bytes([c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7]]))
-            .collect();
-        let mut it = words.into_iter();
-        let mut scalars = [0.0; 11];
-        for slot in &mut scalars {
-            match it.next() {
-                Some(v) => *slot = v,
-                None => return Err(fail(self, "truncated state")),
-            }
-        }
-        let mut vectors: Vec<Vec<f64>> = Vec::new();
-        for _ in 0..10 {
-            let Some(len) = it.next() else {
-                return Err(fail(self, "truncated state"));
-            };
-            if !((0.0..=1e9).contains(&len) && len.fract() == 0.0) {
-                return Err(fail(self, "corrupt vector length"));
-            }
-            let v: Vec<f64> = it.by_ref().take(len as usize).collect();
-            if v.len() != len as usize {
-                return Err(fail(self, "truncated state"));
-            }
-            vectors.push(v);
-        }
-        let current = self.sim.state();
-        let expected = [
-            current.u.len(),
-            current.ud.len(),
-            current.udd.len(),
-            current.p.len(),
-            current.pd.len(),
-            current.pdd.len(),
-            current.unbalance.len(),
-            current.unbalance_rate.len(),
-            current.unbalance_phase.len(),
-            self.viscosity.len(),
-        ];
-        if vectors.iter().map(Vec::len).ne(expected.iter().copied()) || it.next().is_some() {
-            return Err(fail(self, "the state belongs to a different model"));
-        }
-        let mut v = vectors.into_iter();
-        let mut next = || v.next().unwrap_or_default();
-        let sim = SimState {
-            time: scalars[0],
-            spin_angle: scalars[1],
-            speed: scalars[2],
-            speed_rate: scalars[3],
-            speed_time: scalars[4],
-            u: next(),
-            ud: next(),
-            udd: next(),
-            p: next(),
-            pd: next(),
-            pdd: next(),
-            unbalance: next(),
-            unbalance_rate: next(),
-            unbalance_phase: next(),
-        };
-        let viscosity = next();
-        let phase = match scalars[10] as i32 {
-            0 => Phase::Instantiated,
-            1 => Phase::InitializationMode,
-            2 => Phase::StepComplete,
-            3 => Phase::StepFailed,
-            4 => Phase::Terminated,
-            _ => Phase::Error,
-        };
-        Ok(Snapshot {
-            sim,
-            params: Params {
-                time_step: scalars[5],
-                tolerance: scalars[6],
-                max_iterations: scalars[7] as i32,
-                ramp_time: scalars[8],
-                gravity: scalars[9] != 0.0,
-            },
-            viscosity,
-            phase,
-        })
+        let call = Call::DeSerializeFmuState;
+        self.check(call)?;
+        Snapshot::from_bytes(bytes, &self.current_snapshot())
+            .map_err(|why| self.report(Status::Error, format!("{}: {why}", call.name())))
     }
 }

@@ -1,0 +1,393 @@
+//! The FMU state (`fmi2FMUstate`): everything `fmi2GetFMUstate` saves, and its
+//! byte image for `fmi2SerializeFMUstate`.
+//!
+//! One field list, `SCALARS` and `VECTORS`, declares what a state holds;
+//! serialization, deserialization and the shape check before `fmi2SetFMUstate`
+//! all walk it, so a field cannot be saved but forgotten on reading.
+//!
+//! Byte image (little-endian): [`MAGIC`], the format [`VERSION`] (u64), the
+//! model fingerprint (u64, FNV-1a of the GUID), every scalar as f64, every
+//! vector as its length (u64) and its f64 values, and an FNV-1a checksum (u64)
+//! of all bytes before it. A state of another model, another format version, a
+//! truncated or altered buffer is refused with a message, never a panic.
+
+use crate::solver::SimState;
+
+use super::instance::Params;
+use super::states::Phase;
+
+/// Everything `fmi2GetFMUstate` saves.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Snapshot {
+    /// The simulator state.
+    pub(super) sim: SimState,
+    /// The solver parameters.
+    pub(super) params: Params,
+    /// The (possibly tuned) viscosity of each model bearing (Pa·s; 0 where the
+    /// bearing has none).
+    pub(super) viscosity: Vec<f64>,
+    /// The state-machine phase.
+    pub(super) phase: Phase,
+    /// The model fingerprint ([`fingerprint`] of the GUID).
+    pub(super) fingerprint: u64,
+}
+
+/// Start of every serialized state.
+pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
+/// Format version of the byte image (1 was the unversioned `RBFMU01` image).
+pub const VERSION: u64 = 2;
+/// Bytes before the fields: magic, version, fingerprint.
+const HEADER: usize = MAGIC.len() + 8 + 8;
+/// Bytes after the fields: the checksum.
+const TRAILER: usize = 8;
+
+/// A scalar field: name, read, write (`false` for a value outside the field's
+/// domain).
+type Scalar = (
+    &'static str,
+    fn(&Snapshot) -> f64,
+    fn(&mut Snapshot, f64) -> bool,
+);
+/// A vector field: name, read, write access.
+type Vector = (
+    &'static str,
+    fn(&Snapshot) -> &Vec<f64>,
+    fn(&mut Snapshot) -> &mut Vec<f64>,
+);
+
+/// Index of a phase in [`Phase::ALL`], the form it is saved in.
+fn phase_index(phase: Phase) -> f64 {
+    Phase::ALL.iter().position(|p| *p == phase).unwrap_or(0) as f64
+}
+
+/// The scalar fields, in image order.
+const SCALARS: [Scalar; 11] = [
+    ("time", |s| s.sim.time, |s, v| put(&mut s.sim.time, v)),
+    (
+        "spin_angle",
+        |s| s.sim.spin_angle,
+        |s, v| put(&mut s.sim.spin_angle, v),
+    ),
+    ("speed", |s| s.sim.speed, |s, v| put(&mut s.sim.speed, v)),
+    (
+        "speed_rate",
+        |s| s.sim.speed_rate,
+        |s, v| put(&mut s.sim.speed_rate, v),
+    ),
+    (
+        "speed_time",
+        |s| s.sim.speed_time,
+        |s, v| put(&mut s.sim.speed_time, v),
+    ),
+    (
+        "time_step",
+        |s| s.params.time_step,
+        |s, v| put(&mut s.params.time_step, v),
+    ),
+    (
+        "tolerance",
+        |s| s.params.tolerance,
+        |s, v| put(&mut s.params.tolerance, v),
+    ),
+    (
+        "max_iterations",
+        |s| f64::from(s.params.max_iterations),
+        |s, v| {
+            let ok = v.fract() == 0.0 && (1.0..=f64::from(i32::MAX)).contains(&v);
+            if ok {
+                s.params.max_iterations = v as i32;
+            }
+            ok
+        },
+    ),
+    (
+        "ramp_time",
+        |s| s.params.ramp_time,
+        |s, v| put(&mut s.params.ramp_time, v),
+    ),
+    (
+        "gravity",
+        |s| f64::from(u8::from(s.params.gravity)),
+        |s, v| {
+            s.params.gravity = v == 1.0;
+            v == 0.0 || v == 1.0
+        },
+    ),
+    (
+        "phase",
+        |s| phase_index(s.phase),
+        |s, v| match Phase::ALL.get(v as usize) {
+            Some(&p) if v.fract() == 0.0 && v >= 0.0 => {
+                s.phase = p;
+                true
+            }
+            _ => false,
+        },
+    ),
+];
+
+/// The vector fields, in image order.
+const VECTORS: [Vector; 10] = [
+    ("u", |s| &s.sim.u, |s| &mut s.sim.u),
+    ("ud", |s| &s.sim.ud, |s| &mut s.sim.ud),
+    ("udd", |s| &s.sim.udd, |s| &mut s.sim.udd),
+    ("p", |s| &s.sim.p, |s| &mut s.sim.p),
+    ("pd", |s| &s.sim.pd, |s| &mut s.sim.pd),
+    ("pdd", |s| &s.sim.pdd, |s| &mut s.sim.pdd),
+    ("unbalance", |s| &s.sim.unbalance, |s| &mut s.sim.unbalance),
+    (
+        "unbalance_rate",
+        |s| &s.sim.unbalance_rate,
+        |s| &mut s.sim.unbalance_rate,
+    ),
+    (
+        "unbalance_phase",
+        |s| &s.sim.unbalance_phase,
+        |s| &mut s.sim.unbalance_phase,
+    ),
+    ("viscosity", |s| &s.viscosity, |s| &mut s.viscosity),
+];
+
+/// Store a real field (any f64 is in its domain; the simulator checks values).
+fn put(slot: &mut f64, v: f64) -> bool {
+    *slot = v;
+    true
+}
+
+/// FNV-1a 64-bit hash.
+fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// The fingerprint of a model: FNV-1a of its GUID.
+pub fn fingerprint(guid: &str) -> u64 {
+    fnv1a(guid.as_bytes())
+}
+
+/// Reads little-endian words from a byte image, failing on a short buffer.
+struct Reader<'a> {
+    bytes: &'a [u8],
+}
+
+impl Reader<'_> {
+    /// The next 8 bytes.
+    fn word(&mut self) -> Result<[u8; 8], String> {
+        let (head, rest) = self
+            .bytes
+            .split_first_chunk::<8>()
+            .ok_or("truncated state")?;
+        self.bytes = rest;
+        Ok(*head)
+    }
+
+    /// The next u64.
+    fn u64(&mut self) -> Result<u64, String> {
+        self.word().map(u64::from_le_bytes)
+    }
+
+    /// The next f64.
+    fn f64(&mut self) -> Result<f64, String> {
+        self.word().map(f64::from_le_bytes)
+    }
+}
+
+impl Snapshot {
+    /// `Ok` if this state fits an instance whose current state is `current`:
+    /// same model fingerprint and the same length of every vector field.
+    pub fn fits(&self, current: &Snapshot) -> Result<(), String> {
+        if self.fingerprint != current.fingerprint {
+            return Err(format!(
+                "the state belongs to another model (fingerprint {:016x}, this model {:016x})",
+                self.fingerprint, current.fingerprint
+            ));
+        }
+        for (name, get, _) in VECTORS {
+            let (n, m) = (get(self).len(), get(current).len());
+            if n != m {
+                return Err(format!(
+                    "the state belongs to another model ({name} has {n} values, this model {m})"
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The byte image (`fmi2SerializeFMUstate`).
+    pub fn to_bytes(&self) -> Vec<u8> {
+        let mut out = MAGIC.to_vec();
+        out.extend_from_slice(&VERSION.to_le_bytes());
+        out.extend_from_slice(&self.fingerprint.to_le_bytes());
+        for (_, get, _) in SCALARS {
+            out.extend_from_slice(&get(self).to_le_bytes());
+        }
+        for (_, get, _) in VECTORS {
+            let v = get(self);
+            out.extend_from_slice(&(v.len() as u64).to_le_bytes());
+            for x in v {
+                out.extend_from_slice(&x.to_le_bytes());
+            }
+        }
+        let sum = fnv1a(&out);
+        out.extend_from_slice(&sum.to_le_bytes());
+        out
+    }
+
+    /// The state in a byte image (`fmi2DeSerializeFMUstate`), checked against
+    /// `current`, the state of the instance reading it (model fingerprint and
+    /// vector lengths).
+    pub fn from_bytes(bytes: &[u8], current: &Snapshot) -> Result<Snapshot, String> {
+        if bytes.len() < HEADER + TRAILER || bytes[..MAGIC.len()] != MAGIC[..] {
+            return Err("not a serialized state of this FMU".into());
+        }
+        let (body, sum) = bytes.split_at(bytes.len() - TRAILER);
+        let mut r = Reader {
+            bytes: &body[MAGIC.len()..],
+        };
+        let version = r.u64()?;
+        if version != VERSION {
+            return Err(format!(
+                "state format version {version}, this FMU reads version {VERSION}"
+            ));
+        }
+        if sum != fnv1a(body).to_le_bytes() {
+            return Err("corrupt state (checksum mismatch)".into());
+        }
+        let mut snap = current.clone();
+        snap.fingerprint = r.u64()?;
+        snap.fits(current)?;
+        for (name, _, set) in SCALARS {
+            let v = r.f64()?;
+            if !set(&mut snap, v) {
+                return Err(format!("corrupt state ({name} = {v})"));
+            }
+        }
+        for (name, _, get_mut) in VECTORS {
+            let n = r.u64()?;
+            let expected = get_mut(&mut snap).len();
+            if n != expected as u64 {
+                return Err(format!(
+                    "the state belongs to another model ({name} has {n} values, this model {expected})"
+                ));
+            }
+            for x in get_mut(&mut snap).iter_mut() {
+                *x = r.f64()?;
+            }
+        }
+        if !r.bytes.is_empty() {
+            return Err(format!(
+                "corrupt state ({} bytes after the last field)",
+                r.bytes.len()
+            ));
+        }
+        Ok(snap)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sample() -> Snapshot {
+        let v = |n: usize, x: f64| (0..n).map(|i| x + i as f64).collect::<Vec<_>>();
+        Snapshot {
+            sim: SimState {
+                time: 0.25,
+                u: v(8, 1.0),
+                ud: v(8, 2.0),
+                udd: v(8, 3.0),
+                p: v(3, 4.0),
+                pd: v(3, 5.0),
+                pdd: v(3, 6.0),
+                spin_angle: 7.0,
+                speed: 8.0,
+                speed_rate: 9.0,
+                speed_time: 0.125,
+                unbalance: v(2, 10.0),
+                unbalance_rate: v(2, 11.0),
+                unbalance_phase: v(2, 12.0),
+            },
+            params: Params {
+                time_step: 1e-3,
+                tolerance: 1e-8,
+                max_iterations: 17,
+                ramp_time: 0.5,
+                gravity: false,
+            },
+            viscosity: v(2, 0.03),
+            phase: Phase::StepFailed,
+            fingerprint: fingerprint("{guid}"),
+        }
+    }
+
+    /// Every field changed, so a field skipped by the image would show.
+    fn zeroed(s: &Snapshot) -> Snapshot {
+        let mut z = s.clone();
+        for (_, _, set) in SCALARS {
+            set(&mut z, 1.0);
+        }
+        for (_, _, get_mut) in VECTORS {
+            get_mut(&mut z).iter_mut().for_each(|x| *x = -1.0);
+        }
+        z
+    }
+
+    #[test]
+    fn image_round_trips_bit_for_bit() {
+        let s = sample();
+        let back = Snapshot::from_bytes(&s.to_bytes(), &zeroed(&s)).unwrap();
+        assert_eq!(back, s);
+        assert_eq!(back.to_bytes(), s.to_bytes());
+    }
+
+    #[test]
+    fn every_truncation_and_bit_flip_is_refused() {
+        let s = sample();
+        let bytes = s.to_bytes();
+        for n in 0..bytes.len() {
+            assert!(Snapshot::from_bytes(&bytes[..n], &s).is_err(), "{n} bytes");
+        }
+        for i in 0..bytes.len() {
+            for bit in 0..8 {
+                let mut b = bytes.clone();
+                b[i] ^= 1 << bit;
+                assert!(Snapshot::from_bytes(&b, &s).is_err(), "byte {i} bit {bit}");
+            }
+        }
+    }
+
+    #[test]
+    fn states_of_other_models_and_versions_are_refused() {
+        let s = sample();
+        let mut other = s.clone();
+        other.fingerprint = fingerprint("{another}");
+        let e = Snapshot::from_bytes(&other.to_bytes(), &s).unwrap_err();
+        assert!(e.contains("another model"), "{e}");
+        assert!(other.fits(&s).is_err());
+        let mut longer = s.clone();
+        longer.sim.u.push(0.0);
+        let e = Snapshot::from_bytes(&longer.to_bytes(), &s).unwrap_err();
+        assert!(e.contains("u has 9 values, this model 8"), "{e}");
+        assert!(longer.fits(&s).is_err());
+
+        let mut v3 = s.to_bytes();
+        v3[MAGIC.len()..MAGIC.len() + 8].copy_from_slice(&3u64.to_le_bytes());
+        let e = Snapshot::from_bytes(&v3, &s).unwrap_err();
+        assert!(e.contains("version 3"), "{e}");
+    }
+
+    #[test]
+    fn out_of_domain_fields_are_refused() {
+        let s = sample();
+        let mut bytes = s.to_bytes();
+        // The phase is the last scalar, right after the header and ten others.
+        let at = HEADER + 10 * 8;
+        bytes[at..at + 8].copy_from_slice(&9.0f64.to_le_bytes());
+        let body = bytes.len() - TRAILER;
+        let sum = fnv1a(&bytes[..body]);
+        bytes[body..].copy_from_slice(&sum.to_le_bytes());
+        let e = Snapshot::from_bytes(&bytes, &s).unwrap_err();
+        assert!(e.contains("phase = 9"), "{e}");
+    }
+}
