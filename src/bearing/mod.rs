@@ -5,6 +5,7 @@
 //! see that trait. Sign conventions: the force acts **on the journal**;
 //! `K = −∂F/∂(x, y)` and `C = −∂F/∂(ẋ, ẏ)`, so a plain spring has positive `K`.
 
+pub mod coefficients;
 pub mod equilibrium;
 pub mod film;
 pub mod linear;
