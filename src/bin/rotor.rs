@@ -24,7 +24,7 @@ use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
 use rotor_bearing::analysis::spectrum::{band_limit, frequency_grid, full_spectrum, waterfall};
 use rotor_bearing::bearing::coefficients::dimensionless_curve;
 use rotor_bearing::bearing::{BearingKind, PlainBearing};
-use rotor_bearing::model::RotorModel;
+use rotor_bearing::model::{RotorModel, speed_table};
 use rotor_bearing::plot::{
     RAD_S_TO_RPM, campbell_png, coefficients_png, orbits_png, spectrum_png, waterfall_png,
 };
@@ -419,29 +419,11 @@ fn speed_profile(
         (None, None, Some(path)) => {
             let text = std::fs::read_to_string(path)
                 .map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
-            let mut points = Vec::new();
-            for (k, line) in text.lines().enumerate() {
-                let line = line.trim();
-                if line.is_empty() || line.starts_with('#') {
-                    continue;
-                }
-                let cols: Vec<&str> = line.split(',').collect();
-                let parsed: Option<(f64, f64)> = match cols.as_slice() {
-                    [a, b] => a.trim().parse().ok().zip(b.trim().parse().ok()),
-                    _ => None,
-                };
-                match parsed {
-                    Some((t, w)) => points.push((t, w * to_rad)),
-                    None if k == 0 => {}
-                    None => {
-                        return Err(format!(
-                            "{}:{}: expected two numbers time_s,speed_rpm, got {line:?}",
-                            path.display(),
-                            k + 1
-                        ));
-                    }
-                }
-            }
+            let points = speed_table::parse(&text, &path.display().to_string())
+                .map_err(|e| e.to_string())?
+                .into_iter()
+                .map(|(t, w)| (t, w * to_rad))
+                .collect();
             let profile = SpeedProfile::Table(points);
             profile
                 .validate()

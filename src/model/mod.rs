@@ -9,6 +9,7 @@ mod build;
 mod context;
 mod error;
 pub mod file;
+pub mod speed_table;
 
 pub use error::ModelError;
 
@@ -138,6 +139,56 @@ impl RotorModel {
     }
 
     /// Parse and validate model text; `source` names it in error messages.
+    ///
+    /// ```
+    /// use rotor_bearing::model::RotorModel;
+    ///
+    /// let text = r#"
+    /// name = "overhung"
+    /// [[materials]]
+    /// name = "steel"
+    /// youngs_modulus = 211e9
+    /// poisson_ratio = 0.3
+    /// density = 7810.0
+    ///
+    /// [[shaft]]
+    /// length = 0.8
+    /// outer_diameter = 0.04
+    /// material = "steel"
+    /// elements = 4
+    ///
+    /// [[disks]]
+    /// z = 0.8
+    /// mass = 5.0
+    /// polar_inertia = 0.02
+    /// diametral_inertia = 0.01
+    ///
+    /// [[bearings]]
+    /// type = "linear"
+    /// node = 1
+    /// kxx = 1e7
+    /// kyy = 1e7
+    ///
+    /// [[bearings]]
+    /// type = "plain"
+    /// z = 0.4
+    /// radius = 0.02
+    /// length = 0.02
+    /// clearance = 4e-5
+    /// viscosity = 0.03
+    /// "#;
+    /// let model = RotorModel::from_toml(text, "overhung.toml")?;
+    /// assert_eq!(model.node_count(), 5);
+    /// assert_eq!(model.disks[0].node, 4); // z = 0.8 m is the fifth node
+    /// assert_eq!(model.bearings[1].name, "bearing2");
+    /// assert!(model.bearings[1].kind.is_nonlinear());
+    ///
+    /// // Errors name the file, line, field path and value.
+    /// let bad = text.replace("mass = 5.0", "mass = -5.0");
+    /// let err = RotorModel::from_toml(&bad, "overhung.toml").unwrap_err();
+    /// assert!(err.to_string().starts_with("overhung.toml:17: disks[0].mass = -5:"));
+    /// # Ok::<(), rotor_bearing::model::ModelError>(())
+    /// ```
     pub fn from_toml(text: &str, source: &str) -> Result<Self, ModelError> {
         let raw: ModelFile = toml::from_str(text).map_err(|e| {
             let line = e.span().map(|s| line_of(text, s.start));
