@@ -2,6 +2,8 @@
 //! line numbers), range checks that name the field path and value, and the
 //! lookup of a node by `node` (1-based) or axial position `z` (m).
 
+use std::collections::HashSet;
+
 use super::ModelError;
 use super::error::{FieldPath, Seg};
 use super::line_of;
@@ -133,4 +135,26 @@ impl Ctx<'_> {
 /// The name given, else `prefix` and the 1-based entry number.
 pub(crate) fn default_name(given: Option<String>, prefix: &str, k: usize) -> String {
     given.unwrap_or_else(|| format!("{prefix}{}", k + 1))
+}
+
+/// Names already taken in one section of a model, to reject duplicates.
+#[derive(Default)]
+pub(crate) struct Names(HashSet<String>);
+
+impl Names {
+    /// `name` if no earlier entry of the section took it, else an error at
+    /// `entry.name`; `what` names the kind of entry (`"bearing"`, …).
+    pub(crate) fn claim(
+        &mut self,
+        ctx: &Ctx,
+        entry: &FieldPath,
+        name: String,
+        what: &str,
+    ) -> Result<String, ModelError> {
+        if self.0.insert(name.clone()) {
+            Ok(name)
+        } else {
+            Err(ctx.err(entry.key("name"), &name, &format!("duplicate {what} name")))
+        }
+    }
 }

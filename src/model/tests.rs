@@ -241,3 +241,83 @@ fn hydrodynamic_bearing_errors() {
         assert!(e.contains(expect), "expected {expect:?} in: {e}");
     }
 }
+
+/// 1-based line of the `nth` (0-based) occurrence of `needle` in `BASE + extra`.
+fn line_in(extra: &str, needle: &str, nth: usize) -> usize {
+    let text = format!("{BASE}{extra}");
+    let at = text.match_indices(needle).nth(nth).unwrap().0;
+    text[..at].matches('\n').count() + 1
+}
+
+#[test]
+fn duplicate_names_are_rejected_with_path_value_and_line() {
+    let disk = "mass = 1.0\npolar_inertia = 0.1\ndiametral_inertia = 0.1\n";
+    let cases = [
+        (
+            format!(
+                "\n[[disks]]\nname = \"d\"\nnode = 2\n{disk}[[disks]]\nname = \"d\"\nnode = 3\n{disk}"
+            ),
+            "disks[1].name = d: duplicate disk name",
+        ),
+        (
+            "\n[[bearings]]\ntype = \"linear\"\nname = \"b\"\nnode = 1\nkxx = 1e6\n\
+             [[bearings]]\ntype = \"linear\"\nname = \"b\"\nnode = 7\nkxx = 1e6\n"
+                .to_string(),
+            "bearings[1].name = b: duplicate bearing name",
+        ),
+        (
+            "\n[[unbalance]]\nname = \"u\"\nnode = 2\nmagnitude = 1e-3\n\
+             [[unbalance]]\nname = \"u\"\nnode = 3\nmagnitude = 1e-3\n"
+                .to_string(),
+            "unbalance[1].name = u: duplicate unbalance name",
+        ),
+        (
+            "\n[[probes]]\nname = \"p\"\nnode = 2\n[[probes]]\nname = \"p\"\nnode = 3\n"
+                .to_string(),
+            "probes[1].name = p: duplicate probe name",
+        ),
+    ];
+    for (extra, expect) in &cases {
+        let e = err_of(extra);
+        let name = &expect[expect.find("= ").unwrap() + 2..expect.find(':').unwrap()];
+        let line = line_in(extra, &format!("name = \"{name}\""), 1);
+        assert_eq!(e, format!("m.toml:{line}: {expect}"));
+    }
+    // A given name may not take the default name of another entry either.
+    let e = err_of(
+        "\n[[bearings]]\ntype = \"linear\"\nnode = 1\n\
+         [[bearings]]\ntype = \"linear\"\nname = \"bearing1\"\nnode = 7\n",
+    );
+    assert!(
+        e.contains("bearings[1].name = bearing1: duplicate bearing name"),
+        "{e}"
+    );
+}
+
+#[test]
+fn zero_or_negative_disk_mass_or_inertia_is_rejected() {
+    for (key, bad) in [
+        ("mass", "0.0"),
+        ("mass", "-2.0"),
+        ("polar_inertia", "0.0"),
+        ("diametral_inertia", "-0.1"),
+    ] {
+        let mut fields = [
+            ("mass", "1.0"),
+            ("polar_inertia", "0.1"),
+            ("diametral_inertia", "0.1"),
+        ];
+        fields.iter_mut().find(|f| f.0 == key).unwrap().1 = bad;
+        let body: String = fields.iter().map(|(k, v)| format!("{k} = {v}\n")).collect();
+        let extra = format!("\n[[disks]]\nnode = 2\n{body}");
+        let e = err_of(&extra);
+        let line = line_in(&extra, &format!("{key} = {bad}"), 0);
+        let value: f64 = bad.parse().unwrap();
+        assert_eq!(
+            e,
+            format!(
+                "m.toml:{line}: disks[0].{key} = {value}: must be a finite number greater than zero"
+            )
+        );
+    }
+}

@@ -4,12 +4,12 @@
 use crate::bearing::tilting_pad::Pad;
 use crate::bearing::{BearingKind, PlainBearing, TiltingPadBearing};
 
-use crate::model::context::{Ctx, default_name};
+use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::BearingEntry;
 use crate::model::{ModelError, PlacedBearing};
 
-/// Check each bearing: its node and the parameters of its `type`; film bearings
+/// Check each bearing: unique name, its node and the parameters of its `type`; film bearings
 /// need a clearance below a tenth of the radius, tilting pads 3–18
 /// non-overlapping pads.
 pub(super) fn bearings(
@@ -19,6 +19,7 @@ pub(super) fn bearings(
     node_z: &[f64],
 ) -> Result<Vec<PlacedBearing>, ModelError> {
     let mut bearings = Vec::new();
+    let mut names = Names::default();
     for (i, b) in entries.into_iter().enumerate() {
         let p = root.key("bearings").index(i);
         let (name, node, kind) = match b {
@@ -187,7 +188,7 @@ pub(super) fn bearings(
             }
         };
         bearings.push(PlacedBearing {
-            name: default_name(name, "bearing", i),
+            name: names.claim(ctx, &p, default_name(name, "bearing", i), "bearing")?,
             node,
             kind,
         });

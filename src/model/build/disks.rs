@@ -4,13 +4,13 @@
 use crate::fe::disk::Disk;
 
 use super::materials::Materials;
-use crate::model::context::{Ctx, default_name};
+use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::DiskEntry;
 use crate::model::{ModelError, PlacedDisk};
 
-/// Check each disk: its node, and either `mass`, `polar_inertia`,
-/// `diametral_inertia` (kg, kg·m²) or `material`, `outer_diameter`,
+/// Check each disk: unique name, its node, and either `mass`, `polar_inertia`,
+/// `diametral_inertia` (kg, kg·m², all > 0) or `material`, `outer_diameter`,
 /// `inner_diameter`, `width` (m) — not a mix.
 pub(super) fn disks(
     ctx: &Ctx,
@@ -20,6 +20,7 @@ pub(super) fn disks(
     materials: &Materials,
 ) -> Result<Vec<PlacedDisk>, ModelError> {
     let mut disks = Vec::new();
+    let mut names = Names::default();
     for (i, d) in entries.into_iter().enumerate() {
         let p = root.key("disks").index(i);
         let node = ctx.location(&p, d.node, d.z, node_z)?;
@@ -32,7 +33,7 @@ pub(super) fn disks(
         let disk = match (by_inertia, by_geometry) {
             (true, false) => {
                 let need = |key: &'static str, v: Option<f64>| match v {
-                    Some(v) => ctx.non_negative(p.key(key), v),
+                    Some(v) => ctx.positive(p.key(key), v),
                     None => Err(ctx.err(
                         p.key(key),
                         "(missing)",
@@ -106,7 +107,7 @@ pub(super) fn disks(
             }
         };
         disks.push(PlacedDisk {
-            name: default_name(d.name, "disk", i),
+            name: names.claim(ctx, &p, default_name(d.name, "disk", i), "disk")?,
             node,
             disk,
         });

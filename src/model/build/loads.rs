@@ -1,14 +1,13 @@
 //! Loads and observation points: `[[unbalance]]` planes, `[[probes]]` and the
 //! `gravity` vector.
 
-use std::collections::HashSet;
-
-use crate::model::context::{Ctx, default_name};
+use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{ProbeEntry, UnbalanceEntry};
 use crate::model::{ModelError, Probe, UnbalancePlane};
 
-/// Check each unbalance plane: node, `m·e ≥ 0` (kg·m), finite phase (° → rad).
+/// Check each unbalance plane: unique name, node, `m·e ≥ 0` (kg·m), finite
+/// phase (° → rad).
 pub(super) fn unbalances(
     ctx: &Ctx,
     root: &FieldPath,
@@ -16,13 +15,14 @@ pub(super) fn unbalances(
     node_z: &[f64],
 ) -> Result<Vec<UnbalancePlane>, ModelError> {
     let mut unbalances = Vec::new();
+    let mut names = Names::default();
     for (i, u) in entries.into_iter().enumerate() {
         let p = root.key("unbalance").index(i);
         let node = ctx.location(&p, u.node, u.z, node_z)?;
         let magnitude = ctx.non_negative(p.key("magnitude"), u.magnitude)?;
         let phase = ctx.finite(p.key("phase_deg"), u.phase_deg)?.to_radians();
         unbalances.push(UnbalancePlane {
-            name: default_name(u.name, "unbalance", i),
+            name: names.claim(ctx, &p, default_name(u.name, "unbalance", i), "unbalance")?,
             node,
             magnitude,
             phase,
@@ -40,19 +40,13 @@ pub(super) fn probes(
     node_z: &[f64],
 ) -> Result<Vec<Probe>, ModelError> {
     let mut probes = Vec::new();
-    let mut names = HashSet::new();
+    let mut names = Names::default();
     for (i, pr) in entries.into_iter().enumerate() {
         let p = root.key("probes").index(i);
-        if !names.insert(pr.name.clone()) {
-            return Err(ctx.err(p.key("name"), &pr.name, "duplicate probe name"));
-        }
+        let name = names.claim(ctx, &p, pr.name, "probe")?;
         let node = ctx.location(&p, pr.node, pr.z, node_z)?;
-        probes.push(Probe {
-            name: pr.name,
-            node,
-        });
+        probes.push(Probe { name, node });
     }
-
     Ok(probes)
 }
 
