@@ -5,8 +5,8 @@
 use std::collections::HashSet;
 
 use super::ModelError;
-use super::error::{FieldPath, Seg};
-use super::line_of;
+use super::error::FieldPath;
+use super::source_map::line_of_field;
 
 /// The model text and its name, for error messages.
 pub(crate) struct Ctx<'a> {
@@ -26,31 +26,11 @@ impl Ctx<'_> {
     ) -> ModelError {
         ModelError::Invalid {
             file: self.source.to_string(),
-            line: self.locate(&path),
+            line: line_of_field(self.text, &path),
             field: path.to_string(),
             value: value.to_string(),
             problem: problem.to_string(),
         }
-    }
-
-    /// Line of a field in the source text, from the TOML parser's spans.
-    fn locate(&self, path: &FieldPath) -> Option<usize> {
-        let root = toml::de::DeTable::parse(self.text).ok()?;
-        let mut span = root.span();
-        let mut table = Some(root.get_ref());
-        let mut value: Option<&toml::de::DeValue> = None;
-        for seg in &path.0 {
-            let next = match (seg, table, value) {
-                (Seg::Key(k), Some(t), _) => t.get(k.as_str()),
-                (Seg::Key(k), None, Some(v)) => v.get(k.as_str()),
-                (Seg::Index(i), _, Some(v)) => v.get(*i),
-                _ => None,
-            }?;
-            span = next.span();
-            table = None;
-            value = Some(next.get_ref());
-        }
-        Some(line_of(self.text, span.start))
     }
 
     /// `v` if finite.

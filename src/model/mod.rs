@@ -9,6 +9,7 @@ mod build;
 mod context;
 mod error;
 pub mod file;
+mod source_map;
 pub mod speed_table;
 
 pub use error::ModelError;
@@ -20,6 +21,7 @@ use crate::fe::disk::Disk;
 use crate::fe::shaft::ShaftElement;
 use context::Ctx;
 use file::ModelFile;
+use source_map::{field_at, line_of};
 
 /// The built-in default model: the classic disk-on-shaft rotor.
 pub const DEFAULT_MODEL_NAME: &str = "classic_disk_rotor";
@@ -191,11 +193,17 @@ impl RotorModel {
     /// ```
     pub fn from_toml(text: &str, source: &str) -> Result<Self, ModelError> {
         let raw: ModelFile = toml::from_str(text).map_err(|e| {
-            let line = e.span().map(|s| line_of(text, s.start));
+            let span = e.span();
+            let line = span.as_ref().map(|s| line_of(text, s.start));
+            let message = e.message().trim();
+            let message = match span.and_then(|s| field_at(text, &s)) {
+                Some(path) => format!("{path}: {message}"),
+                None => message.to_string(),
+            };
             ModelError::Syntax {
                 file: source.to_string(),
                 line,
-                message: e.message().trim().to_string(),
+                message,
             }
         })?;
         let ctx = Ctx { text, source };
@@ -212,15 +220,6 @@ impl RotorModel {
         self.elements.iter().map(|e| e.element.mass()).sum::<f64>()
             + self.disks.iter().map(|d| d.disk.mass).sum::<f64>()
     }
-}
-
-/// 1-based line of a byte offset.
-fn line_of(text: &str, offset: usize) -> usize {
-    text.as_bytes()[..offset.min(text.len())]
-        .iter()
-        .filter(|&&b| b == b'\n')
-        .count()
-        + 1
 }
 
 #[cfg(test)]

@@ -321,3 +321,81 @@ fn zero_or_negative_disk_mass_or_inertia_is_rejected() {
         );
     }
 }
+
+#[test]
+fn type_errors_name_the_field_path_and_line() {
+    let disk = "\n[[disks]]\nnode = 4\nmass = 1.0\npolar_inertia = 0.1\ndiametral_inertia = 0.1\n";
+    let cases = [
+        (
+            BASE.replace("elements = 6", "elements = inf"),
+            "elements = inf",
+            "shaft[0].elements: invalid type",
+        ),
+        (
+            BASE.replace("density = 7810.0", "density = \"heavy\""),
+            "density =",
+            "materials[0].density: invalid type",
+        ),
+        (
+            format!("{BASE}{}", disk.replace("node = 4", "node = 4.5")),
+            "node = 4.5",
+            "disks[0].node: invalid type",
+        ),
+        (
+            format!("gravity = [0.0, \"down\", 0.0]{BASE}"),
+            "\"down\"",
+            "gravity[1]: invalid type",
+        ),
+        (
+            format!("{BASE}\n[[probes]]\nname = 3\nnode = 2\n"),
+            "name = 3",
+            "probes[0].name: invalid type",
+        ),
+        (
+            format!("{BASE}\n[[supports]]\nnode = 1\nfix = \"x\"\n"),
+            "fix = ",
+            "supports[0].fix: invalid type",
+        ),
+        (
+            format!("{BASE}{}", disk.replace("mass = 1.0", "mas = 1.0")),
+            "mas = 1.0",
+            "disks[0].mas: unknown field `mas`",
+        ),
+        (
+            format!("speed_rpm = true{BASE}"),
+            "speed_rpm",
+            "speed_rpm: invalid type",
+        ),
+    ];
+    for (text, at, expect) in &cases {
+        let e = RotorModel::from_toml(text, "m.toml")
+            .unwrap_err()
+            .to_string();
+        let offset = text.find(at).unwrap();
+        let line = text[..offset].matches('\n').count() + 1;
+        assert!(
+            e.starts_with(&format!("m.toml:{line}: {expect}")),
+            "expected m.toml:{line}: {expect}…, got: {e}"
+        );
+    }
+    // Bearings are an internally tagged enum: serde buffers the entry, so the
+    // span (and path) is that of the whole entry, at its header line.
+    let text = format!(
+        "{BASE}\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = \"big\"\nlength = 0.02\nclearance = 1e-4\nviscosity = 0.02\n"
+    );
+    let e = RotorModel::from_toml(&text, "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("m.toml:15: bearings[0]: invalid type: string \"big\""),
+        "{e}"
+    );
+    // Broken TOML keeps its parser message and line.
+    let e = RotorModel::from_toml(&format!("{BASE}\nspeed_rpm = = 3\n"), "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("m.toml:15: ") && e.contains("extra `=`"),
+        "{e}"
+    );
+}
