@@ -14,5 +14,6 @@ pub mod fmi2;
 pub mod linalg;
 pub mod model;
 pub mod plot;
+pub mod report;
 pub mod rotor;
 pub mod solver;

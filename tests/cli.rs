@@ -195,3 +195,50 @@ fn coefficients_of_a_tilting_pad_bearing_in_a_model() {
     assert!(!missing.status.success());
     assert!(String::from_utf8_lossy(&missing.stderr).contains("\"nope\""));
 }
+
+#[test]
+fn simulate_follows_a_speed_table_and_reports_a_bad_line() {
+    let dir = out_dir("speed_table");
+    let table = dir.join("speed.csv");
+    std::fs::write(&table, "time_s,speed_rpm\n# hold\n0,1200\n0.05,1200\n").unwrap();
+    let csv = dir.join("sim.csv");
+    let out = rotor()
+        .args([
+            "simulate",
+            "--duration",
+            "0.01",
+            "--step",
+            "1e-3",
+            "--speed-csv",
+        ])
+        .arg(&table)
+        .arg("--csv")
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<&str> = text.lines().skip(1).collect();
+    assert_eq!(rows.len(), 11);
+    for row in rows {
+        let rpm: f64 = row.split(',').nth(1).unwrap().parse().unwrap();
+        assert!((rpm - 1200.0).abs() < 1e-9, "{row}");
+    }
+
+    std::fs::write(&table, "time_s,speed_rpm\n0,1200\n0.05;1200\n").unwrap();
+    let out = rotor()
+        .args(["simulate", "--duration", "0.01", "--speed-csv"])
+        .arg(&table)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("speed.csv:3: expected two numbers time_s,speed_rpm, got \"0.05;1200\""),
+        "{stderr}"
+    );
+}

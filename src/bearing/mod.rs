@@ -4,7 +4,35 @@
 //! Every bearing kind implements [`Bearing`]; the assembly and the solvers only
 //! see that trait. Sign conventions: the force acts **on the journal**;
 //! `K = −∂F/∂(x, y)` and `C = −∂F/∂(ẋ, ẏ)`, so a plain spring has positive `K`.
+//!
+//! Evaluating a plain journal bearing (short-bearing theory) with the journal
+//! below the centre at eccentricity ratio ε = 0.5, spinning at 3000 rpm:
+//!
+//! ```
+//! use rotor_bearing::bearing::{Bearing, BearingEval, PlainBearing};
+//!
+//! let bearing = PlainBearing {
+//!     radius: 0.05,     // m
+//!     length: 0.03,     // m
+//!     clearance: 1e-4,  // m
+//!     viscosity: 0.02,  // Pa·s
+//! };
+//! let speed = 3000.0 * std::f64::consts::PI / 30.0; // rad/s
+//! let q = [0.0, -0.5e-4]; // journal position (m)
+//! let qdot = [0.0, 0.0]; // journal velocity (m/s)
+//! let mut eval = BearingEval::new(2 + bearing.internal_dofs());
+//! bearing.evaluate(&q, &qdot, speed, &mut eval)?;
+//! let f = eval.journal();
+//! // The film carries the journal (force upward) and pushes it sideways
+//! // (attitude angle), with positive direct stiffness and damping.
+//! assert!(f.force.y > 0.0 && f.force.x.abs() > 0.0);
+//! assert!(f.stiffness[(1, 1)] > 0.0 && f.damping[(0, 0)] > 0.0);
+//! let report = bearing.report(&q, speed, &eval);
+//! assert!((report.eccentricity - 0.5).abs() < 1e-12);
+//! # Ok::<(), rotor_bearing::bearing::BearingError>(())
+//! ```
 
+pub mod coefficients;
 pub mod contact;
 pub mod equilibrium;
 pub mod film;

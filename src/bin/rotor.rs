@@ -19,15 +19,16 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand};
 
 use rotor_bearing::analysis::campbell::{campbell, critical_speeds};
-use rotor_bearing::analysis::linear::{node_xy, static_deflection};
+use rotor_bearing::analysis::linear::static_deflection;
 use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
-use rotor_bearing::analysis::spectrum::{frequency_grid, full_spectrum};
-use rotor_bearing::bearing::equilibrium::coefficient_curve;
+use rotor_bearing::analysis::spectrum::{band_limit, frequency_grid, full_spectrum, waterfall};
+use rotor_bearing::bearing::coefficients::dimensionless_curve;
 use rotor_bearing::bearing::{BearingKind, PlainBearing};
-use rotor_bearing::model::RotorModel;
+use rotor_bearing::model::{RotorModel, speed_table};
 use rotor_bearing::plot::{
     RAD_S_TO_RPM, campbell_png, coefficients_png, orbits_png, spectrum_png, waterfall_png,
 };
+use rotor_bearing::report::{csv as report_csv, series};
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record};
 
@@ -203,6 +204,26 @@ fn write_file(path: &Path, text: &str) -> Result<(), String> {
     Ok(())
 }
 
+/// Node displacements (`4·node + k`) at the static equilibrium under gravity at
+/// `rpm`: linear deflection for linear bearings; for fluid-film bearings the
+/// simulator's settled state (the one place to call a statics solver instead).
+fn static_state(rotor: &Rotor, rpm: f64) -> Result<Vec<f64>, String> {
+    if rotor.nonlinear_bearings.is_empty() {
+        return static_deflection(rotor).map_err(|e| e.to_string());
+    }
+    let name = rotor.model.name.clone();
+    let mut sim = Simulator::new(
+        rotor.clone_model().map_err(|e| e.to_string())?,
+        SolverOptions::default(),
+    )
+    .map_err(|e| e.to_string())?;
+    sim.set_speed(rpm / RAD_S_TO_RPM, 0.0)
+        .map_err(|e| e.to_string())?;
+    sim.settle_static()
+        .map_err(|e| format!("{name} at {rpm} rpm: {e}"))?;
+    Ok(rotor.dofs.expand(&sim.state().u))
+}
+
 fn run(cli: Cli) -> Result<(), String> {
     match cli.command {
         Command::Info { model } => {
@@ -211,41 +232,9 @@ fn run(cli: Cli) -> Result<(), String> {
         }
         Command::Static { model, rpm, csv } => {
             let rotor = load(&model)?;
-            let q = if rotor.nonlinear_bearings.is_empty() {
-                static_deflection(&rotor).map_err(|e| e.to_string())?
-            } else {
-                let name = rotor.model.name.clone();
-                let mut sim = Simulator::new(
-                    rotor.clone_model().map_err(|e| e.to_string())?,
-                    SolverOptions::default(),
-                )
-                .map_err(|e| e.to_string())?;
-                sim.set_speed(rpm / RAD_S_TO_RPM, 0.0)
-                    .map_err(|e| e.to_string())?;
-                sim.settle_static()
-                    .map_err(|e| format!("{name} at {rpm} rpm: {e}"))?;
-                rotor.dofs.expand(&sim.state().u)
-            };
-            let mut out = String::from("node,z_m,x_m,y_m,rx_rad,ry_rad\n");
-            for (i, z) in rotor.model.node_z.iter().enumerate() {
-                let d = &q[4 * i..4 * i + 4];
-                writeln!(
-                    out,
-                    "{},{z},{:e},{:e},{:e},{:e}",
-                    i + 1,
-                    d[0],
-                    d[1],
-                    d[2],
-                    d[3]
-                )
-                .ok();
-            }
-            let (peak_node, peak) = (0..rotor.model.node_count())
-                .map(|i| {
-                    let (x, y) = node_xy(&q, i);
-                    (i, x.hypot(y))
-                })
-                .fold((0, 0.0), |a, b| if b.1 > a.1 { b } else { a });
+            let q = static_state(&rotor, rpm)?;
+            let out = report_csv::static_deflection(&rotor.model.node_z, &q);
+            let (peak_node, peak) = series::largest_deflection(&q, rotor.model.node_count());
             println!(
                 "static deflection of {}: largest {:.4e} m at node {}",
                 rotor.model.name,
@@ -270,9 +259,6 @@ fn run(cli: Cli) -> Result<(), String> {
                 ..ModalOptions::default()
             };
             let ms = modes_at(&rotor, speed, &options).map_err(|e| e.to_string())?;
-            let mut out = String::from(
-                "mode,speed_rpm,damped_frequency_rad_s,damped_frequency_hz,natural_frequency_rad_s,damping_ratio,log_decrement,whirl\n",
-            );
             println!("{} at {rpm} rpm:", rotor.model.name);
             println!(" mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl");
             for (k, m) in ms.iter().enumerate() {
@@ -286,20 +272,9 @@ fn run(cli: Cli) -> Result<(), String> {
                     m.log_decrement,
                     m.whirl.label()
                 );
-                writeln!(
-                    out,
-                    "{},{rpm},{},{f},{},{},{},{}",
-                    k + 1,
-                    m.damped_frequency,
-                    m.natural_frequency,
-                    m.damping_ratio,
-                    m.log_decrement,
-                    m.whirl.label()
-                )
-                .ok();
             }
             if let Some(path) = csv {
-                write_file(&path, &out)?;
+                write_file(&path, &report_csv::modes(rpm, &ms))?;
             }
         }
         Command::Campbell {
@@ -342,26 +317,7 @@ fn run(cli: Cli) -> Result<(), String> {
                     c.damping_ratio
                 );
             }
-            let mut out = String::from(
-                "speed_rpm,speed_rad_s,mode,damped_frequency_rad_s,damped_frequency_hz,damping_ratio,log_decrement,whirl\n",
-            );
-            for p in &diagram {
-                for (k, m) in p.modes.iter().enumerate() {
-                    writeln!(
-                        out,
-                        "{},{},{},{},{},{},{},{}",
-                        p.speed * RAD_S_TO_RPM,
-                        p.speed,
-                        k + 1,
-                        m.damped_frequency,
-                        m.damped_frequency / (2.0 * std::f64::consts::PI),
-                        m.damping_ratio,
-                        m.log_decrement,
-                        m.whirl.label()
-                    )
-                    .ok();
-                }
-            }
+            let out = report_csv::campbell(&diagram);
             match csv {
                 Some(path) => write_file(&path, &out)?,
                 None => print!("{out}"),
@@ -463,29 +419,11 @@ fn speed_profile(
         (None, None, Some(path)) => {
             let text = std::fs::read_to_string(path)
                 .map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
-            let mut points = Vec::new();
-            for (k, line) in text.lines().enumerate() {
-                let line = line.trim();
-                if line.is_empty() || line.starts_with('#') {
-                    continue;
-                }
-                let cols: Vec<&str> = line.split(',').collect();
-                let parsed: Option<(f64, f64)> = match cols.as_slice() {
-                    [a, b] => a.trim().parse().ok().zip(b.trim().parse().ok()),
-                    _ => None,
-                };
-                match parsed {
-                    Some((t, w)) => points.push((t, w * to_rad)),
-                    None if k == 0 => {}
-                    None => {
-                        return Err(format!(
-                            "{}:{}: expected two numbers time_s,speed_rpm, got {line:?}",
-                            path.display(),
-                            k + 1
-                        ));
-                    }
-                }
-            }
+            let points = speed_table::parse(&text, &path.display().to_string())
+                .map_err(|e| e.to_string())?
+                .into_iter()
+                .map(|(t, w)| (t, w * to_rad))
+                .collect();
             let profile = SpeedProfile::Table(points);
             profile
                 .validate()
@@ -543,41 +481,7 @@ fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String
         started.elapsed().as_secs_f64(),
         sim.stats()
     );
-    let mut out = String::from("time_s,speed_rpm,spin_angle_rad");
-    for b in &model.bearings {
-        let n = &b.name;
-        write!(
-            out,
-            ",{n}_x_m,{n}_y_m,{n}_fx_N,{n}_fy_N,{n}_eccentricity,{n}_friction_torque_Nm"
-        )
-        .ok();
-    }
-    for p in &model.probes {
-        write!(out, ",{0}_x_m,{0}_y_m", p.name).ok();
-    }
-    out.push_str(",friction_torque_Nm\n");
-    for o in &records {
-        write!(
-            out,
-            "{},{},{}",
-            o.time,
-            o.speed * RAD_S_TO_RPM,
-            o.spin_angle
-        )
-        .ok();
-        for b in &o.bearings {
-            write!(
-                out,
-                ",{:e},{:e},{:e},{:e},{},{}",
-                b.x, b.y, b.fx, b.fy, b.report.eccentricity, b.report.friction_torque
-            )
-            .ok();
-        }
-        for p in &o.probes {
-            write!(out, ",{:e},{:e}", p.x, p.y).ok();
-        }
-        writeln!(out, ",{}", o.friction_torque).ok();
-    }
+    let out = report_csv::simulation(&model, &records);
     match csv {
         Some(path) => write_file(&path, &out)?,
         None if plots.is_none() => print!("{out}"),
@@ -587,21 +491,7 @@ fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String
         // The last half of the run: settled orbits and their spectra.
         let tail = &records[records.len() / 2..];
         let t: Vec<f64> = tail.iter().map(|o| o.time).collect();
-        let mut orbits = Vec::new();
-        for (k, b) in model.bearings.iter().enumerate() {
-            orbits.push((
-                format!("bearing {}", b.name),
-                tail.iter().map(|o| o.bearings[k].x).collect::<Vec<_>>(),
-                tail.iter().map(|o| o.bearings[k].y).collect::<Vec<_>>(),
-            ));
-        }
-        for (k, p) in model.probes.iter().enumerate() {
-            orbits.push((
-                format!("probe {}", p.name),
-                tail.iter().map(|o| o.probes[k].x).collect(),
-                tail.iter().map(|o| o.probes[k].y).collect(),
-            ));
-        }
+        let orbits = series::orbits(&model, tail);
         let path = PathBuf::from(format!("{prefix}_orbits.png"));
         orbits_png(
             &path,
@@ -613,7 +503,7 @@ fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String
         eprintln!("wrote {}", path.display());
         let mean_speed = tail.iter().map(|o| o.speed).sum::<f64>() / tail.len() as f64;
         let f_spin = mean_speed / (2.0 * std::f64::consts::PI);
-        let f_max = (2.5 * f_spin).max(1.0).min(0.5 / output_step);
+        let f_max = band_limit(2.5 * f_spin, output_step);
         let freqs = frequency_grid(-f_max, f_max, 1601);
         let spectra: Vec<(String, Vec<f64>)> = orbits
             .iter()
@@ -635,42 +525,30 @@ fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String
         .map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
         // Waterfall over the whole run, of the first probe (else the first bearing).
-        let pick = |o: &rotor_bearing::solver::Outputs| match o.probes.first() {
-            Some(p) => (p.x, p.y),
-            None => (o.bearings[0].x, o.bearings[0].y),
-        };
-        let windows = 40.min(records.len() / 64).max(1);
-        let len = records.len() / windows;
-        let top_speed = records.iter().map(|o| o.speed.abs()).fold(0.0, f64::max);
-        let f_top = (1.5 * top_speed / (2.0 * std::f64::consts::PI))
-            .max(1.0)
-            .min(0.5 / output_step);
-        let wf_freqs = frequency_grid(-f_top, f_top, 801);
-        let mut rows = Vec::new();
+        let t: Vec<f64> = records.iter().map(|o| o.time).collect();
+        let speed: Vec<f64> = records.iter().map(|o| o.speed).collect();
+        let (x, y): (Vec<f64>, Vec<f64>) = records.iter().map(series::watched_point).unzip();
+        let wf = waterfall(&t, &x, &y, &speed, output_step);
         println!("window  speed_rpm  dominant_Hz  ratio  amplitude_um");
-        for w in 0..windows {
-            let chunk = &records[w * len..(w + 1) * len];
-            let t: Vec<f64> = chunk.iter().map(|o| o.time).collect();
-            let (x, y): (Vec<f64>, Vec<f64>) = chunk.iter().map(pick).unzip();
-            let amps = full_spectrum(&t, &x, &y, &wf_freqs);
-            let speed = chunk.iter().map(|o| o.speed).sum::<f64>() / len as f64;
-            if let Some((f, a)) =
-                rotor_bearing::analysis::spectrum::peak_frequency(&wf_freqs, &amps)
-            {
-                let ratio = f * 2.0 * std::f64::consts::PI / speed;
+        for (w, row) in wf.rows.iter().enumerate() {
+            if let (Some((f, a)), Some(ratio)) = (row.peak, row.peak_order()) {
                 println!(
                     "{w:6} {:10.1} {f:12.3} {ratio:6.3} {:12.4}",
-                    speed * RAD_S_TO_RPM,
+                    row.speed * RAD_S_TO_RPM,
                     a * 1e6
                 );
             }
-            rows.push((speed * RAD_S_TO_RPM, amps));
         }
+        let rows: Vec<(f64, Vec<f64>)> = wf
+            .rows
+            .into_iter()
+            .map(|r| (r.speed * RAD_S_TO_RPM, r.amplitudes))
+            .collect();
         let path = PathBuf::from(format!("{prefix}_waterfall.png"));
         waterfall_png(
             &path,
             &format!("Waterfall: {}", model.name),
-            &wf_freqs,
+            &wf.freqs,
             &rows,
         )
         .map_err(|e| e.to_string())?;
@@ -718,37 +596,20 @@ fn coefficients(
             (format!("bearing {} of {}", b.name, m.name), b.kind.clone())
         }
     };
-    let Some(film) = kind.film_geometry() else {
+    let speed = rpm / RAD_S_TO_RPM;
+    let Some(curve) = dimensionless_curve(&kind, speed, points) else {
         return Err(format!("{label} is linear: its coefficients are constant"));
     };
-    let speed = rpm / RAD_S_TO_RPM;
-    let model_bearing = kind.build();
-    // Load scale k0 = μωRL³/C²; sweep W/k0 from 0.08 to 50 (short bearing:
-    // ε ≈ 0.1 … 0.9, the range of the paper's Fig. 3).
-    let k0 = film.load_scale(speed);
-    let clearance = film.clearance;
-    let loads: Vec<f64> = (0..points)
-        .map(|i| k0 * 0.08 * 625f64.powf(i as f64 / (points - 1) as f64))
-        .collect();
-    let curve = coefficient_curve(model_bearing.as_ref(), speed, clearance, &loads);
     if curve.len() < 2 {
         return Err(format!("{label}: fewer than two equilibria found"));
     }
-    let mut out = String::from(
-        "load_N,eccentricity,attitude_deg,Kxx_bar,Kxy_bar,Kyx_bar,Kyy_bar,Cxx_bar,Cxy_bar,Cyx_bar,Cyy_bar\n",
-    );
     println!("{label} at {rpm} rpm (load along −y; K̄ = K C/W, C̄ = C ω C/W):");
     println!("    ε     φ (°)     K̄xx     K̄xy     K̄yx     K̄yy     C̄xx     C̄xy     C̄yx     C̄yy");
     let mut eps = Vec::new();
     let mut kbar: Vec<Vec<f64>> = vec![Vec::new(); 4];
     let mut cbar: Vec<Vec<f64>> = vec![Vec::new(); 4];
     for p in &curve {
-        let k = p.stiffness * (clearance / p.load);
-        let c = p.damping * (speed * clearance / p.load);
-        let (kv, cv) = (
-            [k[(0, 0)], k[(0, 1)], k[(1, 0)], k[(1, 1)]],
-            [c[(0, 0)], c[(0, 1)], c[(1, 0)], c[(1, 1)]],
-        );
+        let (kv, cv) = (p.stiffness, p.damping);
         println!(
             "{:6.3} {:8.2} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3}",
             p.eccentricity,
@@ -762,22 +623,6 @@ fn coefficients(
             cv[2],
             cv[3]
         );
-        writeln!(
-            out,
-            "{},{},{},{},{},{},{},{},{},{},{}",
-            p.load,
-            p.eccentricity,
-            p.attitude_angle.to_degrees(),
-            kv[0],
-            kv[1],
-            kv[2],
-            kv[3],
-            cv[0],
-            cv[1],
-            cv[2],
-            cv[3]
-        )
-        .ok();
         eps.push(p.eccentricity);
         for i in 0..4 {
             kbar[i].push(kv[i]);
@@ -785,7 +630,7 @@ fn coefficients(
         }
     }
     if let Some(path) = csv {
-        write_file(&path, &out)?;
+        write_file(&path, &report_csv::coefficients(&curve))?;
     }
     if let Some(path) = png {
         let names = ["xx", "xy", "yx", "yy"];

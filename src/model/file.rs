@@ -1,5 +1,5 @@
 //! The TOML model file as written by a user: plain serde structs, every unknown
-//! key rejected. Validation into a [`super::RotorModel`] happens in `super`.
+//! key rejected. Validation into a [`super::RotorModel`] happens in `build`.
 //!
 //! Units are SI throughout (m, kg, s, N, Pa, rad/s); angles in model files are in
 //! degrees where the key says `_deg`. Nodes are numbered from 1 along the shaft.

@@ -241,3 +241,161 @@ fn hydrodynamic_bearing_errors() {
         assert!(e.contains(expect), "expected {expect:?} in: {e}");
     }
 }
+
+/// 1-based line of the `nth` (0-based) occurrence of `needle` in `BASE + extra`.
+fn line_in(extra: &str, needle: &str, nth: usize) -> usize {
+    let text = format!("{BASE}{extra}");
+    let at = text.match_indices(needle).nth(nth).unwrap().0;
+    text[..at].matches('\n').count() + 1
+}
+
+#[test]
+fn duplicate_names_are_rejected_with_path_value_and_line() {
+    let disk = "mass = 1.0\npolar_inertia = 0.1\ndiametral_inertia = 0.1\n";
+    let cases = [
+        (
+            format!(
+                "\n[[disks]]\nname = \"d\"\nnode = 2\n{disk}[[disks]]\nname = \"d\"\nnode = 3\n{disk}"
+            ),
+            "disks[1].name = d: duplicate disk name",
+        ),
+        (
+            "\n[[bearings]]\ntype = \"linear\"\nname = \"b\"\nnode = 1\nkxx = 1e6\n\
+             [[bearings]]\ntype = \"linear\"\nname = \"b\"\nnode = 7\nkxx = 1e6\n"
+                .to_string(),
+            "bearings[1].name = b: duplicate bearing name",
+        ),
+        (
+            "\n[[unbalance]]\nname = \"u\"\nnode = 2\nmagnitude = 1e-3\n\
+             [[unbalance]]\nname = \"u\"\nnode = 3\nmagnitude = 1e-3\n"
+                .to_string(),
+            "unbalance[1].name = u: duplicate unbalance name",
+        ),
+        (
+            "\n[[probes]]\nname = \"p\"\nnode = 2\n[[probes]]\nname = \"p\"\nnode = 3\n"
+                .to_string(),
+            "probes[1].name = p: duplicate probe name",
+        ),
+    ];
+    for (extra, expect) in &cases {
+        let e = err_of(extra);
+        let name = &expect[expect.find("= ").unwrap() + 2..expect.find(':').unwrap()];
+        let line = line_in(extra, &format!("name = \"{name}\""), 1);
+        assert_eq!(e, format!("m.toml:{line}: {expect}"));
+    }
+    // A given name may not take the default name of another entry either.
+    let e = err_of(
+        "\n[[bearings]]\ntype = \"linear\"\nnode = 1\n\
+         [[bearings]]\ntype = \"linear\"\nname = \"bearing1\"\nnode = 7\n",
+    );
+    assert!(
+        e.contains("bearings[1].name = bearing1: duplicate bearing name"),
+        "{e}"
+    );
+}
+
+#[test]
+fn zero_or_negative_disk_mass_or_inertia_is_rejected() {
+    for (key, bad) in [
+        ("mass", "0.0"),
+        ("mass", "-2.0"),
+        ("polar_inertia", "0.0"),
+        ("diametral_inertia", "-0.1"),
+    ] {
+        let mut fields = [
+            ("mass", "1.0"),
+            ("polar_inertia", "0.1"),
+            ("diametral_inertia", "0.1"),
+        ];
+        fields.iter_mut().find(|f| f.0 == key).unwrap().1 = bad;
+        let body: String = fields.iter().map(|(k, v)| format!("{k} = {v}\n")).collect();
+        let extra = format!("\n[[disks]]\nnode = 2\n{body}");
+        let e = err_of(&extra);
+        let line = line_in(&extra, &format!("{key} = {bad}"), 0);
+        let value: f64 = bad.parse().unwrap();
+        assert_eq!(
+            e,
+            format!(
+                "m.toml:{line}: disks[0].{key} = {value}: must be a finite number greater than zero"
+            )
+        );
+    }
+}
+
+#[test]
+fn type_errors_name_the_field_path_and_line() {
+    let disk = "\n[[disks]]\nnode = 4\nmass = 1.0\npolar_inertia = 0.1\ndiametral_inertia = 0.1\n";
+    let cases = [
+        (
+            BASE.replace("elements = 6", "elements = inf"),
+            "elements = inf",
+            "shaft[0].elements: invalid type",
+        ),
+        (
+            BASE.replace("density = 7810.0", "density = \"heavy\""),
+            "density =",
+            "materials[0].density: invalid type",
+        ),
+        (
+            format!("{BASE}{}", disk.replace("node = 4", "node = 4.5")),
+            "node = 4.5",
+            "disks[0].node: invalid type",
+        ),
+        (
+            format!("gravity = [0.0, \"down\", 0.0]{BASE}"),
+            "\"down\"",
+            "gravity[1]: invalid type",
+        ),
+        (
+            format!("{BASE}\n[[probes]]\nname = 3\nnode = 2\n"),
+            "name = 3",
+            "probes[0].name: invalid type",
+        ),
+        (
+            format!("{BASE}\n[[supports]]\nnode = 1\nfix = \"x\"\n"),
+            "fix = ",
+            "supports[0].fix: invalid type",
+        ),
+        (
+            format!("{BASE}{}", disk.replace("mass = 1.0", "mas = 1.0")),
+            "mas = 1.0",
+            "disks[0].mas: unknown field `mas`",
+        ),
+        (
+            format!("speed_rpm = true{BASE}"),
+            "speed_rpm",
+            "speed_rpm: invalid type",
+        ),
+    ];
+    for (text, at, expect) in &cases {
+        let e = RotorModel::from_toml(text, "m.toml")
+            .unwrap_err()
+            .to_string();
+        let offset = text.find(at).unwrap();
+        let line = text[..offset].matches('\n').count() + 1;
+        assert!(
+            e.starts_with(&format!("m.toml:{line}: {expect}")),
+            "expected m.toml:{line}: {expect}…, got: {e}"
+        );
+    }
+    // Bearings are an internally tagged enum: serde buffers the entry, so the
+    // span (and path) is that of the whole entry, at its header line.
+    let text = format!(
+        "{BASE}\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = \"big\"\nlength = 0.02\nclearance = 1e-4\nviscosity = 0.02\n"
+    );
+    let e = RotorModel::from_toml(&text, "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("m.toml:15: bearings[0]: invalid type: string \"big\""),
+        "{e}"
+    );
+    // Broken TOML keeps its parser message and line.
+    let e = RotorModel::from_toml(&format!("{BASE}\nspeed_rpm = = 3\n"), "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("m.toml:15: ") && e.contains("extra `=`"),
+        "{e}"
+    );
+}

@@ -1,0 +1,198 @@
+//! `[[bearings]]`: linear spring–dampers, plain and tilting-pad journal
+//! bearings, with the geometric checks thin-film theory needs.
+
+use crate::bearing::tilting_pad::Pad;
+use crate::bearing::{BearingKind, PlainBearing, TiltingPadBearing};
+
+use crate::model::context::{Ctx, Names, default_name};
+use crate::model::error::FieldPath;
+use crate::model::file::BearingEntry;
+use crate::model::{ModelError, PlacedBearing};
+
+/// Check each bearing: unique name, its node and the parameters of its `type`; film bearings
+/// need a clearance below a tenth of the radius, tilting pads 3–18
+/// non-overlapping pads.
+pub(super) fn bearings(
+    ctx: &Ctx,
+    root: &FieldPath,
+    entries: Vec<BearingEntry>,
+    node_z: &[f64],
+) -> Result<Vec<PlacedBearing>, ModelError> {
+    let mut bearings = Vec::new();
+    let mut names = Names::default();
+    for (i, b) in entries.into_iter().enumerate() {
+        let p = root.key("bearings").index(i);
+        let (name, node, kind) = match b {
+            BearingEntry::Linear {
+                name,
+                node,
+                z,
+                kxx,
+                kxy,
+                kyx,
+                kyy,
+                cxx,
+                cxy,
+                cyx,
+                cyy,
+            } => {
+                let node = ctx.location(&p, node, z, node_z)?;
+                let f = |key: &str, v: f64| ctx.finite(p.key(key), v);
+                let k = [
+                    [f("kxx", kxx)?, f("kxy", kxy)?],
+                    [f("kyx", kyx)?, f("kyy", kyy)?],
+                ];
+                let c = [
+                    [f("cxx", cxx)?, f("cxy", cxy)?],
+                    [f("cyx", cyx)?, f("cyy", cyy)?],
+                ];
+                for (key, v) in [
+                    ("kxx", k[0][0]),
+                    ("kyy", k[1][1]),
+                    ("cxx", c[0][0]),
+                    ("cyy", c[1][1]),
+                ] {
+                    ctx.non_negative(p.key(key), v)?;
+                }
+                (
+                    name,
+                    node,
+                    BearingKind::Linear {
+                        stiffness: k,
+                        damping: c,
+                    },
+                )
+            }
+            BearingEntry::Plain {
+                name,
+                node,
+                z,
+                radius,
+                length,
+                clearance,
+                viscosity,
+            } => {
+                let node = ctx.location(&p, node, z, node_z)?;
+                let bearing = PlainBearing {
+                    radius: ctx.positive(p.key("radius"), radius)?,
+                    length: ctx.positive(p.key("length"), length)?,
+                    clearance: ctx.positive(p.key("clearance"), clearance)?,
+                    viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
+                };
+                if bearing.clearance >= 0.1 * bearing.radius {
+                    return Err(ctx.err(
+                        p.key("clearance"),
+                        bearing.clearance,
+                        &format!(
+                            "must be much smaller than the radius {} (thin-film theory)",
+                            bearing.radius
+                        ),
+                    ));
+                }
+                (name, node, BearingKind::Plain(bearing))
+            }
+            BearingEntry::TiltingPad {
+                name,
+                node,
+                z,
+                radius,
+                length,
+                clearance,
+                viscosity,
+                pads,
+                first_pivot_deg,
+                pivots_deg,
+                pad_arc_deg,
+                pivot_offset,
+                preload,
+            } => {
+                let node = ctx.location(&p, node, z, node_z)?;
+                let radius = ctx.positive(p.key("radius"), radius)?;
+                let clearance = ctx.positive(p.key("clearance"), clearance)?;
+                if clearance >= 0.1 * radius {
+                    return Err(ctx.err(
+                        p.key("clearance"),
+                        clearance,
+                        &format!(
+                            "must be much smaller than the radius {radius} (thin-film theory)"
+                        ),
+                    ));
+                }
+                let pivots: Vec<f64> = match (pads, first_pivot_deg, pivots_deg) {
+                    (Some(count), first, None) => {
+                        if !(3..=18).contains(&count) {
+                            return Err(ctx.err(p.key("pads"), count, "must be from 3 to 18"));
+                        }
+                        let first = ctx.finite(p.key("first_pivot_deg"), first.unwrap_or(0.0))?;
+                        (0..count)
+                            .map(|k| first + 360.0 * k as f64 / count as f64)
+                            .collect()
+                    }
+                    (None, None, Some(list)) => {
+                        if !(3..=18).contains(&list.len()) {
+                            return Err(ctx.err(
+                                p.key("pivots_deg"),
+                                format!("{list:?}"),
+                                "must list from 3 to 18 pivot angles",
+                            ));
+                        }
+                        for (k, v) in list.iter().enumerate() {
+                            ctx.finite(p.key("pivots_deg").index(k), *v)?;
+                        }
+                        list
+                    }
+                    _ => {
+                        return Err(ctx.err(
+                            p.clone(),
+                            "pads / first_pivot_deg / pivots_deg",
+                            "give either pads (and optionally first_pivot_deg) or pivots_deg",
+                        ));
+                    }
+                };
+                let arc = ctx.positive(p.key("pad_arc_deg"), pad_arc_deg)?;
+                let offset = pivot_offset.unwrap_or(0.5);
+                if !(0.0..=1.0).contains(&offset) {
+                    return Err(ctx.err(p.key("pivot_offset"), offset, "must lie in [0, 1]"));
+                }
+                let preload = preload.unwrap_or(0.0);
+                if !(0.0..1.0).contains(&preload) {
+                    return Err(ctx.err(p.key("preload"), preload, "must lie in [0, 1)"));
+                }
+                // Pads must not overlap: sorted pivots at least one arc apart.
+                let mut sorted: Vec<f64> = pivots.iter().map(|d| d.rem_euclid(360.0)).collect();
+                sorted.sort_by(f64::total_cmp);
+                let gaps = sorted
+                    .windows(2)
+                    .map(|w| w[1] - w[0])
+                    .chain(std::iter::once(
+                        sorted[0] + 360.0 - sorted[sorted.len() - 1],
+                    ));
+                if gaps.fold(f64::INFINITY, f64::min) < arc {
+                    return Err(ctx.err(
+                        p.key("pad_arc_deg"),
+                        arc,
+                        "pads overlap: the arc exceeds the spacing of the pivots",
+                    ));
+                }
+                let bearing = TiltingPadBearing {
+                    radius,
+                    length: ctx.positive(p.key("length"), length)?,
+                    clearance,
+                    viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
+                    pads: pivots
+                        .iter()
+                        .map(|d| Pad::new(d.to_radians(), arc.to_radians(), offset, preload))
+                        .collect(),
+                };
+                (name, node, BearingKind::TiltingPad(bearing))
+            }
+        };
+        bearings.push(PlacedBearing {
+            name: names.claim(ctx, &p, default_name(name, "bearing", i), "bearing")?,
+            node,
+            kind,
+        });
+    }
+
+    Ok(bearings)
+}

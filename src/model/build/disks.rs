@@ -1,0 +1,117 @@
+//! `[[disks]]`: rigid disks on nodes, given by mass and inertias or by
+//! geometry and material.
+
+use crate::fe::disk::Disk;
+
+use super::materials::Materials;
+use crate::model::context::{Ctx, Names, default_name};
+use crate::model::error::FieldPath;
+use crate::model::file::DiskEntry;
+use crate::model::{ModelError, PlacedDisk};
+
+/// Check each disk: unique name, its node, and either `mass`, `polar_inertia`,
+/// `diametral_inertia` (kg, kg·m², all > 0) or `material`, `outer_diameter`,
+/// `inner_diameter`, `width` (m) — not a mix.
+pub(super) fn disks(
+    ctx: &Ctx,
+    root: &FieldPath,
+    entries: Vec<DiskEntry>,
+    node_z: &[f64],
+    materials: &Materials,
+) -> Result<Vec<PlacedDisk>, ModelError> {
+    let mut disks = Vec::new();
+    let mut names = Names::default();
+    for (i, d) in entries.into_iter().enumerate() {
+        let p = root.key("disks").index(i);
+        let node = ctx.location(&p, d.node, d.z, node_z)?;
+        let by_inertia =
+            d.mass.is_some() || d.polar_inertia.is_some() || d.diametral_inertia.is_some();
+        let by_geometry = d.material.is_some()
+            || d.outer_diameter.is_some()
+            || d.inner_diameter.is_some()
+            || d.width.is_some();
+        let disk = match (by_inertia, by_geometry) {
+            (true, false) => {
+                let need = |key: &'static str, v: Option<f64>| match v {
+                    Some(v) => ctx.positive(p.key(key), v),
+                    None => Err(ctx.err(
+                        p.key(key),
+                        "(missing)",
+                        "needed with mass-and-inertia disks",
+                    )),
+                };
+                let mass = need("mass", d.mass)?;
+                let polar_inertia = need("polar_inertia", d.polar_inertia)?;
+                let diametral_inertia = need("diametral_inertia", d.diametral_inertia)?;
+                Disk {
+                    mass,
+                    polar_inertia,
+                    diametral_inertia,
+                }
+            }
+            (false, true) => {
+                let material = match &d.material {
+                    Some(name) => materials.find(ctx, p.key("material"), name)?,
+                    None => {
+                        return Err(ctx.err(
+                            p.key("material"),
+                            "(missing)",
+                            "needed with disk geometry",
+                        ));
+                    }
+                };
+                let outer = match d.outer_diameter {
+                    Some(v) => ctx.positive(p.key("outer_diameter"), v)?,
+                    None => {
+                        return Err(ctx.err(
+                            p.key("outer_diameter"),
+                            "(missing)",
+                            "needed with disk geometry",
+                        ));
+                    }
+                };
+                let inner =
+                    ctx.non_negative(p.key("inner_diameter"), d.inner_diameter.unwrap_or(0.0))?;
+                if inner >= outer {
+                    return Err(ctx.err(
+                        p.key("inner_diameter"),
+                        inner,
+                        &format!("must be smaller than outer_diameter = {outer}"),
+                    ));
+                }
+                let width = match d.width {
+                    Some(v) => ctx.positive(p.key("width"), v)?,
+                    None => {
+                        return Err(ctx.err(
+                            p.key("width"),
+                            "(missing)",
+                            "needed with disk geometry",
+                        ));
+                    }
+                };
+                Disk::from_geometry(material.density, outer, inner, width)
+            }
+            (true, true) => {
+                return Err(ctx.err(
+                    p.clone(),
+                    "mass/inertia and geometry",
+                    "give either mass, polar_inertia, diametral_inertia or material, outer_diameter, inner_diameter, width — not both",
+                ));
+            }
+            (false, false) => {
+                return Err(ctx.err(
+                    p.clone(),
+                    "(empty)",
+                    "give mass, polar_inertia, diametral_inertia or material, outer_diameter, inner_diameter, width",
+                ));
+            }
+        };
+        disks.push(PlacedDisk {
+            name: names.claim(ctx, &p, default_name(d.name, "disk", i), "disk")?,
+            node,
+            disk,
+        });
+    }
+
+    Ok(disks)
+}

@@ -1,0 +1,64 @@
+//! Validation of a parsed model file into a [`RotorModel`], one section at a
+//! time in file order (so the first error reported is the first in the file's
+//! logical order): name, materials, shaft, disks, bearings, loads (unbalance),
+//! probes, supports, gravity and nominal speed.
+
+mod bearings;
+mod disks;
+mod loads;
+mod materials;
+mod shaft;
+mod supports;
+
+use super::context::Ctx;
+use super::error::FieldPath;
+use super::file::ModelFile;
+use super::{ModelError, RotorModel};
+
+/// Check every section of `raw` and assemble the model.
+pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError> {
+    let root = FieldPath::default();
+    check_name(ctx, &root, &raw.name)?;
+    let materials = materials::materials(ctx, &root, &raw.materials)?;
+    let shaft = shaft::shaft(ctx, &root, &raw, &materials)?;
+    let node_z = shaft.node_z;
+    let disks = disks::disks(ctx, &root, raw.disks, &node_z, &materials)?;
+    let bearings = bearings::bearings(ctx, &root, raw.bearings, &node_z)?;
+    let unbalances = loads::unbalances(ctx, &root, raw.unbalance, &node_z)?;
+    let probes = loads::probes(ctx, &root, raw.probes, &node_z)?;
+    let supports = supports::supports(ctx, &root, raw.supports, &node_z)?;
+    let gravity = loads::gravity(ctx, &root, raw.gravity)?;
+    // Nominal speed: rpm → rad/s.
+    let nominal_speed = ctx.finite(root.key("speed_rpm"), raw.speed_rpm.unwrap_or(0.0))?
+        * std::f64::consts::PI
+        / 30.0;
+    Ok(RotorModel {
+        nominal_speed,
+        name: raw.name,
+        description: raw.description,
+        source: ctx.source.to_string(),
+        node_z,
+        elements: shaft.elements,
+        disks,
+        bearings,
+        unbalances,
+        probes,
+        supports,
+        gravity,
+    })
+}
+
+/// The model name must be an identifier (it becomes the FMU's model name).
+fn check_name(ctx: &Ctx, root: &FieldPath, name: &str) -> Result<(), ModelError> {
+    if name.is_empty()
+        || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        || name.starts_with(|c: char| c.is_ascii_digit())
+    {
+        return Err(ctx.err(
+            root.key("name"),
+            format!("{name:?}"),
+            "must be a non-empty identifier of letters, digits and '_' not starting with a digit",
+        ));
+    }
+    Ok(())
+}

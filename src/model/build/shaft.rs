@@ -1,0 +1,86 @@
+//! `[[shaft]]` sections: uniform tubes split into equal Timoshenko elements,
+//! which also define the nodes (axial positions) everything else is placed on.
+
+use crate::fe::section::CircularSection;
+use crate::fe::shaft::{ShaftEffects, ShaftElement};
+
+use super::materials::Materials;
+use crate::model::context::Ctx;
+use crate::model::error::FieldPath;
+use crate::model::file::ModelFile;
+use crate::model::{ModelError, PlacedElement};
+
+/// The shaft: node positions (m, increasing) and elements in node order.
+pub(super) struct Shaft {
+    /// Axial position of every node (m).
+    pub(super) node_z: Vec<f64>,
+    /// Elements between consecutive nodes.
+    pub(super) elements: Vec<PlacedElement>,
+}
+
+/// Check the shaft sections and the top-level keys that apply to them
+/// (`shear_deformation`, `rotary_inertia`, `axial_force`, `start_z`).
+pub(super) fn shaft(
+    ctx: &Ctx,
+    root: &FieldPath,
+    raw: &ModelFile,
+    materials: &Materials,
+) -> Result<Shaft, ModelError> {
+    let effects = ShaftEffects {
+        shear_deformation: raw.shear_deformation.unwrap_or(true),
+        rotary_inertia: raw.rotary_inertia.unwrap_or(true),
+    };
+    let default_axial = ctx.finite(root.key("axial_force"), raw.axial_force.unwrap_or(0.0))?;
+    let start_z = ctx.finite(root.key("start_z"), raw.start_z.unwrap_or(0.0))?;
+
+    if raw.shaft.is_empty() {
+        return Err(ctx.err(
+            root.key("shaft"),
+            "[]",
+            "the model needs at least one [[shaft]] section",
+        ));
+    }
+    let mut node_z = vec![start_z];
+    let mut elements = Vec::new();
+    for (i, s) in raw.shaft.iter().enumerate() {
+        let p = root.key("shaft").index(i);
+        let length = ctx.positive(p.key("length"), s.length)?;
+        let outer = ctx.positive(p.key("outer_diameter"), s.outer_diameter)?;
+        let inner = ctx.non_negative(p.key("inner_diameter"), s.inner_diameter)?;
+        if inner >= outer {
+            return Err(ctx.err(
+                p.key("inner_diameter"),
+                inner,
+                &format!("must be smaller than outer_diameter = {outer}"),
+            ));
+        }
+        let material = materials.find(ctx, p.key("material"), &s.material)?;
+        let count = s.elements.unwrap_or(1);
+        if !(1..=1_000_000).contains(&count) {
+            return Err(ctx.err(p.key("elements"), count, "must be from 1 to 1000000"));
+        }
+        let axial_force = match s.axial_force {
+            Some(f) => ctx.finite(p.key("axial_force"), f)?,
+            None => default_axial,
+        };
+        let element = ShaftElement {
+            length: length / count as f64,
+            section: CircularSection {
+                outer_diameter: outer,
+                inner_diameter: inner,
+            },
+            material,
+            effects,
+        };
+        let z0 = node_z[node_z.len() - 1];
+        for k in 0..count {
+            elements.push(PlacedElement {
+                node: node_z.len() - 1,
+                element: element.clone(),
+                axial_force,
+            });
+            node_z.push(z0 + length * (k + 1) as f64 / count as f64);
+        }
+    }
+    Ok(Shaft { node_z, elements })
+}

@@ -1,0 +1,311 @@
+//! CSV tables of analysis results, one function per report, each returning the
+//! whole file text (header line first, `\n` line ends). Column names carry their
+//! SI unit; speeds are also given in rpm.
+
+use std::f64::consts::PI;
+use std::fmt::Write as _;
+
+use crate::analysis::campbell::CampbellPoint;
+use crate::analysis::modal::Mode;
+use crate::bearing::coefficients::DimensionlessPoint;
+use crate::model::RotorModel;
+use crate::plot::RAD_S_TO_RPM;
+use crate::solver::Outputs;
+
+/// Node displacements `q` (`4·node + k`: x, y in m; rx, ry in rad) at the nodes
+/// at axial positions `node_z` (m); nodes numbered from 1.
+pub fn static_deflection(node_z: &[f64], q: &[f64]) -> String {
+    let mut out = String::from("node,z_m,x_m,y_m,rx_rad,ry_rad\n");
+    for (i, z) in node_z.iter().enumerate() {
+        let d = &q[4 * i..4 * i + 4];
+        writeln!(
+            out,
+            "{},{z},{:e},{:e},{:e},{:e}",
+            i + 1,
+            d[0],
+            d[1],
+            d[2],
+            d[3]
+        )
+        .ok();
+    }
+    out
+}
+
+/// Complex modes at spin speed `rpm`: damped frequency (rad/s, Hz), natural
+/// frequency, damping ratio, logarithmic decrement and whirl.
+pub fn modes(rpm: f64, modes: &[Mode]) -> String {
+    let mut out = String::from(
+        "mode,speed_rpm,damped_frequency_rad_s,damped_frequency_hz,natural_frequency_rad_s,damping_ratio,log_decrement,whirl\n",
+    );
+    for (k, m) in modes.iter().enumerate() {
+        let f = m.damped_frequency / (2.0 * PI);
+        writeln!(
+            out,
+            "{},{rpm},{},{f},{},{},{},{}",
+            k + 1,
+            m.damped_frequency,
+            m.natural_frequency,
+            m.damping_ratio,
+            m.log_decrement,
+            m.whirl.label()
+        )
+        .ok();
+    }
+    out
+}
+
+/// A Campbell diagram: one line per speed and mode.
+pub fn campbell(diagram: &[CampbellPoint]) -> String {
+    let mut out = String::from(
+        "speed_rpm,speed_rad_s,mode,damped_frequency_rad_s,damped_frequency_hz,damping_ratio,log_decrement,whirl\n",
+    );
+    for p in diagram {
+        for (k, m) in p.modes.iter().enumerate() {
+            writeln!(
+                out,
+                "{},{},{},{},{},{},{},{}",
+                p.speed * RAD_S_TO_RPM,
+                p.speed,
+                k + 1,
+                m.damped_frequency,
+                m.damped_frequency / (2.0 * PI),
+                m.damping_ratio,
+                m.log_decrement,
+                m.whirl.label()
+            )
+            .ok();
+        }
+    }
+    out
+}
+
+/// Dimensionless bearing coefficients against load: load (N), eccentricity
+/// ratio, attitude angle (°), `K̄ = K C/W` and `C̄ = C ω C/W`.
+pub fn coefficients(curve: &[DimensionlessPoint]) -> String {
+    let mut out = String::from(
+        "load_N,eccentricity,attitude_deg,Kxx_bar,Kxy_bar,Kyx_bar,Kyy_bar,Cxx_bar,Cxy_bar,Cyx_bar,Cyy_bar\n",
+    );
+    for p in curve {
+        let (k, c) = (p.stiffness, p.damping);
+        writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{},{},{}",
+            p.load,
+            p.eccentricity,
+            p.attitude_angle.to_degrees(),
+            k[0],
+            k[1],
+            k[2],
+            k[3],
+            c[0],
+            c[1],
+            c[2],
+            c[3]
+        )
+        .ok();
+    }
+    out
+}
+
+/// Simulation outputs of `model`: time, speed, spin angle; per bearing the
+/// journal position (m), force (N), eccentricity ratio and friction torque
+/// (N·m); per probe the position (m); the total friction torque.
+pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
+    let mut out = String::from("time_s,speed_rpm,spin_angle_rad");
+    for b in &model.bearings {
+        let n = &b.name;
+        write!(
+            out,
+            ",{n}_x_m,{n}_y_m,{n}_fx_N,{n}_fy_N,{n}_eccentricity,{n}_friction_torque_Nm"
+        )
+        .ok();
+    }
+    for p in &model.probes {
+        write!(out, ",{0}_x_m,{0}_y_m", p.name).ok();
+    }
+    out.push_str(",friction_torque_Nm\n");
+    for o in records {
+        write!(
+            out,
+            "{},{},{}",
+            o.time,
+            o.speed * RAD_S_TO_RPM,
+            o.spin_angle
+        )
+        .ok();
+        for b in &o.bearings {
+            write!(
+                out,
+                ",{:e},{:e},{:e},{:e},{},{}",
+                b.x, b.y, b.fx, b.fy, b.report.eccentricity, b.report.friction_torque
+            )
+            .ok();
+        }
+        for p in &o.probes {
+            write!(out, ",{:e},{:e}", p.x, p.y).ok();
+        }
+        writeln!(out, ",{}", o.friction_torque).ok();
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::campbell::ModeSummary;
+    use crate::analysis::modal::Whirl;
+    use crate::bearing::BearingReport;
+    use crate::solver::{BearingOutput, ProbeOutput};
+
+    /// Rows of a CSV text as numbers (text cells as NaN), header checked.
+    fn parse(text: &str, header: &str) -> Vec<Vec<f64>> {
+        let mut lines = text.lines();
+        assert_eq!(lines.next(), Some(header));
+        lines
+            .map(|l| {
+                l.split(',')
+                    .map(|c| c.parse().unwrap_or(f64::NAN))
+                    .collect()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn static_table_round_trips() {
+        let z = [0.0, 0.25, 0.5];
+        let q: Vec<f64> = (0..12)
+            .map(|k| (k as f64 - 5.5) * 1.234_567_890_123e-5)
+            .collect();
+        let rows = parse(&static_deflection(&z, &q), "node,z_m,x_m,y_m,rx_rad,ry_rad");
+        assert_eq!(rows.len(), 3);
+        for (i, r) in rows.iter().enumerate() {
+            assert_eq!(r[0], (i + 1) as f64);
+            assert_eq!(r[1], z[i]);
+            assert_eq!(&r[2..], &q[4 * i..4 * i + 4]);
+        }
+    }
+
+    #[test]
+    fn modes_table_round_trips() {
+        let m = Mode {
+            eigenvalue: nalgebra::Complex::new(-1.0, 100.0),
+            natural_frequency: 100.005,
+            damped_frequency: 100.0,
+            damping_ratio: 0.01,
+            log_decrement: 0.0628,
+            whirl: Whirl::Forward,
+            shape: Vec::new(),
+            residual: 0.0,
+        };
+        let text = modes(1500.0, &[m.clone(), m]);
+        let rows = parse(
+            &text,
+            "mode,speed_rpm,damped_frequency_rad_s,damped_frequency_hz,natural_frequency_rad_s,damping_ratio,log_decrement,whirl",
+        );
+        assert_eq!(rows.len(), 2);
+        assert_eq!(
+            rows[1][..7],
+            [
+                2.0,
+                1500.0,
+                100.0,
+                100.0 / (2.0 * PI),
+                100.005,
+                0.01,
+                0.0628
+            ]
+        );
+        assert!(text.ends_with(",forward\n"));
+    }
+
+    #[test]
+    fn campbell_table_round_trips() {
+        let mode = |f: f64, whirl| ModeSummary {
+            damped_frequency: f,
+            damping_ratio: 0.01,
+            log_decrement: 0.0628,
+            whirl,
+        };
+        let diagram = [
+            CampbellPoint {
+                speed: 0.0,
+                modes: vec![mode(100.0, Whirl::Backward), mode(101.0, Whirl::Forward)],
+            },
+            CampbellPoint {
+                speed: 50.0,
+                modes: vec![mode(98.0, Whirl::Backward)],
+            },
+        ];
+        let text = campbell(&diagram);
+        let rows = parse(
+            &text,
+            "speed_rpm,speed_rad_s,mode,damped_frequency_rad_s,damped_frequency_hz,damping_ratio,log_decrement,whirl",
+        );
+        assert_eq!(rows.len(), 3);
+        assert_eq!(rows[2][0], 50.0 * RAD_S_TO_RPM);
+        assert_eq!(rows[2][1], 50.0);
+        assert_eq!((rows[1][2], rows[1][3]), (2.0, 101.0));
+        assert_eq!(rows[0][4], 100.0 / (2.0 * PI));
+        assert!(
+            text.lines()
+                .nth(1)
+                .unwrap()
+                .ends_with(Whirl::Backward.label())
+        );
+    }
+
+    #[test]
+    fn coefficient_table_round_trips() {
+        let p = DimensionlessPoint {
+            load: 1234.5,
+            eccentricity: 0.42,
+            attitude_angle: 1.0,
+            stiffness: [1.5, 2.5, -3.5, 4.5],
+            damping: [5.5, 6.5, 7.5, 8.5e-3],
+        };
+        let rows = parse(
+            &coefficients(&[p, p]),
+            "load_N,eccentricity,attitude_deg,Kxx_bar,Kxy_bar,Kyx_bar,Kyy_bar,Cxx_bar,Cxy_bar,Cyx_bar,Cyy_bar",
+        );
+        assert_eq!(rows.len(), 2);
+        assert_eq!(rows[1][..3], [1234.5, 0.42, 1f64.to_degrees()]);
+        assert_eq!(rows[1][3..7], p.stiffness);
+        assert_eq!(rows[1][7..], p.damping);
+    }
+
+    #[test]
+    fn simulation_table_has_a_column_per_bearing_and_probe_output() {
+        let model = RotorModel::default_model();
+        let bearing = BearingOutput {
+            x: 1e-6,
+            y: -2e-6,
+            fx: 3.0,
+            fy: -4.0,
+            report: BearingReport {
+                eccentricity: 0.25,
+                friction_torque: 0.5,
+                ..BearingReport::default()
+            },
+        };
+        let record = Outputs {
+            time: 0.125,
+            speed: 100.0,
+            spin_angle: 12.5,
+            bearings: vec![bearing; model.bearings.len()],
+            probes: vec![ProbeOutput { x: 7e-6, y: 8e-6 }; model.probes.len()],
+            friction_torque: 1.0,
+        };
+        let text = simulation(&model, &[record.clone(), record]);
+        let header = text.lines().next().unwrap();
+        let columns = 3 + 6 * model.bearings.len() + 2 * model.probes.len() + 1;
+        assert_eq!(header.split(',').count(), columns);
+        let b = &model.bearings[1].name;
+        assert!(header.contains(&format!(",{b}_fx_N,")));
+        let rows = parse(&text, header);
+        assert_eq!(rows.len(), 2);
+        assert_eq!(rows[0][..3], [0.125, 100.0 * RAD_S_TO_RPM, 12.5]);
+        assert_eq!(rows[0][3..9], [1e-6, -2e-6, 3.0, -4.0, 0.25, 0.5]);
+        assert_eq!(rows[0][columns - 3..], [7e-6, 8e-6, 1.0]);
+    }
+}
