@@ -341,3 +341,38 @@ fn scatter(
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Coefficients added to the assembled matrices give exactly the assembly
+    /// of the model with those bearings written as linear bearings; a missing
+    /// or misplaced entry is refused.
+    #[test]
+    fn bearing_coefficients_equal_the_assembled_linear_model() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/hydro_unit.toml");
+        let rotor = Rotor::new(RotorModel::from_file(std::path::Path::new(path)).unwrap()).unwrap();
+        let nonlinear: Vec<usize> = (0..rotor.model.bearings.len())
+            .filter(|&k| rotor.model.bearings[k].kind.is_nonlinear())
+            .collect();
+        let coefficients: Vec<JournalCoefficients> = nonlinear
+            .iter()
+            .map(|&k| JournalCoefficients {
+                bearing: k,
+                stiffness: [[3e9 + k as f64, -2e8], [4e8, 2.5e9]],
+                damping: [[1e7, 3e5], [-2e5, 2e7]],
+            })
+            .collect();
+        let linear = rotor.with_bearing_coefficients(&coefficients).unwrap();
+        let assembled = Rotor::new(linear.model.clone()).unwrap();
+        assert!(linear.nonlinear_bearings.is_empty());
+        assert_eq!(linear.stiffness.to_dense(), assembled.stiffness.to_dense());
+        assert_eq!(linear.damping.to_dense(), assembled.damping.to_dense());
+        assert_eq!(linear.mass.to_dense(), assembled.mass.to_dense());
+        assert_eq!(linear.gravity_load, assembled.gravity_load);
+        assert!(rotor.with_bearing_coefficients(&coefficients[1..]).is_err());
+        let twice = [coefficients[0], coefficients[0]];
+        assert!(rotor.with_bearing_coefficients(&twice).is_err());
+    }
+}
