@@ -8,9 +8,9 @@
 //! numbering every matrix is banded with half-bandwidth 7 (less after removing
 //! constrained DOFs). Storage and solves are O(n); nothing here is dense.
 
-use crate::bearing::BearingEval;
+use crate::bearing::{BearingEval, BearingKind};
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
-use crate::linalg::{BandMatrix, LinalgError};
+use crate::linalg::BandMatrix;
 use crate::model::RotorModel;
 
 /// Map between the full DOF numbering (`4·node + k`) and the free DOFs left
@@ -104,15 +104,23 @@ pub struct Rotor {
     pub gravity_load: Vec<f64>,
 }
 
+/// Linear stiffness and damping of one bearing on its journal `(x, y)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct JournalCoefficients {
+    /// Index of the bearing in the model.
+    pub bearing: usize,
+    /// Stiffness `K_b = −∂F/∂q` (N/m), row-major `[[kxx, kxy], [kyx, kyy]]`.
+    pub stiffness: [[f64; 2]; 2],
+    /// Damping `C_b = −∂F/∂q̇` (N·s/m), row-major.
+    pub damping: [[f64; 2]; 2],
+}
+
 /// Why a model cannot be assembled.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum AssemblyError {
     /// Every DOF is constrained.
     #[error("model {0}: every degree of freedom is fixed by supports")]
     NoFreeDofs(String),
-    /// Linear-algebra failure (band overflow: a programming error).
-    #[error("assembly: {0}")]
-    Linalg(#[from] LinalgError),
     /// A linear bearing could not be evaluated.
     #[error("bearing {name}: {message}")]
     Bearing { name: String, message: String },
@@ -120,6 +128,20 @@ pub enum AssemblyError {
 
 impl Rotor {
     /// Assemble the global matrices of `model`.
+    ///
+    /// ```
+    /// use rotor_bearing::model::RotorModel;
+    /// use rotor_bearing::rotor::Rotor;
+    ///
+    /// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/hydro_unit.toml");
+    /// let rotor = Rotor::new(RotorModel::from_file(std::path::Path::new(path))?)?;
+    /// // Four DOFs per node (x, y, θx, θy) less the ones fixed by supports.
+    /// assert!(rotor.dof_count() <= 4 * rotor.model.node_count());
+    /// assert_eq!(rotor.mass.n(), rotor.dof_count());
+    /// // The guide bearings are fluid films: kept out of K and C.
+    /// assert_eq!(rotor.nonlinear_bearings.len(), 2);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn new(model: RotorModel) -> Result<Self, AssemblyError> {
         let dofs = DofMap::new(&model);
         let n = dofs.free_count();
@@ -142,15 +164,15 @@ impl Rotor {
                 .chain(node_dofs(placed.node + 1))
                 .collect();
             let k_total = mats.stiffness + mats.axial_per_newton * placed.axial_force;
-            scatter(&mut mass, &local, |a, b| mats.mass[(a, b)])?;
-            scatter(&mut stiffness, &local, |a, b| k_total[(a, b)])?;
-            scatter(&mut gyroscopic, &local, |a, b| mats.gyroscopic[(a, b)])?;
+            scatter(&mut mass, &local, |a, b| mats.mass[(a, b)]);
+            scatter(&mut stiffness, &local, |a, b| k_total[(a, b)]);
+            scatter(&mut gyroscopic, &local, |a, b| mats.gyroscopic[(a, b)]);
         }
         for d in &model.disks {
             let local = node_dofs(d.node);
             let (m, g) = (d.disk.mass_matrix(), d.disk.gyroscopic_matrix());
-            scatter(&mut mass, &local, |a, b| m[(a, b)])?;
-            scatter(&mut gyroscopic, &local, |a, b| g[(a, b)])?;
+            scatter(&mut mass, &local, |a, b| m[(a, b)]);
+            scatter(&mut gyroscopic, &local, |a, b| g[(a, b)]);
         }
 
         let mut nonlinear_bearings = Vec::new();
@@ -166,8 +188,8 @@ impl Rotor {
                         message: e.to_string(),
                     })?;
                 let coeff = eval.journal();
-                scatter(&mut stiffness, &journal, |a, c| coeff.stiffness[(a, c)])?;
-                scatter(&mut damping, &journal, |a, c| coeff.damping[(a, c)])?;
+                scatter(&mut stiffness, &journal, |a, c| coeff.stiffness[(a, c)]);
+                scatter(&mut damping, &journal, |a, c| coeff.damping[(a, c)]);
             } else {
                 nonlinear_bearings.push(BearingSite {
                     name: b.name.clone(),
@@ -185,7 +207,7 @@ impl Rotor {
             }
         }
         let mut gravity_load = vec![0.0; n];
-        mass.mul_vec(&u_g, &mut gravity_load)?;
+        mass.mul_vec(&u_g, &mut gravity_load);
 
         Ok(Self {
             model,
@@ -202,6 +224,66 @@ impl Rotor {
     /// Number of free DOFs.
     pub fn dof_count(&self) -> usize {
         self.dofs.free_count()
+    }
+
+    /// A linear copy of this rotor: every nonlinear bearing replaced by the
+    /// coefficients given for it (one entry per nonlinear bearing, by model
+    /// index), scattered as 2×2 blocks at its journal DOFs,
+    /// `K' = K + E K_b Eᵀ`, `C' = C + E C_b Eᵀ`. Mass, gyroscopic matrix and
+    /// gravity load are copied, nothing is re-assembled; the copy's model lists
+    /// those bearings as [`BearingKind::Linear`], so it equals the assembly of
+    /// that model.
+    pub fn with_bearing_coefficients(
+        &self,
+        coefficients: &[JournalCoefficients],
+    ) -> Result<Self, AssemblyError> {
+        let mut model = self.model.clone();
+        let mut stiffness = self.stiffness.clone();
+        let mut damping = self.damping.clone();
+        let mut given = vec![false; model.bearings.len()];
+        for c in coefficients {
+            let placed =
+                model
+                    .bearings
+                    .get_mut(c.bearing)
+                    .ok_or_else(|| AssemblyError::Bearing {
+                        name: format!("#{}", c.bearing),
+                        message: "no such bearing in the model".into(),
+                    })?;
+            if !placed.kind.is_nonlinear() || given[c.bearing] {
+                return Err(AssemblyError::Bearing {
+                    name: placed.name.clone(),
+                    message: "coefficients given for a linear bearing or twice".into(),
+                });
+            }
+            given[c.bearing] = true;
+            let journal = [
+                self.dofs.free(placed.node, DOF_X),
+                self.dofs.free(placed.node, DOF_Y),
+            ];
+            scatter(&mut stiffness, &journal, |a, b| c.stiffness[a][b]);
+            scatter(&mut damping, &journal, |a, b| c.damping[a][b]);
+            placed.kind = BearingKind::Linear {
+                stiffness: c.stiffness,
+                damping: c.damping,
+            };
+        }
+        if let Some(missing) = model.bearings.iter().find(|b| b.kind.is_nonlinear()) {
+            return Err(AssemblyError::Bearing {
+                name: missing.name.clone(),
+                message: "nonlinear bearing without linear coefficients".into(),
+            });
+        }
+        Ok(Self {
+            model,
+            dofs: self.dofs.clone(),
+            mass: self.mass.clone(),
+            stiffness,
+            damping,
+            gyroscopic: self.gyroscopic.clone(),
+            nonlinear_bearings: Vec::new(),
+            gravity_load: self.gravity_load.clone(),
+        })
     }
 
     /// A freshly assembled copy (bearing objects are not clonable).
@@ -247,16 +329,50 @@ fn scatter(
     target: &mut BandMatrix<f64>,
     local: &[Option<usize>],
     value: impl Fn(usize, usize) -> f64,
-) -> Result<(), LinalgError> {
+) {
     for (a, ia) in local.iter().enumerate() {
         for (b, ib) in local.iter().enumerate() {
             if let (Some(i), Some(j)) = (ia, ib) {
                 let v = value(a, b);
                 if v != 0.0 {
-                    target.add(*i, *j, v)?;
+                    target.add(*i, *j, v);
                 }
             }
         }
     }
-    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Coefficients added to the assembled matrices give exactly the assembly
+    /// of the model with those bearings written as linear bearings; a missing
+    /// or misplaced entry is refused.
+    #[test]
+    fn bearing_coefficients_equal_the_assembled_linear_model() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/hydro_unit.toml");
+        let rotor = Rotor::new(RotorModel::from_file(std::path::Path::new(path)).unwrap()).unwrap();
+        let nonlinear: Vec<usize> = (0..rotor.model.bearings.len())
+            .filter(|&k| rotor.model.bearings[k].kind.is_nonlinear())
+            .collect();
+        let coefficients: Vec<JournalCoefficients> = nonlinear
+            .iter()
+            .map(|&k| JournalCoefficients {
+                bearing: k,
+                stiffness: [[3e9 + k as f64, -2e8], [4e8, 2.5e9]],
+                damping: [[1e7, 3e5], [-2e5, 2e7]],
+            })
+            .collect();
+        let linear = rotor.with_bearing_coefficients(&coefficients).unwrap();
+        let assembled = Rotor::new(linear.model.clone()).unwrap();
+        assert!(linear.nonlinear_bearings.is_empty());
+        assert_eq!(linear.stiffness.to_dense(), assembled.stiffness.to_dense());
+        assert_eq!(linear.damping.to_dense(), assembled.damping.to_dense());
+        assert_eq!(linear.mass.to_dense(), assembled.mass.to_dense());
+        assert_eq!(linear.gravity_load, assembled.gravity_load);
+        assert!(rotor.with_bearing_coefficients(&coefficients[1..]).is_err());
+        let twice = [coefficients[0], coefficients[0]];
+        assert!(rotor.with_bearing_coefficients(&twice).is_err());
+    }
 }

@@ -128,9 +128,9 @@ fn energy_and_period(speed: f64) {
         let s = sim.state();
         let r = sim.rotor();
         let mut mv = vec![0.0; s.u.len()];
-        r.mass.mul_vec(&s.ud, &mut mv).unwrap();
+        r.mass.mul_vec(&s.ud, &mut mv);
         let kinetic: f64 = 0.5 * s.ud.iter().zip(&mv).map(|(a, b)| a * b).sum::<f64>();
-        r.stiffness.mul_vec(&s.u, &mut mv).unwrap();
+        r.stiffness.mul_vec(&s.u, &mut mv);
         kinetic + 0.5 * s.u.iter().zip(&mv).map(|(a, b)| a * b).sum::<f64>()
     };
     let mut period_errors = Vec::new();

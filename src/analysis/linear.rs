@@ -38,8 +38,7 @@ pub fn static_deflection(rotor: &Rotor) -> Result<Vec<f64>, LinearError> {
         .lu()
         .map_err(|source| LinearError::Linalg { what, source })?;
     let mut q = rotor.gravity_load.clone();
-    lu.solve_in_place(&mut q)
-        .map_err(|source| LinearError::Linalg { what, source })?;
+    lu.solve_in_place(&mut q);
     Ok(rotor.dofs.expand(&q))
 }
 
@@ -50,23 +49,20 @@ pub fn unbalance_response(rotor: &Rotor, speed: f64) -> Result<Vec<Complex<f64>>
     linear_only(rotor)?;
     let what = "unbalance response";
     let lin = |source| LinearError::Linalg { what, source };
-    let d = damping_at_speed(rotor, speed).map_err(lin)?;
+    let d = damping_at_speed(rotor, speed);
     let mut z = map_to_complex(&rotor.stiffness);
     z.scale_add(
         Complex::new(-speed * speed, 0.0),
         &map_to_complex(&rotor.mass),
-    )
-    .map_err(lin)?;
-    z.scale_add(Complex::new(0.0, speed), &map_to_complex(&d))
-        .map_err(lin)?;
+    );
+    z.scale_add(Complex::new(0.0, speed), &map_to_complex(&d));
     let lu = z.lu().map_err(lin)?;
     let mut x: Vec<Complex<f64>> = rotor
         .unbalance_load()
         .into_iter()
         .map(|f| f * speed * speed)
         .collect();
-    lu.solve_in_place(&mut x)
-        .map_err(|source| LinearError::Linalg { what, source })?;
+    lu.solve_in_place(&mut x);
     Ok(rotor.dofs.expand(&x))
 }
 

@@ -13,6 +13,8 @@ use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::{ArnoldiOptions, BandMatrix, LinalgError, largest_eigenpairs, map_to_complex};
 use crate::rotor::Rotor;
 
+use super::linearize::linearized;
+
 type C64 = Complex<f64>;
 
 /// Direction of whirl of a mode relative to the spin.
@@ -104,32 +106,43 @@ pub fn modes_at(
     if rotor.nonlinear_bearings.is_empty() {
         return modes(rotor, speed, options);
     }
-    let linear = crate::analysis::linearize::linearized(rotor, speed, speed)?;
+    let linear = linearized(rotor, speed, speed)?;
     modes(&linear, speed, options)
 }
 
 /// `D = C + Ω G` as a band matrix.
-pub(crate) fn damping_at_speed(rotor: &Rotor, speed: f64) -> Result<BandMatrix<f64>, LinalgError> {
+pub(crate) fn damping_at_speed(rotor: &Rotor, speed: f64) -> BandMatrix<f64> {
     let mut d = rotor.damping.clone();
-    d.scale_add(speed, &rotor.gyroscopic)?;
-    Ok(d)
+    d.scale_add(speed, &rotor.gyroscopic);
+    d
 }
 
 /// `K + σ D + σ² M` in complex band storage.
-fn dynamic_stiffness(
-    rotor: &Rotor,
-    d: &BandMatrix<f64>,
-    sigma: C64,
-) -> Result<BandMatrix<C64>, LinalgError> {
+fn dynamic_stiffness(rotor: &Rotor, d: &BandMatrix<f64>, sigma: C64) -> BandMatrix<C64> {
     let mut q = map_to_complex(&rotor.stiffness);
-    q.scale_add(sigma, &map_to_complex(d))?;
-    q.scale_add(sigma * sigma, &map_to_complex(&rotor.mass))?;
-    Ok(q)
+    q.scale_add(sigma, &map_to_complex(d));
+    q.scale_add(sigma * sigma, &map_to_complex(&rotor.mass));
+    q
 }
 
 /// The lowest (or nearest-target) oscillating modes of `rotor` at spin speed
 /// `speed` (rad/s), by increasing damped frequency. Non-oscillating eigenvalues
 /// (rigid-body motion of a free rotor, overdamped modes) are not listed.
+///
+/// ```
+/// use rotor_bearing::analysis::modal::{ModalOptions, modes};
+/// use rotor_bearing::model::RotorModel;
+/// use rotor_bearing::rotor::Rotor;
+///
+/// // The built-in classic disk-on-shaft rotor, on linear bearings.
+/// let rotor = Rotor::new(RotorModel::default_model())?;
+/// let speed = 4000.0 * std::f64::consts::PI / 30.0; // rad/s
+/// let found = modes(&rotor, speed, &ModalOptions { modes: 2, ..ModalOptions::default() })?;
+/// assert_eq!(found.len(), 2);
+/// assert!(found[0].damped_frequency <= found[1].damped_frequency);
+/// println!("first mode {:.1} Hz, {}", found[0].damped_frequency / std::f64::consts::TAU, found[0].whirl.label());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mode>, ModalError> {
     if let Some(b) = rotor.nonlinear_bearings.first() {
         return Err(ModalError::NonlinearBearing(b.name.clone()));
@@ -150,36 +163,33 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
     }
     let lin = |source| ModalError::Linalg { speed, source };
     let n = rotor.dof_count();
-    let d = damping_at_speed(rotor, speed).map_err(lin)?;
+    let d = damping_at_speed(rotor, speed);
 
     // A shift on the imaginary axis finds the modes nearest the target; at zero a
     // singular K (free rotor) needs a small step off the origin along −Re.
     let mut sigma = C64::new(0.0, options.target_frequency);
-    let factor = match dynamic_stiffness(rotor, &d, sigma).map_err(lin)?.lu() {
+    let factor = match dynamic_stiffness(rotor, &d, sigma).lu() {
         Ok(f) => f,
         Err(LinalgError::Singular { .. }) => {
             sigma -= 1e-3 * frequency_scale(rotor);
-            dynamic_stiffness(rotor, &d, sigma)
-                .map_err(lin)?
-                .lu()
-                .map_err(lin)?
+            dynamic_stiffness(rotor, &d, sigma).lu().map_err(lin)?
         }
         Err(e) => return Err(lin(e)),
     };
     let mass_c = map_to_complex(&rotor.mass);
     let mut d_sigma = map_to_complex(&d);
-    d_sigma.scale_add(sigma, &mass_c).map_err(lin)?;
+    d_sigma.scale_add(sigma, &mass_c);
 
     let mut rhs = vec![C64::new(0.0, 0.0); n];
     let mut tmp = vec![C64::new(0.0, 0.0); n];
     let mut apply = |z: &[C64], out: &mut [C64]| -> Result<(), LinalgError> {
         let (c, dd) = z.split_at(n);
-        mass_c.mul_vec(dd, &mut rhs)?;
-        d_sigma.mul_vec(c, &mut tmp)?;
+        mass_c.mul_vec(dd, &mut rhs);
+        d_sigma.mul_vec(c, &mut tmp);
         for (r, t) in rhs.iter_mut().zip(&tmp) {
             *r = -(*r + *t);
         }
-        factor.solve_in_place(&mut rhs)?;
+        factor.solve_in_place(&mut rhs);
         let (a, b) = out.split_at_mut(n);
         a.copy_from_slice(&rhs);
         for ((bi, ci), ai) in b.iter_mut().zip(c).zip(rhs.iter()) {
@@ -216,8 +226,7 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
     let mut out: Vec<Mode> = eigen
         .into_iter()
         .map(|(lambda, z)| make_mode(rotor, &d, speed, lambda, &z[..n]))
-        .collect::<Result<_, _>>()
-        .map_err(lin)?;
+        .collect();
     out.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
     if options.target_frequency > 0.0 {
         let t = options.target_frequency;
@@ -244,13 +253,7 @@ fn frequency_scale(rotor: &Rotor) -> f64 {
         .sqrt()
 }
 
-fn make_mode(
-    rotor: &Rotor,
-    d: &BandMatrix<f64>,
-    speed: f64,
-    lambda: C64,
-    x: &[C64],
-) -> Result<Mode, LinalgError> {
+fn make_mode(rotor: &Rotor, d: &BandMatrix<f64>, speed: f64, lambda: C64, x: &[C64]) -> Mode {
     // Residual ‖(λ²M + λD + K) x‖ / (‖Kx‖ + |λ|‖Dx‖ + |λ|²‖Mx‖).
     let n = x.len();
     let mut r = vec![C64::new(0.0, 0.0); n];
@@ -264,7 +267,7 @@ fn make_mode(
     .enumerate()
     {
         let mut t = vec![C64::new(0.0, 0.0); n];
-        map_to_complex(mat).mul_vec(x, &mut t)?;
+        map_to_complex(mat).mul_vec(x, &mut t);
         norms[k] = coef.norm() * norm(&t);
         for (ri, ti) in r.iter_mut().zip(&t) {
             *ri += coef * ti;
@@ -298,7 +301,7 @@ fn make_mode(
     } else {
         f64::INFINITY
     };
-    Ok(Mode {
+    Mode {
         eigenvalue: lambda,
         natural_frequency,
         damped_frequency,
@@ -307,7 +310,7 @@ fn make_mode(
         whirl: classify_whirl(&shape, speed),
         shape,
         residual,
-    })
+    }
 }
 
 fn norm(v: &[C64]) -> f64 {

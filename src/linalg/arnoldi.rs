@@ -84,12 +84,11 @@ pub fn largest_eigenpairs(
     let mut rng = Lcg::new();
     let mut start = match &opts.start {
         Some(s) => {
-            if s.len() != n {
-                return Err(LinalgError::DimensionMismatch {
-                    expected: n,
-                    found: s.len(),
-                });
-            }
+            assert!(
+                s.len() == n,
+                "dimension mismatch: start vector has length {}, expected {n}",
+                s.len()
+            );
             if !s.iter().all(|z| z.re.is_finite() && z.im.is_finite()) {
                 return Err(LinalgError::NotFinite);
             }
@@ -580,23 +579,24 @@ mod tests {
         let n = 1000;
         let mut a = BandMatrix::<f64>::new(n, 1, 1);
         for i in 0..n {
-            a.set(i, i, 2.0).expect("in band");
+            a.set(i, i, 2.0);
             if i + 1 < n {
-                a.set(i, i + 1, -1.0).expect("in band");
-                a.set(i + 1, i, -1.0).expect("in band");
+                a.set(i, i + 1, -1.0);
+                a.set(i + 1, i, -1.0);
             }
         }
         let sigma = 0.0;
         let mut shifted = map_to_complex(&a);
         let mut id = BandMatrix::<C>::new(n, 0, 0);
         for i in 0..n {
-            id.set(i, i, c(1.0, 0.0)).expect("in band");
+            id.set(i, i, c(1.0, 0.0));
         }
-        shifted.scale_add(c(-sigma, 0.0), &id).expect("band");
+        shifted.scale_add(c(-sigma, 0.0), &id);
         let lu = shifted.lu().expect("nonsingular");
         let mut apply = |x: &[C], y: &mut [C]| {
             y.copy_from_slice(x);
-            lu.solve_in_place(y)
+            lu.solve_in_place(y);
+            Ok::<(), LinalgError>(())
         };
         let pairs =
             largest_eigenpairs(n, 5, &mut apply, &ArnoldiOptions::default()).expect("converged");
@@ -700,12 +700,12 @@ mod tests {
         let k = [1.0, 1.0, 4.0, 4.0];
         let mut a = BandMatrix::<C>::new(8, 4, 4);
         for (i, &ki) in k.iter().enumerate() {
-            a.set(i, i + 4, c(1.0, 0.0)).expect("in band");
-            a.set(i + 4, i, c(-ki, 0.0)).expect("in band");
+            a.set(i, i + 4, c(1.0, 0.0));
+            a.set(i + 4, i, c(-ki, 0.0));
         }
         for b in [4, 6] {
-            a.set(b, b + 1, c(-omega, 0.0)).expect("in band");
-            a.set(b + 1, b, c(omega, 0.0)).expect("in band");
+            a.set(b, b + 1, c(-omega, 0.0));
+            a.set(b + 1, b, c(omega, 0.0));
         }
         let dense = a.to_dense();
         let reference = dense_eigenvalues(&dense);
@@ -716,7 +716,10 @@ mod tests {
             );
         }
 
-        let mut direct = |x: &[C], y: &mut [C]| a.mul_vec(x, y);
+        let mut direct = |x: &[C], y: &mut [C]| {
+            a.mul_vec(x, y);
+            Ok::<(), LinalgError>(())
+        };
         let pairs =
             largest_eigenpairs(8, 8, &mut direct, &ArnoldiOptions::default()).expect("converged");
         check_pairs(&pairs, 8, 1e-10);
@@ -726,12 +729,13 @@ mod tests {
         let sigma = c(0.0, 0.5);
         let mut shifted = a.clone();
         for i in 0..8 {
-            shifted.add(i, i, -sigma).expect("in band");
+            shifted.add(i, i, -sigma);
         }
         let lu = shifted.lu().expect("nonsingular");
         let mut inverse = |x: &[C], y: &mut [C]| {
             y.copy_from_slice(x);
-            lu.solve_in_place(y)
+            lu.solve_in_place(y);
+            Ok::<(), LinalgError>(())
         };
         let pairs =
             largest_eigenpairs(8, 4, &mut inverse, &ArnoldiOptions::default()).expect("converged");
@@ -743,7 +747,7 @@ mod tests {
         assert_matches(&found, &nearest, 1e-12);
         for (p, lambda) in pairs.iter().zip(&found) {
             let mut ax = vec![ZERO; 8];
-            a.mul_vec(&p.vector, &mut ax).expect("dims");
+            a.mul_vec(&p.vector, &mut ax);
             let r: Vec<C> = ax
                 .iter()
                 .zip(&p.vector)
@@ -769,17 +773,6 @@ mod tests {
             largest_eigenpairs(5, 6, &mut id, &opts),
             Err(LinalgError::InvalidArgument(_))
         ));
-        let bad_start = ArnoldiOptions {
-            start: Some(vec![ZERO; 4]),
-            ..ArnoldiOptions::default()
-        };
-        assert_eq!(
-            largest_eigenpairs(5, 1, &mut id, &bad_start),
-            Err(LinalgError::DimensionMismatch {
-                expected: 5,
-                found: 4
-            })
-        );
         let mut nan = |_: &[C], y: &mut [C]| {
             y.fill(c(f64::NAN, 0.0));
             Ok(())

@@ -77,39 +77,55 @@ impl<T: Scalar> BandMatrix<T> {
         self.index(i, j).map_or_else(T::zero, |k| self.data[k])
     }
 
-    /// `A[i, j] += v`; error if `(i, j)` is outside the band.
-    pub fn add(&mut self, i: usize, j: usize, v: T) -> Result<(), LinalgError> {
-        let k = self
-            .index(i, j)
-            .ok_or(LinalgError::OutOfBand { row: i, col: j })?;
+    /// `A[i, j] += v`.
+    ///
+    /// # Panics
+    /// If `(i, j)` lies outside the stored band (a programming error).
+    pub fn add(&mut self, i: usize, j: usize, v: T) {
+        let k = self.band_index(i, j);
         self.data[k] += v;
-        Ok(())
     }
 
-    /// `A[i, j] = v`; error if `(i, j)` is outside the band.
-    pub fn set(&mut self, i: usize, j: usize, v: T) -> Result<(), LinalgError> {
-        let k = self
-            .index(i, j)
-            .ok_or(LinalgError::OutOfBand { row: i, col: j })?;
+    /// `A[i, j] = v`.
+    ///
+    /// # Panics
+    /// If `(i, j)` lies outside the stored band (a programming error).
+    pub fn set(&mut self, i: usize, j: usize, v: T) {
+        let k = self.band_index(i, j);
         self.data[k] = v;
-        Ok(())
+    }
+
+    /// Storage index of `(i, j)`, asserting that it lies in the band.
+    fn band_index(&self, i: usize, j: usize) -> usize {
+        match self.index(i, j) {
+            Some(k) => k,
+            None => panic!(
+                "entry ({i}, {j}) lies outside the band (n = {}, kl = {}, ku = {})",
+                self.n, self.kl, self.ku
+            ),
+        }
     }
 
     /// `y = A x` without allocation.
-    pub fn mul_vec(&self, x: &[T], y: &mut [T]) -> Result<(), LinalgError> {
-        check_len(self.n, y.len())?;
+    ///
+    /// # Panics
+    /// If `x` or `y` does not have length `n`.
+    pub fn mul_vec(&self, x: &[T], y: &mut [T]) {
+        check_len("y of mul_vec", self.n, y.len());
         y.fill(T::zero());
-        self.mul_add_vec(T::one(), x, y)
+        self.mul_add_vec(T::one(), x, y);
     }
 
     /// `y += alpha A x` without allocation.
-    pub fn mul_add_vec(&self, alpha: T, x: &[T], y: &mut [T]) -> Result<(), LinalgError> {
-        check_len(self.n, x.len())?;
-        check_len(self.n, y.len())?;
+    ///
+    /// # Panics
+    /// If `x` or `y` does not have length `n`.
+    pub fn mul_add_vec(&self, alpha: T, x: &[T], y: &mut [T]) {
+        check_len("x of mul_add_vec", self.n, x.len());
+        check_len("y of mul_add_vec", self.n, y.len());
         for (j, &xj) in x.iter().enumerate() {
             self.add_column(j, alpha * xj, y);
         }
-        Ok(())
     }
 
     /// `y += A x + B z` in one pass over the columns of both bands, with
@@ -121,9 +137,9 @@ impl<T: Scalar> BandMatrix<T> {
         b: &BandMatrix<T>,
         y: &mut [T],
         xz: impl Fn(usize) -> (T, T),
-    ) -> Result<(), LinalgError> {
-        check_len(a.n, y.len())?;
-        check_len(b.n, y.len())?;
+    ) {
+        check_len("y of mul_add_pair", a.n, y.len());
+        check_len("y of mul_add_pair", b.n, y.len());
         let (n, kl, ku, ldab) = (a.n, a.kl, a.ku, a.ldab);
         let same_band = b.kl == kl && b.ku == ku;
         for j in 0..n {
@@ -142,7 +158,6 @@ impl<T: Scalar> BandMatrix<T> {
                 *yi += p * xj + q * zj;
             }
         }
-        Ok(())
     }
 
     /// `y += A[:, j] x_j`.
@@ -156,10 +171,10 @@ impl<T: Scalar> BandMatrix<T> {
     }
 
     /// `self = other` without allocation; the band of `other` must lie within
-    /// the band of `self`.
-    pub fn assign(&mut self, other: &BandMatrix<T>) -> Result<(), LinalgError> {
+    /// the band of `self` (panics otherwise).
+    pub fn assign(&mut self, other: &BandMatrix<T>) {
         self.data.fill(T::zero());
-        self.scale_add(T::one(), other)
+        self.scale_add(T::one(), other);
     }
 
     /// Dense copy (for tests and small problems).
@@ -167,12 +182,21 @@ impl<T: Scalar> BandMatrix<T> {
         DMatrix::from_fn(self.n, self.n, |i, j| self.get(i, j))
     }
 
-    /// `self += alpha * other`; the band of `other` must lie within the band of `self`.
-    pub fn scale_add(&mut self, alpha: T, other: &BandMatrix<T>) -> Result<(), LinalgError> {
-        check_len(self.n, other.n)?;
-        if other.kl > self.kl || other.ku > self.ku {
-            return Err(LinalgError::IncompatibleBand);
-        }
+    /// `self += alpha * other`.
+    ///
+    /// # Panics
+    /// If the dimensions differ or the band of `other` is not contained in the
+    /// band of `self` (programming errors).
+    pub fn scale_add(&mut self, alpha: T, other: &BandMatrix<T>) {
+        check_len("operand of scale_add", self.n, other.n);
+        assert!(
+            other.kl <= self.kl && other.ku <= self.ku,
+            "scale_add: operand band (kl = {}, ku = {}) is not contained in the target band (kl = {}, ku = {})",
+            other.kl,
+            other.ku,
+            self.kl,
+            self.ku
+        );
         let (kv, okv) = (self.ku, other.ku);
         for j in 0..self.n {
             let i0 = j.saturating_sub(other.ku);
@@ -185,7 +209,6 @@ impl<T: Scalar> BandMatrix<T> {
                 *d += alpha * s;
             }
         }
-        Ok(())
     }
 
     /// LU factorization with partial pivoting, `P A = L U`, of a copy of `self`.
@@ -306,12 +329,12 @@ pub fn map_to_complex(a: &BandMatrix<f64>) -> BandMatrix<Complex<f64>> {
     }
 }
 
-fn check_len(expected: usize, found: usize) -> Result<(), LinalgError> {
-    if expected == found {
-        Ok(())
-    } else {
-        Err(LinalgError::DimensionMismatch { expected, found })
-    }
+/// Assert that `what` has the dimension `expected` (a programming error otherwise).
+fn check_len(what: &str, expected: usize, found: usize) {
+    assert!(
+        expected == found,
+        "dimension mismatch: {what} has length {found}, expected {expected}"
+    );
 }
 
 /// Banded LU factors `P A = L U` produced by [`BandMatrix::lu`] (LAPACK layout,
@@ -334,9 +357,12 @@ impl<T: Scalar> BandLu<T> {
 
     /// Solves `A x = b` in place (LAPACK `xGBTRS`, no transpose), no allocation.
     /// Cost `O(n (2 kl + ku))`.
-    pub fn solve_in_place(&self, b: &mut [T]) -> Result<(), LinalgError> {
+    ///
+    /// # Panics
+    /// If `b` does not have length `n`.
+    pub fn solve_in_place(&self, b: &mut [T]) {
         let (n, kl, ldab) = (self.n, self.kl, self.ldab);
-        check_len(n, b.len())?;
+        check_len("right-hand side", n, b.len());
         let kv = kl + self.ku;
         if kl > 0 {
             for j in 0..n.saturating_sub(1) {
@@ -363,7 +389,6 @@ impl<T: Scalar> BandLu<T> {
                 *bi -= u * bj;
             }
         }
-        Ok(())
     }
 }
 
@@ -426,7 +451,7 @@ mod tests {
                 } else if pivot && i == partner {
                     v += T::from_real(4.0);
                 }
-                a.set(i, j, v).expect("inside band");
+                a.set(i, j, v);
             }
         }
         a
@@ -445,7 +470,7 @@ mod tests {
             let z: Vec<f64> = (0..n).map(|_| rng.uniform()).collect();
             let y0: Vec<f64> = (0..n).map(|_| rng.uniform()).collect();
             let mut y = y0.clone();
-            BandMatrix::mul_add_pair(&a, &b, &mut y, |j| (x[j], z[j])).unwrap();
+            BandMatrix::mul_add_pair(&a, &b, &mut y, |j| (x[j], z[j]));
             let want = nalgebra::DVector::from_column_slice(&y0)
                 + a.to_dense() * nalgebra::DVector::from_column_slice(&x)
                 + b.to_dense() * nalgebra::DVector::from_column_slice(&z);
@@ -472,9 +497,9 @@ mod tests {
             assert!(swaps >= (n - 1) / 2, "only {swaps} row interchanges");
         }
         let mut x = b.clone();
-        lu.solve_in_place(&mut x).expect("dimensions match");
+        lu.solve_in_place(&mut x);
         let mut ax = vec![T::zero(); n];
-        a.mul_vec(&x, &mut ax).expect("dimensions match");
+        a.mul_vec(&x, &mut ax);
         let r: Vec<T> = ax.iter().zip(&b).map(|(&p, &q)| p - q).collect();
         let rel = norm(&r) / norm(&b);
         assert!(rel < 1e-12, "n={n} kl={kl} ku={ku}: residual {rel:e}");
@@ -533,12 +558,12 @@ mod tests {
         let n = 10;
         let mut a = BandMatrix::<f64>::new(n, 1, 1);
         for k in (0..n).step_by(2) {
-            a.set(k, k + 1, 2.0).expect("in band");
-            a.set(k + 1, k, 3.0).expect("in band");
+            a.set(k, k + 1, 2.0);
+            a.set(k + 1, k, 3.0);
         }
         let lu = a.lu().expect("nonsingular");
         let mut x: Vec<f64> = (0..n).map(|i| i as f64 + 1.0).collect();
-        lu.solve_in_place(&mut x).expect("dims");
+        lu.solve_in_place(&mut x);
         for k in (0..n).step_by(2) {
             assert!((x[k] - (k as f64 + 2.0) / 3.0).abs() < 1e-15);
             assert!((x[k + 1] - (k as f64 + 1.0) / 2.0).abs() < 1e-15);
@@ -551,8 +576,7 @@ mod tests {
         for i in 0..6_usize {
             for j in i.saturating_sub(1)..=(i + 1).min(5) {
                 if j != 3 {
-                    a.set(i, j, 1.0 + i as f64 + 2.0 * j as f64)
-                        .expect("in band");
+                    a.set(i, j, 1.0 + i as f64 + 2.0 * j as f64);
                 }
             }
         }
@@ -566,10 +590,10 @@ mod tests {
         let mut a = BandMatrix::<Complex<f64>>::new(n, 1, 1);
         for i in 0..n {
             let d = if i == 0 || i == n - 1 { 1.0 } else { 2.0 };
-            a.set(i, i, Complex::new(d, 0.0)).expect("in band");
+            a.set(i, i, Complex::new(d, 0.0));
             if i + 1 < n {
-                a.set(i, i + 1, Complex::new(-1.0, 0.0)).expect("in band");
-                a.set(i + 1, i, Complex::new(-1.0, 0.0)).expect("in band");
+                a.set(i, i + 1, Complex::new(-1.0, 0.0));
+                a.set(i + 1, i, Complex::new(-1.0, 0.0));
             }
         }
         assert_eq!(a.lu().err(), Some(LinalgError::Singular { column: n - 1 }));
@@ -583,11 +607,10 @@ mod tests {
     fn non_finite_rejected() {
         let mut rng = Rng(5);
         let mut a: BandMatrix<f64> = random_band(&mut rng, 20, 2, 3, false);
-        a.set(7, 9, f64::NAN).expect("in band");
+        a.set(7, 9, f64::NAN);
         assert_eq!(a.lu().err(), Some(LinalgError::NotFinite));
         let mut c: BandMatrix<Complex<f64>> = random_band(&mut rng, 20, 2, 3, false);
-        c.set(4, 3, Complex::new(1.0, f64::INFINITY))
-            .expect("in band");
+        c.set(4, 3, Complex::new(1.0, f64::INFINITY));
         assert_eq!(c.lu().err(), Some(LinalgError::NotFinite));
     }
 
@@ -598,51 +621,52 @@ mod tests {
             let a: BandMatrix<Complex<f64>> = random_band(&mut rng, n, kl, ku, false);
             let x: Vec<Complex<f64>> = (0..n).map(|_| Complex::random(&mut rng)).collect();
             let mut y = vec![Complex::new(0.0, 0.0); n];
-            a.mul_vec(&x, &mut y).expect("dims");
+            a.mul_vec(&x, &mut y);
             let yd = a.to_dense() * nalgebra::DVector::from_column_slice(&x);
             for (p, q) in y.iter().zip(yd.iter()) {
                 assert!((p - q).norm() < 1e-13, "n={n} kl={kl} ku={ku}");
             }
         }
+    }
+
+    #[test]
+    #[should_panic(expected = "dimension mismatch")]
+    fn mul_vec_of_the_wrong_length_panics() {
         let a = BandMatrix::<f64>::new(4, 1, 1);
-        let mut y = vec![0.0; 3];
-        assert_eq!(
-            a.mul_vec(&[1.0; 4], &mut y),
-            Err(LinalgError::DimensionMismatch {
-                expected: 4,
-                found: 3
-            })
-        );
+        a.mul_vec(&[1.0; 4], &mut [0.0; 3]);
+    }
+
+    #[test]
+    #[should_panic(expected = "outside the band")]
+    fn add_outside_the_band_panics() {
+        BandMatrix::<f64>::new(5, 1, 2).add(3, 0, 1.0);
+    }
+
+    #[test]
+    #[should_panic(expected = "not contained")]
+    fn scale_add_of_a_wider_band_panics() {
+        let a = BandMatrix::<f64>::new(5, 1, 2);
+        BandMatrix::<f64>::new(5, 1, 1).scale_add(1.0, &a);
     }
 
     #[test]
     fn band_access_and_scale_add() {
         let mut a = BandMatrix::<f64>::new(5, 1, 2);
         assert_eq!((a.n(), a.kl(), a.ku()), (5, 1, 2));
-        assert_eq!(
-            a.add(3, 0, 1.0),
-            Err(LinalgError::OutOfBand { row: 3, col: 0 })
-        );
-        assert_eq!(
-            a.set(0, 3, 1.0),
-            Err(LinalgError::OutOfBand { row: 0, col: 3 })
-        );
-        assert!(a.set(5, 5, 1.0).is_err());
-        a.set(1, 0, 2.0).expect("in band");
-        a.add(1, 0, 0.5).expect("in band");
-        a.set(0, 2, 4.0).expect("in band");
+        a.set(1, 0, 2.0);
+        a.add(1, 0, 0.5);
+        a.set(0, 2, 4.0);
         assert_eq!(a.get(1, 0), 2.5);
         assert_eq!(a.get(0, 2), 4.0);
         assert_eq!(a.get(4, 0), 0.0);
         assert_eq!(a.get(9, 9), 0.0);
 
         let mut b = BandMatrix::<f64>::new(5, 1, 1);
-        b.set(1, 0, 1.0).expect("in band");
-        b.set(2, 2, 3.0).expect("in band");
-        a.scale_add(2.0, &b).expect("band contained");
+        b.set(1, 0, 1.0);
+        b.set(2, 2, 3.0);
+        a.scale_add(2.0, &b);
         assert_eq!(a.get(1, 0), 4.5);
         assert_eq!(a.get(2, 2), 6.0);
-        assert_eq!(b.scale_add(1.0, &a), Err(LinalgError::IncompatibleBand));
 
         let z = a.zeroed_like();
         assert_eq!((z.n(), z.kl(), z.ku()), (5, 1, 2));

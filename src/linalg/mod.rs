@@ -11,15 +11,11 @@ pub mod band;
 pub use arnoldi::{ArnoldiOptions, EigenPair, LinearOperator, largest_eigenpairs};
 pub use band::{BandLu, BandMatrix, Scalar, map_to_complex};
 
-/// Errors reported by the linear-algebra routines.
+/// Numerical failures of the linear-algebra routines. Programming errors (an
+/// entry outside the band, operands of the wrong dimension or band) are not
+/// values: the routines panic on them with a message naming the operands.
 #[derive(Debug, Clone, PartialEq)]
 pub enum LinalgError {
-    /// Entry `(row, col)` lies outside the stored band (or outside the matrix).
-    OutOfBand { row: usize, col: usize },
-    /// A vector or matrix has the wrong dimension.
-    DimensionMismatch { expected: usize, found: usize },
-    /// The band of the second operand is not contained in the band of the first.
-    IncompatibleBand,
     /// Zero or negligible pivot met while factorizing column `column` (0-based).
     Singular { column: usize },
     /// A NaN or infinite value was met in the input or produced by the operator.
@@ -35,13 +31,6 @@ pub enum LinalgError {
 impl fmt::Display for LinalgError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::OutOfBand { row, col } => {
-                write!(f, "entry ({row}, {col}) lies outside the band")
-            }
-            Self::DimensionMismatch { expected, found } => {
-                write!(f, "dimension mismatch: expected {expected}, found {found}")
-            }
-            Self::IncompatibleBand => write!(f, "operand band is not contained in target band"),
             Self::Singular { column } => write!(f, "matrix is singular at column {column}"),
             Self::NotFinite => write!(f, "non-finite value (NaN or infinity) encountered"),
             Self::NotConverged { converged, wanted } => write!(

@@ -48,11 +48,18 @@
 //! beyond the clearance) is cut in half, down to `2^-max_step_cuts`. A step that
 //! still fails is an error: an unconverged state is never returned.
 
+mod condense;
 mod dense;
+mod factor;
+mod newmark;
+mod newton;
 pub mod run;
 mod simulator;
+mod sites;
+pub mod statics;
 
 pub use run::{SpeedProfile, record};
 pub use simulator::{
     BearingOutput, Outputs, ProbeOutput, SimState, Simulator, SolverError, SolverOptions, StepStats,
 };
+pub use statics::{Equilibrium, equilibrium};

@@ -1,0 +1,433 @@
+//! Newton–Raphson on the bearing nonlinearity within a Newmark step: the
+//! condensed Newton on the journal and pad coordinates (exact factorization)
+//! and the modified Newton on the full residual (stale factorization), both
+//! closing with a Schur complement on the bearing DOFs (see [`crate::solver`]).
+
+use crate::bearing::BearingEval;
+use crate::fe::DOF_PER_NODE;
+use crate::linalg::LinalgError;
+
+use super::condense::condense_internal;
+use super::dense::{lu_in_place, lu_solve};
+use super::factor::Factor;
+use super::newmark::Displacement;
+use super::simulator::{Simulator, SolverError};
+use super::sites::Sites;
+
+/// Schur solve of a factored `A` bordered by the frozen bearing blocks, on the
+/// `s = s_j + s_p` bearing DOFs (journal, then pad).
+#[derive(Debug)]
+pub(super) struct SchurSolve {
+    /// LU of the dense bearing-sized system (row-major `s × s`).
+    matrix: Vec<f64>,
+    /// `matrix` holds the LU factors for the current Jacobians and factorization.
+    pub ready: bool,
+    /// Right-hand side, then solution: journal forces `f`, then pad increments.
+    pub rhs: Vec<f64>,
+    pivots: Vec<usize>,
+    /// `Eᵀ y`: the journal entries of `A⁻¹ y`.
+    ey: Vec<f64>,
+    /// `A⁻¹ E f` (length `n`).
+    correction: Vec<f64>,
+}
+
+impl SchurSolve {
+    /// Buffers for `n` rotor DOFs and the bearings `sites`.
+    pub fn new(n: usize, sites: &Sites) -> Self {
+        let s = sites.n_journal + sites.n_internal;
+        Self {
+            matrix: vec![0.0; s * s],
+            ready: false,
+            rhs: vec![0.0; s],
+            pivots: vec![0; s],
+            ey: vec![0.0; sites.n_journal],
+            correction: vec![0.0; n],
+        }
+    }
+
+    /// Solve `J [δu; δp] = [y; dp]` in place, `J` = factored `A` plus the frozen
+    /// bearing blocks `(K_b + a1 C_b)` of `sites` (`jk`, `jc`); with
+    /// `journal_in_a` only the pad blocks are added (the journal blocks are
+    /// already in `A`). Eliminating `δu = A⁻¹ (y − E f)` leaves the dense system
+    /// `f + ΔK_jj G f − K_jp δp = ΔK_jj Eᵀ A⁻¹ y`,
+    /// `−K_pj G f + K_pp δp = dp − K_pj Eᵀ A⁻¹ y` (`G = Eᵀ A⁻¹ E`), factored once
+    /// per Jacobian refresh.
+    pub fn solve(
+        &mut self,
+        sites: &Sites,
+        factor: &Factor,
+        a1: f64,
+        journal_in_a: bool,
+        y: &mut [f64],
+        dp: &mut [f64],
+    ) -> Result<(), SolverError> {
+        let sj = sites.n_journal;
+        let s = sj + sites.n_internal;
+        factor.lu.solve_in_place(y);
+        if s == 0 {
+            return Ok(());
+        }
+        for (k, site) in sites.list.iter().enumerate() {
+            self.ey[2 * k] = y[site.journal[0]];
+            self.ey[2 * k + 1] = y[site.journal[1]];
+        }
+        // The matrix depends only on the frozen Jacobians and G: factor it once per
+        // refresh (modified Newton), then only the right-hand side changes.
+        if !self.ready {
+            let small = &mut self.matrix;
+            small.fill(0.0);
+            for (k, site) in sites.list.iter().enumerate() {
+                let n2 = site.eval.n();
+                let jac = |i: usize, j: usize| site.jk[i * n2 + j] + a1 * site.jc[i * n2 + j];
+                let jr = 2 * k;
+                let pr = sj + site.offset;
+                for i in 0..2 {
+                    // Rows of f: f + ΔK_jj G f − K_jp δp = ΔK_jj Eᵀy.
+                    small[(jr + i) * s + jr + i] += 1.0;
+                    if !journal_in_a {
+                        for a in 0..2 {
+                            let kia = jac(i, a);
+                            for c in 0..sj {
+                                small[(jr + i) * s + c] += kia * factor.g[(jr + a) * sj + c];
+                            }
+                        }
+                    }
+                    for m in 0..site.internal {
+                        small[(jr + i) * s + pr + m] -= jac(i, 2 + m);
+                    }
+                }
+                for m in 0..site.internal {
+                    // Rows of δp: −K_pj G f + K_pp δp = r_p − K_pj Eᵀy.
+                    let row = pr + m;
+                    for a in 0..2 {
+                        let kma = jac(2 + m, a);
+                        for c in 0..sj {
+                            small[row * s + c] -= kma * factor.g[(jr + a) * sj + c];
+                        }
+                    }
+                    for l in 0..site.internal {
+                        small[row * s + pr + l] += jac(2 + m, 2 + l);
+                    }
+                }
+            }
+            if !lu_in_place(small, s, &mut self.pivots) {
+                return Err(SolverError::Linalg(LinalgError::Singular { column: 0 }));
+            }
+            self.ready = true;
+        }
+        self.rhs.fill(0.0);
+        for (k, site) in sites.list.iter().enumerate() {
+            let n2 = site.eval.n();
+            let jac = |i: usize, j: usize| site.jk[i * n2 + j] + a1 * site.jc[i * n2 + j];
+            let jr = 2 * k;
+            if !journal_in_a {
+                for i in 0..2 {
+                    for a in 0..2 {
+                        self.rhs[jr + i] += jac(i, a) * self.ey[jr + a];
+                    }
+                }
+            }
+            for m in 0..site.internal {
+                let row = sj + site.offset + m;
+                for a in 0..2 {
+                    self.rhs[row] -= jac(2 + m, a) * self.ey[jr + a];
+                }
+                self.rhs[row] += dp[site.offset + m];
+            }
+        }
+        lu_solve(&self.matrix, s, &self.pivots, &mut self.rhs);
+        // δu = A⁻¹ r − A⁻¹ E f: a second solve with the journal forces f.
+        if sj > 0 {
+            let z = &mut self.correction;
+            z.fill(0.0);
+            for (k, site) in sites.list.iter().enumerate() {
+                z[site.journal[0]] += self.rhs[2 * k];
+                z[site.journal[1]] += self.rhs[2 * k + 1];
+            }
+            factor.lu.solve_in_place(z);
+            for (yi, zi) in y.iter_mut().zip(z.iter()) {
+                *yi -= zi;
+            }
+        }
+        dp.copy_from_slice(&self.rhs[sj..]);
+        Ok(())
+    }
+}
+
+/// Buffers of the condensed Newton on the journal DOFs: bearing forces `F_j`,
+/// pad terms `K_jp K_pp⁻¹ (−F_p)`, condensed 2×2 stiffnesses (4 per bearing),
+/// the matrix `I + G K_c` with its pivots, and the right-hand side / increment.
+#[derive(Debug)]
+pub(super) struct CondensedWork {
+    fj: Vec<f64>,
+    wv: Vec<f64>,
+    kc: Vec<f64>,
+    cj: Vec<f64>,
+    cj_piv: Vec<usize>,
+    cj_rhs: Vec<f64>,
+}
+
+impl CondensedWork {
+    /// Buffers for `n_journal` journal DOFs.
+    pub fn new(n_journal: usize) -> Self {
+        Self {
+            fj: vec![0.0; n_journal],
+            wv: vec![0.0; n_journal],
+            kc: vec![0.0; 2 * n_journal],
+            cj: vec![0.0; n_journal * n_journal],
+            cj_piv: vec![0; n_journal],
+            cj_rhs: vec![0.0; n_journal],
+        }
+    }
+}
+
+impl Simulator {
+    /// Newton–Raphson on the bearing coordinates alone, with an exact
+    /// factorization of `A = K + a1 (C + Ω G) + a0 M`. The rotor equations of
+    /// the step are `A u = b + E F` with the Newmark effective load
+    /// `b = f + M (a0 u_n + a2 u̇_n + ü_n) + (C + Ω G)(a1 u_n + u̇_n)`, so
+    /// `u = u_lin + A⁻¹ E F` with `u_lin = A⁻¹ b`: the journal coordinates
+    /// `j = Eᵀ u` and the pad tilts `p` solve the small system
+    /// `j − j_lin − G F_j(j, p) = 0`, `F_p(j, p) = 0` (`G = Eᵀ A⁻¹ E`).
+    ///
+    /// Full Newton on it: pads are condensed bearing by bearing,
+    /// `K_c = K_jj − K_jp K_pp⁻¹ K_pj` (all `K` here are `K + a1 C`), leaving
+    /// `(I + G K_c) δj = j_lin − j + G (F_j + K_jp K_pp⁻¹ (−F_p))`. The step stops
+    /// when the correction is below the tolerance; the journal forces there are
+    /// taken to first order, `F_j − K_c δj + K_jp K_pp⁻¹ (−F_p)`, which satisfies
+    /// the condensed equation exactly. A step costs two banded mat-vecs and two
+    /// banded solves whatever the number of iterations.
+    pub(super) fn newton_condensed(
+        &mut self,
+        h: f64,
+        t1: f64,
+        speed1: f64,
+        f: &Factor,
+    ) -> Result<Option<f64>, SolverError> {
+        let (a0, a1, a2) = (4.0 / (h * h), 2.0 / h, 4.0 / h);
+        let sj = self.sites.n_journal;
+        {
+            let (s, w) = (&self.state, &mut self.newmark);
+            w.lin.copy_from_slice(&w.f_ext);
+            crate::linalg::BandMatrix::mul_add_pair(
+                &self.rotor.mass,
+                &f.damping,
+                &mut w.lin,
+                |j| (a0 * s.u[j] + a2 * s.ud[j] + s.udd[j], a1 * s.u[j] + s.ud[j]),
+            );
+            f.lu.solve_in_place(&mut w.lin);
+        }
+        if sj == 0 {
+            self.stats.iterations += 1;
+            self.set_displacement_and_rates(h, Displacement::Linear);
+            return Ok(None);
+        }
+        let tol = self.options.tolerance;
+        let singular = || SolverError::Linalg(LinalgError::Singular { column: 0 });
+        let length_scale = self.sites.length_scale;
+        let mut last = f64::INFINITY;
+        for _ in 0..self.options.max_iterations {
+            self.stats.iterations += 1;
+            let (s, w, c) = (&self.state, &mut self.newmark, &mut self.condensed);
+            for (k, site) in self.sites.list.iter_mut().enumerate() {
+                for (a, &dof) in site.journal.iter().enumerate() {
+                    site.q[a] = w.u[dof];
+                    site.qd[a] = a1 * (w.u[dof] - s.u[dof]) - s.ud[dof];
+                }
+                for m in 0..site.internal {
+                    let i = site.offset + m;
+                    site.q[2 + m] = w.p[i];
+                    site.qd[2 + m] = a1 * (w.p[i] - s.p[i]) - s.pd[i];
+                }
+                site.bearing
+                    .evaluate(&site.q, &site.qd, speed1, &mut site.eval)
+                    .map_err(|source| SolverError::Bearing {
+                        name: site.name.clone(),
+                        time: t1,
+                        source,
+                    })?;
+                let ev: &BearingEval = &site.eval;
+                let (kc, wv) =
+                    condense_internal(ev, a1, &mut site.kpp, &mut site.kpp_piv, &mut site.kpp_x)
+                        .ok_or_else(singular)?;
+                c.kc[4 * k..4 * k + 4].copy_from_slice(&kc);
+                c.fj[2 * k..2 * k + 2].copy_from_slice(&ev.force[..2]);
+                c.wv[2 * k..2 * k + 2].copy_from_slice(&wv);
+            }
+            for (r, &dof) in self.sites.journal_dofs.iter().enumerate() {
+                let g = &f.g[r * sj..(r + 1) * sj];
+                let mut rhs = w.lin[dof] - w.u[dof];
+                for (gc, (fc, wc)) in g.iter().zip(c.fj.iter().zip(&c.wv)) {
+                    rhs += gc * (fc + wc);
+                }
+                c.cj_rhs[r] = rhs;
+                for k in 0..sj / 2 {
+                    for i in 0..2 {
+                        let mut v = if r == 2 * k + i { 1.0 } else { 0.0 };
+                        for a in 0..2 {
+                            v += g[2 * k + a] * c.kc[4 * k + 2 * a + i];
+                        }
+                        c.cj[r * sj + 2 * k + i] = v;
+                    }
+                }
+            }
+            if !lu_in_place(&mut c.cj, sj, &mut c.cj_piv) {
+                return Err(singular());
+            }
+            lu_solve(&c.cj, sj, &c.cj_piv, &mut c.cj_rhs);
+            let (mut inc, mut mag): (f64, f64) = (0.0, 0.0);
+            for (&dof, d) in self.sites.journal_dofs.iter().zip(&c.cj_rhs) {
+                inc = inc.max(d.abs());
+                mag = mag.max(w.u[dof].abs());
+                w.u[dof] += d;
+            }
+            for (k, site) in self.sites.list.iter().enumerate() {
+                let mi = site.internal;
+                let (dx, dy) = (c.cj_rhs[2 * k], c.cj_rhs[2 * k + 1]);
+                for m in 0..mi {
+                    let x = &site.kpp_x;
+                    let d = -x[2 * mi + m] - x[m] * dx - x[mi + m] * dy;
+                    let p = &mut w.p[site.offset + m];
+                    inc = inc.max(d.abs());
+                    mag = mag.max(p.abs());
+                    *p += d;
+                }
+            }
+            let scale = mag.max(length_scale);
+            if inc <= tol * scale {
+                // u = u_lin + A⁻¹ E F_j with the first-order journal forces.
+                for (k, fk) in c.fj.iter_mut().enumerate() {
+                    let (b, i) = (k / 2, k % 2);
+                    let kc = &c.kc[4 * b + 2 * i..4 * b + 2 * i + 2];
+                    *fk += c.wv[k] - kc[0] * c.cj_rhs[2 * b] - kc[1] * c.cj_rhs[2 * b + 1];
+                }
+                if f.z.is_empty() {
+                    w.mv.fill(0.0);
+                    for (&dof, fk) in self.sites.journal_dofs.iter().zip(&c.fj) {
+                        w.mv[dof] = *fk;
+                    }
+                    f.lu.solve_in_place(&mut w.mv);
+                    self.set_displacement_and_rates(h, Displacement::LinearPlusCorrection);
+                } else {
+                    for (zc, fk) in f.z.chunks_exact(w.lin.len()).zip(&c.fj) {
+                        for (l, z) in w.lin.iter_mut().zip(zc) {
+                            *l += z * fk;
+                        }
+                    }
+                    self.set_displacement_and_rates(h, Displacement::Linear);
+                }
+                return Ok(None);
+            }
+            last = inc / scale;
+        }
+        Ok(Some(last))
+    }
+
+    /// Modified Newton–Raphson on the full residual of a step with a possibly
+    /// stale factorization: `J = A + E (K_b + a1 C_b) Eᵀ` (plus pad blocks)
+    /// through [`SchurSolve`]; the bearing Jacobian is taken again at the first
+    /// corrected iterate and when the residual stops contracting (ratio > 0.7),
+    /// and `A` is refactored at the exact speed once per step on such a stall.
+    /// `Ok(None)`: converged; `Ok(Some(residual))`: not within the iterations.
+    pub(super) fn newton(
+        &mut self,
+        h: f64,
+        t1: f64,
+        speed1: f64,
+        factor: &mut Option<Factor>,
+    ) -> Result<Option<f64>, SolverError> {
+        let a1 = 2.0 / h;
+        let tol = self.options.tolerance;
+        let mut last = f64::INFINITY;
+        let mut refreshed = false;
+        let mut jacobian_current = false;
+        let mut increment_ok = false;
+        let mut scale = self.linear_residual(h, speed1);
+        let mut residual = self.residual_with_bearings(t1, speed1, &mut scale)?;
+        for iteration in 0..self.options.max_iterations {
+            self.stats.iterations += 1;
+            if residual <= tol && increment_ok {
+                return Ok(None);
+            }
+            let stalled = iteration > 0 && residual > 0.7 * last;
+            last = residual;
+            // The predictor can be far from the solution: take the Jacobian once more
+            // at the first corrected iterate, then keep it (modified Newton).
+            if iteration == 1 {
+                jacobian_current = false;
+            }
+            // A stalled modified Newton gets the current bearing Jacobian (cheap: it
+            // lives on the few bearing DOFs) and, once per step, `A` at the current speed.
+            let mut refresh_now = false;
+            if stalled {
+                refresh_now = !refreshed;
+                refreshed = true;
+                jacobian_current = false;
+                self.stats.refreshes += 1;
+            }
+            // `prepare_factor` has refactored for a new step size or speed band;
+            // here only a refresh moves `A` to the exact speed.
+            let rebuild = factor
+                .as_ref()
+                .is_none_or(|f| refresh_now && f.speed != speed1);
+            if rebuild {
+                *factor = Some(self.dynamic_factor(h, speed1, factor.take())?);
+                self.schur.ready = false;
+            }
+            if !jacobian_current {
+                self.schur.ready = false;
+                for site in &mut self.sites.list {
+                    site.jk.copy_from_slice(&site.eval.stiffness);
+                    site.jc.copy_from_slice(&site.eval.damping);
+                }
+                jacobian_current = true;
+            }
+            let Some(f) = factor.as_ref() else {
+                return Err(SolverError::Input("internal: no factorization".into()));
+            };
+            // Step sizes that differ by rounding only count as exact (the error is
+            // of the order of the round-off of the solve itself).
+            let exact = (f.step - h).abs() <= 1e-12 * h && f.speed == speed1;
+            let w = &mut self.newmark;
+            w.du.copy_from_slice(&w.r);
+            w.dp.copy_from_slice(&w.rp);
+            self.schur
+                .solve(&self.sites, f, a1, false, &mut w.du, &mut w.dp)?;
+            let mut inc: f64 = 0.0;
+            let mut mag: f64 = 0.0;
+            for (i, d) in w.du.iter().enumerate() {
+                if self.rotor.dofs.full(i) % DOF_PER_NODE < 2 {
+                    inc = inc.max(d.abs());
+                    mag = mag.max(w.u[i].abs());
+                }
+            }
+            for (d, v) in w.dp.iter().zip(&w.p) {
+                inc = inc.max(d.abs());
+                mag = mag.max(v.abs());
+            }
+            increment_ok = inc <= tol * mag.max(self.sites.length_scale);
+            for (u, d) in w.u.iter_mut().zip(&w.du) {
+                *u += d;
+            }
+            for (p, d) in w.p.iter_mut().zip(&w.dp) {
+                *p += d;
+            }
+            if exact {
+                // With the exact A, A δu = r − E f and r = lin + E F_b, so the new
+                // linear residual is E (f − F_b): it lives on the journal DOFs only.
+                self.update_rates(h);
+                let w = &mut self.newmark;
+                w.lin.fill(0.0);
+                for (k, site) in self.sites.list.iter().enumerate() {
+                    for (a, &dof) in site.journal.iter().enumerate() {
+                        w.lin[dof] = self.schur.rhs[2 * k + a] - site.eval.force[a];
+                    }
+                }
+            } else {
+                scale = scale.max(self.linear_residual(h, speed1));
+            }
+            residual = self.residual_with_bearings(t1, speed1, &mut scale)?;
+        }
+        Ok(Some(last))
+    }
+}

@@ -1,0 +1,238 @@
+//! Static equilibrium of a rotor on nonlinear bearings at a spin speed:
+//! `K u = f_g + E F_b(Eᵀu, 0, p, 0, Ω)`, `0 = Q_p(Eᵀu, 0, p, 0, Ω)`, by Newton
+//! with backtracking on the full static Jacobian `K + E K_b Eᵀ` (pad blocks
+//! through a Schur complement on the bearing DOFs). Usable without a transient
+//! [`Simulator`](super::Simulator): the linearized analyses call
+//! [`equilibrium`] once per speed.
+
+use crate::bearing::BearingEval;
+use crate::rotor::Rotor;
+
+use super::factor::make_factor;
+use super::newton::SchurSolve;
+use super::simulator::{SolverError, SolverOptions, inf_norm};
+use super::sites::Sites;
+
+/// A static equilibrium (velocities and accelerations zero).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Equilibrium {
+    /// Spin speed (rad/s).
+    pub speed: f64,
+    /// Rotor displacement on the free DOFs (m, rad).
+    pub displacement: Vec<f64>,
+    /// Internal coordinates of the nonlinear bearings (pad tilts, m), bearing by
+    /// bearing in model order.
+    pub tilts: Vec<f64>,
+    /// Every nonlinear bearing evaluated at the equilibrium with zero rates:
+    /// the model index of the bearing and its forces and Jacobians there.
+    pub bearings: Vec<(usize, BearingEval)>,
+}
+
+/// The static equilibrium of `rotor` under gravity (when `options.gravity`) at
+/// spin `speed` (rad/s), to the relative residual `options.tolerance`.
+///
+/// Without `start` Newton starts from the undeflected rotor with the bearings'
+/// own guess of their pad tilts; with `start` (e.g. the equilibrium at a nearby
+/// speed, as in a Campbell sweep) it starts from that displacement and those
+/// tilts. A fluid film at zero speed carries no load: the static stiffness is
+/// then singular and the error says so.
+///
+/// ```
+/// use rotor_bearing::model::RotorModel;
+/// use rotor_bearing::rotor::Rotor;
+/// use rotor_bearing::solver::{SolverOptions, statics::equilibrium};
+///
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/jeffcott.toml");
+/// let rotor = Rotor::new(RotorModel::from_file(std::path::Path::new(path))?)?;
+/// let options = SolverOptions::default();
+/// let at_3000 = equilibrium(&rotor, 3000.0 * std::f64::consts::PI / 30.0, &options, None)?;
+/// // Continue to a nearby speed from there.
+/// let at_3100 = equilibrium(&rotor, 3100.0 * std::f64::consts::PI / 30.0, &options, Some(&at_3000))?;
+/// let sag = at_3100.displacement.iter().fold(0.0_f64, |a, u| a.max(u.abs()));
+/// assert!(sag > 0.0 && sag < 1e-3);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn equilibrium(
+    rotor: &Rotor,
+    speed: f64,
+    options: &SolverOptions,
+    start: Option<&Equilibrium>,
+) -> Result<Equilibrium, SolverError> {
+    let mut sites = Sites::new(rotor)?;
+    let u0 = match start {
+        Some(e) => e.displacement.clone(),
+        None => vec![0.0; rotor.dof_count()],
+    };
+    let p0 = start.map(|e| e.tilts.clone());
+    if u0.len() != rotor.dof_count() || p0.as_ref().is_some_and(|p| p.len() != sites.n_internal) {
+        return Err(SolverError::Input(
+            "start equilibrium does not belong to this rotor (sizes differ)".into(),
+        ));
+    }
+    let (displacement, tilts) = settle(rotor, &mut sites, speed, options, 0.0, u0, p0)?;
+    let bearings = sites
+        .list
+        .into_iter()
+        .map(|site| (site.index, site.eval))
+        .collect();
+    Ok(Equilibrium {
+        speed,
+        displacement,
+        tilts,
+        bearings,
+    })
+}
+
+/// Residual buffers of the static Newton.
+struct StaticWork {
+    /// Gravity load or zero (N).
+    f_ext: Vec<f64>,
+    /// Rotor residual `f_g + E F_b − K u` (N).
+    r: Vec<f64>,
+    /// Pad residuals.
+    rp: Vec<f64>,
+    /// `K u`.
+    ku: Vec<f64>,
+    zero_u: Vec<f64>,
+    zero_p: Vec<f64>,
+}
+
+impl StaticWork {
+    /// Static residual at `u`, `p` into `r`, `rp`, relative to the largest force
+    /// term; the bearings of `sites` are left evaluated there.
+    fn residual(
+        &mut self,
+        rotor: &Rotor,
+        sites: &mut Sites,
+        (u, p): (&[f64], &[f64]),
+        speed: f64,
+        time: f64,
+    ) -> Result<f64, SolverError> {
+        rotor.stiffness.mul_vec(u, &mut self.ku);
+        let mut scale = inf_norm(&self.ku).max(inf_norm(&self.f_ext));
+        for (r, (f, k)) in self.r.iter_mut().zip(self.f_ext.iter().zip(&self.ku)) {
+            *r = f - k;
+        }
+        let bearings = sites.add_forces(
+            u,
+            &self.zero_u,
+            p,
+            &self.zero_p,
+            speed,
+            time,
+            &mut self.r,
+            &mut self.rp,
+        )?;
+        scale = scale.max(bearings);
+        let scale = scale.max(f64::MIN_POSITIVE);
+        Ok(self.absolute() / scale)
+    }
+
+    /// Largest absolute static residual (rotor and pads) of the last evaluation.
+    fn absolute(&self) -> f64 {
+        inf_norm(&self.r).max(inf_norm(&self.rp))
+    }
+}
+
+/// Newton with backtracking from `u0` (and `p0`, or the bearings' guess of the
+/// pad tilts at the journal positions of `u0`); returns the displacement and
+/// tilts. `time` (s) only labels bearing errors.
+pub(super) fn settle(
+    rotor: &Rotor,
+    sites: &mut Sites,
+    speed: f64,
+    options: &SolverOptions,
+    time: f64,
+    u0: Vec<f64>,
+    p0: Option<Vec<f64>>,
+) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
+    let n = rotor.dof_count();
+    let tol = options.tolerance;
+    let mut work = StaticWork {
+        f_ext: if options.gravity {
+            rotor.gravity_load.clone()
+        } else {
+            vec![0.0; n]
+        },
+        r: vec![0.0; n],
+        rp: vec![0.0; sites.n_internal],
+        ku: vec![0.0; n],
+        zero_u: vec![0.0; n],
+        zero_p: vec![0.0; sites.n_internal],
+    };
+    let mut schur = SchurSolve::new(n, sites);
+    let mut column = vec![0.0; n];
+    let mut u = u0;
+    let mut p = match p0 {
+        Some(p) => p,
+        None => {
+            let mut p = vec![0.0; sites.n_internal];
+            for site in &sites.list {
+                let journal = [u[site.journal[0]], u[site.journal[1]]];
+                let range = site.offset..site.offset + site.internal;
+                site.bearing.guess_internal(journal, speed, &mut p[range]);
+            }
+            p
+        }
+    };
+    let mut residual = work.residual(rotor, sites, (&u, &p), speed, time)?;
+    let mut absolute = work.absolute();
+    for _ in 0..100 {
+        if residual <= tol {
+            return Ok((u, p));
+        }
+        // J = K + E K_b,jj Eᵀ in the band; pad blocks through the Schur step.
+        let mut a = rotor.stiffness.clone();
+        for site in &mut sites.list {
+            site.jk.copy_from_slice(&site.eval.stiffness);
+            site.jc.fill(0.0);
+            let n2 = site.eval.n();
+            for (i, &gi) in site.journal.iter().enumerate() {
+                for (j, &gj) in site.journal.iter().enumerate() {
+                    a.add(gi, gj, site.jk[i * n2 + j]);
+                }
+            }
+        }
+        let factor = make_factor(
+            &a,
+            rotor,
+            &sites.journal_dofs,
+            (0.0, speed),
+            None,
+            &mut column,
+        )
+        .map_err(|e| {
+            SolverError::Static(format!(
+                "the static stiffness is singular ({e}): is the rotor supported at this speed? (a fluid film at zero speed carries no static load)"
+            ))
+        })?;
+        let mut du = work.r.clone();
+        let mut dp = work.rp.clone();
+        schur.ready = false;
+        schur.solve(sites, &factor, 0.0, true, &mut du, &mut dp)?;
+        let mut t = 1.0;
+        let mut accepted = false;
+        for _ in 0..40 {
+            let trial_u: Vec<f64> = u.iter().zip(&du).map(|(a, d)| a + t * d).collect();
+            let trial_p: Vec<f64> = p.iter().zip(&dp).map(|(a, d)| a + t * d).collect();
+            if let Ok(r) = work.residual(rotor, sites, (&trial_u, &trial_p), speed, time) {
+                let a = work.absolute();
+                if a < absolute {
+                    u = trial_u;
+                    p = trial_p;
+                    residual = r;
+                    absolute = a;
+                    accepted = true;
+                    break;
+                }
+            }
+            t *= 0.5;
+        }
+        if !accepted {
+            break;
+        }
+    }
+    Err(SolverError::Static(format!(
+        "Newton stalled with residual {residual:.3e} of the force scale"
+    )))
+}
