@@ -4,7 +4,7 @@
 //! `C̄ = C ω C / W`.
 
 use super::BearingKind;
-use super::equilibrium::{CoefficientPoint, coefficient_curve};
+use super::equilibrium::{CoefficientPoint, EquilibriumError, coefficient_points};
 
 /// Smallest dimensionless load `W / k0` of [`load_sweep`].
 pub const LIGHTEST_LOAD: f64 = 0.08;
@@ -52,21 +52,27 @@ pub fn load_sweep(k0: f64, points: usize) -> Vec<f64> {
 }
 
 /// Dimensionless coefficients of the fluid-film bearing `kind` at spin `speed`
-/// (rad/s) over [`load_sweep`] of `points` loads; loads without an equilibrium
-/// are skipped. `None` for a linear bearing (its coefficients are constant).
+/// (rad/s) over [`load_sweep`] of `points` loads, each load (N) with its point
+/// or the reason it has no equilibrium (never dropped). `None` for a linear
+/// bearing (its coefficients are constant).
 pub fn dimensionless_curve(
     kind: &BearingKind,
     speed: f64,
     points: usize,
-) -> Option<Vec<DimensionlessPoint>> {
+) -> Option<Vec<(f64, Result<DimensionlessPoint, EquilibriumError>)>> {
     let film = kind.film_geometry()?;
     let loads = load_sweep(film.load_scale(speed), points);
     let bearing = kind.build();
-    let curve = coefficient_curve(bearing.as_ref(), speed, film.clearance, &loads);
+    let curve = coefficient_points(bearing.as_ref(), speed, film.clearance, &loads);
     Some(
         curve
-            .iter()
-            .map(|p| DimensionlessPoint::new(p, speed, film.clearance))
+            .into_iter()
+            .map(|(w, p)| {
+                (
+                    w,
+                    p.map(|p| DimensionlessPoint::new(&p, speed, film.clearance)),
+                )
+            })
             .collect(),
     )
 }
@@ -94,7 +100,11 @@ mod tests {
             clearance: 1e-4,
             viscosity: 0.02,
         });
-        let curve = dimensionless_curve(&kind, 314.159, 12).unwrap();
+        let curve: Vec<DimensionlessPoint> = dimensionless_curve(&kind, 314.159, 12)
+            .unwrap()
+            .into_iter()
+            .map(|(w, p)| p.unwrap_or_else(|e| panic!("{w} N: {e}")))
+            .collect();
         assert_eq!(curve.len(), 12);
         assert!(curve[0].eccentricity < 0.2 && curve[11].eccentricity > 0.8);
         assert!(

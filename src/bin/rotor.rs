@@ -30,6 +30,7 @@ use rotor_bearing::plot::{
 };
 use rotor_bearing::report::{csv as report_csv, series};
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::solver::statics::equilibrium;
 use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record};
 
 #[derive(Parser)]
@@ -211,17 +212,9 @@ fn static_state(rotor: &Rotor, rpm: f64) -> Result<Vec<f64>, String> {
     if rotor.nonlinear_bearings.is_empty() {
         return static_deflection(rotor).map_err(|e| e.to_string());
     }
-    let name = rotor.model.name.clone();
-    let mut sim = Simulator::new(
-        rotor.clone_model().map_err(|e| e.to_string())?,
-        SolverOptions::default(),
-    )
-    .map_err(|e| e.to_string())?;
-    sim.set_speed(rpm / RAD_S_TO_RPM, 0.0)
-        .map_err(|e| e.to_string())?;
-    sim.settle_static()
-        .map_err(|e| format!("{name} at {rpm} rpm: {e}"))?;
-    Ok(rotor.dofs.expand(&sim.state().u))
+    let eq = equilibrium(rotor, rpm / RAD_S_TO_RPM, &SolverOptions::default(), None)
+        .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
+    Ok(rotor.dofs.expand(&eq.displacement))
 }
 
 fn run(cli: Cli) -> Result<(), String> {
@@ -597,9 +590,16 @@ fn coefficients(
         }
     };
     let speed = rpm / RAD_S_TO_RPM;
-    let Some(curve) = dimensionless_curve(&kind, speed, points) else {
+    let Some(sweep) = dimensionless_curve(&kind, speed, points) else {
         return Err(format!("{label} is linear: its coefficients are constant"));
     };
+    let mut curve = Vec::with_capacity(sweep.len());
+    for (load, point) in sweep {
+        match point {
+            Ok(p) => curve.push(p),
+            Err(e) => eprintln!("warning: {label}: no equilibrium at W = {load:.6e} N: {e}"),
+        }
+    }
     if curve.len() < 2 {
         return Err(format!("{label}: fewer than two equilibria found"));
     }
