@@ -17,3 +17,4 @@ pub mod plot;
 pub mod report;
 pub mod rotor;
 pub mod solver;
+pub mod units;

@@ -7,8 +7,7 @@ use plotters::prelude::*;
 use crate::analysis::campbell::{CampbellPoint, CriticalSpeed};
 use crate::analysis::modal::Whirl;
 
-/// rad/s → rpm.
-pub const RAD_S_TO_RPM: f64 = 60.0 / (2.0 * std::f64::consts::PI);
+pub use crate::units::RAD_S_TO_RPM;
 
 /// Plotting failure (file or font problem), with the file named.
 #[derive(Debug, thiserror::Error)]

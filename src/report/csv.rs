@@ -9,8 +9,8 @@ use crate::analysis::campbell::CampbellPoint;
 use crate::analysis::modal::Mode;
 use crate::bearing::coefficients::DimensionlessPoint;
 use crate::model::RotorModel;
-use crate::plot::RAD_S_TO_RPM;
 use crate::solver::Outputs;
+use crate::units::RAD_S_TO_RPM;
 
 /// Node displacements `q` (`4·node + k`: x, y in m; rx, ry in rad) at the nodes
 /// at axial positions `node_z` (m); nodes numbered from 1.
