@@ -37,7 +37,7 @@ use super::states::Call;
 pub use super::states::Phase;
 use super::variables::{
     Binding, Causality, DEFAULT_MAX_ITERATIONS, DEFAULT_TIME_STEP, DEFAULT_TOLERANCE, Kind,
-    Variability, Variable, variables,
+    VISCOSITY_RANGE, Variability, Variable, variables,
 };
 use super::xml::model_description;
 
@@ -395,32 +395,31 @@ impl Instance {
                 format!("{call}: {} = {value} is not finite", v.name),
             );
         }
-        let positive = |x: f64| x > 0.0;
         let bad = |this: &mut Self, why: &str| {
             this.report(
                 Status::Error,
                 format!("{call}: {} = {value}: {why}", v.name),
             )
         };
+        if let Some(min) = v.min.filter(|&m| value < m) {
+            return bad(self, &format!("below the declared minimum {min}"));
+        }
+        if let Some(max) = v.max.filter(|&m| value > m) {
+            return bad(self, &format!("above the declared maximum {max}"));
+        }
         let result: Result<(), SolverError> = match v.binding {
-            Binding::TimeStep if !positive(value) => return bad(self, "must be positive"),
             Binding::TimeStep => {
                 self.params.time_step = value;
                 Ok(())
-            }
-            Binding::Tolerance if !(value > 0.0 && value < 1.0) => {
-                return bad(self, "must lie in (0, 1)");
             }
             Binding::Tolerance => {
                 self.params.tolerance = value;
                 Ok(())
             }
-            Binding::MaxIterations if value < 1.0 => return bad(self, "must be at least 1"),
             Binding::MaxIterations => {
                 self.params.max_iterations = value as i32;
                 Ok(())
             }
-            Binding::RampTime if value < 0.0 => return bad(self, "must not be negative"),
             Binding::RampTime => {
                 self.params.ramp_time = value;
                 Ok(())
@@ -626,13 +625,31 @@ impl Instance {
         if let Err(why) = snap.fits(&self.current_snapshot()) {
             return self.report(Status::Error, format!("{}: {why}", call.name()));
         }
+        let film = |k: usize| self.model.bearings[k].kind.viscosity().is_some();
+        let (lo, hi) = VISCOSITY_RANGE;
+        if let Some((k, mu)) = snap.viscosity.iter().enumerate().find(|&(k, &mu)| {
+            if film(k) {
+                !(lo..=hi).contains(&mu)
+            } else {
+                mu != 0.0
+            }
+        }) {
+            return self.report(
+                Status::Error,
+                format!(
+                    "{}: viscosity {mu} Pa·s of bearing {} in the state is outside [{lo}, {hi}] Pa·s",
+                    call.name(),
+                    self.model.bearings[k].name
+                ),
+            );
+        }
         for (k, (&mu, &now)) in snap
             .viscosity
             .iter()
             .zip(self.viscosity.clone().iter())
             .enumerate()
         {
-            if mu != now && mu > 0.0 {
+            if mu != now && film(k) {
                 if let Err(e) = self.sim.set_bearing_viscosity(k, mu) {
                     return self.report(Status::Error, format!("{}: {e}", call.name()));
                 }

@@ -7,6 +7,7 @@
 //! two can never drift apart; a GUID hashed from the description ties them.
 
 use crate::model::RotorModel;
+use crate::solver::SolverOptions;
 
 /// What a variable reads or writes in the simulator.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -109,6 +110,31 @@ pub struct Variable {
     pub binding: Binding,
     /// Output depends directly on the speed input (film forces and friction).
     pub feedthrough_speed: bool,
+    /// Smallest value a master may set (declared `min`), if bounded.
+    pub min: Option<f64>,
+    /// Largest value a master may set (declared `max`), if bounded.
+    pub max: Option<f64>,
+}
+
+/// Allowed oil viscosities (Pa·s): positive, from a gas film to a heavy grease.
+pub const VISCOSITY_RANGE: (f64, f64) = (1e-6, 1e3);
+
+/// The declared `[min, max]` of a settable variable: the solver's option
+/// ranges, the model's largest speed, physical signs. The FMU checks every set
+/// value against it, and `modelDescription.xml` declares it.
+pub fn value_range(binding: Binding, model: &RotorModel) -> (Option<f64>, Option<f64>) {
+    let pair = |(lo, hi): (f64, f64)| (Some(lo), Some(hi));
+    let ints = |(lo, hi): (usize, usize)| (Some(lo as f64), Some(hi as f64));
+    match binding {
+        Binding::TimeStep => pair(SolverOptions::TIME_STEP_RANGE),
+        Binding::Tolerance => pair(SolverOptions::TOLERANCE_RANGE),
+        Binding::MaxIterations => ints(SolverOptions::MAX_ITERATIONS_RANGE),
+        Binding::RampTime => pair(SolverOptions::RAMP_TIME_RANGE),
+        Binding::Viscosity(_) => pair(VISCOSITY_RANGE),
+        Binding::Speed => (Some(-model.max_speed), Some(model.max_speed)),
+        Binding::Unbalance(_) => (Some(0.0), None),
+        _ => (None, None),
+    }
 }
 
 /// An output of a bearing: name suffix, description, unit, display unit, binding.
@@ -146,7 +172,10 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
                 | Binding::BearingFriction(_)
                 | Binding::FrictionTorque
         );
+        let (min, max) = value_range(binding, model);
         out.push(Variable {
+            min,
+            max,
             value_reference: out.len() as u32,
             name,
             description,

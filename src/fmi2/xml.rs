@@ -196,6 +196,17 @@ fn render(model: &RotorModel, vars: &[Variable], guid: &str) -> String {
         if let Some(d) = v.display_unit {
             t.push_attribute(("displayUnit", d));
         }
+        let bound = |x: f64| match v.kind {
+            Kind::Integer => format!("{}", x as i64),
+            _ => fmt_real(x),
+        };
+        let (min, max) = (v.min.map(bound), v.max.map(bound));
+        if let Some(m) = &min {
+            t.push_attribute(("min", m.as_str()));
+        }
+        if let Some(m) = &max {
+            t.push_attribute(("max", m.as_str()));
+        }
         if let Some(s) = &start {
             t.push_attribute(("start", s.as_str()));
         }

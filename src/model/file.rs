@@ -25,6 +25,10 @@ pub struct ModelFile {
     /// Nominal spin speed (rpm): the start value of the speed input of an FMU.
     #[serde(default)]
     pub speed_rpm: Option<f64>,
+    /// Largest spin speed the machine may be driven at (rpm, either direction);
+    /// default [`crate::model::DEFAULT_MAX_SPEED_RPM`].
+    #[serde(default)]
+    pub max_speed_rpm: Option<f64>,
     /// Axial position of the first node (m).
     #[serde(default)]
     pub start_z: Option<f64>,

@@ -23,6 +23,10 @@ use context::Ctx;
 use file::ModelFile;
 use source_map::{field_at, line_of};
 
+/// Default largest spin speed (rpm) of a model that states none: above any
+/// hydro, pump or turbine rotor, so only nonsense is refused.
+pub const DEFAULT_MAX_SPEED_RPM: f64 = 60_000.0;
+
 /// The built-in default model: the classic disk-on-shaft rotor.
 pub const DEFAULT_MODEL_NAME: &str = "classic_disk_rotor";
 /// Text of the default model file (shipped as `models/classic_disk_rotor.toml`).
@@ -119,6 +123,8 @@ pub struct RotorModel {
     pub gravity: [f64; 3],
     /// Nominal spin speed (rad/s), 0 when the file gives none.
     pub nominal_speed: f64,
+    /// Largest spin speed in either direction (rad/s): inputs beyond it are refused.
+    pub max_speed: f64,
 }
 
 impl RotorModel {

@@ -7,7 +7,7 @@ use crate::bearing::BearingError;
 use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
 
-use super::simulator::{Simulator, SolverError, inf_norm};
+use super::simulator::{Simulator, SolverError, SolverOptions, inf_norm};
 
 /// Where the displacement of a step comes from when its rates are formed.
 #[derive(Debug, Clone, Copy)]
@@ -201,12 +201,36 @@ impl Simulator {
         if span == 0.0 {
             return Ok(());
         }
-        let count = (span / self.options.time_step - 1e-9).ceil().max(1.0) as usize;
+        let steps = (span / self.options.time_step - 1e-9).ceil().max(1.0);
+        if steps > SolverOptions::MAX_STEPS_PER_CALL as f64 {
+            return Err(SolverError::Budget(format!(
+                "advancing {span} s in internal steps of at most {} s takes {steps} steps, more than the {} one call may take: advance in shorter spans or raise the time step",
+                self.options.time_step,
+                SolverOptions::MAX_STEPS_PER_CALL
+            )));
+        }
+        let max = self.rotor.model.max_speed;
+        let end_speed = self.speed_at(t_end);
+        if end_speed.abs() > max {
+            return Err(SolverError::Budget(format!(
+                "the speed ramp reaches {end_speed} rad/s at {t_end} s, beyond the model's max_speed_rpm ({max} rad/s)"
+            )));
+        }
+        let count = steps as usize;
         let h = span / count as f64;
+        let cuts_before = self.stats.step_cuts;
         for k in 0..count {
             self.step_with_cuts(h, 0)?;
             if k + 1 == count {
                 self.state.time = t_end;
+            }
+            let cuts = self.stats.step_cuts - cuts_before;
+            if cuts > SolverOptions::MAX_CUTS_PER_CALL {
+                return Err(SolverError::Budget(format!(
+                    "{cuts} step halvings by t = {} s, more than the {} one call may spend: the bearings keep Newton from converging",
+                    self.state.time,
+                    SolverOptions::MAX_CUTS_PER_CALL
+                )));
             }
         }
         Ok(())

@@ -28,6 +28,26 @@ pub struct SolverOptions {
     pub gravity: bool,
 }
 
+impl SolverOptions {
+    /// Allowed internal time steps (s): below 1 µs a communication step would
+    /// need millions of steps, above 1 s Newmark no longer resolves any mode.
+    pub const TIME_STEP_RANGE: (f64, f64) = (1e-6, 1.0);
+    /// Allowed relative tolerances (–).
+    pub const TOLERANCE_RANGE: (f64, f64) = (1e-14, 1e-2);
+    /// Allowed Newton iterations per step attempt.
+    pub const MAX_ITERATIONS_RANGE: (usize, usize) = (1, 1000);
+    /// Allowed step halvings.
+    pub const MAX_STEP_CUTS_RANGE: (usize, usize) = (0, 20);
+    /// Allowed unbalance ramp time constants (s).
+    pub const RAMP_TIME_RANGE: (f64, f64) = (0.0, 1e6);
+    /// Most internal steps one [`Simulator::advance_to`] takes; a longer span
+    /// is refused before it starts ([`SolverError::Budget`]).
+    pub const MAX_STEPS_PER_CALL: usize = 200_000;
+    /// Most step halvings one [`Simulator::advance_to`] may spend in all; past
+    /// it the call stops with [`SolverError::Budget`].
+    pub const MAX_CUTS_PER_CALL: usize = 2_000;
+}
+
 impl Default for SolverOptions {
     fn default() -> Self {
         Self {
@@ -118,6 +138,10 @@ pub enum SolverError {
     /// No static equilibrium was found.
     #[error("static equilibrium: {0}")]
     Static(String),
+    /// A call would exceed the work bound of one call (internal steps or step
+    /// halvings, [`SolverOptions::MAX_STEPS_PER_CALL`], [`SolverOptions::MAX_CUTS_PER_CALL`]).
+    #[error("{0}")]
+    Budget(String),
 }
 
 /// Outputs of one bearing.
@@ -310,6 +334,50 @@ impl Simulator {
                 "state does not belong to this rotor (sizes differ)".into(),
             ));
         }
+        let scalars = [
+            ("time", state.time),
+            ("spin_angle", state.spin_angle),
+            ("speed", state.speed),
+            ("speed_rate", state.speed_rate),
+            ("speed_time", state.speed_time),
+        ];
+        let vectors: [(&str, &[f64]); 9] = [
+            ("u", &state.u),
+            ("ud", &state.ud),
+            ("udd", &state.udd),
+            ("p", &state.p),
+            ("pd", &state.pd),
+            ("pdd", &state.pdd),
+            ("unbalance", &state.unbalance),
+            ("unbalance_rate", &state.unbalance_rate),
+            ("unbalance_phase", &state.unbalance_phase),
+        ];
+        let bad = scalars
+            .iter()
+            .find(|(_, v)| !v.is_finite())
+            .copied()
+            .or_else(|| {
+                vectors
+                    .iter()
+                    .find_map(|(name, v)| v.iter().find(|x| !x.is_finite()).map(|&x| (*name, x)))
+            });
+        if let Some((name, v)) = bad {
+            return Err(SolverError::Input(format!(
+                "state field {name} = {v} is not finite"
+            )));
+        }
+        if let Some(m) = state.unbalance.iter().find(|m| **m < 0.0) {
+            return Err(SolverError::Input(format!(
+                "state field unbalance = {m} kg·m is negative"
+            )));
+        }
+        let max = self.rotor.model.max_speed;
+        if state.speed.abs() > max {
+            return Err(SolverError::Input(format!(
+                "state field speed = {} rad/s exceeds the model's max_speed_rpm ({max} rad/s)",
+                state.speed
+            )));
+        }
         self.state = state;
         Ok(())
     }
@@ -353,6 +421,12 @@ impl Simulator {
         if !speed.is_finite() || !rate.is_finite() {
             return Err(SolverError::Input(format!(
                 "speed {speed} rad/s and its rate {rate} rad/s² must be finite"
+            )));
+        }
+        let max = self.rotor.model.max_speed;
+        if speed.abs() > max {
+            return Err(SolverError::Input(format!(
+                "speed {speed} rad/s exceeds the model's max_speed_rpm ({max} rad/s)"
             )));
         }
         self.rebase_inputs();
@@ -566,20 +640,39 @@ pub(super) fn inf_norm(v: &[f64]) -> f64 {
 }
 
 fn check_options(o: &SolverOptions) -> Result<(), SolverError> {
-    let bad = |what: &str, v: f64| {
-        SolverError::Input(format!("solver option {what} = {v} is out of range"))
+    let within = |what: &str, v: f64, (lo, hi): (f64, f64), unit: &str| {
+        if v.is_finite() && (lo..=hi).contains(&v) {
+            Ok(())
+        } else {
+            Err(SolverError::Input(format!(
+                "solver option {what} = {v} {unit} is outside [{lo}, {hi}] {unit}"
+            )))
+        }
     };
-    if !(o.time_step.is_finite() && o.time_step > 0.0) {
-        return Err(bad("time_step", o.time_step));
-    }
-    if !(o.tolerance.is_finite() && o.tolerance > 0.0 && o.tolerance < 1.0) {
-        return Err(bad("tolerance", o.tolerance));
-    }
-    if o.max_iterations == 0 {
-        return Err(bad("max_iterations", 0.0));
-    }
-    if !(o.unbalance_ramp_time.is_finite() && o.unbalance_ramp_time >= 0.0) {
-        return Err(bad("unbalance_ramp_time", o.unbalance_ramp_time));
-    }
-    Ok(())
+    let as_f64 = |(lo, hi): (usize, usize)| (lo as f64, hi as f64);
+    within(
+        "time_step",
+        o.time_step,
+        SolverOptions::TIME_STEP_RANGE,
+        "s",
+    )?;
+    within("tolerance", o.tolerance, SolverOptions::TOLERANCE_RANGE, "")?;
+    within(
+        "max_iterations",
+        o.max_iterations as f64,
+        as_f64(SolverOptions::MAX_ITERATIONS_RANGE),
+        "",
+    )?;
+    within(
+        "max_step_cuts",
+        o.max_step_cuts as f64,
+        as_f64(SolverOptions::MAX_STEP_CUTS_RANGE),
+        "",
+    )?;
+    within(
+        "unbalance_ramp_time",
+        o.unbalance_ramp_time,
+        SolverOptions::RAMP_TIME_RANGE,
+        "s",
+    )
 }

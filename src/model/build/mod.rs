@@ -32,8 +32,21 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     let nominal_speed = ctx.finite(root.key("speed_rpm"), raw.speed_rpm.unwrap_or(0.0))?
         * std::f64::consts::PI
         / 30.0;
+    let max_speed = ctx.positive(
+        root.key("max_speed_rpm"),
+        raw.max_speed_rpm.unwrap_or(super::DEFAULT_MAX_SPEED_RPM),
+    )? * std::f64::consts::PI
+        / 30.0;
+    if nominal_speed.abs() > max_speed {
+        return Err(ctx.err(
+            root.key("speed_rpm"),
+            format!("{}", raw.speed_rpm.unwrap_or(0.0)),
+            "must not exceed max_speed_rpm",
+        ));
+    }
     Ok(RotorModel {
         nominal_speed,
+        max_speed,
         name: raw.name,
         description: raw.description,
         source: ctx.source.to_string(),

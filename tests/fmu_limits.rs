@@ -1,0 +1,170 @@
+//! Every value that can enter the FMU is checked against its declared range and
+//! every call's work is bounded (issue 13, defects 3 and 4), through the safe
+//! instance behind the C exports; the fuzzers drive the C ABI itself.
+
+use std::time::{Duration, Instant};
+
+use rotor_bearing::fmi2::instance::{Instance, Status};
+use rotor_bearing::fmi2::variables::{Kind, variables};
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::solver::SolverOptions;
+
+fn model(name: &str) -> RotorModel {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("models/{name}.toml"));
+    RotorModel::from_file(&path).unwrap()
+}
+
+fn vr(model: &RotorModel, name: &str) -> u32 {
+    variables(model)
+        .iter()
+        .find(|v| v.name == name)
+        .unwrap_or_else(|| panic!("no variable {name}"))
+        .value_reference
+}
+
+fn started(model: &RotorModel) -> Instance {
+    let mut fmu = Instance::new("limits", model.clone()).unwrap();
+    assert_eq!(fmu.setup_experiment(0.0, None), Status::Ok);
+    assert_eq!(fmu.enter_initialization_mode(), Status::Ok);
+    assert_eq!(fmu.exit_initialization_mode(), Status::Ok);
+    fmu
+}
+
+#[test]
+fn declared_ranges_refuse_what_would_hang_or_mislead() {
+    let m = model("jeffcott");
+    // A refused set puts the instance in its error state (FMI 2.0): each value
+    // gets a fresh instance.
+    let refuses = |name: &str, kind: Kind, value: f64| -> bool {
+        let mut fmu = Instance::new("ranges", m.clone()).unwrap();
+        let status = fmu.set(vr(&m, name), kind, value);
+        if status == Status::Error {
+            let text = fmu.drain_messages().pop().unwrap().2;
+            assert!(text.contains(name), "the refusal must name {name}: {text}");
+        }
+        status == Status::Error
+    };
+    // 1e-12 s and 1e-300 s made fmi2DoStep(0, 1e-4) run for longer than 20 s.
+    for bad in [1e-12, 1e-300, 0.0, -1e-3, 10.0] {
+        assert!(
+            refuses("solver.time_step", Kind::Real, bad),
+            "time step {bad}"
+        );
+    }
+    assert!(!refuses("solver.time_step", Kind::Real, 1e-4));
+    assert!(refuses("solver.tolerance", Kind::Real, 0.5));
+    assert!(refuses("solver.tolerance", Kind::Real, 1e-20));
+    assert!(refuses("solver.max_iterations", Kind::Integer, 1e6));
+    assert!(refuses("bearings.left.viscosity", Kind::Real, -0.02));
+    // 1e5 rad/s (955 000 rpm) was accepted and a 0.3 s step then took 41 s.
+    assert!(refuses("shaft.speed", Kind::Real, 1e5));
+    assert!(refuses("shaft.speed", Kind::Real, -1e5));
+    assert!(
+        !refuses("shaft.speed", Kind::Real, -500.0),
+        "reverse rotation is physical"
+    );
+    assert!(refuses("unbalance.disk", Kind::Real, -1.0));
+    // The declared ranges are the ones enforced.
+    let vars = variables(&m);
+    let ts = vars.iter().find(|v| v.name == "solver.time_step").unwrap();
+    assert_eq!(
+        (ts.min, ts.max),
+        (
+            Some(SolverOptions::TIME_STEP_RANGE.0),
+            Some(SolverOptions::TIME_STEP_RANGE.1)
+        )
+    );
+    let sp = vars.iter().find(|v| v.name == "shaft.speed").unwrap();
+    assert_eq!((sp.min, sp.max), (Some(-m.max_speed), Some(m.max_speed)));
+}
+
+#[test]
+fn every_do_step_is_bounded_in_work() {
+    let m = model("jeffcott");
+    let mut fmu = Instance::new("budget", m.clone()).unwrap();
+    assert_eq!(
+        fmu.set(vr(&m, "solver.time_step"), Kind::Real, 1e-6),
+        Status::Ok
+    );
+    assert_eq!(fmu.enter_initialization_mode(), Status::Ok);
+    assert_eq!(fmu.exit_initialization_mode(), Status::Ok);
+    // 1 s at 1 µs would be 10⁶ internal steps: refused at once with a message.
+    let start = Instant::now();
+    assert_eq!(fmu.do_step(0.0, 1.0), Status::Discard);
+    assert!(
+        start.elapsed() < Duration::from_secs(5),
+        "the refusal must not step first"
+    );
+    let text = fmu.drain_messages().pop().unwrap().2;
+    assert!(text.contains("200000"), "{text}");
+    assert_eq!(fmu.last_successful_time(), Ok(0.0));
+    // A speed ramp that would end beyond the model's largest speed is refused too.
+    let mut fmu = started(&m);
+    let speed = vr(&m, "shaft.speed");
+    assert_eq!(fmu.set_input_derivative(speed, 1, 1e6), Status::Ok);
+    assert_eq!(fmu.do_step(0.0, 0.1), Status::Discard);
+    assert!(
+        fmu.drain_messages()
+            .pop()
+            .unwrap()
+            .2
+            .contains("max_speed_rpm")
+    );
+}
+
+#[test]
+fn restored_states_are_validated() {
+    let m = model("jeffcott");
+    let mut fmu = started(&m);
+    assert_eq!(fmu.do_step(0.0, 0.01), Status::Ok);
+    let good = fmu.snapshot().unwrap();
+    let bytes = fmu.serialize(&good).unwrap();
+    let read = |fmu: &mut Instance, b: &[u8]| fmu.deserialize(b);
+    assert!(read(&mut fmu, &bytes).is_ok());
+    // A state of another model of the same size is refused by its fingerprint.
+    let other = model("classic_disk_rotor");
+    let mut foreign = started(&other);
+    assert!(read(&mut foreign, &bytes).is_err());
+    // Field values a master could craft with a valid checksum are checked on
+    // restore: time NaN, a time step of 1e-300 s, a negative viscosity. The
+    // image: 8-byte magic, version, fingerprint, then the scalars (time first,
+    // time_step sixth), the vectors (viscosity last), FNV-1a of all before it.
+    let craft = |edit: &dyn Fn(&mut Vec<u8>)| -> Vec<u8> {
+        let mut b = bytes.clone();
+        b.truncate(b.len() - 8);
+        edit(&mut b);
+        let sum = b.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &x| {
+            (h ^ u64::from(x)).wrapping_mul(0x0000_0100_0000_01b3)
+        });
+        b.extend_from_slice(&sum.to_le_bytes());
+        b
+    };
+    let put = |b: &mut Vec<u8>, at: usize, v: f64| b[at..at + 8].copy_from_slice(&v.to_le_bytes());
+    let scalar = |k: usize| 24 + 8 * k;
+    let untouched = craft(&|_| {});
+    assert_eq!(untouched, bytes, "the test's reading of the image is wrong");
+    for (what, image) in [
+        ("time", craft(&|b| put(b, scalar(0), f64::NAN))),
+        ("time_step", craft(&|b| put(b, scalar(5), 1e-300))),
+        (
+            "viscosity",
+            craft(&|b| {
+                let at = b.len() - 16;
+                put(b, at, -0.02)
+            }),
+        ),
+    ] {
+        let refused = match read(&mut fmu, &image) {
+            Err(_) => true,
+            Ok(snap) => fmu.restore(&snap) == Status::Error,
+        };
+        assert!(refused, "a state with a bad {what} was accepted");
+        let text = fmu.drain_messages().pop().map(|m| m.2).unwrap_or_default();
+        assert!(text.contains(what), "the refusal must name {what}: {text}");
+        // Out of the error state by restoring a good state (FMI 2.0).
+        assert_eq!(fmu.restore(&good), Status::Ok);
+    }
+    // After the refusals the instance holds the good state and steps on.
+    assert_eq!(fmu.last_successful_time(), Ok(0.01));
+    assert_eq!(fmu.do_step(0.01, 0.01), Status::Ok);
+}
