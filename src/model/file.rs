@@ -25,6 +25,10 @@ pub struct ModelFile {
     /// Nominal spin speed (rpm): the start value of the speed input of an FMU.
     #[serde(default)]
     pub speed_rpm: Option<f64>,
+    /// Memory a model may need (MB) before it is refused; default
+    /// [`crate::model::DEFAULT_MEMORY_BUDGET_MB`].
+    #[serde(default)]
+    pub memory_budget_mb: Option<f64>,
     /// Largest spin speed the machine may be driven at (rpm, either direction);
     /// default [`crate::model::DEFAULT_MAX_SPEED_RPM`].
     #[serde(default)]

@@ -27,6 +27,14 @@ use source_map::{field_at, line_of};
 /// hydro, pump or turbine rotor, so only nonsense is refused.
 pub const DEFAULT_MAX_SPEED_RPM: f64 = 60_000.0;
 
+/// Default memory budget (MB) of a model: its assembled matrices, factors and
+/// work vectors must fit, estimated at [`BYTES_PER_DOF`] per degree of freedom.
+pub const DEFAULT_MEMORY_BUDGET_MB: f64 = 4096.0;
+
+/// Memory per degree of freedom of an assembled rotor in the simulator (bytes):
+/// the measured peak is about 1.2 kB per DOF (BENCHMARKS.md, scaling), with margin.
+pub const BYTES_PER_DOF: f64 = 1536.0;
+
 /// The built-in default model: the classic disk-on-shaft rotor.
 pub const DEFAULT_MODEL_NAME: &str = "classic_disk_rotor";
 /// Text of the default model file (shipped as `models/classic_disk_rotor.toml`).

@@ -399,3 +399,29 @@ fn type_errors_name_the_field_path_and_line() {
         "{e}"
     );
 }
+
+#[test]
+fn a_model_beyond_the_memory_budget_is_refused_before_allocating() {
+    // Three sections of 10⁶ elements: 12 million DOFs, about 18 GB.
+    let section = r#"
+[[shaft]]
+length = 1.0
+outer_diameter = 0.05
+material = "steel"
+elements = 1000000
+"#;
+    let text = format!("{BASE}{section}{section}{section}");
+    let start = std::time::Instant::now();
+    let e = RotorModel::from_toml(&text, "huge.toml").unwrap_err().to_string();
+    assert!(start.elapsed() < std::time::Duration::from_secs(1), "checked before building");
+    assert!(
+        e.contains("huge.toml") && e.contains("memory_budget_mb") && e.contains("3000006 elements"),
+        "{e}"
+    );
+    // The budget is the model's to set: a tight one refuses even this small rotor…
+    let tight = format!("memory_budget_mb = 0.01\n{BASE}");
+    let e = RotorModel::from_toml(&tight, "m.toml").unwrap_err().to_string();
+    assert!(e.contains("0.01"), "{e}");
+    // …and the default accepts it (7 nodes, 28 DOFs: 43 kB).
+    assert!(RotorModel::from_toml(BASE, "m.toml").is_ok());
+}

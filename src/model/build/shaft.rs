@@ -40,8 +40,36 @@ pub(super) fn shaft(
             "the model needs at least one [[shaft]] section",
         ));
     }
-    let mut node_z = vec![start_z];
-    let mut elements = Vec::new();
+    let budget_mb = ctx.positive(
+        root.key("memory_budget_mb"),
+        raw.memory_budget_mb
+            .unwrap_or(crate::model::DEFAULT_MEMORY_BUDGET_MB),
+    )?;
+    // Refuse a model too large for the budget before allocating anything for it.
+    let mut total = 0usize;
+    for (i, s) in raw.shaft.iter().enumerate() {
+        let count = s.elements.unwrap_or(1);
+        if !(1..=1_000_000).contains(&count) {
+            let p = root.key("shaft").index(i);
+            return Err(ctx.err(p.key("elements"), count, "must be from 1 to 1000000"));
+        }
+        total += count;
+    }
+    let dofs = 4.0 * (total as f64 + 1.0);
+    let need_mb = dofs * crate::model::BYTES_PER_DOF / 1e6;
+    if need_mb > budget_mb {
+        return Err(ctx.err(
+            root.key("shaft"),
+            format!("{total} elements"),
+            &format!(
+                "would need about {need_mb:.0} MB ({dofs:.0} DOFs at {} bytes each), more than memory_budget_mb = {budget_mb}",
+                crate::model::BYTES_PER_DOF
+            ),
+        ));
+    }
+    let mut node_z = Vec::with_capacity(total + 1);
+    node_z.push(start_z);
+    let mut elements = Vec::with_capacity(total);
     for (i, s) in raw.shaft.iter().enumerate() {
         let p = root.key("shaft").index(i);
         let length = ctx.positive(p.key("length"), s.length)?;
@@ -56,9 +84,6 @@ pub(super) fn shaft(
         }
         let material = materials.find(ctx, p.key("material"), &s.material)?;
         let count = s.elements.unwrap_or(1);
-        if !(1..=1_000_000).contains(&count) {
-            return Err(ctx.err(p.key("elements"), count, "must be from 1 to 1000000"));
-        }
         let axial_force = match s.axial_force {
             Some(f) => ctx.finite(p.key("axial_force"), f)?,
             None => default_axial,
