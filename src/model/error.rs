@@ -25,6 +25,12 @@ impl FieldPath {
         p.0.push(Seg::Index(i));
         p
     }
+
+    /// The path one step up, `None` at the root.
+    pub(crate) fn parent(&self) -> Option<Self> {
+        let (_, rest) = self.0.split_last()?;
+        Some(Self(rest.to_vec()))
+    }
 }
 
 impl fmt::Display for FieldPath {

@@ -13,6 +13,7 @@ mod source_map;
 pub mod speed_table;
 
 pub use error::ModelError;
+use error::Seg;
 
 use std::path::Path;
 
@@ -21,7 +22,7 @@ use crate::fe::disk::Disk;
 use crate::fe::shaft::ShaftElement;
 use context::Ctx;
 use file::ModelFile;
-use source_map::{field_at, line_of};
+use source_map::{culprit_in_entry, field_at, line_of, line_of_field};
 
 /// Default largest spin speed (rpm) of a model that states none: above any
 /// hydro, pump or turbine rotor, so only nonsense is refused.
@@ -210,7 +211,22 @@ impl RotorModel {
             let span = e.span();
             let line = span.as_ref().map(|s| line_of(text, s.start));
             let message = e.message().trim();
-            let message = match span.and_then(|s| field_at(text, &s)) {
+            let path = span.and_then(|s| field_at(text, &s));
+            // A whole entry read at once (bearings, chosen by `type`): name the key.
+            let culprit = path.as_ref().and_then(|p| {
+                culprit_in_entry(text, p, message).or_else(|| {
+                    // The span may be that of a neighbouring entry of the same array.
+                    let (Some(Seg::Index(_)), Some(parent)) = (p.0.last(), p.parent()) else {
+                        return None;
+                    };
+                    (0..256).find_map(|i| culprit_in_entry(text, &parent.index(i), message))
+                })
+            });
+            let line = culprit
+                .as_ref()
+                .and_then(|p| line_of_field(text, p))
+                .or(line);
+            let message = match culprit.or(path) {
                 Some(path) => format!("{path}: {message}"),
                 None => message.to_string(),
             };

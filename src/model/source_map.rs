@@ -80,6 +80,57 @@ fn in_value(value: &DeValue, span: &Range<usize>, at: &Range<usize>) -> Option<V
     inner.or_else(|| covers(span, at).then(Vec::new))
 }
 
+/// The key of the table entry at `entry` (e.g. `bearings[0]`, which serde reads
+/// whole to choose its `type`, losing the key's position) that holds the value
+/// a type error names (`invalid type: floating point \`inf\`, expected i64`).
+pub(crate) fn culprit_in_entry(text: &str, entry: &FieldPath, message: &str) -> Option<FieldPath> {
+    let found = message
+        .strip_prefix("invalid type: ")?
+        .split(", expected")
+        .next()?;
+    let literal = found.split('`').nth(1);
+    let number = |raw: &str| raw.replace('_', "").parse::<f64>().ok();
+    let same = |a: f64, b: f64| a == b || (a.is_nan() && b.is_nan());
+    let matches = |value: &DeValue| -> bool {
+        match value {
+            DeValue::Float(f) if found.starts_with("floating point") => {
+                matches!((number(f.as_str()), literal.and_then(number)), (Some(a), Some(b)) if same(a, b))
+            }
+            DeValue::Integer(i) if found.starts_with("integer") => {
+                matches!((number(i.as_str()), literal.and_then(number)), (Some(a), Some(b)) if same(a, b))
+            }
+            DeValue::String(t) if found.starts_with("string") => {
+                found.strip_prefix("string ").map(|q| q.trim_matches('"')) == Some(&**t)
+            }
+            DeValue::Boolean(b) if found.starts_with("boolean") => literal == Some(&b.to_string()),
+            DeValue::Array(_) => found == "sequence",
+            DeValue::Table(_) => found == "map",
+            _ => false,
+        }
+    };
+    let root = DeTable::parse(text).ok()?;
+    let mut table: &DeTable = root.get_ref();
+    let mut value: Option<&DeValue> = None;
+    for seg in &entry.0 {
+        let next = match (seg, value) {
+            (Seg::Key(k), None) => table.get(k.as_str()),
+            (Seg::Key(k), Some(v)) => v.get(k.as_str()),
+            (Seg::Index(i), Some(v)) => v.get(*i),
+            _ => None,
+        }?;
+        value = Some(next.get_ref());
+    }
+    if let Some(DeValue::Table(t)) = value {
+        table = t;
+    } else {
+        return None;
+    }
+    table
+        .iter()
+        .find(|(_, v)| matches(v.get_ref()))
+        .map(|(k, _)| entry.clone().key(k.get_ref()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -101,6 +152,22 @@ mod tests {
         assert_eq!(at("3\n"), "shaft[1].elements");
         assert_eq!(at("0.1"), "bearings[0].radius");
         assert_eq!(field_at(TEXT, &(0..TEXT.len())), None);
+    }
+
+    #[test]
+    fn a_type_error_in_a_whole_entry_finds_its_key() {
+        let text = "[[bearings]]\ntype = \"plain\"\nnode = inf\nradius = 0.1\n[[bearings]]\npads = -1e-3\nname = \"x\"\n";
+        let entry = |i| FieldPath::default().key("bearings").index(i);
+        let found = |i, m: &str| culprit_in_entry(text, &entry(i), m).map(|p| p.to_string());
+        assert_eq!(
+            found(0, "invalid type: floating point `inf`, expected i64").as_deref(),
+            Some("bearings[0].node")
+        );
+        assert_eq!(
+            found(1, "invalid type: floating point `-0.001`, expected usize").as_deref(),
+            Some("bearings[1].pads")
+        );
+        assert_eq!(found(0, "missing field `length`"), None);
     }
 
     #[test]

@@ -378,8 +378,9 @@ fn type_errors_name_the_field_path_and_line() {
             "expected m.toml:{line}: {expect}…, got: {e}"
         );
     }
-    // Bearings are an internally tagged enum: serde buffers the entry, so the
-    // span (and path) is that of the whole entry, at its header line.
+    // Bearings are an internally tagged enum: serde buffers the entry, so its
+    // span is the whole entry; the key holding the offending value is found in
+    // the entry and named with its own line.
     let text = format!(
         "{BASE}\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = \"big\"\nlength = 0.02\nclearance = 1e-4\nviscosity = 0.02\n"
     );
@@ -387,7 +388,7 @@ fn type_errors_name_the_field_path_and_line() {
         .unwrap_err()
         .to_string();
     assert!(
-        e.starts_with("m.toml:15: bearings[0]: invalid type: string \"big\""),
+        e.starts_with("m.toml:18: bearings[0].radius: invalid type: string \"big\""),
         "{e}"
     );
     // Broken TOML keeps its parser message and line.
@@ -412,16 +413,40 @@ elements = 1000000
 "#;
     let text = format!("{BASE}{section}{section}{section}");
     let start = std::time::Instant::now();
-    let e = RotorModel::from_toml(&text, "huge.toml").unwrap_err().to_string();
-    assert!(start.elapsed() < std::time::Duration::from_secs(1), "checked before building");
+    let e = RotorModel::from_toml(&text, "huge.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        start.elapsed() < std::time::Duration::from_secs(1),
+        "checked before building"
+    );
     assert!(
         e.contains("huge.toml") && e.contains("memory_budget_mb") && e.contains("3000006 elements"),
         "{e}"
     );
     // The budget is the model's to set: a tight one refuses even this small rotor…
     let tight = format!("memory_budget_mb = 0.01\n{BASE}");
-    let e = RotorModel::from_toml(&tight, "m.toml").unwrap_err().to_string();
+    let e = RotorModel::from_toml(&tight, "m.toml")
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("0.01"), "{e}");
     // …and the default accepts it (7 nodes, 28 DOFs: 43 kB).
     assert!(RotorModel::from_toml(BASE, "m.toml").is_ok());
+}
+
+#[test]
+fn a_type_error_in_a_later_bearing_names_that_bearing_and_key() {
+    // serde's span for an internally tagged entry can be an earlier sibling's.
+    let bearing = |name: &str, node: &str| {
+        format!("\n[[bearings]]\nname = \"{name}\"\ntype = \"linear\"\nnode = {node}\nkxx = 1e6\n")
+    };
+    let text = format!("{BASE}{}{}", bearing("a", "1"), bearing("b", "inf"));
+    let e = RotorModel::from_toml(&text, "m.toml")
+        .unwrap_err()
+        .to_string();
+    let line = text.lines().position(|l| l == "node = inf").unwrap() + 1;
+    assert!(
+        e.starts_with(&format!("m.toml:{line}: bearings[1].node: invalid type")),
+        "{e}"
+    );
 }

@@ -1,0 +1,787 @@
+//! Random call-sequence fuzzer of an unpacked FMU's C API, run as a child
+//! process by `tests/fuzz.rs` (which enforces the timeout):
+//!
+//! `fmu_fuzz UNPACKED_FMU_DIR FIRST_SEED COUNT`
+//!
+//! Sequence `s` is replayed exactly by `fmu_fuzz DIR s 1`. It reads the
+//! variables from the FMU's own `modelDescription.xml` (an outside importer's
+//! view) and checks, per FMI 2.0 Co-Simulation:
+//! - every status is one of the five the standard defines, and `fmi2DoStep` of
+//!   a synchronous FMU never returns `fmi2Pending`;
+//! - every value returned with `fmi2OK`/`fmi2Warning` is finite;
+//! - calls the state machine forbids in the importer's current state (a
+//!   `fmi2DoStep` before initialization, a second `fmi2SetupExperiment`, a set
+//!   of a fixed parameter after initialization, of an output, of an unknown
+//!   value reference, of NaN) return `fmi2Error`;
+//! - a step past a defined stop time is refused.
+//!
+//! A crash or hang is seen by the parent. Exit code 1 with the seed and the
+//! call log on the first violation.
+
+#![allow(non_snake_case)]
+
+use std::ffi::{CString, c_char, c_void};
+use std::path::{Path, PathBuf};
+
+use fmi_sys::fmi2::*;
+use quick_xml::Reader;
+use quick_xml::events::Event;
+
+/// SplitMix64: a small, well-mixed generator so a seed replays exactly.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn chance(&mut self, p: f64) -> bool {
+        self.unit() < p
+    }
+    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        (lo.ln() + (hi.ln() - lo.ln()) * self.unit()).exp()
+    }
+}
+
+#[derive(Debug, Clone)]
+struct Var {
+    name: String,
+    vr: u32,
+    causality: String,
+    variability: String,
+    kind: &'static str,
+    start: Option<f64>,
+}
+
+fn attr(e: &quick_xml::events::BytesStart, key: &[u8]) -> Option<String> {
+    e.attributes()
+        .flatten()
+        .find(|a| a.key.as_ref() == key)
+        .map(|a| String::from_utf8_lossy(&a.value).into_owned())
+}
+
+/// GUID and scalar variables of a model description.
+fn read_description(path: &Path) -> Result<(String, Vec<Var>), String> {
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut reader = Reader::from_str(&text);
+    let mut guid = String::new();
+    let mut vars = Vec::new();
+    let mut current: Option<Var> = None;
+    loop {
+        match reader.read_event().map_err(|e| e.to_string())? {
+            Event::Start(e) | Event::Empty(e) => match e.name().as_ref() {
+                b"fmiModelDescription" => guid = attr(&e, b"guid").unwrap_or_default(),
+                b"ScalarVariable" => {
+                    current = Some(Var {
+                        name: attr(&e, b"name").unwrap_or_default(),
+                        vr: attr(&e, b"valueReference")
+                            .and_then(|v| v.parse().ok())
+                            .ok_or("valueReference")?,
+                        causality: attr(&e, b"causality").unwrap_or("local".into()),
+                        variability: attr(&e, b"variability").unwrap_or("continuous".into()),
+                        kind: "Real",
+                        start: None,
+                    })
+                }
+                tag @ (b"Real" | b"Integer" | b"Boolean") => {
+                    if let Some(v) = current.as_mut() {
+                        v.kind = match tag {
+                            b"Real" => "Real",
+                            b"Integer" => "Integer",
+                            _ => "Boolean",
+                        };
+                        v.start = attr(&e, b"start").and_then(|s| match s.as_str() {
+                            "true" => Some(1.0),
+                            "false" => Some(0.0),
+                            other => other.parse().ok(),
+                        });
+                    }
+                }
+                _ => {}
+            },
+            Event::End(e) if e.name().as_ref() == b"ScalarVariable" => {
+                vars.extend(current.take());
+            }
+            Event::Eof => break,
+            _ => {}
+        }
+    }
+    Ok((guid, vars))
+}
+
+/// The importer's view of the FMI 2.0 Co-Simulation state machine.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Phase {
+    Instantiated,
+    Initialization,
+    StepComplete,
+    StepFailed,
+    Terminated,
+    /// After `fmi2Error`: only reset, restore, get and free are meaningful.
+    Error,
+}
+
+struct Fuzz<'a> {
+    lib: &'a Fmi2Binding,
+    c: fmi2Component,
+    vars: &'a [Var],
+    rng: Rng,
+    phase: Phase,
+    time: f64,
+    stop_time: Option<f64>,
+    states: Vec<fmi2FMUstate>,
+    log: Vec<String>,
+    /// Print every call as it is made (set by `ROTOR_FUZZ_TRACE`, used by the
+    /// parent to show the call a hang is stuck in).
+    trace: bool,
+}
+
+fn status_name(s: fmi2Status) -> &'static str {
+    match s {
+        0 => "OK",
+        1 => "Warning",
+        2 => "Discard",
+        3 => "Error",
+        4 => "Fatal",
+        5 => "Pending",
+        _ => "INVALID",
+    }
+}
+
+impl Fuzz<'_> {
+    fn note(&mut self, entry: String) {
+        if self.trace {
+            eprintln!("{entry}");
+        }
+        self.log.push(entry);
+    }
+
+    fn calling(&self, call: &str) {
+        if self.trace {
+            eprintln!("calling {call} …");
+        }
+    }
+
+    fn fail(&self, why: String) -> String {
+        let tail: Vec<&String> = self.log.iter().rev().take(25).collect();
+        let mut text = format!("{why}\nlast calls (newest first):\n");
+        for line in tail {
+            text.push_str("  ");
+            text.push_str(line);
+            text.push('\n');
+        }
+        text
+    }
+
+    fn check_status(&self, call: &str, s: fmi2Status) -> Result<(), String> {
+        if s > 4 || (s == 5 && call == "fmi2DoStep") {
+            return Err(self.fail(format!("{call} returned status {s} ({})", status_name(s))));
+        }
+        Ok(())
+    }
+
+    /// A call the state machine forbids must give fmi2Error.
+    fn expect_error(&self, call: &str, s: fmi2Status, why: &str) -> Result<(), String> {
+        if s != fmi2Status_fmi2Error && s != fmi2Status_fmi2Fatal {
+            return Err(self.fail(format!(
+                "{call} returned {} but must return fmi2Error: {why}",
+                status_name(s)
+            )));
+        }
+        Ok(())
+    }
+
+    fn after(&mut self, s: fmi2Status) {
+        if s == fmi2Status_fmi2Error || s == fmi2Status_fmi2Fatal {
+            self.phase = Phase::Error;
+        }
+    }
+
+    fn interesting_real(&mut self, var: &Var) -> f64 {
+        let start = var.start.unwrap_or(1.0);
+        match self.rng.below(14) {
+            0 => f64::NAN,
+            1 => f64::INFINITY,
+            2 => -f64::INFINITY,
+            3 => 0.0,
+            4 => -start.abs().max(1.0),
+            5 => 1e-300,
+            6 => 1e300,
+            7 => 1e5,
+            8 => 1e-12,
+            9 => 1e-7,
+            _ => start * self.rng.log_uniform(0.25, 4.0),
+        }
+    }
+
+    fn random_var(&mut self) -> &Var {
+        let k = self.rng.below(self.vars.len());
+        &self.vars[k]
+    }
+
+    fn set_real(&mut self) -> Result<(), String> {
+        let unknown = self.rng.chance(0.05);
+        let var = if unknown {
+            Var {
+                name: "<unknown>".into(),
+                vr: 1_000_000 + self.rng.below(1000) as u32,
+                causality: "none".into(),
+                variability: "none".into(),
+                kind: "Real",
+                start: None,
+            }
+        } else {
+            let v = self.random_var().clone();
+            if v.kind != "Real" {
+                return self.set_integer_or_boolean(&v);
+            }
+            v
+        };
+        let value = self.interesting_real(&var);
+        let s = unsafe { self.lib.fmi2SetReal(self.c, &var.vr, 1, &value) };
+        self.note(format!(
+            "fmi2SetReal({} = {value:e}) → {}",
+            var.name,
+            status_name(s)
+        ));
+        self.check_status("fmi2SetReal", s)?;
+        if self.phase != Phase::Error {
+            let settable_now = match var.causality.as_str() {
+                "input" => self.phase != Phase::Terminated,
+                "parameter" => match self.phase {
+                    Phase::Instantiated | Phase::Initialization => true,
+                    Phase::StepComplete | Phase::StepFailed => var.variability == "tunable",
+                    _ => false,
+                },
+                _ => false,
+            };
+            if unknown {
+                self.expect_error("fmi2SetReal", s, "unknown value reference")?;
+            } else if !settable_now {
+                self.expect_error(
+                    "fmi2SetReal",
+                    s,
+                    &format!(
+                        "{} ({}, {}) is not settable in {:?}",
+                        var.name, var.causality, var.variability, self.phase
+                    ),
+                )?;
+            } else if value.is_nan() {
+                self.expect_error("fmi2SetReal", s, "NaN is not a value")?;
+            }
+        }
+        self.after(s);
+        Ok(())
+    }
+
+    fn set_integer_or_boolean(&mut self, var: &Var) -> Result<(), String> {
+        let s = if var.kind == "Integer" {
+            let value: fmi2Integer = match self.rng.below(5) {
+                0 => i32::MIN,
+                1 => -1,
+                2 => 0,
+                3 => i32::MAX,
+                _ => 1 + self.rng.below(100) as i32,
+            };
+            let s = unsafe { self.lib.fmi2SetInteger(self.c, &var.vr, 1, &value) };
+            self.note(format!(
+                "fmi2SetInteger({} = {value}) → {}",
+                var.name,
+                status_name(s)
+            ));
+            s
+        } else {
+            let value: fmi2Boolean = self.rng.below(3) as i32;
+            let s = unsafe { self.lib.fmi2SetBoolean(self.c, &var.vr, 1, &value) };
+            self.note(format!(
+                "fmi2SetBoolean({} = {value}) → {}",
+                var.name,
+                status_name(s)
+            ));
+            s
+        };
+        self.check_status("fmi2Set", s)?;
+        self.after(s);
+        Ok(())
+    }
+
+    fn get_all(&mut self) -> Result<(), String> {
+        let reals: Vec<&Var> = self.vars.iter().filter(|v| v.kind == "Real").collect();
+        let refs: Vec<u32> = reals.iter().map(|v| v.vr).collect();
+        let mut values = vec![0.0; refs.len()];
+        let s = unsafe {
+            self.lib
+                .fmi2GetReal(self.c, refs.as_ptr(), refs.len(), values.as_mut_ptr())
+        };
+        self.log
+            .push(format!("fmi2GetReal(all) → {}", status_name(s)));
+        self.check_status("fmi2GetReal", s)?;
+        if s <= fmi2Status_fmi2Warning {
+            for (v, x) in reals.iter().zip(&values) {
+                if !x.is_finite() {
+                    return Err(self.fail(format!(
+                        "fmi2GetReal gave {} = {x} with {}",
+                        v.name,
+                        status_name(s)
+                    )));
+                }
+            }
+        }
+        let mut t = 0.0;
+        let s = unsafe {
+            self.lib
+                .fmi2GetRealStatus(self.c, fmi2StatusKind_fmi2LastSuccessfulTime, &mut t)
+        };
+        self.note(format!(
+            "fmi2GetRealStatus(LastSuccessfulTime) = {t} → {}",
+            status_name(s)
+        ));
+        self.check_status("fmi2GetRealStatus", s)?;
+        if s <= fmi2Status_fmi2Warning && !t.is_finite() {
+            return Err(self.fail(format!(
+                "fmi2GetRealStatus(LastSuccessfulTime) = {t} with {}",
+                status_name(s)
+            )));
+        }
+        Ok(())
+    }
+
+    fn do_step(&mut self) -> Result<(), String> {
+        let h = match self.rng.below(10) {
+            0 => -1e-3,
+            1 => 0.0,
+            2 => self.rng.log_uniform(1e-9, 1e-5),
+            3 => self.rng.log_uniform(0.05, 0.3),
+            _ => self.rng.log_uniform(1e-4, 2e-2),
+        };
+        let t = if self.rng.chance(0.9) {
+            self.time
+        } else {
+            self.time + self.rng.log_uniform(1e-6, 1.0)
+        };
+        self.calling(&format!("fmi2DoStep(t = {t}, h = {h:e})"));
+        let s = unsafe { self.lib.fmi2DoStep(self.c, t, h, fmi2True as fmi2Boolean) };
+        self.note(format!(
+            "fmi2DoStep(t = {t}, h = {h:e}) → {}",
+            status_name(s)
+        ));
+        self.check_status("fmi2DoStep", s)?;
+        if self.phase != Phase::Error {
+            if self.phase != Phase::StepComplete {
+                self.expect_error(
+                    "fmi2DoStep",
+                    s,
+                    &format!("no step is allowed in {:?}", self.phase),
+                )?;
+            } else if h < 0.0 {
+                self.expect_error("fmi2DoStep", s, "negative communication step")?;
+            } else if let Some(stop) = self.stop_time
+                && t == self.time
+                && t + h > stop * (1.0 + 1e-12) + 1e-12
+            {
+                self.expect_error(
+                    "fmi2DoStep",
+                    s,
+                    &format!("t + h = {} is past the stop time {stop}", t + h),
+                )?;
+            }
+        }
+        match s {
+            0 | 1 if self.phase == Phase::StepComplete => self.time = t + h,
+            2 => self.phase = Phase::StepFailed,
+            _ => self.after(s),
+        }
+        Ok(())
+    }
+
+    fn state_calls(&mut self) -> Result<(), String> {
+        match self.rng.below(4) {
+            0 => {
+                let mut state: fmi2FMUstate = std::ptr::null_mut();
+                let s = unsafe { self.lib.fmi2GetFMUstate(self.c, &mut state) };
+                self.log
+                    .push(format!("fmi2GetFMUstate → {}", status_name(s)));
+                self.check_status("fmi2GetFMUstate", s)?;
+                if s == fmi2Status_fmi2OK && !state.is_null() {
+                    self.states.push(state);
+                }
+                self.after(s);
+            }
+            1 if !self.states.is_empty() => {
+                let k = self.rng.below(self.states.len());
+                let s = unsafe { self.lib.fmi2SetFMUstate(self.c, self.states[k]) };
+                self.log
+                    .push(format!("fmi2SetFMUstate(#{k}) → {}", status_name(s)));
+                self.check_status("fmi2SetFMUstate", s)?;
+                // The importer does not track which phase the state was saved in.
+                if s == fmi2Status_fmi2OK {
+                    self.phase = Phase::StepComplete;
+                    let mut t = 0.0;
+                    unsafe {
+                        self.lib.fmi2GetRealStatus(
+                            self.c,
+                            fmi2StatusKind_fmi2LastSuccessfulTime,
+                            &mut t,
+                        )
+                    };
+                    self.time = t;
+                }
+            }
+            2 => self.serialize_round_trip()?,
+            _ if !self.states.is_empty() => {
+                let mut state = self.states.swap_remove(self.rng.below(self.states.len()));
+                let s = unsafe { self.lib.fmi2FreeFMUstate(self.c, &mut state) };
+                self.log
+                    .push(format!("fmi2FreeFMUstate → {}", status_name(s)));
+                self.check_status("fmi2FreeFMUstate", s)?;
+            }
+            _ => {}
+        }
+        Ok(())
+    }
+
+    fn serialize_round_trip(&mut self) -> Result<(), String> {
+        let Some(&state) = self.states.last() else {
+            return Ok(());
+        };
+        let mut size = 0usize;
+        let s = unsafe {
+            self.lib
+                .fmi2SerializedFMUstateSize(self.c, state, &mut size)
+        };
+        self.check_status("fmi2SerializedFMUstateSize", s)?;
+        if s != fmi2Status_fmi2OK || size > 1 << 30 {
+            return Ok(());
+        }
+        let mut bytes = vec![0 as c_char; size];
+        let s = unsafe {
+            self.lib
+                .fmi2SerializeFMUstate(self.c, state, bytes.as_mut_ptr(), size)
+        };
+        self.check_status("fmi2SerializeFMUstate", s)?;
+        let how = match self.rng.below(5) {
+            0 => {
+                let cut = self.rng.below(size.max(1));
+                bytes.truncate(cut);
+                format!("truncated to {cut}")
+            }
+            1 if size > 0 => {
+                let bit = self.rng.below(size * 8);
+                bytes[bit / 8] ^= (1u8 << (bit % 8)) as c_char;
+                format!("bit {bit} flipped")
+            }
+            2 => {
+                for b in bytes.iter_mut() {
+                    *b = self.rng.next() as c_char;
+                }
+                "random bytes".to_string()
+            }
+            _ => "intact".to_string(),
+        };
+        let mut restored: fmi2FMUstate = std::ptr::null_mut();
+        let s = unsafe {
+            self.lib
+                .fmi2DeSerializeFMUstate(self.c, bytes.as_ptr(), bytes.len(), &mut restored)
+        };
+        self.note(format!(
+            "fmi2DeSerializeFMUstate({how}) → {}",
+            status_name(s)
+        ));
+        self.check_status("fmi2DeSerializeFMUstate", s)?;
+        if s == fmi2Status_fmi2OK && !restored.is_null() {
+            self.states.push(restored);
+        }
+        Ok(())
+    }
+
+    fn lifecycle(&mut self) -> Result<(), String> {
+        match self.rng.below(6) {
+            0 => {
+                let stop_defined = self.rng.chance(0.5);
+                let stop = self.rng.log_uniform(0.01, 2.0);
+                let s = unsafe {
+                    self.lib
+                        .fmi2SetupExperiment(self.c, 0, 0.0, 0.0, stop_defined as i32, stop)
+                };
+                self.note(format!(
+                    "fmi2SetupExperiment(stop {stop_defined}: {stop}) → {}",
+                    status_name(s)
+                ));
+                self.check_status("fmi2SetupExperiment", s)?;
+                if self.phase != Phase::Error && self.phase != Phase::Instantiated {
+                    self.expect_error(
+                        "fmi2SetupExperiment",
+                        s,
+                        &format!("only before initialization, not in {:?}", self.phase),
+                    )?;
+                }
+                if s == fmi2Status_fmi2OK && self.phase == Phase::Instantiated {
+                    self.stop_time = stop_defined.then_some(stop);
+                }
+                self.after(s);
+            }
+            1 => {
+                let s = unsafe { self.lib.fmi2EnterInitializationMode(self.c) };
+                self.log
+                    .push(format!("fmi2EnterInitializationMode → {}", status_name(s)));
+                self.check_status("fmi2EnterInitializationMode", s)?;
+                if self.phase != Phase::Error && self.phase != Phase::Instantiated {
+                    self.expect_error(
+                        "fmi2EnterInitializationMode",
+                        s,
+                        &format!("not in {:?}", self.phase),
+                    )?;
+                }
+                if s <= fmi2Status_fmi2Warning && self.phase == Phase::Instantiated {
+                    self.phase = Phase::Initialization;
+                }
+                self.after(s);
+            }
+            2 => {
+                let s = unsafe { self.lib.fmi2ExitInitializationMode(self.c) };
+                self.log
+                    .push(format!("fmi2ExitInitializationMode → {}", status_name(s)));
+                self.check_status("fmi2ExitInitializationMode", s)?;
+                if self.phase != Phase::Error && self.phase != Phase::Initialization {
+                    self.expect_error(
+                        "fmi2ExitInitializationMode",
+                        s,
+                        &format!("not in {:?}", self.phase),
+                    )?;
+                }
+                if s <= fmi2Status_fmi2Warning && self.phase == Phase::Initialization {
+                    self.phase = Phase::StepComplete;
+                }
+                self.after(s);
+            }
+            3 => {
+                let s = unsafe { self.lib.fmi2Terminate(self.c) };
+                self.note(format!("fmi2Terminate → {}", status_name(s)));
+                self.check_status("fmi2Terminate", s)?;
+                if s <= fmi2Status_fmi2Warning
+                    && matches!(self.phase, Phase::StepComplete | Phase::StepFailed)
+                {
+                    self.phase = Phase::Terminated;
+                }
+            }
+            4 => {
+                let s = unsafe { self.lib.fmi2Reset(self.c) };
+                self.note(format!("fmi2Reset → {}", status_name(s)));
+                self.check_status("fmi2Reset", s)?;
+                if s <= fmi2Status_fmi2Warning {
+                    self.phase = Phase::Instantiated;
+                    self.time = 0.0;
+                    self.stop_time = None;
+                }
+            }
+            _ => {
+                let value = [self.rng.log_uniform(1.0, 100.0)];
+                let inputs: Vec<&Var> = self
+                    .vars
+                    .iter()
+                    .filter(|v| v.causality == "input")
+                    .collect();
+                if let Some(v) = inputs.first() {
+                    let order: fmi2Integer = 1;
+                    let s = unsafe {
+                        self.lib.fmi2SetRealInputDerivatives(
+                            self.c,
+                            &v.vr,
+                            1,
+                            &order,
+                            value.as_ptr(),
+                        )
+                    };
+                    self.note(format!(
+                        "fmi2SetRealInputDerivatives({}) → {}",
+                        v.name,
+                        status_name(s)
+                    ));
+                    self.check_status("fmi2SetRealInputDerivatives", s)?;
+                    self.after(s);
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Initialize the normal way (most sequences should reach stepping).
+    fn initialize(&mut self) -> Result<(), String> {
+        let stop_defined = self.rng.chance(0.3);
+        let stop = self.rng.log_uniform(0.02, 1.0);
+        let s = unsafe {
+            self.lib
+                .fmi2SetupExperiment(self.c, 0, 0.0, 0.0, stop_defined as i32, stop)
+        };
+        self.note(format!(
+            "fmi2SetupExperiment(stop {stop_defined}: {stop}) → {}",
+            status_name(s)
+        ));
+        self.check_status("fmi2SetupExperiment", s)?;
+        if s == fmi2Status_fmi2OK {
+            self.stop_time = stop_defined.then_some(stop);
+        }
+        let s = unsafe { self.lib.fmi2EnterInitializationMode(self.c) };
+        self.log
+            .push(format!("fmi2EnterInitializationMode → {}", status_name(s)));
+        self.check_status("fmi2EnterInitializationMode", s)?;
+        self.phase = Phase::Initialization;
+        if self.rng.chance(0.5) {
+            self.set_real()?;
+        }
+        if self.phase == Phase::Error {
+            return Ok(());
+        }
+        let s = unsafe { self.lib.fmi2ExitInitializationMode(self.c) };
+        self.log
+            .push(format!("fmi2ExitInitializationMode → {}", status_name(s)));
+        self.check_status("fmi2ExitInitializationMode", s)?;
+        self.phase = if s <= fmi2Status_fmi2Warning {
+            Phase::StepComplete
+        } else {
+            Phase::Error
+        };
+        Ok(())
+    }
+
+    fn run(&mut self, calls: usize) -> Result<(), String> {
+        if self.rng.chance(0.8) {
+            self.initialize()?;
+        }
+        for _ in 0..calls {
+            if self.phase == Phase::Error && self.rng.chance(0.5) {
+                // The standard's ways out of an error: reset, or restore a state.
+                if !self.states.is_empty() && self.rng.chance(0.5) {
+                    let s = unsafe { self.lib.fmi2SetFMUstate(self.c, self.states[0]) };
+                    self.note(format!(
+                        "fmi2SetFMUstate(#0) after error → {}",
+                        status_name(s)
+                    ));
+                    self.check_status("fmi2SetFMUstate", s)?;
+                    if s == fmi2Status_fmi2OK {
+                        self.phase = Phase::StepComplete;
+                        let mut t = 0.0;
+                        unsafe {
+                            self.lib.fmi2GetRealStatus(
+                                self.c,
+                                fmi2StatusKind_fmi2LastSuccessfulTime,
+                                &mut t,
+                            )
+                        };
+                        self.time = t;
+                    }
+                } else {
+                    let s = unsafe { self.lib.fmi2Reset(self.c) };
+                    self.log
+                        .push(format!("fmi2Reset after error → {}", status_name(s)));
+                    self.check_status("fmi2Reset", s)?;
+                    if s == fmi2Status_fmi2OK {
+                        self.phase = Phase::Instantiated;
+                        self.time = 0.0;
+                        self.stop_time = None;
+                    }
+                }
+                continue;
+            }
+            match self.rng.below(20) {
+                0..=6 => self.do_step()?,
+                7..=10 => self.set_real()?,
+                11..=13 => self.get_all()?,
+                14..=16 => self.state_calls()?,
+                _ => self.lifecycle()?,
+            }
+        }
+        self.get_all()
+    }
+}
+
+fn run_sequence(
+    dir: &Path,
+    lib: &Fmi2Binding,
+    guid: &str,
+    vars: &[Var],
+    seed: u64,
+) -> Result<(), String> {
+    let name = CString::new(format!("fuzz{seed}")).unwrap();
+    let guid = CString::new(guid).unwrap();
+    let uri = CString::new(format!("file://{}", dir.join("resources").display())).unwrap();
+    let callbacks = fmi2CallbackFunctions {
+        logger: None,
+        allocateMemory: None,
+        freeMemory: None,
+        stepFinished: None,
+        componentEnvironment: std::ptr::null_mut::<c_void>(),
+    };
+    let c = unsafe {
+        lib.fmi2Instantiate(
+            name.as_ptr(),
+            fmi2Type_fmi2CoSimulation,
+            guid.as_ptr(),
+            uri.as_ptr(),
+            &callbacks,
+            0,
+            0,
+        )
+    };
+    if c.is_null() {
+        return Err(format!("seed {seed}: fmi2Instantiate returned NULL"));
+    }
+    let mut rng = Rng(seed);
+    let calls = 5 + rng.below(40);
+    let mut fuzz = Fuzz {
+        lib,
+        c,
+        vars,
+        rng,
+        phase: Phase::Instantiated,
+        time: 0.0,
+        stop_time: None,
+        states: Vec::new(),
+        log: Vec::new(),
+        trace: std::env::var_os("ROTOR_FUZZ_TRACE").is_some(),
+    };
+    let result = fuzz.run(calls);
+    for mut state in std::mem::take(&mut fuzz.states) {
+        unsafe { lib.fmi2FreeFMUstate(c, &mut state) };
+    }
+    unsafe { lib.fmi2FreeInstance(c) };
+    result.map_err(|e| format!("seed {seed}: {e}"))
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    if args.len() != 4 {
+        eprintln!("usage: fmu_fuzz UNPACKED_FMU_DIR FIRST_SEED COUNT");
+        std::process::exit(2);
+    }
+    let dir = PathBuf::from(&args[1]);
+    let first: u64 = args[2].parse().expect("FIRST_SEED");
+    let count: u64 = args[3].parse().expect("COUNT");
+    let (guid, vars) = read_description(&dir.join("modelDescription.xml")).unwrap_or_else(|e| {
+        eprintln!("{e}");
+        std::process::exit(2)
+    });
+    let so = std::fs::read_dir(dir.join("binaries/linux64"))
+        .expect("binaries/linux64")
+        .map(|e| e.unwrap().path())
+        .find(|p| p.extension().is_some_and(|x| x == "so"))
+        .expect("a shared library in binaries/linux64");
+    let lib = unsafe { Fmi2Binding::new(&so) }.expect("load the FMU binary");
+    for seed in first..first + count {
+        // The parent reads the last seed printed to name a crash or a hang.
+        println!("seed {seed}");
+        if let Err(e) = run_sequence(&dir, &lib, &guid, &vars, seed) {
+            eprintln!("{e}");
+            std::process::exit(1);
+        }
+    }
+}
