@@ -72,6 +72,10 @@ pub struct SimState {
     pub unbalance_rate: Vec<f64>,
     /// Angular position of each unbalance plane at spin angle 0 (rad).
     pub unbalance_phase: Vec<f64>,
+    /// Step size the factorization in hand was made for (s); 0 for none.
+    pub factor_step: f64,
+    /// Spin speed the factorization in hand was made at (rad/s).
+    pub factor_speed: f64,
 }
 
 /// Counters of the work done, for reports.
@@ -240,6 +244,8 @@ impl Simulator {
             unbalance: rotor.model.unbalances.iter().map(|u| u.magnitude).collect(),
             unbalance_rate: vec![0.0; rotor.model.unbalances.len()],
             unbalance_phase: rotor.model.unbalances.iter().map(|u| u.phase).collect(),
+            factor_step: 0.0,
+            factor_speed: 0.0,
         };
         let output_evals: Vec<BearingEval> = output_bearings
             .iter()
@@ -280,6 +286,7 @@ impl Simulator {
         check_options(&options)?;
         self.options = options;
         self.factor = None;
+        self.record_factor();
         Ok(())
     }
 
@@ -293,7 +300,10 @@ impl Simulator {
         &self.state
     }
 
-    /// Restore a state obtained from [`Simulator::state`] of a simulator of the same rotor.
+    /// Restore a state obtained from [`Simulator::state`] of a simulator of the
+    /// same rotor, with the factorization it was stepping with (refactored at
+    /// exactly its step and speed when the one in hand differs), so that the
+    /// continuation repeats the original run bit for bit.
     pub fn set_state(&mut self, state: SimState) -> Result<(), SolverError> {
         let s = &self.state;
         if state.u.len() != s.u.len()
@@ -310,8 +320,38 @@ impl Simulator {
                 "state does not belong to this rotor (sizes differ)".into(),
             ));
         }
+        let (step, speed) = (state.factor_step, state.factor_speed);
+        if !(step.is_finite() && step >= 0.0 && speed.is_finite()) {
+            return Err(SolverError::Input(format!(
+                "state factorization step {step} s or speed {speed} rad/s is invalid"
+            )));
+        }
+        let held = self.factor.as_ref().map(|f| (f.step, f.speed));
+        if step == 0.0 {
+            self.factor = None;
+        } else if held
+            .is_none_or(|(h, w)| h.to_bits() != step.to_bits() || w.to_bits() != speed.to_bits())
+        {
+            let reuse = self.factor.take();
+            match self.dynamic_factor(step, speed, reuse) {
+                Ok(f) => self.factor = Some(f),
+                Err(e) => {
+                    self.record_factor();
+                    return Err(e.into());
+                }
+            }
+        }
+        self.schur.ready = false;
         self.state = state;
         Ok(())
+    }
+
+    /// Record the step and speed of the factorization in hand in the state.
+    pub(super) fn record_factor(&mut self) {
+        (self.state.factor_step, self.state.factor_speed) = self
+            .factor
+            .as_ref()
+            .map_or((0.0, 0.0), |f| (f.step, f.speed));
     }
 
     /// Current time (s).
@@ -450,6 +490,7 @@ impl Simulator {
         self.state.pd.fill(0.0);
         self.state.pdd.fill(0.0);
         self.factor = None;
+        self.record_factor();
         Ok(())
     }
 
