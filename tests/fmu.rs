@@ -519,7 +519,12 @@ fn rollback_is_bit_identical_on_every_model_and_step() {
     let mut failures = Vec::new();
     for path in &paths {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
-        for (internal, rate) in [(Some(1e-3), 0.0), (Some(1e-3), 5.0), (None, 5.0)] {
+        for (internal, rate) in [
+            (Some(1e-3), 0.0),
+            (Some(1e-3), 5.0),
+            (None, 0.0),
+            (None, 5.0),
+        ] {
             let tag = format!("bits_{stem}_{internal:?}_{rate}");
             let make = |which: &str| {
                 let fmu = Fmu::of_model(&format!("{tag}_{which}"), path);
