@@ -63,10 +63,10 @@ fn model_path() -> PathBuf {
 }
 
 /// A resources directory holding the model, as inside an unpacked FMU.
-fn resources(tag: &str) -> PathBuf {
+fn resources(tag: &str, model: &Path) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("fmu_resources_{tag}"));
     std::fs::create_dir_all(&dir).unwrap();
-    std::fs::copy(model_path(), dir.join("model.toml")).unwrap();
+    std::fs::copy(model, dir.join("model.toml")).unwrap();
     dir
 }
 
@@ -83,11 +83,20 @@ impl Fmu {
     }
 
     fn try_new(name: &str, guid: Option<&str>) -> Option<Self> {
+        Self::try_new_of(name, guid, &model_path())
+    }
+
+    /// An instance of the model file `path`.
+    fn of_model(name: &str, path: &Path) -> Self {
+        Self::try_new_of(name, None, path).expect("instantiation failed")
+    }
+
+    fn try_new_of(name: &str, guid: Option<&str>, path: &Path) -> Option<Self> {
         let lib = unsafe { Fmi2Binding::new(library_path()) }.expect("load librotor_bearing.so");
-        let model = RotorModel::from_file(&model_path()).unwrap();
+        let model = RotorModel::from_file(path).unwrap();
         let (_, real_guid) = model_description(&model);
         let guid = CString::new(guid.unwrap_or(&real_guid)).unwrap();
-        let uri = CString::new(format!("file://{}", resources(name).display())).unwrap();
+        let uri = CString::new(format!("file://{}", resources(name, path).display())).unwrap();
         let cname = CString::new(name).unwrap();
         let cb = Box::new(callbacks());
         let c = unsafe {
@@ -453,6 +462,151 @@ fn rollback_and_serialized_state_continue_identically() {
         fresh.lib.fmi2FreeFMUstate(fresh.c, &mut restored);
     }
     assert!(state.is_null());
+}
+
+/// Bits of every real output of `fmu`.
+fn real_output_bits(fmu: &Fmu) -> Vec<u64> {
+    let names: Vec<&str> = fmu
+        .vars
+        .iter()
+        .filter(|v| {
+            v.causality == rotor_bearing::fmi2::variables::Causality::Output
+                && v.kind == rotor_bearing::fmi2::variables::Kind::Real
+        })
+        .map(|v| v.name.as_str())
+        .collect();
+    fmu.get(&names).iter().map(|v| v.to_bits()).collect()
+}
+
+/// Steps `k0..k1` of 0.01 s (at speed rate `rate`, rad/s²), with the real
+/// outputs after each.
+fn run_steps(fmu: &Fmu, k0: usize, k1: usize, rate: f64) -> Vec<Vec<u64>> {
+    let speed_vr = fmu.vr("shaft.speed");
+    (k0..k1)
+        .map(|k| {
+            let order = 1;
+            let status = unsafe {
+                fmu.lib
+                    .fmi2SetRealInputDerivatives(fmu.c, &speed_vr, 1, &order, &rate)
+            };
+            assert_eq!(status, fmi2Status_fmi2OK);
+            assert_eq!(
+                fmu.step(k as f64 * 0.01, 0.01),
+                fmi2Status_fmi2OK,
+                "{}",
+                last_log()
+            );
+            real_output_bits(fmu)
+        })
+        .collect()
+}
+
+/// On every shipped model, with a communication step of 0.01 s and internal
+/// steps that do not divide it in binary (1e-3 s and the default), with and
+/// without a speed ramp: after fmi2SetFMUstate, in the same instance and in a
+/// fresh one from the serialized image, every step repeats the uninterrupted
+/// run bit for bit.
+#[test]
+fn rollback_is_bit_identical_on_every_model_and_step() {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models");
+    let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    paths.sort();
+    assert!(paths.len() >= 6, "{paths:?}");
+    let mut failures = Vec::new();
+    for path in &paths {
+        let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
+        for (internal, rate) in [
+            (Some(1e-3), 0.0),
+            (Some(1e-3), 5.0),
+            (None, 0.0),
+            (None, 5.0),
+        ] {
+            let tag = format!("bits_{stem}_{internal:?}_{rate}");
+            let make = |which: &str| {
+                let fmu = Fmu::of_model(&format!("{tag}_{which}"), path);
+                if let Some(h) = internal {
+                    assert_eq!(fmu.set("solver.time_step", h), fmi2Status_fmi2OK);
+                }
+                fmu.init();
+                fmu
+            };
+            let plain = make("plain");
+            let want = run_steps(&plain, 0, 40, rate);
+
+            let fmu = make("rollback");
+            run_steps(&fmu, 0, 20, rate);
+            let mut state: fmi2FMUstate = std::ptr::null_mut();
+            assert_eq!(
+                unsafe { fmu.lib.fmi2GetFMUstate(fmu.c, &mut state) },
+                fmi2Status_fmi2OK
+            );
+            let mut size = 0usize;
+            assert_eq!(
+                unsafe { fmu.lib.fmi2SerializedFMUstateSize(fmu.c, state, &mut size) },
+                fmi2Status_fmi2OK
+            );
+            let mut bytes = vec![0 as c_char; size];
+            assert_eq!(
+                unsafe {
+                    fmu.lib
+                        .fmi2SerializeFMUstate(fmu.c, state, bytes.as_mut_ptr(), size)
+                },
+                fmi2Status_fmi2OK
+            );
+            run_steps(&fmu, 20, 40, rate);
+            assert_eq!(
+                unsafe { fmu.lib.fmi2SetFMUstate(fmu.c, state) },
+                fmi2Status_fmi2OK,
+                "{}",
+                last_log()
+            );
+            let again = run_steps(&fmu, 20, 40, rate);
+            unsafe { fmu.lib.fmi2FreeFMUstate(fmu.c, &mut state) };
+
+            let fresh = make("fresh");
+            let mut restored: fmi2FMUstate = std::ptr::null_mut();
+            assert_eq!(
+                unsafe {
+                    fresh
+                        .lib
+                        .fmi2DeSerializeFMUstate(fresh.c, bytes.as_ptr(), size, &mut restored)
+                },
+                fmi2Status_fmi2OK
+            );
+            assert_eq!(
+                unsafe { fresh.lib.fmi2SetFMUstate(fresh.c, restored) },
+                fmi2Status_fmi2OK
+            );
+            let continued = run_steps(&fresh, 20, 40, rate);
+            unsafe { fresh.lib.fmi2FreeFMUstate(fresh.c, &mut restored) };
+
+            for (what, got) in [("rollback", &again), ("fresh instance", &continued)] {
+                let worst = want[20..]
+                    .iter()
+                    .zip(got)
+                    .flat_map(|(a, b)| a.iter().zip(b))
+                    .map(|(&a, &b)| {
+                        let (a, b) = (f64::from_bits(a), f64::from_bits(b));
+                        if a == b {
+                            0.0
+                        } else {
+                            (a - b).abs() / a.abs().max(b.abs())
+                        }
+                    })
+                    .fold(0.0, f64::max);
+                if want[20..] != got[..] {
+                    failures.push(format!(
+                        "{stem}, internal step {internal:?}, ramp {rate} rad/s², {what}: max relative difference {worst:e}"
+                    ));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 #[test]

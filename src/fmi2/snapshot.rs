@@ -34,8 +34,9 @@ pub struct Snapshot {
 
 /// Start of every serialized state.
 pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
-/// Format version of the byte image (1 was the unversioned `RBFMU01` image).
-pub const VERSION: u64 = 2;
+/// Format version of the byte image (1 was the unversioned `RBFMU01` image;
+/// 3 added the step and speed of the factorization in hand).
+pub const VERSION: u64 = 3;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -61,7 +62,7 @@ fn phase_index(phase: Phase) -> f64 {
 }
 
 /// The scalar fields, in image order.
-const SCALARS: [Scalar; 11] = [
+const SCALARS: [Scalar; 13] = [
     ("time", |s| s.sim.time, |s, v| put(&mut s.sim.time, v)),
     (
         "spin_angle",
@@ -122,6 +123,22 @@ const SCALARS: [Scalar; 11] = [
                 true
             }
             _ => false,
+        },
+    ),
+    (
+        "factor_step",
+        |s| s.sim.factor_step,
+        |s, v| {
+            s.sim.factor_step = v;
+            v.is_finite() && v >= 0.0
+        },
+    ),
+    (
+        "factor_speed",
+        |s| s.sim.factor_speed,
+        |s, v| {
+            s.sim.factor_speed = v;
+            v.is_finite()
         },
     ),
 ];
@@ -307,6 +324,8 @@ mod tests {
                 unbalance: v(2, 10.0),
                 unbalance_rate: v(2, 11.0),
                 unbalance_phase: v(2, 12.0),
+                factor_step: 1e-3,
+                factor_speed: 13.0,
             },
             params: Params {
                 time_step: 1e-3,
@@ -371,17 +390,17 @@ mod tests {
         assert!(e.contains("u has 9 values, this model 8"), "{e}");
         assert!(longer.fits(&s).is_err());
 
-        let mut v3 = s.to_bytes();
-        v3[MAGIC.len()..MAGIC.len() + 8].copy_from_slice(&3u64.to_le_bytes());
-        let e = Snapshot::from_bytes(&v3, &s).unwrap_err();
-        assert!(e.contains("version 3"), "{e}");
+        let mut v4 = s.to_bytes();
+        v4[MAGIC.len()..MAGIC.len() + 8].copy_from_slice(&4u64.to_le_bytes());
+        let e = Snapshot::from_bytes(&v4, &s).unwrap_err();
+        assert!(e.contains("version 4"), "{e}");
     }
 
     #[test]
     fn out_of_domain_fields_are_refused() {
         let s = sample();
         let mut bytes = s.to_bytes();
-        // The phase is the last scalar, right after the header and ten others.
+        // The phase is the eleventh scalar, right after the header and ten others.
         let at = HEADER + 10 * 8;
         bytes[at..at + 8].copy_from_slice(&9.0f64.to_le_bytes());
         let body = bytes.len() - TRAILER;

@@ -92,6 +92,10 @@ pub struct SimState {
     pub unbalance_rate: Vec<f64>,
     /// Angular position of each unbalance plane at spin angle 0 (rad).
     pub unbalance_phase: Vec<f64>,
+    /// Step size the factorization in hand was made for (s); 0 for none.
+    pub factor_step: f64,
+    /// Spin speed the factorization in hand was made at (rad/s).
+    pub factor_speed: f64,
 }
 
 /// Counters of the work done, for reports.
@@ -264,6 +268,8 @@ impl Simulator {
             unbalance: rotor.model.unbalances.iter().map(|u| u.magnitude).collect(),
             unbalance_rate: vec![0.0; rotor.model.unbalances.len()],
             unbalance_phase: rotor.model.unbalances.iter().map(|u| u.phase).collect(),
+            factor_step: 0.0,
+            factor_speed: 0.0,
         };
         let output_evals: Vec<BearingEval> = output_bearings
             .iter()
@@ -304,6 +310,7 @@ impl Simulator {
         check_options(&options)?;
         self.options = options;
         self.factor = None;
+        self.record_factor();
         Ok(())
     }
 
@@ -317,7 +324,10 @@ impl Simulator {
         &self.state
     }
 
-    /// Restore a state obtained from [`Simulator::state`] of a simulator of the same rotor.
+    /// Restore a state obtained from [`Simulator::state`] of a simulator of the
+    /// same rotor, with the factorization it was stepping with (refactored at
+    /// exactly its step and speed when the one in hand differs), so that the
+    /// continuation repeats the original run bit for bit.
     pub fn set_state(&mut self, state: SimState) -> Result<(), SolverError> {
         let s = &self.state;
         if state.u.len() != s.u.len()
@@ -378,8 +388,42 @@ impl Simulator {
                 state.speed
             )));
         }
+        let (step, speed) = (state.factor_step, state.factor_speed);
+        // A factor is made for a sub-step: at most max_step_cuts halvings below the time step.
+        let smallest = SolverOptions::TIME_STEP_RANGE.0
+            * 0.5f64.powi(SolverOptions::MAX_STEP_CUTS_RANGE.1 as i32);
+        let step_ok = step == 0.0 || (smallest..=SolverOptions::TIME_STEP_RANGE.1).contains(&step);
+        if !(step_ok && speed.is_finite() && speed.abs() <= self.rotor.model.max_speed) {
+            return Err(SolverError::Input(format!(
+                "state factorization step {step} s or speed {speed} rad/s is invalid"
+            )));
+        }
+        let held = self.factor.as_ref().map(|f| (f.step, f.speed));
+        if step == 0.0 {
+            self.factor = None;
+        } else if held
+            .is_none_or(|(h, w)| h.to_bits() != step.to_bits() || w.to_bits() != speed.to_bits())
+        {
+            let reuse = self.factor.take();
+            match self.dynamic_factor(step, speed, reuse) {
+                Ok(f) => self.factor = Some(f),
+                Err(e) => {
+                    self.record_factor();
+                    return Err(e.into());
+                }
+            }
+        }
+        self.schur.ready = false;
         self.state = state;
         Ok(())
+    }
+
+    /// Record the step and speed of the factorization in hand in the state.
+    pub(super) fn record_factor(&mut self) {
+        (self.state.factor_step, self.state.factor_speed) = self
+            .factor
+            .as_ref()
+            .map_or((0.0, 0.0), |f| (f.step, f.speed));
     }
 
     /// Current time (s).
@@ -524,6 +568,7 @@ impl Simulator {
         self.state.pd.fill(0.0);
         self.state.pdd.fill(0.0);
         self.factor = None;
+        self.record_factor();
         Ok(())
     }
 
