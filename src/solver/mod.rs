@@ -56,10 +56,12 @@ mod newton;
 pub mod run;
 mod simulator;
 mod sites;
+mod state;
 pub mod statics;
 
 pub use run::{SpeedProfile, record};
 pub use simulator::{
-    BearingOutput, Outputs, ProbeOutput, SimState, Simulator, SolverError, SolverOptions, StepStats,
+    BearingOutput, Outputs, ProbeOutput, Simulator, SolverError, SolverOptions, StepStats,
 };
+pub use state::SimState;
 pub use statics::{Equilibrium, equilibrium};

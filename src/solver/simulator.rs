@@ -9,6 +9,7 @@ use super::factor::{Factor, FactorWork};
 use super::newmark::NewmarkWork;
 use super::newton::{CondensedWork, SchurSolve};
 use super::sites::Sites;
+use super::state::SimState;
 use super::statics;
 
 /// Solver settings.
@@ -59,43 +60,6 @@ impl Default for SolverOptions {
             gravity: true,
         }
     }
-}
-
-/// The complete dynamic state: restoring it reproduces a run bit for bit.
-#[derive(Debug, Clone, PartialEq)]
-pub struct SimState {
-    /// Time (s).
-    pub time: f64,
-    /// Rotor free DOFs: displacement, velocity, acceleration.
-    pub u: Vec<f64>,
-    /// Velocity.
-    pub ud: Vec<f64>,
-    /// Acceleration.
-    pub udd: Vec<f64>,
-    /// Bearing internal DOFs (pad tilts, m) and their rates.
-    pub p: Vec<f64>,
-    /// Rates of the internal DOFs.
-    pub pd: Vec<f64>,
-    /// Second derivatives of the internal DOFs (Newmark bookkeeping).
-    pub pdd: Vec<f64>,
-    /// Spin angle (rad).
-    pub spin_angle: f64,
-    /// Spin speed input at `speed_time` (rad/s).
-    pub speed: f64,
-    /// Spin acceleration input (rad/s²): `Ω(t) = speed + speed_rate (t − speed_time)`.
-    pub speed_rate: f64,
-    /// Time the inputs (speed, unbalance) refer to (s).
-    pub speed_time: f64,
-    /// Unbalance of each plane at `speed_time` (kg·m).
-    pub unbalance: Vec<f64>,
-    /// Rate of change of each plane's unbalance (kg·m/s).
-    pub unbalance_rate: Vec<f64>,
-    /// Angular position of each unbalance plane at spin angle 0 (rad).
-    pub unbalance_phase: Vec<f64>,
-    /// Step size the factorization in hand was made for (s); 0 for none.
-    pub factor_step: f64,
-    /// Spin speed the factorization in hand was made at (rad/s).
-    pub factor_speed: f64,
 }
 
 /// Counters of the work done, for reports.
@@ -344,50 +308,7 @@ impl Simulator {
                 "state does not belong to this rotor (sizes differ)".into(),
             ));
         }
-        let scalars = [
-            ("time", state.time),
-            ("spin_angle", state.spin_angle),
-            ("speed", state.speed),
-            ("speed_rate", state.speed_rate),
-            ("speed_time", state.speed_time),
-        ];
-        let vectors: [(&str, &[f64]); 9] = [
-            ("u", &state.u),
-            ("ud", &state.ud),
-            ("udd", &state.udd),
-            ("p", &state.p),
-            ("pd", &state.pd),
-            ("pdd", &state.pdd),
-            ("unbalance", &state.unbalance),
-            ("unbalance_rate", &state.unbalance_rate),
-            ("unbalance_phase", &state.unbalance_phase),
-        ];
-        let bad = scalars
-            .iter()
-            .find(|(_, v)| !v.is_finite())
-            .copied()
-            .or_else(|| {
-                vectors
-                    .iter()
-                    .find_map(|(name, v)| v.iter().find(|x| !x.is_finite()).map(|&x| (*name, x)))
-            });
-        if let Some((name, v)) = bad {
-            return Err(SolverError::Input(format!(
-                "state field {name} = {v} is not finite"
-            )));
-        }
-        if let Some(m) = state.unbalance.iter().find(|m| **m < 0.0) {
-            return Err(SolverError::Input(format!(
-                "state field unbalance = {m} kg·m is negative"
-            )));
-        }
-        let max = self.rotor.model.max_speed;
-        if state.speed.abs() > max {
-            return Err(SolverError::Input(format!(
-                "state field speed = {} rad/s exceeds the model's max_speed_rpm ({max} rad/s)",
-                state.speed
-            )));
-        }
+        state.check(self.rotor.model.max_speed)?;
         let (step, speed) = (state.factor_step, state.factor_speed);
         // A factor is made for a sub-step: at most max_step_cuts halvings below the time step.
         let smallest = SolverOptions::TIME_STEP_RANGE.0

@@ -1,0 +1,94 @@
+//! The simulator's complete dynamic state (the one field list a snapshot of
+//! the solver holds) and its validation when a front end restores it.
+
+use super::simulator::SolverError;
+
+/// The complete dynamic state: restoring it reproduces a run bit for bit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SimState {
+    /// Time (s).
+    pub time: f64,
+    /// Rotor free DOFs: displacement, velocity, acceleration.
+    pub u: Vec<f64>,
+    /// Velocity.
+    pub ud: Vec<f64>,
+    /// Acceleration.
+    pub udd: Vec<f64>,
+    /// Bearing internal DOFs (pad tilts, m) and their rates.
+    pub p: Vec<f64>,
+    /// Rates of the internal DOFs.
+    pub pd: Vec<f64>,
+    /// Second derivatives of the internal DOFs (Newmark bookkeeping).
+    pub pdd: Vec<f64>,
+    /// Spin angle (rad).
+    pub spin_angle: f64,
+    /// Spin speed input at `speed_time` (rad/s).
+    pub speed: f64,
+    /// Spin acceleration input (rad/s²): `Ω(t) = speed + speed_rate (t − speed_time)`.
+    pub speed_rate: f64,
+    /// Time the inputs (speed, unbalance) refer to (s).
+    pub speed_time: f64,
+    /// Unbalance of each plane at `speed_time` (kg·m).
+    pub unbalance: Vec<f64>,
+    /// Rate of change of each plane's unbalance (kg·m/s).
+    pub unbalance_rate: Vec<f64>,
+    /// Angular position of each unbalance plane at spin angle 0 (rad).
+    pub unbalance_phase: Vec<f64>,
+    /// Step size the factorization in hand was made for (s); 0 for none.
+    pub factor_step: f64,
+    /// Spin speed the factorization in hand was made at (rad/s).
+    pub factor_speed: f64,
+}
+
+impl SimState {
+    /// Every field finite, unbalances non-negative, `|speed| ≤ max_speed`
+    /// (rad/s): a state that passes can be stepped; the error names the field.
+    pub fn check(&self, max_speed: f64) -> Result<(), SolverError> {
+        let scalars = [
+            ("time", self.time),
+            ("spin_angle", self.spin_angle),
+            ("speed", self.speed),
+            ("speed_rate", self.speed_rate),
+            ("speed_time", self.speed_time),
+            ("factor_step", self.factor_step),
+            ("factor_speed", self.factor_speed),
+        ];
+        let vectors: [(&str, &[f64]); 9] = [
+            ("u", &self.u),
+            ("ud", &self.ud),
+            ("udd", &self.udd),
+            ("p", &self.p),
+            ("pd", &self.pd),
+            ("pdd", &self.pdd),
+            ("unbalance", &self.unbalance),
+            ("unbalance_rate", &self.unbalance_rate),
+            ("unbalance_phase", &self.unbalance_phase),
+        ];
+        let bad = scalars
+            .iter()
+            .find(|(_, v)| !v.is_finite())
+            .copied()
+            .or_else(|| {
+                vectors
+                    .iter()
+                    .find_map(|(name, v)| v.iter().find(|x| !x.is_finite()).map(|&x| (*name, x)))
+            });
+        if let Some((name, v)) = bad {
+            return Err(SolverError::Input(format!(
+                "state field {name} = {v} is not finite"
+            )));
+        }
+        if let Some(m) = self.unbalance.iter().find(|m| **m < 0.0) {
+            return Err(SolverError::Input(format!(
+                "state field unbalance = {m} kg·m is negative"
+            )));
+        }
+        if self.speed.abs() > max_speed {
+            return Err(SolverError::Input(format!(
+                "state field speed = {} rad/s exceeds the model's max_speed_rpm ({max_speed} rad/s)",
+                self.speed
+            )));
+        }
+        Ok(())
+    }
+}
