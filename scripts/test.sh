@@ -22,6 +22,8 @@ status=0
 # --no-fail-fast: every test binary runs even when an earlier one fails; the
 # exit status is still non-zero on any failure.
 cargo test --all-targets --no-fail-fast 2>&1 | tee "$log" || status=$?
+# The doctests (how a library user calls each public module) are not all-targets.
+cargo test --doc --no-fail-fast 2>&1 | tee -a "$log" || status=$?
 awk '/^test result:/ { for (i = 1; i <= NF; i++) { if ($(i+1) ~ /^passed/) p += $i; if ($(i+1) ~ /^failed/) f += $i } }
      END { printf "tests: %d passed, %d failed\n", p, f }' "$log"
 exit "$status"
