@@ -27,30 +27,9 @@ use fmi_sys::fmi2::*;
 use quick_xml::Reader;
 use quick_xml::events::Event;
 
-/// SplitMix64: a small, well-mixed generator so a seed replays exactly.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn chance(&mut self, p: f64) -> bool {
-        self.unit() < p
-    }
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        (lo.ln() + (hi.ln() - lo.ln()) * self.unit()).exp()
-    }
-}
+#[path = "../tests/common/rng.rs"]
+mod rng;
+use rng::Rng;
 
 #[derive(Debug, Clone)]
 struct Var {
@@ -322,8 +301,7 @@ impl Fuzz<'_> {
             self.lib
                 .fmi2GetReal(self.c, refs.as_ptr(), refs.len(), values.as_mut_ptr())
         };
-        self.log
-            .push(format!("fmi2GetReal(all) → {}", status_name(s)));
+        self.note(format!("fmi2GetReal(all) → {}", status_name(s)));
         self.check_status("fmi2GetReal", s)?;
         if s <= fmi2Status_fmi2Warning {
             for (v, x) in reals.iter().zip(&values) {
@@ -408,8 +386,7 @@ impl Fuzz<'_> {
             0 => {
                 let mut state: fmi2FMUstate = std::ptr::null_mut();
                 let s = unsafe { self.lib.fmi2GetFMUstate(self.c, &mut state) };
-                self.log
-                    .push(format!("fmi2GetFMUstate → {}", status_name(s)));
+                self.note(format!("fmi2GetFMUstate → {}", status_name(s)));
                 self.check_status("fmi2GetFMUstate", s)?;
                 if s == fmi2Status_fmi2OK && !state.is_null() {
                     self.states.push(state);
@@ -419,8 +396,7 @@ impl Fuzz<'_> {
             1 if !self.states.is_empty() => {
                 let k = self.rng.below(self.states.len());
                 let s = unsafe { self.lib.fmi2SetFMUstate(self.c, self.states[k]) };
-                self.log
-                    .push(format!("fmi2SetFMUstate(#{k}) → {}", status_name(s)));
+                self.note(format!("fmi2SetFMUstate(#{k}) → {}", status_name(s)));
                 self.check_status("fmi2SetFMUstate", s)?;
                 // The importer does not track which phase the state was saved in.
                 if s == fmi2Status_fmi2OK {
@@ -440,8 +416,7 @@ impl Fuzz<'_> {
             _ if !self.states.is_empty() => {
                 let mut state = self.states.swap_remove(self.rng.below(self.states.len()));
                 let s = unsafe { self.lib.fmi2FreeFMUstate(self.c, &mut state) };
-                self.log
-                    .push(format!("fmi2FreeFMUstate → {}", status_name(s)));
+                self.note(format!("fmi2FreeFMUstate → {}", status_name(s)));
                 self.check_status("fmi2FreeFMUstate", s)?;
             }
             _ => {}
@@ -530,38 +505,24 @@ impl Fuzz<'_> {
                 self.after(s);
             }
             1 => {
+                // SAFETY: `c` is a live instance of `lib`.
                 let s = unsafe { self.lib.fmi2EnterInitializationMode(self.c) };
-                self.log
-                    .push(format!("fmi2EnterInitializationMode → {}", status_name(s)));
-                self.check_status("fmi2EnterInitializationMode", s)?;
-                if self.phase != Phase::Error && self.phase != Phase::Instantiated {
-                    self.expect_error(
-                        "fmi2EnterInitializationMode",
-                        s,
-                        &format!("not in {:?}", self.phase),
-                    )?;
-                }
-                if s <= fmi2Status_fmi2Warning && self.phase == Phase::Instantiated {
-                    self.phase = Phase::Initialization;
-                }
-                self.after(s);
+                self.transition(
+                    "fmi2EnterInitializationMode",
+                    s,
+                    Phase::Instantiated,
+                    Phase::Initialization,
+                )?;
             }
             2 => {
+                // SAFETY: as above.
                 let s = unsafe { self.lib.fmi2ExitInitializationMode(self.c) };
-                self.log
-                    .push(format!("fmi2ExitInitializationMode → {}", status_name(s)));
-                self.check_status("fmi2ExitInitializationMode", s)?;
-                if self.phase != Phase::Error && self.phase != Phase::Initialization {
-                    self.expect_error(
-                        "fmi2ExitInitializationMode",
-                        s,
-                        &format!("not in {:?}", self.phase),
-                    )?;
-                }
-                if s <= fmi2Status_fmi2Warning && self.phase == Phase::Initialization {
-                    self.phase = Phase::StepComplete;
-                }
-                self.after(s);
+                self.transition(
+                    "fmi2ExitInitializationMode",
+                    s,
+                    Phase::Initialization,
+                    Phase::StepComplete,
+                )?;
             }
             3 => {
                 let s = unsafe { self.lib.fmi2Terminate(self.c) };
@@ -614,6 +575,26 @@ impl Fuzz<'_> {
         Ok(())
     }
 
+    /// A phase change `from → to` answered with `s`: only allowed in `from`.
+    fn transition(
+        &mut self,
+        call: &str,
+        s: fmi2Status,
+        from: Phase,
+        to: Phase,
+    ) -> Result<(), String> {
+        self.note(format!("{call} → {}", status_name(s)));
+        self.check_status(call, s)?;
+        if self.phase != Phase::Error && self.phase != from {
+            self.expect_error(call, s, &format!("not in {:?}", self.phase))?;
+        }
+        if s <= fmi2Status_fmi2Warning && self.phase == from {
+            self.phase = to;
+        }
+        self.after(s);
+        Ok(())
+    }
+
     /// Initialize the normal way (most sequences should reach stepping).
     fn initialize(&mut self) -> Result<(), String> {
         let stop_defined = self.rng.chance(0.3);
@@ -631,8 +612,7 @@ impl Fuzz<'_> {
             self.stop_time = stop_defined.then_some(stop);
         }
         let s = unsafe { self.lib.fmi2EnterInitializationMode(self.c) };
-        self.log
-            .push(format!("fmi2EnterInitializationMode → {}", status_name(s)));
+        self.note(format!("fmi2EnterInitializationMode → {}", status_name(s)));
         self.check_status("fmi2EnterInitializationMode", s)?;
         self.phase = Phase::Initialization;
         if self.rng.chance(0.5) {
@@ -642,8 +622,7 @@ impl Fuzz<'_> {
             return Ok(());
         }
         let s = unsafe { self.lib.fmi2ExitInitializationMode(self.c) };
-        self.log
-            .push(format!("fmi2ExitInitializationMode → {}", status_name(s)));
+        self.note(format!("fmi2ExitInitializationMode → {}", status_name(s)));
         self.check_status("fmi2ExitInitializationMode", s)?;
         self.phase = if s <= fmi2Status_fmi2Warning {
             Phase::StepComplete
@@ -681,8 +660,7 @@ impl Fuzz<'_> {
                     }
                 } else {
                     let s = unsafe { self.lib.fmi2Reset(self.c) };
-                    self.log
-                        .push(format!("fmi2Reset after error → {}", status_name(s)));
+                    self.note(format!("fmi2Reset after error → {}", status_name(s)));
                     self.check_status("fmi2Reset", s)?;
                     if s == fmi2Status_fmi2OK {
                         self.phase = Phase::Instantiated;

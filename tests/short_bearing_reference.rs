@@ -3,29 +3,15 @@
 //! Jacobians from finite differences of those forces), against central finite
 //! differences of our own force, and against the textbook closed forms.
 
-use std::path::PathBuf;
-
 use nalgebra::{Matrix2, Vector2};
 use serde_json::Value;
 
+#[path = "common/reference.rs"]
+mod reference;
+use reference::{mat, num, reference};
+
 use rotor_bearing::bearing::equilibrium::journal_equilibrium;
 use rotor_bearing::bearing::{Bearing, BearingError, JournalState, PlainBearing};
-
-fn reference(name: &str) -> Value {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data")
-        .join(name);
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    serde_json::from_str(&text).unwrap()
-}
-
-fn num(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
-}
-
-fn mat(v: &Value) -> Matrix2<f64> {
-    Matrix2::new(num(&v[0][0]), num(&v[0][1]), num(&v[1][0]), num(&v[1][1]))
-}
 
 fn bearing(p: &Value) -> (PlainBearing, f64) {
     (

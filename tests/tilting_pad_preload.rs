@@ -4,30 +4,21 @@
 //! `tests/data/tilting_pad_preload_oracle.py` (its output
 //! `tests/data/tilting_pad_preload_reference.json`).
 
-use std::path::PathBuf;
-
 use nalgebra::{Matrix2, Vector2};
 use serde_json::Value;
+
+#[path = "common/reference.rs"]
+mod common_reference;
+use common_reference::{mat, num};
+
+fn reference() -> Value {
+    common_reference::reference("tilting_pad_preload_reference.json")
+}
 
 use rotor_bearing::bearing::equilibrium::{
     coefficient_points, condensed_coefficients, journal_equilibrium,
 };
 use rotor_bearing::bearing::tilting_pad::{Pad, TiltingPadBearing};
-
-fn reference() -> Value {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/data/tilting_pad_preload_reference.json");
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    serde_json::from_str(&text).unwrap()
-}
-
-fn num(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
-}
-
-fn mat(v: &Value) -> Matrix2<f64> {
-    Matrix2::new(num(&v[0][0]), num(&v[0][1]), num(&v[1][0]), num(&v[1][1]))
-}
 
 fn bearing(case: &Value) -> (TiltingPadBearing, f64, f64) {
     let p = &case["parameters"];

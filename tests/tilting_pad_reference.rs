@@ -3,25 +3,20 @@
 //! short-bearing film, pad tilts from moment equilibrium, finite-difference
 //! coefficients) and against finite differences of our own forces.
 
-use std::path::PathBuf;
-
 use nalgebra::{DMatrix, Matrix2, Vector2};
 use serde_json::Value;
+
+#[path = "common/reference.rs"]
+mod common_reference;
+use common_reference::num;
+
+fn reference() -> Value {
+    common_reference::reference("tilting_pad_reference.json")
+}
 
 use rotor_bearing::bearing::equilibrium::{condensed_coefficients, journal_equilibrium};
 use rotor_bearing::bearing::tilting_pad::{Pad, TiltingPadBearing};
 use rotor_bearing::bearing::{Bearing, BearingError, BearingEval};
-
-fn reference() -> Value {
-    let path =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/tilting_pad_reference.json");
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    serde_json::from_str(&text).unwrap()
-}
-
-fn num(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
-}
 
 fn bearing(r: &Value) -> (TiltingPadBearing, f64) {
     let p = &r["parameters"];
