@@ -1,10 +1,14 @@
 //! The `rotor` command line, run as a user would.
 
 use std::path::PathBuf;
-use std::process::Command;
+use std::process::{Command, Stdio};
 
 fn rotor() -> Command {
     Command::new(env!("CARGO_BIN_EXE_rotor"))
+}
+
+fn models() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models")
 }
 
 fn out_dir(name: &str) -> PathBuf {
@@ -240,5 +244,108 @@ fn simulate_follows_a_speed_table_and_reports_a_bad_line() {
     assert!(
         stderr.contains("speed.csv:3: expected two numbers time_s,speed_rpm, got \"0.05;1200\""),
         "{stderr}"
+    );
+}
+
+#[test]
+fn info_reads_like_engineering_units() {
+    let out = rotor()
+        .arg("info")
+        .arg(models().join("jeffcott.toml"))
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    // jeffcott.toml: R = 20 mm, L = 20 mm, C = 100 µm, μ = 0.02 Pa·s, gravity −9.81 along y.
+    assert!(
+        text.contains("bearing left at node 1: plain short bearing, R = 20 mm, L = 20 mm, radial clearance C = 100 µm, μ = 0.02 Pa·s"),
+        "{text}"
+    );
+    assert!(text.contains("gravity (0, -9.81, 0) m/s²"), "{text}");
+    assert!(
+        !text.contains("PlainBearing {") && !text.contains("0000000"),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_closed_pipe_ends_the_cli_quietly() {
+    use std::io::Read;
+    // 4000 coefficient rows (about 350 kB) overflow the 64 kB pipe buffer.
+    let mut child = rotor()
+        .args(["coefficients", "--points", "4000"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Read one byte, then close the pipe: the rest of the output has nowhere to go.
+    let mut stdout = child.stdout.take().unwrap();
+    let mut byte = [0u8; 1];
+    stdout.read_exact(&mut byte).unwrap();
+    drop(stdout);
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !stderr.contains("panicked") && !stderr.contains("Broken pipe"),
+        "{stderr}"
+    );
+}
+
+/// The last row of a `simulate --csv` run: probe `disk` x and y (m).
+fn last_probe(csv: &std::path::Path) -> (f64, f64) {
+    let text = std::fs::read_to_string(csv).unwrap();
+    let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+    let col = |name: &str| {
+        header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("{name} in {header:?}"))
+    };
+    let (x, y) = (col("disk_x_m"), col("disk_y_m"));
+    let last: Vec<f64> = text
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    (last[x], last[y])
+}
+
+#[test]
+fn a_run_without_settling_starts_from_consistent_accelerations() {
+    // The classic rotor released from rest at its undeflected position under
+    // gravity: with consistent initial accelerations Newmark converges at second
+    // order (halving the step quarters the error); a zero start is first order.
+    let dir = out_dir("no_settle");
+    let run = |step: &str| {
+        let csv = dir.join(format!("run_{step}.csv"));
+        let out = rotor()
+            .args([
+                "simulate",
+                "--rpm",
+                "0",
+                "--no-settle",
+                "--duration",
+                "0.0125",
+            ])
+            .args(["--step", step, "--output-step", "0.0125", "--csv"])
+            .arg(&csv)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        last_probe(&csv)
+    };
+    let (a, b, c) = (run("0.0004"), run("0.0002"), run("0.0001"));
+    let coarse = ((a.0 - b.0).powi(2) + (a.1 - b.1).powi(2)).sqrt();
+    let fine = ((b.0 - c.0).powi(2) + (b.1 - c.1).powi(2)).sqrt();
+    let order = (coarse / fine).log2();
+    assert!(
+        order > 1.7,
+        "observed order {order:.2} (differences {coarse:e}, {fine:e})"
     );
 }

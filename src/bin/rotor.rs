@@ -182,6 +182,14 @@ const REFERENCE_BEARING: PlainBearing = PlainBearing {
 };
 
 fn main() -> ExitCode {
+    // A closed pipe (`rotor info | head`) ends the CLI quietly, as for any Unix
+    // tool, instead of a panic in println!: restore the default SIGPIPE action
+    // the Rust runtime replaced with "ignore".
+    // SAFETY: called once at start-up before any thread exists; SIG_DFL is a
+    // valid disposition for SIGPIPE.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(message) => {
@@ -454,6 +462,12 @@ fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String
     if settle {
         sim.settle_static()
             .map_err(|e| format!("{}: {e}", model.name))?;
+    } else {
+        // From rest at the undeflected position: start Newmark from the
+        // accelerations the equations of motion give there (a zero start is a
+        // first-order error that never decays).
+        sim.consistent_acceleration()
+            .map_err(|e| format!("{}: {e}", model.name))?;
     }
     let started = std::time::Instant::now();
     let mut shown = 0;
@@ -683,10 +697,10 @@ fn info(rotor: &Rotor) -> String {
     for b in &m.bearings {
         writeln!(
             s,
-            "  bearing {} at node {}: {:?}",
+            "  bearing {} at node {}: {}",
             b.name,
             b.node + 1,
-            b.kind
+            describe_bearing(&b.kind)
         )
         .ok();
     }
@@ -704,6 +718,69 @@ fn info(rotor: &Rotor) -> String {
     for p in &m.probes {
         writeln!(s, "  probe {} at node {}", p.name, p.node + 1).ok();
     }
-    writeln!(s, "  gravity {:?} m/s²", m.gravity).ok();
+    let [gx, gy, gz] = m.gravity.map(short);
+    writeln!(s, "  gravity ({gx}, {gy}, {gz}) m/s²").ok();
     s
+}
+
+/// A number without float noise: at most 6 significant digits, no trailing zeros.
+fn short(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let text = format!("{:.*e}", 5, x);
+    let value: f64 = text.parse().unwrap_or(x);
+    let plain = format!("{value}");
+    if plain.len() <= 12 {
+        plain
+    } else {
+        format!("{value:e}")
+    }
+}
+
+/// A bearing's type and parameters in engineering units.
+fn describe_bearing(kind: &BearingKind) -> String {
+    match kind {
+        BearingKind::Linear {
+            stiffness: k,
+            damping: c,
+        } => format!(
+            "linear, K = [[{}, {}], [{}, {}]] N/m, C = [[{}, {}], [{}, {}]] N·s/m",
+            short(k[0][0]),
+            short(k[0][1]),
+            short(k[1][0]),
+            short(k[1][1]),
+            short(c[0][0]),
+            short(c[0][1]),
+            short(c[1][0]),
+            short(c[1][1])
+        ),
+        BearingKind::Plain(b) => format!(
+            "plain short bearing, R = {} mm, L = {} mm, radial clearance C = {} µm, μ = {} Pa·s",
+            short(b.radius * 1e3),
+            short(b.length * 1e3),
+            short(b.clearance * 1e6),
+            short(b.viscosity)
+        ),
+        BearingKind::TiltingPad(b) => {
+            let pads: Vec<String> = b
+                .pads
+                .iter()
+                .map(|p| short(p.pivot().to_degrees()))
+                .collect();
+            let first = &b.pads[0];
+            format!(
+                "tilting pad, {} pads (pivots at {}°, arc {}°, offset {}, preload {}), R = {} mm, L = {} mm, pad clearance C = {} µm, μ = {} Pa·s",
+                b.pads.len(),
+                pads.join(", "),
+                short(first.arc().to_degrees()),
+                short(first.offset()),
+                short(first.preload()),
+                short(b.radius * 1e3),
+                short(b.length * 1e3),
+                short(b.clearance * 1e6),
+                short(b.viscosity)
+            )
+        }
+    }
 }
