@@ -24,3 +24,4 @@
 
 pub mod csv;
 pub mod series;
+pub mod text;

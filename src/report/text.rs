@@ -1,0 +1,140 @@
+//! Plain-text summaries of a model for people: engineering units, no float
+//! noise, no debug structures.
+
+use std::fmt::Write;
+
+use crate::bearing::BearingKind;
+use crate::rotor::Rotor;
+
+/// What `rotor info` prints: sizes, disks, bearings, unbalances, probes, gravity.
+pub fn model_summary(rotor: &Rotor) -> String {
+    let m = &rotor.model;
+    let mut s = String::new();
+    writeln!(s, "model {} ({})", m.name, m.source).ok();
+    if !m.description.is_empty() {
+        writeln!(s, "  {}", m.description).ok();
+    }
+    writeln!(
+        s,
+        "  {} nodes, {} shaft elements, {} free DOFs, length {:.4} m, rotating mass {:.3} kg",
+        m.node_count(),
+        m.elements.len(),
+        rotor.dof_count(),
+        m.node_z[m.node_z.len() - 1] - m.node_z[0],
+        m.total_mass()
+    )
+    .ok();
+    for d in &m.disks {
+        writeln!(
+            s,
+            "  disk {} at node {}: m = {:.4} kg, Ip = {:.5} kg·m², Id = {:.5} kg·m²",
+            d.name,
+            d.node + 1,
+            d.disk.mass,
+            d.disk.polar_inertia,
+            d.disk.diametral_inertia
+        )
+        .ok();
+    }
+    for b in &m.bearings {
+        writeln!(
+            s,
+            "  bearing {} at node {}: {}",
+            b.name,
+            b.node + 1,
+            describe_bearing(&b.kind)
+        )
+        .ok();
+    }
+    for u in &m.unbalances {
+        writeln!(
+            s,
+            "  unbalance {} at node {}: {} kg·m at {:.1}°",
+            u.name,
+            u.node + 1,
+            u.magnitude,
+            u.phase.to_degrees()
+        )
+        .ok();
+    }
+    for p in &m.probes {
+        writeln!(s, "  probe {} at node {}", p.name, p.node + 1).ok();
+    }
+    let [gx, gy, gz] = m.gravity.map(short);
+    writeln!(s, "  gravity ({gx}, {gy}, {gz}) m/s²").ok();
+    s
+}
+
+/// A number without float noise: at most 6 significant digits, no trailing zeros.
+pub fn short(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let value: f64 = format!("{x:.5e}").parse().unwrap_or(x);
+    if (1e-4..1e7).contains(&value.abs()) {
+        format!("{value}")
+    } else {
+        format!("{value:e}")
+    }
+}
+
+/// A bearing's type and parameters in engineering units.
+pub fn describe_bearing(kind: &BearingKind) -> String {
+    match kind {
+        BearingKind::Linear {
+            stiffness: k,
+            damping: c,
+        } => format!(
+            "linear, K = [[{}, {}], [{}, {}]] N/m, C = [[{}, {}], [{}, {}]] N·s/m",
+            short(k[0][0]),
+            short(k[0][1]),
+            short(k[1][0]),
+            short(k[1][1]),
+            short(c[0][0]),
+            short(c[0][1]),
+            short(c[1][0]),
+            short(c[1][1])
+        ),
+        BearingKind::Plain(b) => format!(
+            "plain short bearing, R = {} mm, L = {} mm, radial clearance C = {} µm, μ = {} Pa·s",
+            short(b.radius * 1e3),
+            short(b.length * 1e3),
+            short(b.clearance * 1e6),
+            short(b.viscosity)
+        ),
+        BearingKind::TiltingPad(b) => {
+            let pads: Vec<String> = b
+                .pads
+                .iter()
+                .map(|p| short(p.pivot().to_degrees()))
+                .collect();
+            let first = &b.pads[0];
+            format!(
+                "tilting pad, {} pads (pivots at {}°, arc {}°, offset {}, preload {}), R = {} mm, L = {} mm, pad clearance C = {} µm, μ = {} Pa·s",
+                b.pads.len(),
+                pads.join(", "),
+                short(first.arc().to_degrees()),
+                short(first.offset()),
+                short(first.preload()),
+                short(b.radius * 1e3),
+                short(b.length * 1e3),
+                short(b.clearance * 1e6),
+                short(b.viscosity)
+            )
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_lose_their_float_noise() {
+        assert_eq!(short(0.49999999999999994), "0.5");
+        assert_eq!(short(0.0), "0");
+        assert_eq!(short(-9.81), "-9.81");
+        assert_eq!(short(1e-4 * 1e6), "100");
+        assert_eq!(short(2.5e-9), "2.5e-9");
+    }
+}
