@@ -220,7 +220,9 @@ def run_points(payload, points, duration, output_interval, client=None, what="sw
             progress(i)
         return rows
     from dask.distributed import as_completed
-    shipped = client.scatter(payload, broadcast=True)
+    # A fresh key per call: re-scattering the same bytes under their content hash
+    # can race with the release of the previous call's copy.
+    shipped = client.scatter(payload, broadcast=True, hash=False)
     futures = [client.submit(simulate_point, shipped, rpm, ov, duration, output_interval, pure=False)
                for rpm, ov in points]
     index = {f.key: i for i, f in enumerate(futures)}

@@ -68,6 +68,11 @@ def cluster_equals_serial_and_failures_are_rows():
         os.remove(copy)  # the workers must get the FMU from the client, not the file system
         with LocalCluster(n_workers=2, threads_per_worker=1, processes=True) as cluster, Client(cluster) as client:
             parallel = sweep.run_points(payload, list(sweep.grid(rpms, params)), 0.5, 5e-4, client)
+            # Bisection rounds ship the FMU again on the same cluster (this hung once).
+            ok_rows = [r for r in parallel if r["status"] == "ok"]
+            onsets, refined = sweep.find_onsets(FMU, ok_rows, params, 0.5, 5e-4, 2, client)
+    check(len(refined) == 2 and np.isfinite(onsets[0]["onset_rpm"]),
+          f"two bisection rounds on the cluster: onset {onsets[0]['onset_rpm']:.0f} rpm")
     check(serial == parallel, "a 2-worker LocalCluster with the FMU shipped from the client equals the serial sweep")
     bad = [r for r in parallel if r["status"].startswith("error")]
     good = [r for r in parallel if r["status"] == "ok"]
