@@ -241,17 +241,3 @@ pub fn coefficient_points(
         })
         .collect()
 }
-
-/// The solved points of [`coefficient_points`] (loads without an equilibrium
-/// inside `scale` left out; use `coefficient_points` to report them).
-pub fn coefficient_curve(
-    bearing: &dyn Bearing,
-    speed: f64,
-    scale: f64,
-    loads: &[f64],
-) -> Vec<CoefficientPoint> {
-    coefficient_points(bearing, speed, scale, loads)
-        .into_iter()
-        .filter_map(|(_, p)| p.ok())
-        .collect()
-}
