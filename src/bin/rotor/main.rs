@@ -1,0 +1,261 @@
+//! `rotor`: command-line front end of the rotor-bearing library.
+//!
+//! ```text
+//! rotor info     [MODEL.toml]
+//! rotor static   [MODEL.toml] [--csv FILE]
+//! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE]
+//! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--csv FILE] [--png FILE]
+//! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--csv FILE] [--png FILE]
+//! rotor simulate [MODEL.toml] (--rpm N | --ramp-rpm A:B | --speed-csv FILE) [--duration S] [--step S]
+//!                [--output-step S] [--ramp-time S] [--no-gravity] [--csv FILE] [--plots PREFIX]
+//! ```
+//! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
+//! `coefficients`, the reference plain short bearing).
+
+mod coefficients;
+mod fmu_stage;
+mod modal;
+mod simulate;
+mod statics;
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use clap::{Args, Parser, Subcommand};
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
+
+#[derive(Parser)]
+#[command(
+    name = "rotor",
+    version,
+    about = "Finite-element rotor-bearing dynamics"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Args)]
+struct ModelArg {
+    /// Model file (TOML); the built-in classic disk-on-shaft rotor when omitted.
+    model: Option<PathBuf>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Summarize a model: nodes, elements, masses, bearings.
+    Info {
+        #[command(flatten)]
+        model: ModelArg,
+    },
+    /// Static deflection under gravity (linear bearings).
+    Static {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Spin speed (rpm): fluid-film bearings carry load only when turning.
+        #[arg(long, default_value_t = 0.0)]
+        rpm: f64,
+        /// Write node displacements to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
+    /// Complex modes at one speed: damped frequencies, damping, whirl.
+    Modes {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Spin speed (rpm).
+        #[arg(long, default_value_t = 0.0)]
+        rpm: f64,
+        /// Number of modes.
+        #[arg(long, default_value_t = 8)]
+        modes: usize,
+        /// Write the modes to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
+    /// Campbell diagram and critical speeds over 0..max-rpm.
+    Campbell {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Highest spin speed (rpm).
+        #[arg(long, default_value_t = 4000.0)]
+        max_rpm: f64,
+        /// Number of speed steps (the grid has steps + 1 points).
+        #[arg(long, default_value_t = 40)]
+        steps: usize,
+        /// Number of modes per speed.
+        #[arg(long, default_value_t = 8)]
+        modes: usize,
+        /// Write the diagram to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw the diagram to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
+    /// Time simulation (Newmark + Newton–Raphson) with nonlinear bearings: CSV of
+    /// bearing and probe outputs, orbit and full-spectrum plots.
+    Simulate {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Constant spin speed (rpm).
+        #[arg(long, conflicts_with_all = ["ramp_rpm", "speed_csv"])]
+        rpm: Option<f64>,
+        /// Linear run-up or coast-down FROM:TO (rpm) over the whole duration.
+        #[arg(long, conflicts_with = "speed_csv")]
+        ramp_rpm: Option<String>,
+        /// Speed table: CSV with columns time_s,speed_rpm (header line optional).
+        #[arg(long)]
+        speed_csv: Option<PathBuf>,
+        /// Simulated time (s).
+        #[arg(long, default_value_t = 1.0)]
+        duration: f64,
+        /// Internal time step (s).
+        #[arg(long, default_value_t = 1e-4)]
+        step: f64,
+        /// Output interval (s); defaults to the internal step, at least 1/20 000 of the duration.
+        #[arg(long)]
+        output_step: Option<f64>,
+        /// Unbalance ramp time constant (s), 0 for none.
+        #[arg(long, default_value_t = 0.0)]
+        ramp_time: f64,
+        /// Switch gravity off.
+        #[arg(long)]
+        no_gravity: bool,
+        /// Start from rest at the bearing centres instead of the static equilibrium.
+        #[arg(long)]
+        no_settle: bool,
+        /// Write the outputs to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Write PREFIX_orbits.png and PREFIX_spectrum.png (last half of the run).
+        #[arg(long)]
+        plots: Option<String>,
+    },
+    /// Write the generated parts of an FMU for MODEL into DIR: modelDescription.xml,
+    /// resources/model.toml and documentation/index.html (fmu_pack.sh adds the binary).
+    FmuStage {
+        /// Model file.
+        model: PathBuf,
+        /// Staging directory.
+        dir: PathBuf,
+    },
+    /// Dimensionless stiffness and damping of a hydrodynamic bearing against
+    /// eccentricity ratio (paper Fig. 3), from equilibria under a swept load.
+    Coefficients {
+        /// Model file whose bearing to use; the reference plain short bearing when omitted.
+        model: Option<PathBuf>,
+        /// Bearing name in the model (default: its first hydrodynamic bearing).
+        #[arg(long)]
+        bearing: Option<String>,
+        /// Spin speed (rpm).
+        #[arg(long, default_value_t = 3000.0)]
+        rpm: f64,
+        /// Number of load steps.
+        #[arg(long, default_value_t = 60)]
+        points: usize,
+        /// Write the coefficients to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw them to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
+}
+
+fn main() -> ExitCode {
+    // A closed pipe (`rotor info | head`) ends the CLI quietly, as for any Unix
+    // tool, instead of a panic in println!: restore the default SIGPIPE action
+    // the Rust runtime replaced with "ignore".
+    // SAFETY: called once at start-up before any thread exists; SIG_DFL is a
+    // valid disposition for SIGPIPE.
+    unsafe {
+        libc::signal(libc::SIGPIPE, libc::SIG_DFL);
+    }
+    match run(Cli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("rotor: error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn load(arg: &ModelArg) -> Result<Rotor, String> {
+    let model = match &arg.model {
+        Some(path) => RotorModel::from_file(path).map_err(|e| e.to_string())?,
+        None => RotorModel::default_model(),
+    };
+    Rotor::new(model).map_err(|e| e.to_string())
+}
+
+fn write_file(path: &Path, text: &str) -> Result<(), String> {
+    std::fs::write(path, text).map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
+    eprintln!("wrote {}", path.display());
+    Ok(())
+}
+
+fn run(cli: Cli) -> Result<(), String> {
+    match cli.command {
+        Command::Info { model } => statics::info(&load(&model)?),
+        Command::Static { model, rpm, csv } => statics::deflection(&load(&model)?, rpm, csv),
+        Command::Modes {
+            model,
+            rpm,
+            modes,
+            csv,
+        } => modal::modes(&load(&model)?, rpm, modes, csv),
+        Command::Campbell {
+            model,
+            max_rpm,
+            steps,
+            modes,
+            csv,
+            png,
+        } => modal::campbell_diagram(&load(&model)?, max_rpm, steps, modes, csv, png),
+        Command::Coefficients {
+            model,
+            bearing,
+            rpm,
+            points,
+            csv,
+            png,
+        } => coefficients::coefficients(model, bearing, rpm, points, csv, png),
+        Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
+        Command::Simulate {
+            model,
+            rpm,
+            ramp_rpm,
+            speed_csv,
+            duration,
+            step,
+            output_step,
+            ramp_time,
+            no_gravity,
+            no_settle,
+            csv,
+            plots,
+        } => {
+            let profile =
+                simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
+            let rotor = load(&model)?;
+            let options = rotor_bearing::solver::SolverOptions {
+                time_step: step,
+                unbalance_ramp_time: ramp_time,
+                gravity: !no_gravity,
+                ..Default::default()
+            };
+            let output_step = output_step.unwrap_or(step.max(duration / 20_000.0));
+            let run = simulate::Run {
+                profile,
+                duration,
+                output_step,
+                settle: !no_settle,
+                csv,
+                plots,
+            };
+            simulate::simulate(rotor, options, run)
+        }
+    }
+}

@@ -1,0 +1,184 @@
+//! `rotor simulate`: a time simulation with its CSV, orbit, spectrum and waterfall plots.
+
+use std::path::{Path, PathBuf};
+
+use rotor_bearing::analysis::spectrum::{band_limit, frequency_grid, full_spectrum, waterfall};
+use rotor_bearing::model::speed_table;
+use rotor_bearing::plot::{RAD_S_TO_RPM, orbits_png, spectrum_png, waterfall_png};
+use rotor_bearing::report::{csv as report_csv, series};
+use rotor_bearing::rotor::Rotor;
+use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record};
+
+use crate::write_file;
+
+pub fn speed_profile(
+    rpm: Option<f64>,
+    ramp: Option<&str>,
+    table: Option<&Path>,
+    duration: f64,
+) -> Result<SpeedProfile, String> {
+    let to_rad = 1.0 / RAD_S_TO_RPM;
+    match (rpm, ramp, table) {
+        (Some(r), None, None) => Ok(SpeedProfile::Constant(r * to_rad)),
+        (None, Some(text), None) => {
+            let parts: Vec<&str> = text.split(':').collect();
+            let parse = |s: &str| {
+                s.trim().parse::<f64>().map_err(|_| {
+                    format!("--ramp-rpm {text:?}: {s:?} is not a number (expected FROM:TO)")
+                })
+            };
+            if parts.len() != 2 {
+                return Err(format!("--ramp-rpm {text:?}: expected FROM:TO in rpm"));
+            }
+            Ok(SpeedProfile::Ramp {
+                from: parse(parts[0])? * to_rad,
+                to: parse(parts[1])? * to_rad,
+                duration,
+            })
+        }
+        (None, None, Some(path)) => {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+            let points = speed_table::parse(&text, &path.display().to_string())
+                .map_err(|e| e.to_string())?
+                .into_iter()
+                .map(|(t, w)| (t, w * to_rad))
+                .collect();
+            let profile = SpeedProfile::Table(points);
+            profile
+                .validate()
+                .map_err(|e| format!("{}: {e}", path.display()))?;
+            Ok(profile)
+        }
+        _ => Err("give exactly one of --rpm, --ramp-rpm, --speed-csv".into()),
+    }
+}
+
+/// What `rotor simulate` records and writes.
+pub struct Run {
+    pub profile: SpeedProfile,
+    pub duration: f64,
+    pub output_step: f64,
+    pub settle: bool,
+    pub csv: Option<PathBuf>,
+    pub plots: Option<String>,
+}
+
+pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String> {
+    let Run {
+        profile,
+        duration,
+        output_step,
+        settle,
+        csv,
+        plots,
+    } = run;
+    let profile = &profile;
+    let model = rotor.model.clone();
+    let mut sim = Simulator::new(rotor, options).map_err(|e| e.to_string())?;
+    let (w0, _) = profile.at(0.0);
+    sim.set_speed(w0, 0.0).map_err(|e| e.to_string())?;
+    if settle {
+        sim.settle_static()
+            .map_err(|e| format!("{}: {e}", model.name))?;
+    } else {
+        // From rest at the undeflected position: start Newmark from the
+        // accelerations the equations of motion give there (a zero start is a
+        // first-order error that never decays).
+        sim.consistent_acceleration()
+            .map_err(|e| format!("{}: {e}", model.name))?;
+    }
+    let started = std::time::Instant::now();
+    let mut shown = 0;
+    let terminal = std::io::IsTerminal::is_terminal(&std::io::stderr());
+    let records = record(&mut sim, profile, duration, output_step, |f| {
+        let pct = (f * 100.0) as usize;
+        if terminal && pct >= shown + 5 {
+            shown = pct - pct % 5;
+            eprint!("\rsimulating {}: {shown:3}%", model.name);
+        }
+    })
+    .map_err(|e| format!("{}: {e}", model.name))?;
+    eprintln!(
+        "{}simulated {} s of {} in {:.4} s wall-clock ({:?})",
+        if terminal { "\r" } else { "" },
+        duration,
+        model.name,
+        started.elapsed().as_secs_f64(),
+        sim.stats()
+    );
+    let out = report_csv::simulation(&model, &records);
+    match csv {
+        Some(path) => write_file(&path, &out)?,
+        None if plots.is_none() => print!("{out}"),
+        None => {}
+    }
+    if let Some(prefix) = plots {
+        // The last half of the run: settled orbits and their spectra.
+        let tail = &records[records.len() / 2..];
+        let t: Vec<f64> = tail.iter().map(|o| o.time).collect();
+        let orbits = series::orbits(&model, tail);
+        let path = PathBuf::from(format!("{prefix}_orbits.png"));
+        orbits_png(
+            &path,
+            &format!("Orbits: {} (last half of the run)", model.name),
+            &orbits,
+            None,
+        )
+        .map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
+        let mean_speed = tail.iter().map(|o| o.speed).sum::<f64>() / tail.len() as f64;
+        let f_spin = mean_speed / (2.0 * std::f64::consts::PI);
+        let f_max = band_limit(2.5 * f_spin, output_step);
+        let freqs = frequency_grid(-f_max, f_max, 1601);
+        let spectra: Vec<(String, Vec<f64>)> = orbits
+            .iter()
+            .map(|(name, x, y)| (name.clone(), full_spectrum(&t, x, y, &freqs)))
+            .collect();
+        let path = PathBuf::from(format!("{prefix}_spectrum.png"));
+        let markers = vec![
+            ("1×".to_string(), f_spin),
+            ("0.5×".to_string(), 0.5 * f_spin),
+            ("−1×".to_string(), -f_spin),
+        ];
+        spectrum_png(
+            &path,
+            &format!("Full spectrum: {}", model.name),
+            &freqs,
+            &spectra,
+            &markers,
+        )
+        .map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
+        // Waterfall over the whole run, of the first probe (else the first bearing).
+        let t: Vec<f64> = records.iter().map(|o| o.time).collect();
+        let speed: Vec<f64> = records.iter().map(|o| o.speed).collect();
+        let (x, y): (Vec<f64>, Vec<f64>) = records.iter().map(series::watched_point).unzip();
+        let wf = waterfall(&t, &x, &y, &speed, output_step);
+        println!("window  speed_rpm  dominant_Hz  ratio  amplitude_um");
+        for (w, row) in wf.rows.iter().enumerate() {
+            if let (Some((f, a)), Some(ratio)) = (row.peak, row.peak_order()) {
+                println!(
+                    "{w:6} {:10.1} {f:12.3} {ratio:6.3} {:12.4}",
+                    row.speed * RAD_S_TO_RPM,
+                    a * 1e6
+                );
+            }
+        }
+        let rows: Vec<(f64, Vec<f64>)> = wf
+            .rows
+            .into_iter()
+            .map(|r| (r.speed * RAD_S_TO_RPM, r.amplitudes))
+            .collect();
+        let path = PathBuf::from(format!("{prefix}_waterfall.png"));
+        waterfall_png(
+            &path,
+            &format!("Waterfall: {}", model.name),
+            &wf.freqs,
+            &rows,
+        )
+        .map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
+    }
+    Ok(())
+}

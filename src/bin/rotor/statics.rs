@@ -1,0 +1,49 @@
+//! `rotor info` and `rotor static`: the model summary and its static deflection.
+
+use std::path::PathBuf;
+
+use rotor_bearing::analysis::linear::static_deflection;
+use rotor_bearing::plot::RAD_S_TO_RPM;
+use rotor_bearing::report::text::model_summary;
+use rotor_bearing::report::{csv as report_csv, series};
+use rotor_bearing::rotor::Rotor;
+use rotor_bearing::solver::SolverOptions;
+use rotor_bearing::solver::statics::equilibrium;
+
+use crate::write_file;
+
+/// `rotor info`: nodes, elements, masses and bearings in engineering units.
+pub fn info(rotor: &Rotor) -> Result<(), String> {
+    print!("{}", model_summary(rotor));
+    Ok(())
+}
+
+/// `rotor static`: the largest deflection and the node displacements as CSV.
+pub fn deflection(rotor: &Rotor, rpm: f64, csv: Option<PathBuf>) -> Result<(), String> {
+    let q = static_state(rotor, rpm)?;
+    let out = report_csv::static_deflection(&rotor.model.node_z, &q);
+    let (peak_node, peak) = series::largest_deflection(&q, rotor.model.node_count());
+    println!(
+        "static deflection of {}: largest {:.4e} m at node {}",
+        rotor.model.name,
+        peak,
+        peak_node + 1
+    );
+    match csv {
+        Some(path) => write_file(&path, &out)?,
+        None => print!("{out}"),
+    }
+    Ok(())
+}
+
+/// Node displacements (`4·node + k`) at the static equilibrium under gravity at
+/// `rpm`: linear deflection for linear bearings; for fluid-film bearings the
+/// statics solver's equilibrium.
+fn static_state(rotor: &Rotor, rpm: f64) -> Result<Vec<f64>, String> {
+    if rotor.nonlinear_bearings.is_empty() {
+        return static_deflection(rotor).map_err(|e| e.to_string());
+    }
+    let eq = equilibrium(rotor, rpm / RAD_S_TO_RPM, &SolverOptions::default(), None)
+        .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
+    Ok(rotor.dofs.expand(&eq.displacement))
+}
