@@ -4,6 +4,9 @@
 //! Every bearing kind implements [`Bearing`]; the assembly and the solvers only
 //! see that trait. Sign conventions: the force acts **on the journal**;
 //! `K = −∂F/∂(x, y)` and `C = −∂F/∂(ẋ, ẏ)`, so a plain spring has positive `K`.
+//! Fluid-film bearings include the metal-to-metal contact of the journal with
+//! the bushing or the pads ([`contact`]), so they give a finite force for every
+//! finite state: the film at and beyond `ε = 1` is defined in [`plain`].
 //!
 //! Evaluating a plain journal bearing (short-bearing theory) with the journal
 //! below the centre at eccentricity ratio ε = 0.5, spinning at 3000 rpm:
@@ -16,6 +19,7 @@
 //!     length: 0.03,     // m
 //!     clearance: 1e-4,  // m
 //!     viscosity: 0.02,  // Pa·s
+//!     contact: None,    // steel contact law of this geometry at ε = 1
 //! };
 //! let speed = 3000.0 * std::f64::consts::PI / 30.0; // rad/s
 //! let q = [0.0, -0.5e-4]; // journal position (m)
@@ -85,12 +89,6 @@ pub enum BearingError {
     /// State vectors of the wrong length.
     #[error("bearing state has {found} coordinates, expected {expected}")]
     Dimension { expected: usize, found: usize },
-    /// The journal reached or passed the clearance circle, where the film model
-    /// has no meaning (journal–bearing contact).
-    #[error(
-        "journal at eccentricity ratio {eccentricity:.6} reached the clearance circle (ε ≥ 1): the oil film has broken down (contact)"
-    )]
-    ClearanceExceeded { eccentricity: f64 },
 }
 
 /// Quantities a bearing reports besides its force (for outputs and coupling).
@@ -100,12 +98,16 @@ pub struct BearingReport {
     pub eccentricity: f64,
     /// Attitude angle (rad): from the load line to the eccentricity vector, in the spin direction.
     pub attitude_angle: f64,
-    /// Minimum film thickness `C (1 − ε)` (m); zero without a film.
+    /// Minimum film thickness `C (1 − ε)` (m), zero in contact or without a film.
     pub min_film_thickness: f64,
-    /// Viscous friction torque on the journal, opposing the spin (N·m).
+    /// Friction torque on the journal, opposing the spin (N·m): film shear plus
+    /// contact friction `μ N R` (at standstill the breakaway torque).
     pub friction_torque: f64,
-    /// Power dissipated in the film (W).
+    /// Power dissipated in the film and the contact friction (W).
     pub power_loss: f64,
+    /// Normal force of the journal's metal-to-metal contact (N); zero while
+    /// the journal floats. For tilting pads the magnitude of the resultant over the pads.
+    pub contact_force: f64,
 }
 
 /// Generalized forces and Jacobians of a bearing with `n = 2 + m` coordinates

@@ -33,7 +33,9 @@ use std::f64::consts::PI;
 
 use nalgebra::Vector2;
 
-use super::plain::{FilmWindow, ShortFilm, attitude_angle};
+use super::BearingForce;
+use super::contact::{ContactLaw, ContactReport};
+use super::plain::{FilmWindow, ShortFilm, attitude_angle, contact_friction_torque};
 use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, check_state};
 
 /// Relative size of the pivot's restoring moment (see the module docs).
@@ -110,6 +112,9 @@ pub struct TiltingPadBearing {
     pub viscosity: f64,
     /// The pads.
     pub pads: Vec<Pad>,
+    /// Journal–pad contact; `None`: the steel default [`ContactLaw::steel`] for
+    /// this geometry (gap = the pad clearance, on each pad's effective position).
+    pub contact: Option<ContactLaw>,
 }
 
 impl TiltingPadBearing {
@@ -120,6 +125,41 @@ impl TiltingPadBearing {
             clearance: self.clearance,
             viscosity: self.viscosity,
         }
+    }
+
+    /// The journal–pad contact law (gap = the pad clearance `C`).
+    pub fn contact_law(&self) -> ContactLaw {
+        self.contact
+            .unwrap_or_else(|| ContactLaw::steel(self.clearance, self.radius, self.length))
+    }
+
+    /// Contact of the journal with pad `k` at the pad's effective journal state:
+    /// with the pad's circular surface (`|p_e| = C`) when the closest approach
+    /// lies on the pad's arc, else with its nearer edge (a flat contact of
+    /// normal `(cos θ_e, sin θ_e)`). Both give the same penetration and normal at
+    /// the arc's ends, so the force is continuous.
+    fn pad_contact(
+        &self,
+        law: &ContactLaw,
+        k: usize,
+        state: &JournalState,
+        speed: f64,
+    ) -> (BearingForce, ContactReport) {
+        let pad = &self.pads[k];
+        let window = &pad.window;
+        let p = state.position;
+        let phi = p.y.atan2(p.x);
+        if (phi - window.from).rem_euclid(2.0 * PI) <= pad.arc {
+            return law.evaluate(p, state.velocity, speed);
+        }
+        let lead = Vector2::new(window.from_sc.1, window.from_sc.0);
+        let trail = Vector2::new(window.to_sc.1, window.to_sc.0);
+        let normal = if p.dot(&lead) >= p.dot(&trail) {
+            lead
+        } else {
+            trail
+        };
+        law.evaluate_edge(normal, p, state.velocity, speed)
     }
 
     /// Assembled (bearing) clearance `C_b = C (1 − m)`, the smallest over the pads (m).
@@ -185,10 +225,13 @@ impl Bearing for TiltingPadBearing {
         let c_rest = PIVOT_REST * self.viscosity * self.radius * self.length.powi(3)
             / self.clearance.powi(3);
         let k_rest = c_rest * speed.abs().max(1.0);
+        let law = self.contact_law();
         for (k, pad) in self.pads.iter().enumerate() {
             let (s, c, state) = self.pad_state(k, q, qdot);
             let part = film.force(&state, speed, Some(&pad.window))?;
             out.add_transformed(&part, Some((k, -s, c)));
+            let (contact, _) = self.pad_contact(&law, k, &state, speed);
+            out.add_transformed(&contact, Some((k, -s, c)));
             let i = 2 + k;
             out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
             out.stiffness[i * n + i] += k_rest;
@@ -249,14 +292,19 @@ impl Bearing for TiltingPadBearing {
 
     fn report(&self, q: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
         let film = self.film();
+        let law = self.contact_law();
         let mut friction_torque = 0.0;
         let mut min_film = f64::INFINITY;
+        let mut contact_resultant = Vector2::zeros();
         for (k, pad) in self.pads.iter().enumerate() {
             let state = JournalState {
                 position: self.pad_position(k, q[0], q[1], q[2 + k]),
                 velocity: Vector2::zeros(),
             };
             friction_torque += film.friction_torque(&state, speed, Some(&pad.window));
+            let (contact, report) = self.pad_contact(&law, k, &state, speed);
+            friction_torque += contact_friction_torque(&law, &report, speed);
+            contact_resultant += contact.force;
             let window = &pad.window;
             // H = 1 − ε_e cos(θ − φ_e) is smallest at φ_e, or at the nearer edge.
             let (x, y) = (state.position.x, state.position.y);
@@ -275,9 +323,10 @@ impl Bearing for TiltingPadBearing {
         BearingReport {
             eccentricity: position.norm() / self.assembled_clearance(),
             attitude_angle: attitude_angle(&position, &force),
-            min_film_thickness: min_film,
+            min_film_thickness: min_film.max(0.0),
             friction_torque,
             power_loss: friction_torque * speed,
+            contact_force: contact_resultant.norm(),
         }
     }
 }

@@ -157,6 +157,13 @@ pub enum BearingEntry {
         clearance: f64,
         /// Oil dynamic viscosity (Pa·s).
         viscosity: f64,
+        /// Contact penalty stiffness (N/m) once the journal touches; default
+        /// the steel line contact `(π/4) E* L` of `ContactLaw::steel`.
+        contact_stiffness: Option<f64>,
+        /// Contact damping (N·s/m); default 1e-5 s × the contact stiffness.
+        contact_damping: Option<f64>,
+        /// Coulomb friction coefficient of the contact (–), default 0.2.
+        friction_coefficient: Option<f64>,
     },
     /// Tilting-pad journal bearing: short-bearing film on each pad, pads tilt freely.
     TiltingPad {
@@ -183,6 +190,13 @@ pub enum BearingEntry {
         pivot_offset: Option<f64>,
         /// Preload m = 1 − C_b/C, default 0.
         preload: Option<f64>,
+        /// Contact penalty stiffness (N/m) once the journal touches; default
+        /// the steel line contact `(π/4) E* L` of `ContactLaw::steel`.
+        contact_stiffness: Option<f64>,
+        /// Contact damping (N·s/m); default 1e-5 s × the contact stiffness.
+        contact_damping: Option<f64>,
+        /// Coulomb friction coefficient of the contact (–), default 0.2.
+        friction_coefficient: Option<f64>,
     },
 }
 

@@ -18,6 +18,7 @@ const REFERENCE_BEARING: PlainBearing = PlainBearing {
     length: 0.03,
     clearance: 1e-4,
     viscosity: 0.02,
+    contact: None,
 };
 
 pub fn coefficients(

@@ -1,6 +1,7 @@
 //! `[[bearings]]`: linear spring–dampers, plain and tilting-pad journal
 //! bearings, with the geometric checks thin-film theory needs.
 
+use crate::bearing::contact::ContactLaw;
 use crate::bearing::tilting_pad::Pad;
 use crate::bearing::{BearingKind, PlainBearing, TiltingPadBearing};
 
@@ -71,14 +72,24 @@ pub(super) fn bearings(
                 length,
                 clearance,
                 viscosity,
+                contact_stiffness,
+                contact_damping,
+                friction_coefficient,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
-                let bearing = PlainBearing {
+                let mut bearing = PlainBearing {
                     radius: ctx.positive(p.key("radius"), radius)?,
                     length: ctx.positive(p.key("length"), length)?,
                     clearance: ctx.positive(p.key("clearance"), clearance)?,
                     viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
+                    contact: None,
                 };
+                bearing.contact = contact_law(
+                    ctx,
+                    &p,
+                    bearing.contact_law(),
+                    [contact_stiffness, contact_damping, friction_coefficient],
+                )?;
                 if bearing.clearance >= 0.1 * bearing.radius {
                     return Err(ctx.err(
                         p.key("clearance"),
@@ -105,6 +116,9 @@ pub(super) fn bearings(
                 pad_arc_deg,
                 pivot_offset,
                 preload,
+                contact_stiffness,
+                contact_damping,
+                friction_coefficient,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
                 let radius = ctx.positive(p.key("radius"), radius)?;
@@ -174,7 +188,7 @@ pub(super) fn bearings(
                         "pads overlap: the arc exceeds the spacing of the pivots",
                     ));
                 }
-                let bearing = TiltingPadBearing {
+                let mut bearing = TiltingPadBearing {
                     radius,
                     length: ctx.positive(p.key("length"), length)?,
                     clearance,
@@ -183,7 +197,14 @@ pub(super) fn bearings(
                         .iter()
                         .map(|d| Pad::new(d.to_radians(), arc.to_radians(), offset, preload))
                         .collect(),
+                    contact: None,
                 };
+                bearing.contact = contact_law(
+                    ctx,
+                    &p,
+                    bearing.contact_law(),
+                    [contact_stiffness, contact_damping, friction_coefficient],
+                )?;
                 (name, node, BearingKind::TiltingPad(bearing))
             }
         };
@@ -195,4 +216,31 @@ pub(super) fn bearings(
     }
 
     Ok(bearings)
+}
+
+/// The contact law of a fluid-film bearing: `default` (the steel law of its
+/// geometry) with the model file's `contact_stiffness` (N/m, > 0),
+/// `contact_damping` (N·s/m, ≥ 0) and `friction_coefficient` (≥ 0) where given;
+/// `None` when none is given.
+fn contact_law(
+    ctx: &Ctx,
+    p: &FieldPath,
+    default: ContactLaw,
+    [stiffness, damping, friction]: [Option<f64>; 3],
+) -> Result<Option<ContactLaw>, ModelError> {
+    if stiffness.is_none() && damping.is_none() && friction.is_none() {
+        return Ok(None);
+    }
+    let mut law = default;
+    if let Some(k) = stiffness {
+        law.stiffness = ctx.positive(p.key("contact_stiffness"), k)?;
+        law.damping = ContactLaw::DAMPING_TIME * law.stiffness;
+    }
+    if let Some(c) = damping {
+        law.damping = ctx.non_negative(p.key("contact_damping"), c)?;
+    }
+    if let Some(mu) = friction {
+        law.friction = ctx.non_negative(p.key("friction_coefficient"), mu)?;
+    }
+    Ok(Some(law))
 }
