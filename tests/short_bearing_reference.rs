@@ -171,7 +171,7 @@ fn equilibrium_and_its_coefficients_match_the_reference() {
     let eq = &r["equilibrium"];
     let w = num(&eq["W"]);
     let sol = journal_equilibrium(&b, Vector2::new(0.0, -w), speed, b.clearance).unwrap();
-    let report = b.report(&sol.q, speed, &sol.eval);
+    let report = b.report(&sol.q, &[0.0; 2], speed, &sol.eval);
     assert!(
         (report.eccentricity - num(&eq["eps"])).abs() < 1e-9,
         "ε {}",

@@ -286,7 +286,7 @@ fn many_pads_and_contact_are_handled() {
                     .chain(&out.damping)
                     .all(|v| v.is_finite())
             );
-            let rep = b.report(&q, speed, &out);
+            let rep = b.report(&q, &qd, speed, &out);
             assert!(rep.friction_torque.is_finite() && rep.min_film_thickness >= 0.0);
             assert!(rep.contact_force.is_finite() && rep.contact_force >= 0.0);
         }
@@ -297,7 +297,7 @@ fn many_pads_and_contact_are_handled() {
 fn report_of_the_loaded_bearing() {
     let r = reference();
     let (b, w, eq) = equilibrium(&r);
-    let rep = b.report(&eq.q, w, &eq.eval);
+    let rep = b.report(&eq.q, &vec![0.0; eq.q.len()], w, &eq.eval);
     assert!((rep.eccentricity - num(&r["equilibrium"]["eps"])).abs() < 1e-6);
     // Load between pads 2 and 3: the thinnest film is theirs.
     let h_ref = num(&r["equilibrium"]["pads"][2]["h_min"]);

@@ -31,7 +31,7 @@
 //! // (attitude angle), with positive direct stiffness and damping.
 //! assert!(f.force.y > 0.0 && f.force.x.abs() > 0.0);
 //! assert!(f.stiffness[(1, 1)] > 0.0 && f.damping[(0, 0)] > 0.0);
-//! let report = bearing.report(&q, speed, &eval);
+//! let report = bearing.report(&q, &qdot, speed, &eval);
 //! assert!((report.eccentricity - 0.5).abs() < 1e-12);
 //! # Ok::<(), rotor_bearing::bearing::BearingError>(())
 //! ```
@@ -233,9 +233,16 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
         internal.fill(0.0);
     }
 
-    /// Eccentricity, attitude angle, film thickness and friction at `q`, with `eval`
-    /// the evaluation there.
-    fn report(&self, _q: &[f64], _speed: f64, _eval: &BearingEval) -> BearingReport {
+    /// Where a journal comes to rest when its film carries nothing: the radial
+    /// gap (m) at which it touches and the contact stiffness (N/m) there;
+    /// `None` for a bearing without contact (a linear one).
+    fn resting_contact(&self) -> Option<(f64, f64)> {
+        None
+    }
+
+    /// Eccentricity, attitude angle, film thickness, contact and friction at
+    /// `q`, `q̇`, with `eval` the evaluation there.
+    fn report(&self, _q: &[f64], _qdot: &[f64], _speed: f64, _eval: &BearingEval) -> BearingReport {
         BearingReport::default()
     }
 }

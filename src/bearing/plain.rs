@@ -338,10 +338,15 @@ impl Bearing for PlainBearing {
         false
     }
 
-    fn report(&self, q: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
+    fn resting_contact(&self) -> Option<(f64, f64)> {
+        let law = self.contact_law();
+        Some((law.gap, law.stiffness))
+    }
+
+    fn report(&self, q: &[f64], qdot: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
         let state = JournalState {
             position: Vector2::new(q[0], q[1]),
-            velocity: Vector2::zeros(),
+            velocity: Vector2::new(qdot[0], qdot[1]),
         };
         self.journal_report(&state, speed, &eval.journal().force)
     }

@@ -244,6 +244,11 @@ impl Bearing for TiltingPadBearing {
         false
     }
 
+    /// The journal rests on the pads at about the assembled clearance `C_b`.
+    fn resting_contact(&self) -> Option<(f64, f64)> {
+        Some((self.assembled_clearance(), self.contact_law().stiffness))
+    }
+
     /// Each pad's stable zero-moment tilt with the journal held (pads alone, no
     /// rates): the first sign change of `Q_η` from + to − on a scan of tilts that
     /// keep the pad film open, refined by bisection. A pad with none (unloaded)
@@ -290,17 +295,14 @@ impl Bearing for TiltingPadBearing {
         }
     }
 
-    fn report(&self, q: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
+    fn report(&self, q: &[f64], qdot: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
         let film = self.film();
         let law = self.contact_law();
         let mut friction_torque = 0.0;
         let mut min_film = f64::INFINITY;
         let mut contact_resultant = Vector2::zeros();
         for (k, pad) in self.pads.iter().enumerate() {
-            let state = JournalState {
-                position: self.pad_position(k, q[0], q[1], q[2 + k]),
-                velocity: Vector2::zeros(),
-            };
+            let (_, _, state) = self.pad_state(k, q, qdot);
             friction_torque += film.friction_torque(&state, speed, Some(&pad.window));
             let (contact, report) = self.pad_contact(&law, k, &state, speed);
             friction_torque += contact_friction_torque(&law, &report, speed);

@@ -342,6 +342,8 @@ impl Instance {
                     Binding::BearingFy(k) => o.bearings[k].fy,
                     Binding::BearingEccentricity(k) => o.bearings[k].report.eccentricity,
                     Binding::BearingFriction(k) => o.bearings[k].report.friction_torque,
+                    Binding::BearingContact(k) => o.bearings[k].report.contact_force,
+                    Binding::BearingMinFilm(k) => o.bearings[k].report.min_film_thickness,
                     Binding::ProbeX(k) => o.probes[k].x,
                     Binding::ProbeY(k) => o.probes[k].y,
                     Binding::SpinAngle => o.spin_angle,

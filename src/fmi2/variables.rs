@@ -42,6 +42,10 @@ pub enum Binding {
     BearingEccentricity(usize),
     /// Friction torque of bearing `k` (N·m).
     BearingFriction(usize),
+    /// Contact normal force of bearing `k` (N).
+    BearingContact(usize),
+    /// Minimum film thickness of bearing `k` (m).
+    BearingMinFilm(usize),
     /// Probe `k` x (m).
     ProbeX(usize),
     /// Probe `k` y (m).
@@ -350,7 +354,9 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
             ),
             (
                 "friction_torque",
-                format!("Viscous friction torque of bearing {n} on the journal, opposing the spin"),
+                format!(
+                    "Friction torque of bearing {n} on the journal, opposing the spin: film shear plus contact friction mu*N*R (at standstill the breakaway torque)"
+                ),
                 Some("N.m"),
                 None,
                 Binding::BearingFriction(k),
@@ -418,5 +424,33 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         None,
         Binding::FrictionTorque,
     );
+    // Contact outputs come last, so the value references above stay as they were.
+    for (k, b) in model.bearings.iter().enumerate() {
+        let n = &b.name;
+        push(
+            format!("bearings.{n}.contact_force"),
+            format!(
+                "Normal force of the metal-to-metal contact of the journal in bearing {n} (0 while it floats on its film)"
+            ),
+            Real,
+            Output,
+            Continuous,
+            Some("N"),
+            None,
+            None,
+            Binding::BearingContact(k),
+        );
+        push(
+            format!("bearings.{n}.min_film_thickness"),
+            format!("Minimum oil-film thickness of bearing {n} (0 in contact and for linear bearings)"),
+            Real,
+            Output,
+            Continuous,
+            Some("m"),
+            Some("um"),
+            None,
+            Binding::BearingMinFilm(k),
+        );
+    }
     out
 }
