@@ -94,7 +94,7 @@ impl ContactLaw {
     /// Default smoothing length as a fraction of the gap.
     pub const SMOOTHING_PER_GAP: f64 = 1e-3;
     /// Default regularization velocity of the friction sign (m/s).
-    pub const SLIP_VELOCITY: f64 = 1e-3;
+    pub const SLIP_VELOCITY: f64 = 1e-2;
     /// Default contact time constant `c/k` (s) of the contact damping.
     pub const DAMPING_TIME: f64 = 1e-5;
 
