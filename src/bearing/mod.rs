@@ -233,10 +233,11 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
         internal.fill(0.0);
     }
 
-    /// Where a journal comes to rest when its film carries nothing: the radial
-    /// gap (m) at which it touches and the contact stiffness (N/m) there;
-    /// `None` for a bearing without contact (a linear one).
-    fn resting_contact(&self) -> Option<(f64, f64)> {
+    /// Where a journal pushed along the unit vector `direction` comes to rest
+    /// when its film carries nothing: the distance (m) from the bearing centre
+    /// at which it touches and the contact stiffness (N/m) there; `None` for a
+    /// bearing without contact (a linear one).
+    fn resting_contact(&self, _direction: [f64; 2]) -> Option<(f64, f64)> {
         None
     }
 

@@ -338,7 +338,7 @@ impl Bearing for PlainBearing {
         false
     }
 
-    fn resting_contact(&self) -> Option<(f64, f64)> {
+    fn resting_contact(&self, _direction: [f64; 2]) -> Option<(f64, f64)> {
         let law = self.contact_law();
         Some((law.gap, law.stiffness))
     }

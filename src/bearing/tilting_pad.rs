@@ -244,9 +244,25 @@ impl Bearing for TiltingPadBearing {
         false
     }
 
-    /// The journal rests on the pads at about the assembled clearance `C_b`.
-    fn resting_contact(&self) -> Option<(f64, f64)> {
-        Some((self.assembled_clearance(), self.contact_law().stiffness))
+    /// Pads free to tilt carry a journal where it reaches a pad's pivot:
+    /// `p·u_k = C (1 − m)` with `u_k` the pivot direction, first along
+    /// `direction` for `d·u_k > 0`; the assembled clearance when no pad faces it.
+    fn resting_contact(&self, direction: [f64; 2]) -> Option<(f64, f64)> {
+        let reach = self
+            .pads
+            .iter()
+            .filter_map(|pad| {
+                let (s, c) = pad.pivot_sc;
+                let facing = direction[0] * c + direction[1] * s;
+                (facing > 1e-9).then(|| self.clearance * (1.0 - pad.preload) / facing)
+            })
+            .fold(f64::INFINITY, f64::min);
+        let gap = if reach.is_finite() {
+            reach
+        } else {
+            self.assembled_clearance()
+        };
+        Some((gap, self.contact_law().stiffness))
     }
 
     /// Each pad's stable zero-moment tilt with the journal held (pads alone, no
@@ -257,8 +273,15 @@ impl Bearing for TiltingPadBearing {
     fn guess_internal(&self, journal: [f64; 2], speed: f64, internal: &mut [f64]) {
         let film = self.film();
         for (k, pad) in self.pads.iter().enumerate() {
-            internal[k] = 0.0;
             let (s, c) = pad.pivot_sc;
+            // A journal pressed onto the pad's pivot line (at rest on the pad):
+            // the tilt that puts the contact at the pivot, `η = −p·t_k`.
+            let pressed = journal[0] * c + journal[1] * s >= self.clearance * (1.0 - pad.preload);
+            internal[k] = if pressed {
+                journal[0] * s - journal[1] * c
+            } else {
+                0.0
+            };
             let moment = |eta: f64| -> Option<f64> {
                 let state = JournalState {
                     position: self.pad_position(k, journal[0], journal[1], eta),

@@ -185,10 +185,10 @@ fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>
     let mut a = rotor.stiffness.clone();
     let mut contacts = Vec::new();
     for site in &sites.list {
-        if let Some((gap, k)) = site.bearing.resting_contact() {
+        if let Some((_, k)) = site.bearing.resting_contact([0.0, -1.0]) {
             a.add(site.journal[0], site.journal[0], k);
             a.add(site.journal[1], site.journal[1], k);
-            contacts.push((site.journal, gap, k));
+            contacts.push((site, k));
         }
     }
     if contacts.is_empty() {
@@ -199,11 +199,14 @@ fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>
     lu.solve_in_place(&mut u);
     let mut rhs = f_ext.to_vec();
     let mut pushed = false;
-    for &([ix, iy], gap, k) in &contacts {
+    for &(site, k) in &contacts {
+        let [ix, iy] = site.journal;
         let d = u[ix].hypot(u[iy]);
         if d > 0.0 {
-            rhs[ix] += k * gap * u[ix] / d;
-            rhs[iy] += k * gap * u[iy] / d;
+            let direction = [u[ix] / d, u[iy] / d];
+            let (gap, _) = site.bearing.resting_contact(direction)?;
+            rhs[ix] += k * gap * direction[0];
+            rhs[iy] += k * gap * direction[1];
             pushed = true;
         }
     }
