@@ -37,7 +37,7 @@ use super::states::Call;
 pub use super::states::Phase;
 use super::variables::{
     Binding, Causality, DEFAULT_MAX_ITERATIONS, DEFAULT_TIME_STEP, DEFAULT_TOLERANCE, Kind,
-    VISCOSITY_RANGE, Variability, Variable, variables,
+    START_SPEED, VISCOSITY_RANGE, Variability, Variable, variables,
 };
 use super::xml::model_description;
 
@@ -171,8 +171,8 @@ impl Instance {
     fn fresh_simulator(model: &RotorModel) -> Result<Simulator, String> {
         let rotor = Rotor::new(model.clone()).map_err(|e| e.to_string())?;
         let mut sim = Simulator::new(rotor, SolverOptions::default()).map_err(|e| e.to_string())?;
-        sim.set_speed(model.nominal_speed, 0.0)
-            .map_err(|e| e.to_string())?;
+        // The machine starts at standstill (the start value of `shaft.speed`).
+        sim.set_speed(START_SPEED, 0.0).map_err(|e| e.to_string())?;
         Ok(sim)
     }
 

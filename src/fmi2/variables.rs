@@ -152,6 +152,10 @@ type OutputSpec = (
 
 /// Defaults of the solver parameters.
 pub const DEFAULT_TIME_STEP: f64 = 1e-3;
+/// Start value of `shaft.speed` (rad/s): the machine at standstill, its
+/// journals resting on their bearings; a master sets another start value to
+/// begin at speed.
+pub const START_SPEED: f64 = 0.0;
 /// Default relative tolerance.
 pub const DEFAULT_TOLERANCE: f64 = 1e-8;
 /// Default Newton iteration limit.
@@ -297,7 +301,7 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         Continuous,
         Some("rad/s"),
         Some("rpm"),
-        Some(model.nominal_speed),
+        Some(START_SPEED),
         Binding::Speed,
     );
     for (k, u) in model.unbalances.iter().enumerate() {

@@ -22,7 +22,8 @@ pub struct ModelFile {
     /// that does not give its own.
     #[serde(default)]
     pub axial_force: Option<f64>,
-    /// Nominal spin speed (rpm): the start value of the speed input of an FMU.
+    /// Nominal (operating) spin speed (rpm) of the machine, for analyses and
+    /// the CLI; an FMU starts at standstill whatever it is.
     #[serde(default)]
     pub speed_rpm: Option<f64>,
     /// Memory a model may need (MB) before it is refused; default
