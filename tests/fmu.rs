@@ -355,10 +355,7 @@ fn fmu_equals_the_direct_simulator() {
         }
     }
     let speed = fmu.get(&["shaft.speed"])[0];
-    assert!(
-        (speed - 2.0 * 0.5).abs() < 1e-12,
-        "{speed}"
-    );
+    assert!((speed - 2.0 * 0.5).abs() < 1e-12, "{speed}");
 }
 
 /// Outputs at common times do not depend on the communication step.
@@ -616,7 +613,10 @@ fn instances_are_independent_across_threads() {
         let fmu = Fmu::new(&name);
         assert_eq!(fmu.set("unbalance.generator", unbalance), fmi2Status_fmi2OK);
         // At 150 rpm (the FMU starts at standstill, where unbalance has no effect).
-        assert_eq!(fmu.set("shaft.speed", 5.0 * std::f64::consts::PI), fmi2Status_fmi2OK);
+        assert_eq!(
+            fmu.set("shaft.speed", 5.0 * std::f64::consts::PI),
+            fmi2Status_fmi2OK
+        );
         fmu.init();
         for k in 0..20 {
             assert_eq!(fmu.step(k as f64 * 0.01, 0.01), fmi2Status_fmi2OK);
@@ -727,7 +727,10 @@ fn wrong_calls_and_bad_inputs_are_reported() {
     // no longer converges within the step cuts. (A rub within reason continues
     // in contact: tests/operating_envelope.rs.)
     unsafe { fmu.lib.fmi2Reset(fmu.c) };
-    assert_eq!(fmu.set("shaft.speed", 5.0 * std::f64::consts::PI), fmi2Status_fmi2OK);
+    assert_eq!(
+        fmu.set("shaft.speed", 5.0 * std::f64::consts::PI),
+        fmi2Status_fmi2OK
+    );
     fmu.init();
     assert_eq!(fmu.step(0.0, 0.1), fmi2Status_fmi2OK);
     let mut state: fmi2FMUstate = std::ptr::null_mut();

@@ -74,7 +74,7 @@ fn radius_and_friction(model: &RotorModel, k: usize) -> (f64, f64) {
     match &model.bearings[k].kind {
         BearingKind::Plain(b) => (b.radius, b.contact_law().friction),
         BearingKind::TiltingPad(b) => (b.radius, b.contact_law().friction),
-        BearingKind::Linear { .. } => panic!("linear bearing"),
+        BearingKind::Linear { .. } | BearingKind::Rub(_) => panic!("not a fluid-film bearing"),
     }
 }
 
@@ -84,10 +84,21 @@ fn at_rest_each_bearing_carries_its_beam_reaction_and_the_breakaway_torque_is_mu
         ("plain, symmetric", jeffcott_with(str::to_string)),
         (
             "plain, disk off-centre",
-            jeffcott_with(|t| t.replace("name = \"disk\"\nnode = 5\nmass", "name = \"disk\"\nnode = 3\nmass")),
+            jeffcott_with(|t| {
+                t.replace(
+                    "name = \"disk\"\nnode = 5\nmass",
+                    "name = \"disk\"\nnode = 3\nmass",
+                )
+            }),
         ),
-        ("tilting pads, load on pad", tilting_pad_jeffcott(-90.0, 0.3)),
-        ("tilting pads, load between pads", tilting_pad_jeffcott(-45.0, 0.0)),
+        (
+            "tilting pads, load on pad",
+            tilting_pad_jeffcott(-90.0, 0.3),
+        ),
+        (
+            "tilting pads, load between pads",
+            tilting_pad_jeffcott(-45.0, 0.0),
+        ),
     ];
     for (label, model) in cases {
         let reactions = beam_reactions(&model);
@@ -145,7 +156,10 @@ fn static_lift_off(model: &RotorModel, mut lo: f64, mut hi: f64) -> f64 {
         sim.settle_static().unwrap();
         contact(&sim.outputs().unwrap()) == 0.0
     };
-    assert!(!clear(lo) && clear(hi), "no lift-off between {lo} and {hi} rad/s");
+    assert!(
+        !clear(lo) && clear(hi),
+        "no lift-off between {lo} and {hi} rad/s"
+    );
     for _ in 0..40 {
         let mid = 0.5 * (lo + hi);
         if clear(mid) { hi = mid } else { lo = mid }
@@ -250,10 +264,13 @@ fn a_rub_continues_in_contact_with_the_orbit_at_the_contact_radius_plus_the_pene
     ] {
         let text = text.replace("magnitude = 2e-5", "magnitude = 1e3");
         let model = RotorModel::from_toml(&text, label).unwrap();
-        let mut sim = Simulator::new(Rotor::new(model.clone()).unwrap(), SolverOptions {
-            time_step: 1e-4,
-            ..SolverOptions::default()
-        })
+        let mut sim = Simulator::new(
+            Rotor::new(model.clone()).unwrap(),
+            SolverOptions {
+                time_step: 1e-4,
+                ..SolverOptions::default()
+            },
+        )
         .unwrap();
         let speed = 3000.0 * std::f64::consts::PI / 30.0;
         sim.set_speed(speed, 0.0).unwrap();

@@ -288,7 +288,10 @@ fn no_nan_and_no_panic_for_any_finite_state() {
             contact += 1;
         } else {
             floating += 1;
-            assert_eq!(rep.contact_force, 0.0, "contact while floating at ε = {eps}");
+            assert_eq!(
+                rep.contact_force, 0.0,
+                "contact while floating at ε = {eps}"
+            );
         }
     }
     assert!(

@@ -283,9 +283,8 @@ impl ContactLaw {
         let dn_dv = n.transpose() * (self.damping * w);
         // ∂n/∂p = κ t tᵀ, ∂t/∂p = −κ n tᵀ, ∂v_s/∂p = −κ (ṗ·n) tᵀ, ∂v_s/∂ṗ = tᵀ.
         let ttt = t * t.transpose();
-        let ddir_dp = ttt * kappa
-            - n * t.transpose() * (mu * phi * kappa)
-            - ttt * (mu * dphi * v_n * kappa);
+        let ddir_dp =
+            ttt * kappa - n * t.transpose() * (mu * phi * kappa) - ttt * (mu * dphi * v_n * kappa);
         let ddir_dv = ttt * (mu * dphi);
         let df_dp = -(dir * dn_dp) - ddir_dp * normal;
         let df_dv = -(dir * dn_dv) - ddir_dv * normal;
@@ -360,8 +359,16 @@ mod tests {
         let normal = at(-1.9, 1.0);
         let along = at(-1.9 + FRAC_PI_2, 1.0);
         let cases = [
-            (normal * (l.gap + 4e-7) + along * 2e-5, Vector2::new(1e-3, -2e-3), 120.0),
-            (normal * (l.gap + 5e-8) - along * 3e-5, Vector2::new(-3e-3, 1e-3), 0.0),
+            (
+                normal * (l.gap + 4e-7) + along * 2e-5,
+                Vector2::new(1e-3, -2e-3),
+                120.0,
+            ),
+            (
+                normal * (l.gap + 5e-8) - along * 3e-5,
+                Vector2::new(-3e-3, 1e-3),
+                0.0,
+            ),
         ];
         for (p, v, speed) in cases {
             let (f, rep) = l.evaluate_edge(normal, p, v, speed);

@@ -42,12 +42,14 @@ pub mod equilibrium;
 pub mod film;
 pub mod linear;
 pub mod plain;
+pub mod rub;
 pub mod tilting_pad;
 
 use nalgebra::{Matrix2, Vector2};
 
 pub use linear::LinearBearing;
 pub use plain::PlainBearing;
+pub use rub::RubElement;
 pub use tilting_pad::TiltingPadBearing;
 
 /// Position and velocity of a journal centre relative to the bearing centre.
@@ -312,6 +314,8 @@ pub enum BearingKind {
     Plain(PlainBearing),
     /// Tilting-pad journal bearing, short-bearing film on each pad.
     TiltingPad(TiltingPadBearing),
+    /// Rub element (`[[rubs]]`): contact with a stator ring only.
+    Rub(RubElement),
 }
 
 impl BearingKind {
@@ -323,10 +327,17 @@ impl BearingKind {
             }
             BearingKind::Plain(b) => Box::new(*b),
             BearingKind::TiltingPad(b) => Box::new(b.clone()),
+            BearingKind::Rub(r) => Box::new(*r),
         }
     }
 
-    /// Whether the force depends nonlinearly on the journal state (a fluid film).
+    /// Whether this is a rub element rather than a bearing.
+    pub fn is_rub(&self) -> bool {
+        matches!(self, BearingKind::Rub(_))
+    }
+
+    /// Whether the force depends nonlinearly on the journal state (a fluid film
+    /// or a rub).
     pub fn is_nonlinear(&self) -> bool {
         !matches!(self, BearingKind::Linear { .. })
     }
@@ -335,7 +346,7 @@ impl BearingKind {
     /// For tilting pads the clearance is the pad (machined) clearance.
     pub fn film_geometry(&self) -> Option<FilmGeometry> {
         let (radius, length, clearance, viscosity) = match self {
-            BearingKind::Linear { .. } => return None,
+            BearingKind::Linear { .. } | BearingKind::Rub(_) => return None,
             BearingKind::Plain(b) => (b.radius, b.length, b.clearance, b.viscosity),
             BearingKind::TiltingPad(b) => (b.radius, b.length, b.clearance, b.viscosity),
         };
@@ -355,7 +366,7 @@ impl BearingKind {
     /// Set the oil viscosity (Pa·s); `false` (and nothing changed) for a linear bearing.
     pub fn set_viscosity(&mut self, viscosity: f64) -> bool {
         match self {
-            BearingKind::Linear { .. } => return false,
+            BearingKind::Linear { .. } | BearingKind::Rub(_) => return false,
             BearingKind::Plain(b) => b.viscosity = viscosity,
             BearingKind::TiltingPad(b) => b.viscosity = viscosity,
         }
@@ -363,13 +374,14 @@ impl BearingKind {
     }
 
     /// Radial clearance (m) the journal moves in: the bushing clearance of a plain
-    /// bearing, the assembled clearance `C (1 − preload)` of tilting pads; `None`
-    /// for a linear bearing.
+    /// bearing, the assembled clearance `C (1 − preload)` of tilting pads, the
+    /// radial gap of a rub element; `None` for a linear bearing.
     pub fn journal_clearance(&self) -> Option<f64> {
         match self {
             BearingKind::Linear { .. } => None,
             BearingKind::Plain(b) => Some(b.clearance),
             BearingKind::TiltingPad(b) => Some(b.assembled_clearance()),
+            BearingKind::Rub(r) => Some(r.contact.gap),
         }
     }
 }

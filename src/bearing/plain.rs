@@ -282,7 +282,11 @@ impl PlainBearing {
 
 /// Coulomb friction torque `μ N R` of a contact, opposing the spin (signed with
 /// `speed`; at standstill the breakaway torque the drive must overcome).
-pub(crate) fn contact_friction_torque(law: &ContactLaw, contact: &ContactReport, speed: f64) -> f64 {
+pub(crate) fn contact_friction_torque(
+    law: &ContactLaw,
+    contact: &ContactReport,
+    speed: f64,
+) -> f64 {
     let torque = law.friction * contact.normal_force * law.radius;
     if speed < 0.0 { -torque } else { torque }
 }

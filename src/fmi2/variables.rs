@@ -318,6 +318,9 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         );
     }
     for (k, b) in model.bearings.iter().enumerate() {
+        if b.kind.is_rub() {
+            continue;
+        }
         let node = b.node + 1;
         let n = &b.name;
         let outputs: [OutputSpec; 6] = [
@@ -431,6 +434,34 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
     // Contact outputs come last, so the value references above stay as they were.
     for (k, b) in model.bearings.iter().enumerate() {
         let n = &b.name;
+        if b.kind.is_rub() {
+            push(
+                format!("rubs.{n}.contact_force"),
+                format!(
+                    "Normal force of rub {n} (node {}) on the rotor (0 while clear of the stator)",
+                    b.node + 1
+                ),
+                Real,
+                Output,
+                Continuous,
+                Some("N"),
+                None,
+                None,
+                Binding::BearingContact(k),
+            );
+            push(
+                format!("rubs.{n}.friction_torque"),
+                format!("Friction torque mu*N*R of rub {n} on the rotor, opposing the spin"),
+                Real,
+                Output,
+                Continuous,
+                Some("N.m"),
+                None,
+                None,
+                Binding::BearingFriction(k),
+            );
+            continue;
+        }
         push(
             format!("bearings.{n}.contact_force"),
             format!(
@@ -446,7 +477,9 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         );
         push(
             format!("bearings.{n}.min_film_thickness"),
-            format!("Minimum oil-film thickness of bearing {n} (0 in contact and for linear bearings)"),
+            format!(
+                "Minimum oil-film thickness of bearing {n} (0 in contact and for linear bearings)"
+            ),
             Real,
             Output,
             Continuous,

@@ -51,6 +51,9 @@ pub struct ModelFile {
     pub disks: Vec<DiskEntry>,
     #[serde(default)]
     pub bearings: Vec<BearingEntry>,
+    /// `[[rubs]]`.
+    #[serde(default)]
+    pub rubs: Vec<RubEntry>,
     #[serde(default)]
     pub unbalance: Vec<UnbalanceEntry>,
     #[serde(default)]
@@ -199,6 +202,25 @@ pub enum BearingEntry {
         /// Coulomb friction coefficient of the contact (–), default 0.2.
         friction_coefficient: Option<f64>,
     },
+}
+
+/// `[[rubs]]`: a stator ring (seal, labyrinth, air gap) the rotor may touch.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RubEntry {
+    pub name: Option<String>,
+    pub node: Option<i64>,
+    pub z: Option<f64>,
+    /// Radial clearance between rotor and stator (m).
+    pub gap: f64,
+    /// Rotor surface radius at the rub (m); default the shaft's outer radius at the node.
+    pub radius: Option<f64>,
+    /// Contact stiffness (N/m); default the steel line contact of a 10 mm wide ring.
+    pub contact_stiffness: Option<f64>,
+    /// Contact damping (N·s/m); default 1e-5 s × the contact stiffness.
+    pub contact_damping: Option<f64>,
+    /// Coulomb friction coefficient (–), default 0.2.
+    pub friction_coefficient: Option<f64>,
 }
 
 /// `[[unbalance]]`: an unbalance plane.

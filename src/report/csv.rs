@@ -315,7 +315,10 @@ mod tests {
         let rows = parse(&text, header);
         assert_eq!(rows.len(), 2);
         assert_eq!(rows[0][..3], [0.125, 100.0 * RAD_S_TO_RPM, 12.5]);
-        assert_eq!(rows[0][3..11], [1e-6, -2e-6, 3.0, -4.0, 0.25, 0.5, 9.5, 2.5e-5]);
+        assert_eq!(
+            rows[0][3..11],
+            [1e-6, -2e-6, 3.0, -4.0, 0.25, 0.5, 9.5, 2.5e-5]
+        );
         assert!(header.contains(&format!(",{b}_contact_force_N,{b}_min_film_thickness_m")));
         assert_eq!(rows[0][columns - 3..], [7e-6, 8e-6, 1.0]);
     }

@@ -229,7 +229,10 @@ fn newton_static(
 ) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
     let n = rotor.dof_count();
     let tol = options.tolerance;
-    let k_rest = JOURNAL_REST * (0..n).map(|i| rotor.stiffness.get(i, i).abs()).fold(0.0, f64::max);
+    let k_rest = JOURNAL_REST
+        * (0..n)
+            .map(|i| rotor.stiffness.get(i, i).abs())
+            .fold(0.0, f64::max);
     let mut work = StaticWork {
         f_ext: if options.gravity {
             rotor.gravity_load.clone()

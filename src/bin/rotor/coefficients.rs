@@ -43,7 +43,7 @@ pub fn coefficients(
             let m = RotorModel::from_file(path).map_err(|e| e.to_string())?;
             let found = m.bearings.iter().find(|b| match &bearing {
                 Some(name) => &b.name == name,
-                None => b.kind.is_nonlinear(),
+                None => b.kind.film_geometry().is_some(),
             });
             let b = found.ok_or_else(|| {
                 let names: Vec<&str> = m.bearings.iter().map(|b| b.name.as_str()).collect();

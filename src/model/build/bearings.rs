@@ -3,21 +3,25 @@
 
 use crate::bearing::contact::ContactLaw;
 use crate::bearing::tilting_pad::Pad;
-use crate::bearing::{BearingKind, PlainBearing, TiltingPadBearing};
+use crate::bearing::{BearingKind, PlainBearing, RubElement, TiltingPadBearing};
 
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
-use crate::model::file::BearingEntry;
-use crate::model::{ModelError, PlacedBearing};
+use crate::model::file::{BearingEntry, RubEntry};
+use crate::model::{ModelError, PlacedBearing, PlacedElement};
 
 /// Check each bearing: unique name, its node and the parameters of its `type`; film bearings
 /// need a clearance below a tenth of the radius, tilting pads 3–18
 /// non-overlapping pads.
+///
+/// Rub elements (`[[rubs]]`) follow the bearings in the list, as
+/// [`BearingKind::Rub`], their names unique among the bearings'.
 pub(super) fn bearings(
     ctx: &Ctx,
     root: &FieldPath,
-    entries: Vec<BearingEntry>,
+    (entries, rubs): (Vec<BearingEntry>, Vec<RubEntry>),
     node_z: &[f64],
+    elements: &[PlacedElement],
 ) -> Result<Vec<PlacedBearing>, ModelError> {
     let mut bearings = Vec::new();
     let mut names = Names::default();
@@ -214,9 +218,41 @@ pub(super) fn bearings(
             kind,
         });
     }
+    for (i, r) in rubs.into_iter().enumerate() {
+        let p = root.key("rubs").index(i);
+        let node = ctx.location(&p, r.node, r.z, node_z)?;
+        let gap = ctx.positive(p.key("gap"), r.gap)?;
+        // The shaft's outer radius at the node: the larger of its elements'.
+        let shaft_radius = elements
+            .iter()
+            .filter(|e| e.node == node || e.node + 1 == node)
+            .map(|e| 0.5 * e.element.section.outer_diameter)
+            .fold(0.0, f64::max);
+        let radius = ctx.positive(p.key("radius"), r.radius.unwrap_or(shaft_radius))?;
+        let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
+        let law = contact_law(
+            ctx,
+            &p,
+            default,
+            [
+                r.contact_stiffness,
+                r.contact_damping,
+                r.friction_coefficient,
+            ],
+        )?
+        .unwrap_or(default);
+        bearings.push(PlacedBearing {
+            name: names.claim(ctx, &p, default_name(r.name, "rub", i), "rub")?,
+            node,
+            kind: BearingKind::Rub(RubElement { contact: law }),
+        });
+    }
 
     Ok(bearings)
 }
+
+/// Axial width (m) of a rub's contact for its default steel stiffness.
+const RUB_WIDTH: f64 = 0.01;
 
 /// The contact law of a fluid-film bearing: `default` (the steel law of its
 /// geometry) with the model file's `contact_stiffness` (N/m, > 0),
