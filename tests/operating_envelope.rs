@@ -300,3 +300,56 @@ fn a_rub_continues_in_contact_with_the_orbit_at_the_contact_radius_plus_the_pene
         }
     }
 }
+
+/// `rotor simulate --ramp-rpm 0:N` and `N:0` run from and to standstill without
+/// `--no-settle`: the CSV shows the journals on their bushings at rest (contact
+/// force = the beam reaction, no film) and floating at speed.
+#[test]
+fn the_cli_runs_up_from_rest_and_coasts_down_to_rest() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("envelope_cli");
+    std::fs::create_dir_all(&dir).unwrap();
+    let model = concat!(env!("CARGO_MANIFEST_DIR"), "/models/jeffcott.toml");
+    let reactions = beam_reactions(&jeffcott_with(str::to_string));
+    for (ramp, rest_row) in [("0:3000", 0usize), ("3000:0", usize::MAX)] {
+        let csv = dir.join(format!("ramp_{}.csv", ramp.replace(':', "_")));
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .args(["simulate", model, "--ramp-rpm", ramp, "--duration", "0.3"])
+            .args(["--step", "2e-4", "--csv"])
+            .arg(&csv)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{ramp}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = std::fs::read_to_string(&csv).unwrap();
+        let mut lines = text.lines();
+        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+        let rows: Vec<Vec<f64>> = lines
+            .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+            .collect();
+        let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+        let (contact, film) = (
+            col("left_contact_force_N"),
+            col("left_min_film_thickness_m"),
+        );
+        let rest = &rows[rest_row.min(rows.len() - 1)];
+        let moving = &rows[if rest_row == 0 { rows.len() - 1 } else { 0 }];
+        if rest_row == 0 {
+            // Starts settled at rest: the journal carries its share of the weight on contact.
+            assert!(
+                (rest[contact] - reactions[0]).abs() < 1e-6 * reactions[0],
+                "{ramp}: {} N vs {} N",
+                rest[contact],
+                reactions[0]
+            );
+            assert_eq!(rest[film], 0.0);
+        } else {
+            // 0.3 s after the start of the coast-down the squeeze film still holds it off.
+            assert_eq!(rest[col("speed_rpm")], 0.0);
+        }
+        assert_eq!(moving[contact], 0.0, "{ramp}: floating at 3000 rpm");
+        assert!(moving[film] > 0.0);
+    }
+}
