@@ -4,7 +4,7 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use crate::analysis::campbell::{CampbellPoint, CriticalSpeed};
+use crate::analysis::campbell::{CampbellPoint, CriticalSpeed, OVERDAMPED_DAMPING_RATIO};
 use crate::analysis::modal::Whirl;
 
 pub use crate::units::RAD_S_TO_RPM;
@@ -48,7 +48,8 @@ fn whirl_color(w: Whirl) -> RGBColor {
 
 /// Campbell diagram: damped natural frequencies (Hz) against speed (rpm), markers
 /// coloured by whirl (red forward, blue backward, grey mixed), the excitation
-/// lines `ω = h Ω` for `harmonics`, and the critical speeds circled.
+/// lines `ω = h Ω` for `harmonics`, the critical speeds circled and the
+/// overdamped crossings ([`CriticalSpeed::is_overdamped`]) marked with grey crosses.
 pub fn campbell_png(
     path: &Path,
     title: &str,
@@ -129,7 +130,7 @@ pub fn campbell_png(
             .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLACK.stroke_width(2)));
     }
     chart
-        .draw_series(criticals.iter().map(|c| {
+        .draw_series(criticals.iter().filter(|c| !c.is_overdamped()).map(|c| {
             Circle::new(
                 (c.speed * RAD_S_TO_RPM, c.harmonic * c.speed * hz),
                 8,
@@ -139,6 +140,20 @@ pub fn campbell_png(
         .map_err(|e| failed(path, e))?
         .label("critical speed")
         .legend(|(x, y)| Circle::new((x + 10, y), 6, BLACK.stroke_width(2)));
+    let grey = RGBColor(120, 120, 120);
+    chart
+        .draw_series(criticals.iter().filter(|c| c.is_overdamped()).map(|c| {
+            Cross::new(
+                (c.speed * RAD_S_TO_RPM, c.harmonic * c.speed * hz),
+                7,
+                grey.stroke_width(2),
+            )
+        }))
+        .map_err(|e| failed(path, e))?
+        .label(format!(
+            "overdamped crossing (ζ ≥ {OVERDAMPED_DAMPING_RATIO}), not a critical speed"
+        ))
+        .legend(move |(x, y)| Cross::new((x + 10, y), 6, grey.stroke_width(2)));
     for (w, name) in [
         (Whirl::Forward, "forward whirl"),
         (Whirl::Backward, "backward whirl"),

@@ -46,6 +46,12 @@ fn campbell_writes_csv_and_png() {
     );
     // The first critical speeds of the classic rotor sit at ≈116.4 rad/s (1111 rpm).
     assert!(stdout.contains("1111."), "{stdout}");
+    assert!(
+        stdout.contains(
+            "speed grid of classic_disk_rotor: 0.00 to 6000.00 rpm in 12 steps (top speed: --max-rpm)"
+        ),
+        "{stdout}"
+    );
     let text = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(text.lines().count(), 1 + 13 * 6);
     let bytes = std::fs::read(&png).unwrap();
@@ -581,4 +587,92 @@ fn simulate_refuses_a_ratio_for_a_run_under_twenty_revolutions() {
         "{stderr}"
     );
     assert!(!png.exists());
+}
+
+#[test]
+fn campbell_lists_overdamped_crossings_apart_from_critical_speeds() {
+    // The Jeffcott rotor's rigid-body modes on the films cross the 1× line at
+    // 419 rpm with ζ = 0.82: overdamped, no resonance peak.
+    let csv = out_dir("campbell_jeffcott").join("c.csv");
+    let out = rotor()
+        .arg("campbell")
+        .arg(models().join("jeffcott.toml"))
+        .arg("--csv")
+        .arg(&csv)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // Default top speed 1.25 × speed_rpm 3000; fluid films from 1 % of it.
+    assert!(
+        stdout.contains(
+            "speed grid of jeffcott: 37.50 to 3750.00 rpm in 40 steps (top speed: 1.25 × the model's speed_rpm 3000; fluid-film bearings: from 1 % of the top speed)"
+        ),
+        "{stdout}"
+    );
+    let zeta = |line: &str| -> f64 { line.rsplit("ζ = ").next().unwrap().parse().unwrap() };
+    let (critical, overdamped) = stdout.split_once("overdamped crossings").unwrap();
+    let critical: Vec<&str> = critical.lines().filter(|l| l.contains("ζ = ")).collect();
+    let overdamped: Vec<&str> = overdamped.lines().filter(|l| l.contains("ζ = ")).collect();
+    assert!(critical.iter().all(|l| zeta(l) < 0.5), "{stdout}");
+    assert!(overdamped.iter().all(|l| zeta(l) >= 0.5), "{stdout}");
+    assert!(
+        critical
+            .iter()
+            .any(|l| l.contains("2675.11 rpm") && l.contains("ζ = 3.156e-1")),
+        "{stdout}"
+    );
+    assert!(
+        overdamped
+            .iter()
+            .any(|l| l.contains("419.27 rpm") && l.contains("ζ = 8.182e-1")),
+        "{stdout}"
+    );
+}
+
+#[test]
+fn campbell_default_top_speed_follows_the_model() {
+    let dir = out_dir("campbell_range");
+    let base = rotor_bearing::model::DEFAULT_MODEL_TOML;
+    let cases = [
+        (
+            base.to_string(),
+            "0.00 to 1250.00 rpm in 40 steps (top speed: 1.25 × the model's speed_rpm 1000)",
+        ),
+        (
+            base.replace("speed_rpm = 1000", "speed_rpm = 1000\nmax_speed_rpm = 2000"),
+            "0.00 to 2500.00 rpm in 40 steps (top speed: 1.25 × the model's max_speed_rpm 2000)",
+        ),
+        (
+            base.replace("speed_rpm = 1000", ""),
+            "0.00 to 4000.00 rpm in 40 steps (top speed: the model states neither max_speed_rpm nor speed_rpm)",
+        ),
+    ];
+    for (k, (text, grid)) in cases.iter().enumerate() {
+        let path = dir.join(format!("m{k}.toml"));
+        std::fs::write(&path, text).unwrap();
+        let out = rotor()
+            .arg("campbell")
+            .arg(&path)
+            .args(["--modes", "2", "--csv"])
+            .arg(dir.join("c.csv"))
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(
+            stdout.contains(&format!("speed grid of classic_disk_rotor: {grid}")),
+            "{stdout}"
+        );
+        // The classic rotor's first critical speeds (1111 rpm) are inside every range.
+        assert!(stdout.contains("1111."), "{stdout}");
+    }
 }

@@ -134,6 +134,9 @@ pub struct RotorModel {
     pub nominal_speed: f64,
     /// Largest spin speed in either direction (rad/s): inputs beyond it are refused.
     pub max_speed: f64,
+    /// Whether the file states `max_speed_rpm` (else `max_speed` is
+    /// [`DEFAULT_MAX_SPEED_RPM`]).
+    pub max_speed_stated: bool,
 }
 
 impl RotorModel {

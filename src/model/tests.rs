@@ -450,3 +450,12 @@ fn a_type_error_in_a_later_bearing_names_that_bearing_and_key() {
         "{e}"
     );
 }
+
+#[test]
+fn stated_maximum_speed_is_told_from_the_default() {
+    let m = RotorModel::from_toml(BASE, "m.toml").unwrap();
+    assert!(!m.max_speed_stated);
+    assert!((m.max_speed * 30.0 / std::f64::consts::PI - DEFAULT_MAX_SPEED_RPM).abs() < 1e-9);
+    let m = RotorModel::from_toml(&format!("max_speed_rpm = 5000.0\n{BASE}"), "m.toml").unwrap();
+    assert!(m.max_speed_stated);
+}

@@ -74,13 +74,16 @@ enum Command {
         #[arg(long)]
         csv: Option<PathBuf>,
     },
-    /// Campbell diagram and critical speeds over 0..max-rpm.
+    /// Campbell diagram and critical speeds up to --max-rpm (from 0 on linear
+    /// bearings, from 1 % of --max-rpm with fluid-film bearings); crossings with
+    /// damping ratio ζ ≥ 0.5 are listed apart as overdamped, not as critical speeds.
     Campbell {
         #[command(flatten)]
         model: ModelArg,
-        /// Highest spin speed (rpm).
-        #[arg(long, default_value_t = 4000.0)]
-        max_rpm: f64,
+        /// Highest spin speed (rpm). Default: 1.25 × the model's max_speed_rpm if
+        /// the file states it, else 1.25 × its speed_rpm if given, else 4000.
+        #[arg(long)]
+        max_rpm: Option<f64>,
         /// Number of speed steps (the grid has steps + 1 points).
         #[arg(long, default_value_t = 40)]
         steps: usize,
