@@ -122,11 +122,13 @@ fn static_and_info_run_on_every_shipped_model() {
                 })
                 .output()
                 .unwrap();
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert!(out.status.success(), "{cmd} {}: {stderr}", path.display());
+            // Shipped models are plausible: no unit-slip warning.
             assert!(
-                out.status.success(),
-                "{cmd} {}: {}",
-                path.display(),
-                String::from_utf8_lossy(&out.stderr)
+                !stderr.contains("warning:"),
+                "{cmd} {}: {stderr}",
+                path.display()
             );
         }
     }
@@ -674,5 +676,47 @@ fn campbell_default_top_speed_follows_the_model() {
         );
         // The classic rotor's first critical speeds (1111 rpm) are inside every range.
         assert!(stdout.contains("1111."), "{stdout}");
+    }
+}
+
+#[test]
+fn implausible_values_are_warned_by_every_command() {
+    let dir = out_dir("plausibility");
+    let path = dir.join("cst.toml");
+    let text = std::fs::read_to_string(models().join("jeffcott.toml"))
+        .unwrap()
+        .replacen("viscosity = 0.02 ", "viscosity = 32.0 ", 1);
+    std::fs::write(&path, text).unwrap();
+    let model = path.to_str().unwrap();
+    let stage = dir.join("stage");
+    let csv = dir.join("out.csv");
+    let csv = csv.to_str().unwrap();
+    let commands: [&[&str]; 7] = [
+        &["info", model],
+        &["static", model, "--rpm", "3000"],
+        &["modes", model, "--rpm", "3000", "--modes", "2"],
+        &[
+            "campbell", model, "--steps", "1", "--modes", "2", "--csv", csv,
+        ],
+        &["coefficients", model, "--points", "3", "--csv", csv],
+        &[
+            "simulate",
+            model,
+            "--rpm",
+            "3000",
+            "--duration",
+            "0.001",
+            "--csv",
+            csv,
+        ],
+        &["fmu-stage", model, stage.to_str().unwrap()],
+    ];
+    let expected = format!(
+        "warning: {model}: bearings[0].viscosity = 32: dynamic viscosity outside the plausible 1e-4 to 1 Pa·s"
+    );
+    for args in commands {
+        let out = rotor().args(args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(&expected), "{args:?}: {stderr}");
     }
 }

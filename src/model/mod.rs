@@ -9,11 +9,13 @@ mod build;
 mod context;
 mod error;
 pub mod file;
+mod plausibility;
 mod source_map;
 pub mod speed_table;
 
 pub use error::ModelError;
 use error::Seg;
+pub use plausibility::{CLEARANCE_RATIO_RANGE, ModelWarning, RADIUS_TOLERANCE, VISCOSITY_RANGE};
 
 use std::path::Path;
 

@@ -185,9 +185,18 @@ fn main() -> ExitCode {
     }
 }
 
+/// Read a model file and print its plausibility warnings on stderr.
+fn read_model(path: &Path) -> Result<RotorModel, String> {
+    let model = RotorModel::from_file(path).map_err(|e| e.to_string())?;
+    for w in model.plausibility_warnings() {
+        eprintln!("warning: {w}");
+    }
+    Ok(model)
+}
+
 fn load(arg: &ModelArg) -> Result<Rotor, String> {
     let model = match &arg.model {
-        Some(path) => RotorModel::from_file(path).map_err(|e| e.to_string())?,
+        Some(path) => read_model(path)?,
         None => RotorModel::default_model(),
     };
     Rotor::new(model).map_err(|e| e.to_string())
