@@ -132,7 +132,9 @@ enum Command {
         /// Write the outputs to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
-        /// Write PREFIX_orbits.png and PREFIX_spectrum.png (last half of the run).
+        /// Write PREFIX_orbits.png and PREFIX_spectrum.png (last half of the run) and
+        /// PREFIX_waterfall.png, and print the spectrum of each window of 20 revolutions
+        /// (a run under 20 revolutions gets no frequency ratio).
         #[arg(long)]
         plots: Option<String>,
     },
