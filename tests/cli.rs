@@ -396,9 +396,10 @@ fn window_table(stdout: &str) -> Vec<Vec<f64>> {
 
 #[test]
 fn simulate_reports_a_pure_synchronous_response_as_one_times_running_speed() {
-    // (model, rpm, duration s, step s, windows): 25, 28.2 and 20.75 revolutions.
+    // (model, rpm, duration s, step s, windows): 25, 28.2, 20 and 20.75 revolutions.
     for (model, rpm, duration, step, windows) in [
         ("jeffcott.toml", "3000", "0.5", "1e-4", 2),
+        ("jeffcott.toml", "1500", "0.8", "1e-4", 1),
         ("jeffcott.toml", "1234", "1.37", "7e-5", 2),
         ("hydro_unit.toml", "150", "8.3", "1e-3", 2),
     ] {

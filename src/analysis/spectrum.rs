@@ -305,14 +305,21 @@ pub fn subsynchronous_share(t: &[f64], x: &[f64], y: &[f64], spin_hz: f64) -> f6
     if total > 0.0 { band / total } else { 0.0 }
 }
 
-/// A record too short for an order: it holds `revolutions` < `needed`.
+/// A record too short for an order: it holds `revolutions` < `needed`
+/// (displayed rounded down to 0.1, so 19.97 reads 19.9).
 #[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
-#[error("too short: {revolutions:.1} revolutions < {needed}")]
+#[error("too short: {:.1} revolutions < {needed}", (revolutions * 10.0 + 1e-6).floor() / 10.0)]
 pub struct TooShort {
     /// Revolutions of the shaft over the record.
     pub revolutions: f64,
     /// Revolutions an order needs ([`MIN_REVOLUTIONS`]).
     pub needed: f64,
+}
+
+/// Whether a record of `revolutions` is too short for an order: fewer than
+/// [`MIN_REVOLUTIONS`], up to the round-off of summing time steps.
+fn too_short(revolutions: f64) -> bool {
+    revolutions < MIN_REVOLUTIONS * (1.0 - 1e-9)
 }
 
 /// Spin angle (rad) at each sample: the trapezoidal integral of `|speed|`.
@@ -411,7 +418,7 @@ pub fn record_spectrum(
     let n = t.len().min(x.len()).min(y.len()).min(speed.len());
     let angle = spin_angle(&t[..n], &speed[..n]);
     let revolutions = angle.last().copied().unwrap_or(0.0) / (2.0 * PI);
-    if n < 2 || revolutions < MIN_REVOLUTIONS {
+    if n < 2 || too_short(revolutions) {
         return Err(TooShort {
             revolutions,
             needed: MIN_REVOLUTIONS,
@@ -503,7 +510,7 @@ pub fn waterfall(
     let n = t.len().min(x.len()).min(y.len()).min(speed.len());
     let angle = spin_angle(&t[..n], &speed[..n]);
     let revolutions = angle.last().copied().unwrap_or(0.0) / (2.0 * PI);
-    if n < 2 || revolutions < MIN_REVOLUTIONS {
+    if n < 2 || too_short(revolutions) {
         return Err(TooShort {
             revolutions,
             needed: MIN_REVOLUTIONS,
@@ -737,6 +744,22 @@ mod tests {
         assert!((short.revolutions - 19.5).abs() < 1e-9, "{short:?}");
         assert_eq!(short.to_string(), "too short: 19.5 revolutions < 20");
         assert_eq!(waterfall(&t, &x, &y, &w, 1e-4).unwrap_err(), short);
+        let almost = TooShort {
+            revolutions: 19.97,
+            needed: MIN_REVOLUTIONS,
+        };
+        assert_eq!(almost.to_string(), "too short: 19.9 revolutions < 20");
+        // 1500 rpm for 0.8 s: 20 revolutions up to the round-off of the time steps.
+        let slow = 1500.0 * PI / 30.0;
+        let t20 = times(0.8, 1e-4);
+        let (x20, y20) = synchronous(&t20, slow);
+        let w20 = vec![slow; t20.len()];
+        let s = record_spectrum(&t20, &x20, &y20, &w20).unwrap();
+        assert!((s.revolutions - 20.0).abs() < 1e-9 && (s.order().unwrap() - 1.0).abs() < 1e-3);
+        assert_eq!(
+            waterfall(&t20, &x20, &y20, &w20, 1e-4).unwrap().rows.len(),
+            1
+        );
         let still = vec![0.0; t.len()];
         assert_eq!(
             record_spectrum(&t, &x, &y, &still).unwrap_err().revolutions,
