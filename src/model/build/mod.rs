@@ -53,6 +53,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     Ok(RotorModel {
         nominal_speed,
         max_speed,
+        max_speed_stated: raw.max_speed_rpm.is_some(),
         name: raw.name,
         description: raw.description,
         source: ctx.source.to_string(),
