@@ -44,7 +44,7 @@
 //! let s = record_spectrum(&t, &x, &y, &w).unwrap();
 //! assert!((s.order().unwrap() - 1.0).abs() < 1e-3);
 //! // 4 s are only 10 revolutions: no ratio, a refusal that says why.
-//! let short = record_spectrum(&t[..1334], &x[..1334], &y[..1334], &w[..1334]).unwrap_err();
+//! let short = record_spectrum(&t[..1335], &x[..1335], &y[..1335], &w[..1335]).unwrap_err();
 //! assert_eq!(short.to_string(), "too short: 10.0 revolutions < 20");
 //! ```
 
