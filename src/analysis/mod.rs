@@ -6,3 +6,4 @@ pub mod linear;
 pub mod linearize;
 pub mod modal;
 pub mod spectrum;
+pub mod unbalance;

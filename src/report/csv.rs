@@ -7,6 +7,7 @@ use std::fmt::Write as _;
 
 use crate::analysis::campbell::CampbellPoint;
 use crate::analysis::modal::Mode;
+use crate::analysis::unbalance::UnbalanceSweep;
 use crate::bearing::coefficients::DimensionlessPoint;
 use crate::model::RotorModel;
 use crate::solver::Outputs;
@@ -146,6 +147,45 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
             write!(out, ",{:e},{:e}", p.x, p.y).ok();
         }
         writeln!(out, ",{}", o.friction_torque).ok();
+    }
+    out
+}
+
+/// Column stem of a response point: `probe disk` → `probe_disk`.
+pub fn column_stem(label: &str) -> String {
+    label.replace(' ', "_")
+}
+
+/// An unbalance response sweep: speed (rpm, rad/s), then per point the x and y
+/// amplitudes `|X|`, `|Y|` (m) and phases `arg X`, `arg Y` (°, with
+/// `x(t) = |X| cos(Ωt + arg X)`, spin angle `Ωt` from +x toward +y), and the
+/// major semi-axis of the orbit (m).
+pub fn unbalance(sweep: &UnbalanceSweep) -> String {
+    let mut out = String::from("speed_rpm,speed_rad_s");
+    for p in &sweep.points {
+        let n = column_stem(&p.label);
+        write!(
+            out,
+            ",{n}_x_amplitude_m,{n}_x_phase_deg,{n}_y_amplitude_m,{n}_y_phase_deg,{n}_major_semi_axis_m"
+        )
+        .ok();
+    }
+    out.push('\n');
+    for (speed, row) in sweep.speeds.iter().zip(&sweep.response) {
+        write!(out, "{},{speed}", speed * RAD_S_TO_RPM).ok();
+        for &(x, y) in row {
+            write!(
+                out,
+                ",{:e},{},{:e},{},{:e}",
+                x.norm(),
+                x.arg().to_degrees(),
+                y.norm(),
+                y.arg().to_degrees(),
+                crate::analysis::unbalance::major_semi_axis((x, y))
+            )
+            .ok();
+        }
+        out.push('\n');
     }
     out
 }

@@ -3,8 +3,10 @@
 
 use std::fmt::Write;
 
+use crate::analysis::unbalance::{Peak, SeparationMargin, UnbalanceSweep};
 use crate::bearing::BearingKind;
 use crate::rotor::Rotor;
+use crate::units::RAD_S_TO_RPM;
 
 /// What `rotor info` prints: sizes, disks, bearings, unbalances, probes, gravity.
 pub fn model_summary(rotor: &Rotor) -> String {
@@ -125,6 +127,46 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
     }
 }
 
+/// The table of unbalance response peaks `rotor unbalance` prints: point, peak
+/// speed (rpm), major semi-axis (µm), amplification factor, required and actual
+/// separation margins (%) and the verdict. A peak without both half-power
+/// speeds inside the sweep has no AF; a row without a margin had no operating
+/// range to measure from.
+pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin>)]) -> String {
+    let mut s = String::from(
+        "point                      speed (rpm)  amplitude (µm)        AF  required SM  actual SM  result\n",
+    );
+    for (peak, margin) in rows {
+        let af = peak
+            .amplification_factor
+            .map_or("—".to_string(), |a| format!("{a:.2}"));
+        let (required, actual, verdict) = match margin {
+            Some(m) => (
+                m.required
+                    .map_or("none".to_string(), |r| format!("{:.1} %", 100.0 * r)),
+                format!("{:.1} %", 100.0 * m.actual),
+                if m.pass { "pass" } else { "FAIL" },
+            ),
+            None => ("—".into(), "—".into(), "no AF or range"),
+        };
+        writeln!(
+            s,
+            "{:<26} {:>11.1} {:>15} {:>9} {:>12} {:>10}  {verdict}",
+            sweep.points[peak.point].label,
+            peak.speed * RAD_S_TO_RPM,
+            short(peak.amplitude * 1e6),
+            af,
+            required,
+            actual
+        )
+        .ok();
+    }
+    if rows.is_empty() {
+        s.push_str("(no peak inside the speed range)\n");
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -136,5 +178,40 @@ mod tests {
         assert_eq!(short(-9.81), "-9.81");
         assert_eq!(short(1e-4 * 1e6), "100");
         assert_eq!(short(2.5e-9), "2.5e-9");
+    }
+
+    #[test]
+    fn peak_table_prints_every_column_and_the_verdict() {
+        use crate::analysis::unbalance::{ResponsePoint, UnbalanceSweep};
+        let sweep = UnbalanceSweep {
+            speeds: vec![],
+            points: vec![ResponsePoint {
+                label: "probe disk".into(),
+                node: 3,
+            }],
+            response: vec![],
+        };
+        let peak = Peak {
+            point: 0,
+            speed: 1000.0 / RAD_S_TO_RPM,
+            amplitude: 12.5e-6,
+            half_power: Some((1.0, 2.0)),
+            amplification_factor: Some(4.0),
+        };
+        let margin = SeparationMargin {
+            required: Some(0.16),
+            actual: 0.125,
+            pass: false,
+        };
+        let table = peak_table(&sweep, &[(peak, Some(margin)), (peak, None)]);
+        let lines: Vec<&str> = table.lines().collect();
+        let cells: Vec<&str> = lines[1].split_whitespace().collect();
+        assert_eq!(
+            cells,
+            [
+                "probe", "disk", "1000.0", "12.5", "4.00", "16.0", "%", "12.5", "%", "FAIL"
+            ]
+        );
+        assert!(lines[2].ends_with("no AF or range"), "{}", lines[2]);
     }
 }

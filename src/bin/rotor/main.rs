@@ -8,6 +8,8 @@
 //! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--csv FILE] [--png FILE]
 //! rotor simulate [MODEL.toml] (--rpm N | --ramp-rpm A:B | --speed-csv FILE) [--duration S] [--step S]
 //!                [--output-step S] [--ramp-time S] [--no-gravity] [--csv FILE] [--plots PREFIX]
+//! rotor unbalance [MODEL.toml] [--min-rpm N] [--max-rpm N] [--points P] [--node N --unbalance KGM]
+//!                 [--operating-rpm A:B] [--csv FILE] [--png FILE]
 //! ```
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
 //! `coefficients`, the reference plain short bearing).
@@ -17,6 +19,7 @@ mod fmu_stage;
 mod modal;
 mod simulate;
 mod statics;
+mod unbalance;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -162,6 +165,36 @@ enum Command {
         #[arg(long)]
         png: Option<PathBuf>,
     },
+    /// Unbalance response over a speed range (Bode and polar plots), its peaks,
+    /// amplification factors and API 684 separation margins.
+    Unbalance {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Lowest spin speed (rpm).
+        #[arg(long, default_value_t = 0.0)]
+        min_rpm: f64,
+        /// Highest spin speed (rpm).
+        #[arg(long, default_value_t = 4000.0)]
+        max_rpm: f64,
+        /// Number of speeds of the grid (both ends included).
+        #[arg(long, default_value_t = 200)]
+        points: usize,
+        /// Excite with one unbalance at this node (numbered from 1) instead of the model's planes.
+        #[arg(long)]
+        node: Option<usize>,
+        /// Size of that unbalance (kg·m).
+        #[arg(long, default_value_t = 1e-3, requires = "node")]
+        unbalance: f64,
+        /// Operating speed range MIN:MAX (rpm) for the separation margins; default: the model's speed_rpm.
+        #[arg(long)]
+        operating_rpm: Option<String>,
+        /// Write the response to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw the Bode and polar plots to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
 }
 
 fn main() -> ExitCode {
@@ -222,6 +255,29 @@ fn run(cli: Cli) -> Result<(), String> {
             csv,
             png,
         } => coefficients::coefficients(model, bearing, rpm, points, csv, png),
+        Command::Unbalance {
+            model,
+            min_rpm,
+            max_rpm,
+            points,
+            node,
+            unbalance: size,
+            operating_rpm,
+            csv,
+            png,
+        } => unbalance::unbalance(
+            &load(&model)?,
+            unbalance::Request {
+                min_rpm,
+                max_rpm,
+                points,
+                node,
+                unbalance: size,
+                operating_rpm,
+                csv,
+                png,
+            },
+        ),
         Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
         Command::Simulate {
             model,

@@ -1,4 +1,5 @@
-//! PNG figures (plotters, bitmap backend): the Campbell diagram.
+//! PNG figures (plotters, bitmap backend): Campbell diagram, coefficient curves,
+//! orbits, spectra and waterfalls here; the analyst toolkit figures in submodules.
 
 use std::path::Path;
 
@@ -411,3 +412,7 @@ pub fn waterfall_png(
     root.present().map_err(|e| failed(path, e))?;
     Ok(())
 }
+
+mod unbalance;
+
+pub use unbalance::unbalance_png;
