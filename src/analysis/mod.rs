@@ -5,5 +5,6 @@ pub mod campbell;
 pub mod linear;
 pub mod linearize;
 pub mod modal;
+pub mod operating_point;
 pub mod spectrum;
 pub mod unbalance;

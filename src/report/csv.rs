@@ -7,6 +7,7 @@ use std::fmt::Write as _;
 
 use crate::analysis::campbell::CampbellPoint;
 use crate::analysis::modal::Mode;
+use crate::analysis::operating_point::BearingOperatingPoint;
 use crate::analysis::unbalance::UnbalanceSweep;
 use crate::bearing::coefficients::DimensionlessPoint;
 use crate::model::RotorModel;
@@ -186,6 +187,65 @@ pub fn unbalance(sweep: &UnbalanceSweep) -> String {
             .ok();
         }
         out.push('\n');
+    }
+    out
+}
+
+/// Bearings at an operating point, one row each: load and force (N), journal
+/// position (m), eccentricity ratio, attitude angle (°), minimum film thickness
+/// (m), friction torque (N·m), power loss (W) (empty for linear bearings), then
+/// K (N/m) and C (N·s/m) row-major.
+pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
+    let mut out = String::from(
+        "speed_rpm,bearing,load_N,fx_N,fy_N,x_m,y_m,eccentricity,attitude_angle_deg,min_film_thickness_m,friction_torque_Nm,power_loss_W,kxx_N_m,kxy_N_m,kyx_N_m,kyy_N_m,cxx_Ns_m,cxy_Ns_m,cyx_Ns_m,cyy_Ns_m\n",
+    );
+    for p in points {
+        write!(
+            out,
+            "{rpm},{},{},{},{},{:e},{:e}",
+            p.name, p.load, p.force[0], p.force[1], p.journal[0], p.journal[1]
+        )
+        .ok();
+        match &p.film {
+            Some(f) => write!(
+                out,
+                ",{},{},{:e},{},{}",
+                f.eccentricity,
+                f.attitude_angle.to_degrees(),
+                f.min_film_thickness,
+                f.friction_torque,
+                f.power_loss
+            ),
+            None => write!(out, ",,,,,"),
+        }
+        .ok();
+        for v in p.stiffness.iter().chain(&p.damping).flatten() {
+            write!(out, ",{v}").ok();
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// The pads of the tilting-pad bearings at an operating point: pivot angle
+/// (°), tilt `η = ψR` (m), tilt angle `ψ` (rad) and minimum film thickness (m).
+pub fn operating_pads(points: &[BearingOperatingPoint]) -> String {
+    let mut out =
+        String::from("bearing,pad,pivot_deg,tilt_m,tilt_angle_rad,min_film_thickness_m\n");
+    for p in points {
+        for (k, pad) in p.film.iter().flat_map(|f| f.pads.iter()).enumerate() {
+            writeln!(
+                out,
+                "{},{},{},{:e},{:e},{:e}",
+                p.name,
+                k + 1,
+                pad.pivot.to_degrees(),
+                pad.tilt,
+                pad.tilt_angle,
+                pad.min_film_thickness
+            )
+            .ok();
+        }
     }
     out
 }

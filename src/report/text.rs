@@ -3,6 +3,7 @@
 
 use std::fmt::Write;
 
+use crate::analysis::operating_point::BearingOperatingPoint;
 use crate::analysis::unbalance::{Peak, SeparationMargin, UnbalanceSweep};
 use crate::bearing::BearingKind;
 use crate::rotor::Rotor;
@@ -163,6 +164,69 @@ pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin
     }
     if rows.is_empty() {
         s.push_str("(no peak inside the speed range)\n");
+    }
+    s
+}
+
+/// A 2×2 matrix in one line: `[[a, b], [c, d]]`, six significant digits.
+fn matrix(m: &[[f64; 2]; 2]) -> String {
+    format!(
+        "[[{}, {}], [{}, {}]]",
+        short(m[0][0]),
+        short(m[0][1]),
+        short(m[1][0]),
+        short(m[1][1])
+    )
+}
+
+/// What `rotor operating-point` prints per bearing: load, journal position,
+/// eccentricity, attitude angle, minimum film thickness (µm), friction torque
+/// and power loss, K and C, and each pad's tilt and film thickness.
+pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
+    let mut s = String::new();
+    for p in points {
+        writeln!(s, "bearing {} at {} rpm:", p.name, short(rpm)).ok();
+        writeln!(
+            s,
+            "  static load {} N (Fx = {} N, Fy = {} N), journal at x = {} µm, y = {} µm",
+            short(p.load),
+            short(p.force[0]),
+            short(p.force[1]),
+            short(p.journal[0] * 1e6),
+            short(p.journal[1] * 1e6)
+        )
+        .ok();
+        if let Some(f) = &p.film {
+            writeln!(
+                s,
+                "  eccentricity ratio {}, attitude angle {}°, minimum film thickness {} µm",
+                short(f.eccentricity),
+                short(f.attitude_angle.to_degrees()),
+                short(f.min_film_thickness * 1e6)
+            )
+            .ok();
+            writeln!(
+                s,
+                "  friction torque {} N·m, power loss {} W",
+                short(f.friction_torque),
+                short(f.power_loss)
+            )
+            .ok();
+        }
+        writeln!(s, "  K = {} N/m", matrix(&p.stiffness)).ok();
+        writeln!(s, "  C = {} N·s/m", matrix(&p.damping)).ok();
+        for (k, pad) in p.film.iter().flat_map(|f| f.pads.iter()).enumerate() {
+            writeln!(
+                s,
+                "  pad {} (pivot {}°): tilt {} µm ({} mrad), minimum film thickness {} µm",
+                k + 1,
+                short(pad.pivot.to_degrees()),
+                short(pad.tilt * 1e6),
+                short(pad.tilt_angle * 1e3),
+                short(pad.min_film_thickness * 1e6)
+            )
+            .ok();
+        }
     }
     s
 }

@@ -10,6 +10,7 @@
 //!                [--output-step S] [--ramp-time S] [--no-gravity] [--csv FILE] [--plots PREFIX]
 //! rotor unbalance [MODEL.toml] [--min-rpm N] [--max-rpm N] [--points P] [--node N --unbalance KGM]
 //!                 [--operating-rpm A:B] [--csv FILE] [--png FILE]
+//! rotor operating-point [MODEL.toml] --rpm N [--csv FILE] [--pads-csv FILE]
 //! ```
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
 //! `coefficients`, the reference plain short bearing).
@@ -17,6 +18,7 @@
 mod coefficients;
 mod fmu_stage;
 mod modal;
+mod operating_point;
 mod simulate;
 mod statics;
 mod unbalance;
@@ -165,6 +167,21 @@ enum Command {
         #[arg(long)]
         png: Option<PathBuf>,
     },
+    /// Every bearing at one speed: static load, eccentricity, attitude angle,
+    /// minimum film thickness, friction power, stiffness and damping.
+    OperatingPoint {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Spin speed (rpm).
+        #[arg(long)]
+        rpm: f64,
+        /// Write one row per bearing to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Write the tilting pads' tilts and film thicknesses to this CSV file.
+        #[arg(long)]
+        pads_csv: Option<PathBuf>,
+    },
     /// Unbalance response over a speed range (Bode and polar plots), its peaks,
     /// amplification factors and API 684 separation margins.
     Unbalance {
@@ -278,6 +295,12 @@ fn run(cli: Cli) -> Result<(), String> {
                 png,
             },
         ),
+        Command::OperatingPoint {
+            model,
+            rpm,
+            csv,
+            pads_csv,
+        } => operating_point::run(&load(&model)?, rpm, csv, pads_csv),
         Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
         Command::Simulate {
             model,
