@@ -6,5 +6,6 @@ pub mod linear;
 pub mod linearize;
 pub mod modal;
 pub mod operating_point;
+pub mod shapes;
 pub mod spectrum;
 pub mod unbalance;

@@ -413,6 +413,8 @@ pub fn waterfall_png(
     Ok(())
 }
 
+mod shapes;
 mod unbalance;
 
+pub use shapes::mode_shapes_png;
 pub use unbalance::unbalance_png;

@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 use crate::analysis::campbell::CampbellPoint;
 use crate::analysis::modal::Mode;
 use crate::analysis::operating_point::BearingOperatingPoint;
+use crate::analysis::shapes::node_orbits;
 use crate::analysis::unbalance::UnbalanceSweep;
 use crate::bearing::coefficients::DimensionlessPoint;
 use crate::model::RotorModel;
@@ -243,6 +244,44 @@ pub fn operating_pads(points: &[BearingOperatingPoint]) -> String {
                 pad.tilt,
                 pad.tilt_angle,
                 pad.min_film_thickness
+            )
+            .ok();
+        }
+    }
+    out
+}
+
+/// Complex mode shapes, one row per mode and node: the mode's damped frequency
+/// (Hz), logarithmic decrement and whirl, then per node its axial position (m),
+/// `X` and `Y` (real and imaginary parts; the shape is scaled so that its
+/// largest translation is exactly `1 + 0i`), the forward and backward whirl
+/// radii, the semi-axes and direction (°) of its orbit ellipse and the node's
+/// own whirl direction (`analysis::shapes`).
+pub fn mode_shapes(model: &RotorModel, modes: &[Mode]) -> String {
+    let mut out = String::from(
+        "mode,damped_frequency_hz,log_decrement,mode_whirl,node,z_m,x_re,x_im,y_re,y_im,forward_radius,backward_radius,major_semi_axis,minor_semi_axis,major_axis_deg,node_whirl\n",
+    );
+    for (k, m) in modes.iter().enumerate() {
+        for o in node_orbits(model, m) {
+            writeln!(
+                out,
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+                k + 1,
+                m.damped_frequency / (2.0 * PI),
+                m.log_decrement,
+                m.whirl.label(),
+                o.node + 1,
+                o.z,
+                o.x.re,
+                o.x.im,
+                o.y.re,
+                o.y.im,
+                o.forward,
+                o.backward,
+                o.major,
+                o.minor,
+                o.major_angle.to_degrees(),
+                o.direction()
             )
             .ok();
         }

@@ -3,7 +3,7 @@
 //! ```text
 //! rotor info     [MODEL.toml]
 //! rotor static   [MODEL.toml] [--csv FILE]
-//! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE]
+//! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE] [--shapes-csv FILE] [--shapes-png FILE]
 //! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--csv FILE] [--png FILE]
 //! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--csv FILE] [--png FILE]
 //! rotor simulate [MODEL.toml] (--rpm N | --ramp-rpm A:B | --speed-csv FILE) [--duration S] [--step S]
@@ -78,6 +78,12 @@ enum Command {
         /// Write the modes to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
+        /// Write the complex mode shapes (x, y per node, orbit ellipses) to this CSV file.
+        #[arg(long)]
+        shapes_csv: Option<PathBuf>,
+        /// Draw the mode shapes (orbits along the shaft) to this PNG file.
+        #[arg(long)]
+        shapes_png: Option<PathBuf>,
     },
     /// Campbell diagram and critical speeds over 0..max-rpm.
     Campbell {
@@ -255,7 +261,18 @@ fn run(cli: Cli) -> Result<(), String> {
             rpm,
             modes,
             csv,
-        } => modal::modes(&load(&model)?, rpm, modes, csv),
+            shapes_csv,
+            shapes_png,
+        } => modal::modes(
+            &load(&model)?,
+            rpm,
+            modes,
+            modal::ModeFiles {
+                csv,
+                shapes_csv,
+                shapes_png,
+            },
+        ),
         Command::Campbell {
             model,
             max_rpm,

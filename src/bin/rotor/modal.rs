@@ -4,14 +4,22 @@ use std::path::PathBuf;
 
 use rotor_bearing::analysis::campbell::{campbell, critical_speeds};
 use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
-use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png};
+use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png, mode_shapes_png};
 use rotor_bearing::report::csv as report_csv;
 use rotor_bearing::rotor::Rotor;
 
 use crate::write_file;
 
-/// `rotor modes`: damped frequencies, damping, log dec and whirl at `rpm`.
-pub fn modes(rotor: &Rotor, rpm: f64, count: usize, csv: Option<PathBuf>) -> Result<(), String> {
+/// Where `rotor modes` writes its files.
+pub struct ModeFiles {
+    pub csv: Option<PathBuf>,
+    pub shapes_csv: Option<PathBuf>,
+    pub shapes_png: Option<PathBuf>,
+}
+
+/// `rotor modes`: damped frequencies, damping, log dec and whirl at `rpm`, and
+/// the mode shapes.
+pub fn modes(rotor: &Rotor, rpm: f64, count: usize, files: ModeFiles) -> Result<(), String> {
     let speed = rpm / RAD_S_TO_RPM;
     let options = ModalOptions {
         modes: count,
@@ -32,8 +40,19 @@ pub fn modes(rotor: &Rotor, rpm: f64, count: usize, csv: Option<PathBuf>) -> Res
             m.whirl.label()
         );
     }
-    if let Some(path) = csv {
+    if let Some(path) = files.csv {
         write_file(&path, &report_csv::modes(rpm, &ms))?;
+    }
+    if let Some(path) = files.shapes_csv {
+        write_file(&path, &report_csv::mode_shapes(&rotor.model, &ms))?;
+    }
+    if let Some(path) = files.shapes_png {
+        let title = format!(
+            "Mode shapes of {} at {rpm} rpm (red forward, blue backward whirl)",
+            rotor.model.name
+        );
+        mode_shapes_png(&path, &title, &rotor.model, &ms).map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
     }
     Ok(())
 }
