@@ -8,4 +8,5 @@ pub mod modal;
 pub mod operating_point;
 pub mod shapes;
 pub mod spectrum;
+pub mod stability;
 pub mod unbalance;

@@ -414,7 +414,9 @@ pub fn waterfall_png(
 }
 
 mod shapes;
+mod stability;
 mod unbalance;
 
 pub use shapes::mode_shapes_png;
+pub use stability::stability_png;
 pub use unbalance::unbalance_png;

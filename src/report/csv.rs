@@ -9,6 +9,7 @@ use crate::analysis::campbell::CampbellPoint;
 use crate::analysis::modal::Mode;
 use crate::analysis::operating_point::BearingOperatingPoint;
 use crate::analysis::shapes::node_orbits;
+use crate::analysis::stability::Stability;
 use crate::analysis::unbalance::UnbalanceSweep;
 use crate::bearing::coefficients::DimensionlessPoint;
 use crate::model::RotorModel;
@@ -285,6 +286,24 @@ pub fn mode_shapes(model: &RotorModel, modes: &[Mode]) -> String {
             )
             .ok();
         }
+    }
+    out
+}
+
+/// The least stable forward mode against the added cross-coupled stiffness `Q` (N/m):
+/// damped frequency (Hz), damping ratio and logarithmic decrement.
+pub fn stability(result: &Stability) -> String {
+    let mut out =
+        String::from("cross_coupling_N_m,damped_frequency_hz,damping_ratio,log_decrement\n");
+    for (q, m) in &result.curve {
+        writeln!(
+            out,
+            "{q},{},{},{}",
+            m.damped_frequency / (2.0 * PI),
+            m.damping_ratio,
+            m.log_decrement
+        )
+        .ok();
     }
     out
 }

@@ -4,6 +4,7 @@
 use std::fmt::Write;
 
 use crate::analysis::operating_point::BearingOperatingPoint;
+use crate::analysis::stability::Stability;
 use crate::analysis::unbalance::{Peak, SeparationMargin, UnbalanceSweep};
 use crate::bearing::BearingKind;
 use crate::rotor::Rotor;
@@ -224,6 +225,62 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
                 short(pad.tilt * 1e6),
                 short(pad.tilt_angle * 1e3),
                 short(pad.min_film_thickness * 1e6)
+            )
+            .ok();
+        }
+    }
+    s
+}
+
+/// What `rotor stability` prints: the modes at the speed (frequency, damping
+/// ratio, logarithmic decrement, whirl), where the cross-coupling acts and the
+/// threshold `Q` of the least stable forward mode.
+pub fn stability(result: &Stability, q_max: f64) -> String {
+    let mut s = format!(
+        "modes at {} rpm (no added cross-coupling):\n mode  f_d (Hz)   damping ratio   log dec     whirl\n",
+        short(result.speed * RAD_S_TO_RPM)
+    );
+    for (k, m) in result.modes.iter().enumerate() {
+        writeln!(
+            s,
+            "{:5} {:9.4} {:15.6} {:9.6} {:>9}",
+            k + 1,
+            m.damped_frequency / (2.0 * std::f64::consts::PI),
+            m.damping_ratio,
+            m.log_decrement,
+            m.whirl.label()
+        )
+        .ok();
+    }
+    writeln!(
+        s,
+        "cross-coupled stiffness [[0, Q], [-Q, 0]] at node {} (mid-span between the bearings)",
+        result.node + 1
+    )
+    .ok();
+    match (result.threshold, &result.threshold_mode) {
+        (Some(0.0), _) => {
+            writeln!(
+                s,
+                "the least stable forward mode is unstable without cross-coupling"
+            )
+            .ok();
+        }
+        (Some(q), Some(m)) => {
+            writeln!(
+                s,
+                "threshold Q = {} N/m: least stable forward mode at {} Hz reaches log dec {:.1e}",
+                short(q),
+                short(m.damped_frequency / (2.0 * std::f64::consts::PI)),
+                m.log_decrement
+            )
+            .ok();
+        }
+        _ => {
+            writeln!(
+                s,
+                "stable up to Q = {} N/m (no threshold found)",
+                short(q_max)
             )
             .ok();
         }

@@ -11,6 +11,7 @@
 //! rotor unbalance [MODEL.toml] [--min-rpm N] [--max-rpm N] [--points P] [--node N --unbalance KGM]
 //!                 [--operating-rpm A:B] [--csv FILE] [--png FILE]
 //! rotor operating-point [MODEL.toml] --rpm N [--csv FILE] [--pads-csv FILE]
+//! rotor stability [MODEL.toml] --rpm N [--cross-coupling-max Q] [--points P] [--modes K] [--csv FILE] [--png FILE]
 //! ```
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
 //! `coefficients`, the reference plain short bearing).
@@ -20,6 +21,7 @@ mod fmu_stage;
 mod modal;
 mod operating_point;
 mod simulate;
+mod stability;
 mod statics;
 mod unbalance;
 
@@ -188,6 +190,30 @@ enum Command {
         #[arg(long)]
         pads_csv: Option<PathBuf>,
     },
+    /// Log decrements at a speed and the threshold of cross-coupled stiffness
+    /// at mid-span where the least stable forward mode turns unstable (API 684 Level I).
+    Stability {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Spin speed (rpm).
+        #[arg(long)]
+        rpm: f64,
+        /// Largest cross-coupled stiffness Q (N/m); default a tenth of the largest direct bearing stiffness.
+        #[arg(long)]
+        cross_coupling_max: Option<f64>,
+        /// Number of Q values from 0 to the maximum.
+        #[arg(long, default_value_t = 21)]
+        points: usize,
+        /// Number of modes listed (and searched for the least stable forward one).
+        #[arg(long, default_value_t = 8)]
+        modes: usize,
+        /// Write log decrement against Q to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw it to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
     /// Unbalance response over a speed range (Bode and polar plots), its peaks,
     /// amplification factors and API 684 separation margins.
     Unbalance {
@@ -318,6 +344,25 @@ fn run(cli: Cli) -> Result<(), String> {
             csv,
             pads_csv,
         } => operating_point::run(&load(&model)?, rpm, csv, pads_csv),
+        Command::Stability {
+            model,
+            rpm,
+            cross_coupling_max,
+            points,
+            modes,
+            csv,
+            png,
+        } => stability::run(
+            &load(&model)?,
+            stability::Request {
+                rpm,
+                q_max: cross_coupling_max,
+                points,
+                modes,
+                csv,
+                png,
+            },
+        ),
         Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
         Command::Simulate {
             model,
