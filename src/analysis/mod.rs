@@ -9,4 +9,5 @@ pub mod operating_point;
 pub mod shapes;
 pub mod spectrum;
 pub mod stability;
+pub mod ucs;
 pub mod unbalance;

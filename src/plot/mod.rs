@@ -415,8 +415,10 @@ pub fn waterfall_png(
 
 mod shapes;
 mod stability;
+mod ucs;
 mod unbalance;
 
 pub use shapes::mode_shapes_png;
 pub use stability::stability_png;
+pub use ucs::ucs_png;
 pub use unbalance::unbalance_png;

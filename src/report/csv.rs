@@ -10,6 +10,7 @@ use crate::analysis::modal::Mode;
 use crate::analysis::operating_point::BearingOperatingPoint;
 use crate::analysis::shapes::node_orbits;
 use crate::analysis::stability::Stability;
+use crate::analysis::ucs::CriticalSpeedMap;
 use crate::analysis::unbalance::UnbalanceSweep;
 use crate::bearing::coefficients::DimensionlessPoint;
 use crate::model::RotorModel;
@@ -304,6 +305,40 @@ pub fn stability(result: &Stability) -> String {
             m.log_decrement
         )
         .ok();
+    }
+    out
+}
+
+/// A critical speed map: per support stiffness (N/m) the forward synchronous
+/// critical speeds in rpm (`critical_k_rpm`, increasing; empty where fewer exist).
+pub fn critical_speed_map(map: &CriticalSpeedMap) -> String {
+    let count = map.speeds.iter().map(Vec::len).max().unwrap_or(0);
+    let mut out = String::from("support_stiffness_N_m");
+    for k in 1..=count {
+        write!(out, ",critical_{k}_rpm").ok();
+    }
+    out.push('\n');
+    for (k, speeds) in map.stiffness.iter().zip(&map.speeds) {
+        write!(out, "{k}").ok();
+        for j in 0..count {
+            match speeds.get(j) {
+                Some(s) => write!(out, ",{}", s * RAD_S_TO_RPM),
+                None => write!(out, ","),
+            }
+            .ok();
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// The bearings' direct stiffness over speed: bearing, speed (rpm), kxx, kyy (N/m).
+pub fn bearing_stiffness(map: &CriticalSpeedMap) -> String {
+    let mut out = String::from("bearing,speed_rpm,kxx_N_m,kyy_N_m\n");
+    for b in &map.bearings {
+        for (s, kxx, kyy) in &b.points {
+            writeln!(out, "{},{},{kxx},{kyy}", b.name, s * RAD_S_TO_RPM).ok();
+        }
     }
     out
 }

@@ -11,6 +11,8 @@
 //! rotor unbalance [MODEL.toml] [--min-rpm N] [--max-rpm N] [--points P] [--node N --unbalance KGM]
 //!                 [--operating-rpm A:B] [--csv FILE] [--png FILE]
 //! rotor operating-point [MODEL.toml] --rpm N [--csv FILE] [--pads-csv FILE]
+//! rotor ucs [MODEL.toml] [--min-stiffness K] [--max-stiffness K] [--points P] [--modes K] [--max-rpm N]
+//!           [--speeds S] [--csv FILE] [--bearings-csv FILE] [--png FILE]
 //! rotor stability [MODEL.toml] --rpm N [--cross-coupling-max Q] [--points P] [--modes K] [--csv FILE] [--png FILE]
 //! ```
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
@@ -23,6 +25,7 @@ mod operating_point;
 mod simulate;
 mod stability;
 mod statics;
+mod ucs;
 mod unbalance;
 
 use std::path::{Path, PathBuf};
@@ -214,6 +217,39 @@ enum Command {
         #[arg(long)]
         png: Option<PathBuf>,
     },
+    /// Undamped critical speed map: forward critical speeds against isotropic
+    /// support stiffness, with the bearings' stiffness over a speed range.
+    Ucs {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Softest support stiffness (N/m).
+        #[arg(long, default_value_t = 1e5)]
+        min_stiffness: f64,
+        /// Stiffest support stiffness (N/m).
+        #[arg(long, default_value_t = 1e10)]
+        max_stiffness: f64,
+        /// Number of stiffnesses (geometric spacing).
+        #[arg(long, default_value_t = 31)]
+        points: usize,
+        /// Number of critical speeds per stiffness.
+        #[arg(long, default_value_t = 4)]
+        modes: usize,
+        /// Highest speed (rpm) of the bearings' stiffness curves.
+        #[arg(long, default_value_t = 4000.0)]
+        max_rpm: f64,
+        /// Number of speeds of the bearings' stiffness curves.
+        #[arg(long, default_value_t = 20)]
+        speeds: usize,
+        /// Write the map to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Write the bearings' kxx, kyy against speed to this CSV file.
+        #[arg(long)]
+        bearings_csv: Option<PathBuf>,
+        /// Draw the map to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
     /// Unbalance response over a speed range (Bode and polar plots), its peaks,
     /// amplification factors and API 684 separation margins.
     Unbalance {
@@ -360,6 +396,31 @@ fn run(cli: Cli) -> Result<(), String> {
                 points,
                 modes,
                 csv,
+                png,
+            },
+        ),
+        Command::Ucs {
+            model,
+            min_stiffness,
+            max_stiffness,
+            points,
+            modes,
+            max_rpm,
+            speeds,
+            csv,
+            bearings_csv,
+            png,
+        } => ucs::run(
+            &load(&model)?,
+            ucs::Request {
+                min_stiffness,
+                max_stiffness,
+                points,
+                criticals: modes,
+                max_rpm,
+                speeds,
+                csv,
+                bearings_csv,
                 png,
             },
         ),
