@@ -413,11 +413,13 @@ pub fn waterfall_png(
     Ok(())
 }
 
+mod drawing;
 mod shapes;
 mod stability;
 mod ucs;
 mod unbalance;
 
+pub use drawing::{radial_exaggeration, rotor_png};
 pub use shapes::mode_shapes_png;
 pub use stability::stability_png;
 pub use ucs::ucs_png;

@@ -2,6 +2,7 @@
 //!
 //! ```text
 //! rotor info     [MODEL.toml]
+//! rotor draw     [MODEL.toml] --png FILE
 //! rotor static   [MODEL.toml] [--csv FILE]
 //! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE] [--shapes-csv FILE] [--shapes-png FILE]
 //! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--csv FILE] [--png FILE]
@@ -58,6 +59,14 @@ enum Command {
     Info {
         #[command(flatten)]
         model: ModelArg,
+    },
+    /// Draw the rotor: shaft sections to scale, disks, bearings, probes, node numbers.
+    Draw {
+        #[command(flatten)]
+        model: ModelArg,
+        /// PNG file to draw to.
+        #[arg(long)]
+        png: PathBuf,
     },
     /// Static deflection under gravity (linear bearings).
     Static {
@@ -317,6 +326,7 @@ fn write_file(path: &Path, text: &str) -> Result<(), String> {
 fn run(cli: Cli) -> Result<(), String> {
     match cli.command {
         Command::Info { model } => statics::info(&load(&model)?),
+        Command::Draw { model, png } => statics::draw(&load(&model)?, &png),
         Command::Static { model, rpm, csv } => statics::deflection(&load(&model)?, rpm, csv),
         Command::Modes {
             model,
