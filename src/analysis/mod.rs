@@ -1,5 +1,7 @@
 //! Linear analyses of an assembled rotor: static deflection, unbalance response,
-//! complex modes and the Campbell diagram.
+//! complex modes and the Campbell diagram; and the analyst toolkit built on
+//! them: unbalance sweeps with peaks and separation margins, bearing operating
+//! points, mode-shape orbits, cross-coupling stability and the critical speed map.
 
 pub mod campbell;
 pub mod linear;

@@ -17,6 +17,7 @@ use crate::rotor::{AssemblyError, Rotor};
 
 use super::linearize::{LinearizeError, linearized};
 use super::modal::{ModalError, ModalOptions, Mode, Whirl, modes};
+use super::operating_point::{OperatingPointError, operating_point};
 
 /// Why a stability check failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -30,6 +31,9 @@ pub enum StabilityError {
     /// The eigen-solve failed.
     #[error(transparent)]
     Modal(#[from] ModalError),
+    /// The bearings' coefficients could not be found.
+    #[error(transparent)]
+    OperatingPoint(#[from] OperatingPointError),
     /// Bad input or no forward mode.
     #[error("{0}")]
     Options(String),
@@ -56,6 +60,17 @@ pub fn mid_span_node(rotor: &Rotor) -> usize {
                 .total_cmp(&(m.node_z[b] - mid).abs())
         })
         .unwrap_or(0)
+}
+
+/// Default largest cross-coupled stiffness (N/m): a tenth of the largest
+/// direct bearing stiffness at `speed` (rad/s) (thresholds are a few ζ times
+/// the support stiffness), or 1e6 N/m without bearings.
+pub fn default_cross_coupling_max(rotor: &Rotor, speed: f64) -> Result<f64, StabilityError> {
+    let k = operating_point(rotor, speed)?
+        .iter()
+        .map(|p| p.stiffness[0][0].abs().max(p.stiffness[1][1].abs()))
+        .fold(0.0, f64::max);
+    Ok(if k > 0.0 { 0.1 * k } else { 1e6 })
 }
 
 /// A copy of the linear rotor `linear` with `[[0, q], [−q, 0]]` (N/m) added to

@@ -3,8 +3,10 @@
 
 use std::fmt::Write;
 
+use crate::analysis::modal::Mode;
 use crate::analysis::operating_point::BearingOperatingPoint;
 use crate::analysis::stability::Stability;
+use crate::analysis::ucs::CriticalSpeedMap;
 use crate::analysis::unbalance::{Peak, SeparationMargin, UnbalanceSweep};
 use crate::bearing::BearingKind;
 use crate::rotor::Rotor;
@@ -284,6 +286,43 @@ pub fn stability(result: &Stability, q_max: f64) -> String {
             )
             .ok();
         }
+    }
+    s
+}
+
+/// The modes table `rotor modes` prints: damped frequency (rad/s, Hz), damping
+/// ratio, logarithmic decrement and whirl.
+pub fn modes(name: &str, rpm: f64, modes: &[Mode]) -> String {
+    let mut s = format!(
+        "{name} at {rpm} rpm:\n mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl\n"
+    );
+    for (k, m) in modes.iter().enumerate() {
+        writeln!(
+            s,
+            "{:5} {:12.4} {:11.4} {:14.4e} {:9.4} {:>9}",
+            k + 1,
+            m.damped_frequency,
+            m.damped_frequency / (2.0 * std::f64::consts::PI),
+            m.damping_ratio,
+            m.log_decrement,
+            m.whirl.label()
+        )
+        .ok();
+    }
+    s
+}
+
+/// Every `step`-th row of a critical speed map: stiffness (N/m) and the forward
+/// critical speeds (rpm).
+pub fn critical_speed_map(name: &str, map: &CriticalSpeedMap, step: usize) -> String {
+    let mut s =
+        format!("forward critical speeds (rpm) of {name} against isotropic support stiffness:\n");
+    for (k, speeds) in map.stiffness.iter().zip(&map.speeds).step_by(step.max(1)) {
+        let rpm: Vec<String> = speeds
+            .iter()
+            .map(|v| format!("{:10.1}", v * RAD_S_TO_RPM))
+            .collect();
+        writeln!(s, "  k = {k:9.3e} N/m: {}", rpm.join(" ")).ok();
     }
     s
 }

@@ -14,6 +14,7 @@
 //! rotor operating-point [MODEL.toml] --rpm N [--csv FILE] [--pads-csv FILE]
 //! rotor ucs [MODEL.toml] [--min-stiffness K] [--max-stiffness K] [--points P] [--modes K] [--max-rpm N]
 //!           [--speeds S] [--csv FILE] [--bearings-csv FILE] [--png FILE]
+//! rotor report [MODEL.toml] --rpm N --out FILE.html
 //! rotor stability [MODEL.toml] --rpm N [--cross-coupling-max Q] [--points P] [--modes K] [--csv FILE] [--png FILE]
 //! ```
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
@@ -23,6 +24,7 @@ mod coefficients;
 mod fmu_stage;
 mod modal;
 mod operating_point;
+mod report;
 mod simulate;
 mod stability;
 mod statics;
@@ -259,6 +261,18 @@ enum Command {
         #[arg(long)]
         png: Option<PathBuf>,
     },
+    /// One self-contained HTML page: model and drawing, operating point,
+    /// unbalance response, modes and shapes, stability, critical speed map.
+    Report {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Operating speed (rpm).
+        #[arg(long)]
+        rpm: f64,
+        /// HTML file to write.
+        #[arg(long)]
+        out: PathBuf,
+    },
     /// Unbalance response over a speed range (Bode and polar plots), its peaks,
     /// amplification factors and API 684 separation margins.
     Unbalance {
@@ -434,6 +448,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 png,
             },
         ),
+        Command::Report { model, rpm, out } => report::run(&load(&model)?, rpm, out),
         Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
         Command::Simulate {
             model,

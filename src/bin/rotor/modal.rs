@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use rotor_bearing::analysis::campbell::{campbell, critical_speeds};
 use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
 use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png, mode_shapes_png};
-use rotor_bearing::report::csv as report_csv;
+use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
 
 use crate::write_file;
@@ -26,20 +26,7 @@ pub fn modes(rotor: &Rotor, rpm: f64, count: usize, files: ModeFiles) -> Result<
         ..ModalOptions::default()
     };
     let ms = modes_at(rotor, speed, &options).map_err(|e| e.to_string())?;
-    println!("{} at {rpm} rpm:", rotor.model.name);
-    println!(" mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl");
-    for (k, m) in ms.iter().enumerate() {
-        let f = m.damped_frequency / (2.0 * std::f64::consts::PI);
-        println!(
-            "{:5} {:12.4} {:11.4} {:14.4e} {:9.4} {:>9}",
-            k + 1,
-            m.damped_frequency,
-            f,
-            m.damping_ratio,
-            m.log_decrement,
-            m.whirl.label()
-        );
-    }
+    print!("{}", text::modes(&rotor.model.name, rpm, &ms));
     if let Some(path) = files.csv {
         write_file(&path, &report_csv::modes(rpm, &ms))?;
     }

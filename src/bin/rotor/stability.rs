@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use rotor_bearing::analysis::stability::stability;
+use rotor_bearing::analysis::stability::{default_cross_coupling_max, stability};
 use rotor_bearing::plot::{RAD_S_TO_RPM, stability_png};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
@@ -20,19 +20,6 @@ pub struct Request {
     pub png: Option<PathBuf>,
 }
 
-/// Default `Q_max`: a tenth of the largest direct bearing stiffness at the
-/// speed (thresholds are a few ζ times the support stiffness), or 1e6 N/m
-/// without bearings.
-fn default_q_max(rotor: &Rotor, speed: f64) -> Result<f64, String> {
-    let points = rotor_bearing::analysis::operating_point::operating_point(rotor, speed)
-        .map_err(|e| e.to_string())?;
-    let k = points
-        .iter()
-        .map(|p| p.stiffness[0][0].abs().max(p.stiffness[1][1].abs()))
-        .fold(0.0, f64::max);
-    Ok(if k > 0.0 { 0.1 * k } else { 1e6 })
-}
-
 pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     if !(req.rpm.is_finite() && req.rpm != 0.0) {
         return Err(format!(
@@ -43,7 +30,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     let speed = req.rpm / RAD_S_TO_RPM;
     let q_max = match req.q_max {
         Some(q) => q,
-        None => default_q_max(rotor, speed)?,
+        None => default_cross_coupling_max(rotor, speed).map_err(|e| e.to_string())?,
     };
     let result = stability(rotor, speed, q_max, req.points, req.modes)
         .map_err(|e| format!("{} at {} rpm: {e}", rotor.model.name, req.rpm))?;

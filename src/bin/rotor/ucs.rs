@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use rotor_bearing::analysis::ucs::{critical_speed_map, stiffness_grid};
 use rotor_bearing::plot::{RAD_S_TO_RPM, ucs_png};
-use rotor_bearing::report::csv as report_csv;
+use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
 
 use crate::write_file;
@@ -41,22 +41,10 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         .collect();
     let map = critical_speed_map(rotor, &stiffness, req.criticals, &speeds)
         .map_err(|e| format!("{}: {e}", rotor.model.name))?;
-    println!(
-        "forward critical speeds (rpm) of {} against isotropic support stiffness:",
-        rotor.model.name
+    print!(
+        "{}",
+        text::critical_speed_map(&rotor.model.name, &map, req.points / 10)
     );
-    for (k, s) in map
-        .stiffness
-        .iter()
-        .zip(&map.speeds)
-        .step_by((req.points / 10).max(1))
-    {
-        let rpm: Vec<String> = s
-            .iter()
-            .map(|v| format!("{:10.1}", v * RAD_S_TO_RPM))
-            .collect();
-        println!("  k = {k:9.3e} N/m: {}", rpm.join(" "));
-    }
     if let Some(path) = req.csv {
         write_file(&path, &report_csv::critical_speed_map(&map))?;
     }
