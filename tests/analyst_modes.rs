@@ -196,3 +196,61 @@ fn free_free_beam_shapes_are_the_euler_bernoulli_ones() {
         );
     }
 }
+
+/// The orbit columns of the shapes CSV follow from its X and Y (classic rotor
+/// at 4000 rpm, where the modes whirl): forward radius `|X + iY|/2`, backward
+/// `|X − iY|/2`, semi-axes their sum and difference, and the node's whirl.
+#[test]
+fn orbit_columns_follow_from_the_shape() {
+    let dir = out_dir("shapes_classic");
+    let csv = dir.join("s.csv");
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["modes", "--rpm", "4000", "--modes", "4", "--shapes-csv"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success());
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
+    let mut rows = 0;
+    for line in lines {
+        let c: Vec<&str> = line.split(',').collect();
+        let num = |name: &str| -> f64 { c[col(name)].parse().unwrap() };
+        let (xr, xi, yr, yi) = (num("x_re"), num("x_im"), num("y_re"), num("y_im"));
+        // X + iY = (xr − yi) + i(xi + yr); X − iY = (xr + yi) + i(xi − yr).
+        let forward = (xr - yi).hypot(xi + yr) / 2.0;
+        let backward = (xr + yi).hypot(xi - yr) / 2.0;
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-12;
+        assert!(close(num("forward_radius"), forward), "{line}");
+        assert!(close(num("backward_radius"), backward), "{line}");
+        assert!(close(num("major_semi_axis"), forward + backward), "{line}");
+        assert!(
+            close(num("minor_semi_axis"), (forward - backward).abs()),
+            "{line}"
+        );
+        let node = c[col("node_whirl")];
+        if forward + backward > 1e-3 {
+            assert_eq!(
+                node,
+                if forward > backward {
+                    "forward"
+                } else {
+                    "backward"
+                },
+                "{line}"
+            );
+        }
+        // The mode's whirl is the one `rotor modes` prints for it.
+        let mode: usize = c[col("mode")].parse().unwrap();
+        let printed = stdout.lines().nth(1 + mode).unwrap();
+        assert!(
+            printed.ends_with(c[col("mode_whirl")]),
+            "{printed} vs {line}"
+        );
+        rows += 1;
+    }
+    assert_eq!(rows, 4 * 7);
+}

@@ -224,10 +224,36 @@ fn tilting_pad_operating_point_matches_the_pad_reference() {
         num(&p["pivot_offset"]),
         num(&p["preload"])
     );
-    let (_, model) = one_bearing_rotor(&bearing, num(&p["W"]));
+    let (text, model) = one_bearing_rotor(&bearing, num(&p["W"]));
     let rotor = Rotor::new(model).unwrap();
     let points = operating_point(&rotor, num(&p["omega"])).unwrap();
     let film = points[0].film.as_ref().unwrap();
+    // The command's pad table holds the same tilts and film thicknesses.
+    let dir = out_dir("operating_point_pads");
+    let (path, pads_csv) = (dir.join("pads.toml"), dir.join("pads.csv"));
+    std::fs::write(&path, text).unwrap();
+    let rpm = num(&p["omega"]) * RAD_S_TO_RPM;
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("operating-point")
+        .arg(&path)
+        .args(["--rpm", &format!("{rpm:?}"), "--pads-csv"])
+        .arg(&pads_csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rows = read_csv(&pads_csv);
+    assert_eq!(rows.len(), 4);
+    for (row, pad) in rows.iter().zip(&film.pads) {
+        let get = |k: &str| -> f64 { row[k].parse().unwrap() };
+        assert_eq!(row["bearing"], "journal");
+        assert!((get("pivot_deg") - pad.pivot.to_degrees()).abs() < 1e-12);
+        assert!(rel(get("tilt_m"), pad.tilt) < 1e-6);
+        assert!(rel(get("min_film_thickness_m"), pad.min_film_thickness) < 1e-6);
+    }
     let eq = &r["equilibrium"];
     // The oracle's tolerance (tests/tilting_pad_reference.rs): 1e-5.
     assert!(

@@ -137,6 +137,17 @@ fn command_threshold_on_the_damped_classic_rotor_is_where_the_log_dec_crosses_ze
         table.starts_with("cross_coupling_N_m,damped_frequency_hz,damping_ratio,log_decrement\n")
     );
     assert_eq!(table.lines().count(), 22);
+    // Its first row (Q = 0) is the least damped forward mode of the model itself.
+    let first: Vec<f64> = table
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .map(|c| c.parse().unwrap())
+        .collect();
+    assert_eq!(first[0], 0.0);
+    let rotor = Rotor::new(RotorModel::from_file(std::path::Path::new(path)).unwrap()).unwrap();
+    assert!((first[3] - least_forward_log_dec(&rotor, speed)).abs() < 1e-12);
     assert_eq!(&std::fs::read(&png).unwrap()[..8], b"\x89PNG\r\n\x1a\n");
 }
 

@@ -178,3 +178,50 @@ fn bad_ranges_are_refused_by_name() {
         "{stderr}"
     );
 }
+
+/// The bearings' stiffness table: constant for linear bearings, and for the
+/// plain bearings of the Jeffcott rotor the synchronous K of the operating point.
+#[test]
+fn bearing_stiffness_table_is_the_operating_point_stiffness() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("ucs_bearings");
+    std::fs::create_dir_all(&dir).unwrap();
+    let model = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml");
+    let csv = dir.join("b.csv");
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("ucs")
+        .arg(&model)
+        .args([
+            "--points",
+            "3",
+            "--max-rpm",
+            "6000",
+            "--speeds",
+            "2",
+            "--bearings-csv",
+        ])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("bearing,speed_rpm,kxx_N_m,kyy_N_m"));
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 4);
+    let rotor = Rotor::new(RotorModel::from_file(&model).unwrap()).unwrap();
+    for row in &rows {
+        let rpm: f64 = row[1].parse().unwrap();
+        let points =
+            rotor_bearing::analysis::operating_point::operating_point(&rotor, rpm * PI / 30.0)
+                .unwrap();
+        let b = points.iter().find(|p| p.name == row[0]).unwrap();
+        let (kxx, kyy): (f64, f64) = (row[2].parse().unwrap(), row[3].parse().unwrap());
+        assert!((kxx / b.stiffness[0][0] - 1.0).abs() < 1e-12, "{row:?}");
+        assert!((kyy / b.stiffness[1][1] - 1.0).abs() < 1e-12, "{row:?}");
+    }
+    assert!((rows[1][1].parse::<f64>().unwrap() - 6000.0).abs() < 1e-9);
+}

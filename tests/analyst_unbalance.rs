@@ -143,6 +143,14 @@ fn command_csv_equals_the_library_solve_on_the_classic_rotor() {
             assert_eq!(c[1], x.arg().to_degrees());
             assert_eq!(c[2], y.norm());
             assert_eq!(c[3], y.arg().to_degrees());
+            // Major semi-axis of the orbit: |X + iY|/2 + |X − iY|/2.
+            let i = nalgebra::Complex::new(0.0, 1.0);
+            let major = (x + i * y).norm() / 2.0 + (x - i * y).norm() / 2.0;
+            assert!(
+                (c[4] - major).abs() <= 1e-15 * major.max(1e-300),
+                "{} vs {major}",
+                c[4]
+            );
         }
     }
     let bytes = std::fs::read(&png).unwrap();
