@@ -134,8 +134,8 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
 /// The table of unbalance response peaks `rotor unbalance` prints: point, peak
 /// speed (rpm), major semi-axis (µm), amplification factor, required and actual
 /// separation margins (%) and the verdict. A peak without both half-power
-/// speeds inside the sweep has no AF; a row without a margin had no operating
-/// range to measure from.
+/// speeds inside the sweep has no AF (and no margin); a row with an AF but no
+/// margin had no operating range to measure from.
 pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin>)]) -> String {
     let mut s = String::from(
         "point                      speed (rpm)  amplitude (µm)        AF  required SM  actual SM  result\n",
@@ -151,7 +151,10 @@ pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin
                 format!("{:.1} %", 100.0 * m.actual),
                 if m.pass { "pass" } else { "FAIL" },
             ),
-            None => ("—".into(), "—".into(), "no AF or range"),
+            None if peak.amplification_factor.is_none() => {
+                ("—".into(), "—".into(), "half-power speed outside the sweep")
+            }
+            None => ("—".into(), "—".into(), "no operating range"),
         };
         writeln!(
             s,
@@ -363,7 +366,11 @@ mod tests {
             actual: 0.125,
             pass: false,
         };
-        let table = peak_table(&sweep, &[(peak, Some(margin)), (peak, None)]);
+        let no_af = Peak {
+            amplification_factor: None,
+            ..peak
+        };
+        let table = peak_table(&sweep, &[(peak, Some(margin)), (peak, None), (no_af, None)]);
         let lines: Vec<&str> = table.lines().collect();
         let cells: Vec<&str> = lines[1].split_whitespace().collect();
         assert_eq!(
@@ -372,6 +379,7 @@ mod tests {
                 "probe", "disk", "1000.0", "12.5", "4.00", "16.0", "%", "12.5", "%", "FAIL"
             ]
         );
-        assert!(lines[2].ends_with("no AF or range"), "{}", lines[2]);
+        assert!(lines[2].ends_with("no operating range"), "{}", lines[2]);
+        assert!(lines[3].ends_with("half-power speed outside the sweep"));
     }
 }
