@@ -104,12 +104,17 @@ fn plain_bearing_operating_point_matches_the_short_bearing_reference() {
             clearance * (1.0 - film.eccentricity)
         ) < 1e-12
     );
+    let mut worst: f64 = 0.0;
     for i in 0..2 {
         for j in 0..2 {
+            worst = worst
+                .max(rel(b.stiffness[i][j], k[(i, j)]))
+                .max(rel(b.damping[i][j], c[(i, j)]));
             assert!(rel(b.stiffness[i][j], k[(i, j)]) < 1e-6, "K{i}{j}");
             assert!(rel(b.damping[i][j], c[(i, j)]) < 1e-6, "C{i}{j}");
         }
     }
+    eprintln!("worst relative error of K and C: {worst:.1e}");
     // Petroff-corrected friction torque over the whole film, T = 2π μ ω R³ L / (C √(1 − ε²)),
     // and its power T ω.
     let (mu, omega, radius, length) = (num(&p["mu"]), num(&p["omega"]), num(&p["R"]), num(&p["L"]));
