@@ -194,3 +194,43 @@ fn a_broken_page_is_caught() {
     let html = "<!DOCTYPE html>\n<html><body><section id=\"a\"><pre>x</section></body></html>";
     assert!(std::panic::catch_unwind(|| parse(html)).is_err());
 }
+
+/// The page renders in a browser: a headless Chromium screenshot of it is a
+/// non-trivial PNG. Skipped (with a message) where `/usr/bin/chromium` is not
+/// installed; the test never installs it.
+#[test]
+fn page_renders_in_headless_chromium_when_available() {
+    let chromium = Path::new("/usr/bin/chromium");
+    if !chromium.exists() {
+        eprintln!("skipped: /usr/bin/chromium not installed");
+        return;
+    }
+    let model = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor.toml");
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("report_chromium");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (page, shot) = (dir.join("report.html"), dir.join("shot.png"));
+    let _ = std::fs::remove_file(&shot);
+    rotor(
+        &["report", "--rpm", "3000", "--out", page.to_str().unwrap()],
+        &model,
+    );
+    let out = Command::new(chromium)
+        .args([
+            "--headless",
+            "--disable-gpu",
+            "--no-sandbox",
+            "--window-size=1400,4000",
+        ])
+        .arg(format!("--screenshot={}", shot.display()))
+        .arg(format!("file://{}", page.display()))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let bytes = std::fs::read(&shot).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    assert!(bytes.len() > 50_000, "screenshot of {} bytes", bytes.len());
+}
