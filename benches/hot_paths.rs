@@ -20,6 +20,7 @@ fn bearings(c: &mut Criterion) {
         length: 0.03,
         clearance: 1e-4,
         viscosity: 0.02,
+        contact: None,
     };
     let q = [4.3e-5, -4.0e-5];
     let qd = [1e-3, -2e-3];
@@ -47,6 +48,7 @@ fn bearings(c: &mut Criterion) {
                     )
                 })
                 .collect(),
+            contact: None,
         };
         let n = 2 + pads;
         let mut q = vec![0.0; n];

@@ -17,6 +17,12 @@ $rotor coefficients --csv out/plain_bearing_coefficients.csv --png out/plain_bea
 # Nonlinear transient: a Jeffcott rotor on plain bearings run up through oil whirl into oil whip.
 $rotor simulate models/jeffcott.toml --ramp-rpm 3000:16000 --duration 8 --step 1e-4 --output-step 2e-4 \
   --csv out/jeffcott_run_up.csv --plots out/jeffcott_run_up > out/jeffcott_run_up_windows.txt
+# The whole operating envelope: the Jeffcott rotor from rest on its bushings up to
+# 3000 rpm (lift-off at about 2.5 rpm) and a coast-down back to standstill.
+$rotor simulate models/jeffcott.toml --ramp-rpm 0:3000 --duration 2 --step 1e-4 --output-step 5e-4 \
+  --csv out/jeffcott_start_from_rest.csv
+$rotor simulate models/jeffcott.toml --ramp-rpm 3000:0 --duration 2 --step 1e-4 --output-step 5e-4 \
+  --csv out/jeffcott_coast_down.csv
 # The hydro unit at 150 rpm on tilting-pad guide bearings.
 $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --output-step 5e-3 --ramp-time 2 \
   --csv out/hydro_unit.csv --plots out/hydro_unit > out/hydro_unit_windows.txt
@@ -24,7 +30,9 @@ $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --out
 bash fmu_pack.sh
 .venv/bin/python scripts/fmpy_demo.py out/RotorBearing.fmu out/fmpy_hydro_unit
 # System level: the rotor FMU coupled to a governor/turbine/generator FMU by libcosim
-# (start-up and load rejection, tilting-pad and plain bearings), and a Dask sweep.
+# (start-up from standstill, emergency stop to rest and load rejection with tilting-pad
+# and plain bearings, a breakaway start of the Jeffcott rotor, a run through a
+# critical speed), and a Dask sweep.
 .venv/bin/python system/build_plant.py out
 bash fmu_pack.sh --model models/hydro_unit_plain.toml
 bash fmu_pack.sh --model models/jeffcott.toml
@@ -32,4 +40,4 @@ bash fmu_pack.sh --model models/classic_disk_rotor_damped.toml
 .venv/bin/python system/couple.py all 2>&1 | grep '→'
 .venv/bin/python system/sweep.py --fmu out/jeffcott.fmu --rpm 4000:16000:13 \
   --param "bearings.left.viscosity,bearings.right.viscosity=0.01,0.02,0.04" --duration 0.6 --out out/sweep_jeffcott
-echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, jeffcott_run_up*, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*)"
+echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*)"

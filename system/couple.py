@@ -5,12 +5,15 @@ libcosim (libcosimpy, the Open Simulation Platform's FMI 2.0 master).
     rotor.friction_torque → plant.friction_torque
 
 Scenarios (CSV + PNG each, into out/):
-  startup   run-up of the hydro unit from 5 rpm to 150 rpm, no load
+  startup   run-up of the hydro unit from standstill to 150 rpm, no load
+  shutdown  emergency stop at rated speed: gate closed, brake on, coast-down to rest
   rejection full load rejection at rated speed: overspeed, then governor recovery
             (both for the tilting-pad and the plain-bearing hydro unit)
   critical  run-up from standstill through the first critical speed (classic rotor)
+  breakaway start-up of the horizontal Jeffcott rotor from rest on its plain bearings:
+            held by the journals' breakaway torque μ N R until the turbine exceeds it
 
-usage: python system/couple.py [startup|rejection|all] [--duration S]
+usage: python system/couple.py [startup|shutdown|rejection|critical|all] [--duration S]
 """
 import argparse
 import csv
@@ -29,7 +32,10 @@ RATED = 150.0 * np.pi / 30.0
 HYDRO = {"tilting_pad": "RotorBearing.fmu", "plain": "hydro_unit_plain.fmu"}
 SCENARIOS = {
     "startup": dict(duration=90.0, rotors=HYDRO, rotor_params={},
-                    plant={"start_speed": 0.5, "ramp_time": 60.0, "load": 0.0}),
+                    plant={"start_speed": 0.0, "ramp_time": 60.0, "load": 0.0}),
+    "shutdown": dict(duration=40.0, rotors=HYDRO, rotor_params={},
+                     plant={"start_speed": RATED, "ramp_time": 0.0, "load": 0.0, "shutdown_time": 5.0,
+                            "brake_speed": 1.0, "brake_torque": 0.2}),
     "rejection": dict(duration=60.0, rotors=HYDRO, rotor_params={},
                       plant={"start_speed": RATED, "ramp_time": 0.0, "load": 0.9, "rejection_time": 5.0}),
     # A run-up from standstill through a critical speed: the classic disk rotor on
@@ -39,6 +45,13 @@ SCENARIOS = {
                      rotor_params={"solver.time_step": 1e-3, "unbalance_ramp_time": 0.0},
                      plant={"start_speed": 0.0, "ramp_time": 20.0, "load": 0.0, "inertia": 0.5,
                             "rated_speed": 2000.0 * np.pi / 30.0, "rated_torque": 30.0, "loss": 0.02}),
+    # The Jeffcott rotor (20 kg disk, journals resting on their plain bearings)
+    # driven by the governor/turbine model scaled to a 3000 rpm, 0.05 kg·m² drive.
+    "breakaway": dict(duration=5.0, rotors={"plain": "jeffcott.fmu"},
+                      rotor_params={"solver.time_step": 2e-4, "unbalance_ramp_time": 0.0},
+                      plant={"start_speed": 0.0, "ramp_time": 4.0, "load": 0.0, "inertia": 0.05,
+                             "rated_speed": 3000.0 * np.pi / 30.0, "rated_torque": 10.0, "loss": 0.02,
+                             "kp": 0.5, "ki": 0.1}),
 }
 
 

@@ -12,6 +12,11 @@ torque in the balance:
               integral frozen while the command saturates (anti-windup)
     gate servo: dg/dt = (command − g)/T_servo, |dg/dt| ≤ rate limit, 0 ≤ g ≤ 1
     set point ω_ref ramps from the start speed to ω_rated over `ramp_time`.
+    shut-down (emergency stop) at `shutdown_time`: load off, gate command 0, and a
+    mechanical brake T_brake = brake_torque · T_rated below brake_speed · ω_rated.
+    The bearing friction and the brake are Coulomb torques: at standstill they
+    hold the unit (stiction) until the net drive T_turbine − T_electric exceeds
+    them (the bearings' breakaway torque μ N R), and they never turn it backwards.
 
 Integrated with RK4 in sub-steps of at most 5 ms inside each do_step.
 """
@@ -37,6 +42,9 @@ class HydroPlant(Fmi2Slave):
         self.servo_time = 0.5         # s
         self.gate_rate = 0.2          # 1/s
         self.loss = 0.05              # no-load losses, per unit torque at rated speed
+        self.shutdown_time = -1.0     # s, negative: never
+        self.brake_speed = 0.2        # per unit of rated speed
+        self.brake_torque = 0.2       # per unit of rated torque
         self.friction_torque = 0.0    # input, N·m
         self.speed = 0.0
         self.gate = 0.0
@@ -58,6 +66,9 @@ class HydroPlant(Fmi2Slave):
             ("servo_time", "Gate servo time constant", "s"),
             ("gate_rate", "Gate rate limit (per unit per second)", "1/s"),
             ("loss", "No-load windage and water-friction torque at rated speed (per unit)", "1"),
+            ("shutdown_time", "Time of an emergency stop: load off, gate closed, brake on (negative: none)", "s"),
+            ("brake_speed", "Speed below which the brake acts after a stop (per unit)", "1"),
+            ("brake_torque", "Mechanical brake torque (per unit of rated torque)", "1"),
         ]
         for name, text, unit in params:
             self.register_variable(Real(name, causality=Fmi2Causality.parameter,
@@ -75,11 +86,14 @@ class HydroPlant(Fmi2Slave):
         w0 = self.rated_speed
         ramp = min(1.0, t / self.ramp_time) if self.ramp_time > 0 else 1.0
         ref = self.start_speed + (w0 - self.start_speed) * ramp
+        stopping = 0.0 <= self.shutdown_time <= t
+        if stopping:
+            ref = 0.0
         error = (ref - speed) / w0
-        loaded = self.rejection_time < 0 or t < self.rejection_time
+        loaded = (self.rejection_time < 0 or t < self.rejection_time) and not stopping
         p_load = self.load if loaded else 0.0
         raw = p_load + self.loss + self.kp * error + self.ki * integral
-        command = min(1.0, max(0.0, raw))
+        command = 0.0 if stopping else min(1.0, max(0.0, raw))
         # Anti-windup: the integral stops where the command saturates.
         windup = (raw <= 0.0 and error < 0.0) or (raw >= 1.0 and error > 0.0)
         dgate = max(-self.gate_rate, min(self.gate_rate, (command - gate) / self.servo_time))
@@ -87,8 +101,14 @@ class HydroPlant(Fmi2Slave):
             dgate = 0.0
         t_turbine = self.rated_torque * (gate * (2.0 - speed / w0) - self.loss * (speed / w0) ** 2)
         t_electric = p_load * self.rated_torque * (1.0 + self.load_damping * (speed - w0) / w0)
-        dspeed = (t_turbine - t_electric - self.friction_torque) / self.inertia
-        return dspeed, dgate, 0.0 if windup else error, ref, t_turbine, t_electric
+        braking = stopping and speed <= self.brake_speed * w0
+        resist = self.friction_torque + (self.brake_torque * self.rated_torque if braking else 0.0)
+        drive = t_turbine - t_electric
+        if speed <= 0.0 and drive <= resist:
+            dspeed = 0.0  # at rest, held by the bearings' breakaway torque and the brake
+        else:
+            dspeed = (drive - resist) / self.inertia
+        return dspeed, dgate, 0.0 if (windup or stopping) else error, ref, t_turbine, t_electric
 
     def do_step(self, current_time, step_size):
         if not self.started:
@@ -104,7 +124,8 @@ class HydroPlant(Fmi2Slave):
             k2 = self._rates(t + h / 2, s + h / 2 * k1[0], g + h / 2 * k1[1], i + h / 2 * k1[2])[:3]
             k3 = self._rates(t + h / 2, s + h / 2 * k2[0], g + h / 2 * k2[1], i + h / 2 * k2[2])[:3]
             k4 = self._rates(t + h, s + h * k3[0], g + h * k3[1], i + h * k3[2])[:3]
-            s += h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0])
+            # Coulomb torques stop the unit; they never turn it backwards.
+            s = max(0.0, s + h / 6 * (k1[0] + 2 * k2[0] + 2 * k3[0] + k4[0]))
             g = min(1.0, max(0.0, g + h / 6 * (k1[1] + 2 * k2[1] + 2 * k3[1] + k4[1])))
             i += h / 6 * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2])
             t += h

@@ -5,11 +5,13 @@ Every point is one FMPy simulation run inside a Dask worker at constant speed
 unbalance, ...). The FMU is read once by the client and shipped to the workers,
 so no shared file system is needed.
 
-Per point and bearing the table gives the peak orbit radius, the dominant
+Per point and bearing the table gives the peak orbit radius, the peak contact
+force (journal on its bushing or pads), the dominant
 frequency of the full spectrum (sign = whirl direction) and its order (× running
 speed), the sub-synchronous share and the growth rate of the sub-synchronous
 whirl. A point whose analysed record is too short to tell 0.5× from 1× is
-flagged `too_short` and never classified; a failing point (e.g. a solver
+flagged `too_short` and never classified; a point at 0 rpm is a valid row
+(at rest, no whirl, its contact forces the bearing loads); a failing point (e.g. a solver
 failure) is a row with its message. The onset of whirl of each parameter set is
 located by bisection between the grid speeds where the classification changes,
 so the stability map gives thresholds, not grid points.
@@ -152,7 +154,7 @@ def simulate_point(payload, rpm, overrides, duration, output_interval, settle_fr
         md = read_model_description(folder)
         bearings = sorted({v.name.split(".")[1] for v in md.modelVariables
                            if v.name.startswith("bearings.") and v.name.endswith(".x")})
-        outputs = [f"bearings.{b}.{q}" for b in bearings for q in ("x", "y")]
+        outputs = [f"bearings.{b}.{q}" for b in bearings for q in ("x", "y", "contact_force")]
         start = {"shaft.speed": rpm * np.pi / 30.0}
         for key, value in overrides.items():
             for name in key.split(","):
@@ -165,7 +167,8 @@ def simulate_point(payload, rpm, overrides, duration, output_interval, settle_fr
         for b in bearings:
             x, y = res[f"bearings.{b}.x"], res[f"bearings.{b}.y"]
             row[f"{b}.peak_radius_m"] = float(np.max(np.hypot(x[keep] - x[keep].mean(), y[keep] - y[keep].mean())))
-            if revolutions < MIN_REVOLUTIONS:
+            row[f"{b}.peak_contact_force_N"] = float(np.max(res[f"bearings.{b}.contact_force"][keep]))
+            if rpm == 0.0 or revolutions < MIN_REVOLUTIONS:
                 continue
             m = whirl_metrics(t[keep], x[keep], y[keep], f_spin)
             for q in ("dominant_hz", "dominant_order", "subsync_share", "growth_per_s", "whirl_content"):
@@ -174,7 +177,9 @@ def simulate_point(payload, rpm, overrides, duration, output_interval, settle_fr
                 m["growth_per_s"] > 0 or m["subsync_share"] >= SATURATED_SHARE)
             row["spectrum_hz"] = m["spectrum_hz"].tolist()
             row["spectrum"] = m["spectrum"].tolist()
-        if revolutions < MIN_REVOLUTIONS:
+        if rpm == 0.0:
+            row["whirl"] = False  # at standstill nothing whirls: the journals rest on their bearings
+        elif revolutions < MIN_REVOLUTIONS:
             row["status"] = (f"too_short: {revolutions:.1f} revolutions analysed, at least {MIN_REVOLUTIONS} "
                              f"needed (duration ≥ {MIN_REVOLUTIONS / f_spin / (1 - settle_fraction):.3g} s)")
         else:

@@ -46,6 +46,12 @@ fn campbell_writes_csv_and_png() {
     );
     // The first critical speeds of the classic rotor sit at ≈116.4 rad/s (1111 rpm).
     assert!(stdout.contains("1111."), "{stdout}");
+    assert!(
+        stdout.contains(
+            "speed grid of classic_disk_rotor: 0.00 to 6000.00 rpm in 12 steps (top speed: --max-rpm)"
+        ),
+        "{stdout}"
+    );
     let text = std::fs::read_to_string(&csv).unwrap();
     assert_eq!(text.lines().count(), 1 + 13 * 6);
     let bytes = std::fs::read(&png).unwrap();
@@ -116,11 +122,13 @@ fn static_and_info_run_on_every_shipped_model() {
                 })
                 .output()
                 .unwrap();
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert!(out.status.success(), "{cmd} {}: {stderr}", path.display());
+            // Shipped models are plausible: no unit-slip warning.
             assert!(
-                out.status.success(),
-                "{cmd} {}: {}",
-                path.display(),
-                String::from_utf8_lossy(&out.stderr)
+                !stderr.contains("warning:"),
+                "{cmd} {}: {stderr}",
+                path.display()
             );
         }
     }
@@ -348,4 +356,368 @@ fn a_run_without_settling_starts_from_consistent_accelerations() {
         order > 1.7,
         "observed order {order:.2} (differences {coarse:e}, {fine:e})"
     );
+}
+
+/// Run `rotor simulate ARGS --plots DIR/NAME`; returns stdout and stderr.
+fn simulate_with_plots(args: &[&str], name: &str) -> (String, String) {
+    let prefix = out_dir("windows").join(name);
+    let out = rotor()
+        .arg("simulate")
+        .args(args)
+        .arg("--plots")
+        .arg(&prefix)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert!(out.status.success(), "{args:?}: {stderr}");
+    (String::from_utf8_lossy(&out.stdout).into_owned(), stderr)
+}
+
+/// The window table `rotor simulate --plots` prints: per window start_s, end_s,
+/// revolutions, speed_rpm, dominant_Hz, ratio, amplitude_um, subsync_share.
+fn window_table(stdout: &str) -> Vec<Vec<f64>> {
+    stdout
+        .lines()
+        .skip_while(|l| !l.starts_with("window"))
+        .skip(1)
+        .take_while(|l| {
+            l.split_whitespace()
+                .next()
+                .is_some_and(|w| w.parse::<usize>().is_ok())
+        })
+        .map(|l| {
+            l.split_whitespace()
+                .skip(1)
+                .map(|v| v.parse().unwrap())
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn simulate_reports_a_pure_synchronous_response_as_one_times_running_speed() {
+    // (model, rpm, duration s, step s, windows): 25, 28.2, 20 and 20.75 revolutions.
+    for (model, rpm, duration, step, windows) in [
+        ("jeffcott.toml", "3000", "0.5", "1e-4", 2),
+        ("jeffcott.toml", "1500", "0.8", "1e-4", 1),
+        ("jeffcott.toml", "1234", "1.37", "7e-5", 2),
+        ("hydro_unit.toml", "150", "8.3", "1e-3", 2),
+    ] {
+        let model = models().join(model);
+        let (stdout, _) = simulate_with_plots(
+            &[
+                model.to_str().unwrap(),
+                "--rpm",
+                rpm,
+                "--duration",
+                duration,
+                "--step",
+                step,
+            ],
+            "synchronous",
+        );
+        assert!(
+            stdout.contains("spectra of probe "),
+            "the table names the probe: {stdout}"
+        );
+        let rows = window_table(&stdout);
+        assert_eq!(rows.len(), windows, "{stdout}");
+        let f_spin = rpm.parse::<f64>().unwrap() / 60.0;
+        for row in &rows {
+            assert!(row[2] >= 20.0, "{stdout}");
+            assert!((row[3] - f_spin * 60.0).abs() < 0.05, "{stdout}");
+            assert!((row[4] - f_spin).abs() < 0.01 * f_spin, "{stdout}");
+            assert!(
+                (row[5] - 1.0).abs() <= 0.01,
+                "{model:?} {rpm} rpm: {stdout}"
+            );
+        }
+    }
+}
+
+#[test]
+fn simulate_reports_oil_whirl_at_half_speed_with_the_sweeps_share() {
+    // The Jeffcott rotor at 9000 rpm, above its oil-whirl threshold (≈ 8800 rpm):
+    // 90 revolutions, ⌈70/10⌉ + 1 = 8 windows.
+    let dir = out_dir("whirl");
+    let csv = dir.join("whirl.csv");
+    let (stdout, _) = simulate_with_plots(
+        &[
+            models().join("jeffcott.toml").to_str().unwrap(),
+            "--rpm",
+            "9000",
+            "--duration",
+            "0.6",
+            "--csv",
+            csv.to_str().unwrap(),
+        ],
+        "whirl",
+    );
+    let rows = window_table(&stdout);
+    assert_eq!(rows.len(), 8, "{stdout}");
+    let last = &rows[7];
+    assert!((last[5] - 0.5).abs() <= 0.01, "{stdout}");
+    assert!((last[4] - 75.0).abs() < 0.75, "{stdout}");
+    assert!(last[7] > 0.99, "{stdout}");
+    // The same windows of the CSV through system/sweep.py's whirl_metrics.
+    let windows: Vec<String> = rows.iter().map(|r| format!("{}:{}", r[0], r[1])).collect();
+    let script = r#"
+import sys
+import numpy as np
+sys.path.insert(0, "system")
+from sweep import whirl_metrics
+d = np.genfromtxt(sys.argv[1], delimiter=",", names=True)
+t = d["time_s"]
+for w in sys.argv[2:]:
+    a, b = (float(v) for v in w.split(":"))
+    k = (t >= a - 1e-7) & (t <= b + 1e-7)
+    m = whirl_metrics(t[k], d["disk_x_m"][k], d["disk_y_m"][k], d["speed_rpm"][k].mean() / 60.0)
+    print(repr(m["subsync_share"]))
+"#;
+    let shares = python(script, &[csv.to_str().unwrap()], &windows);
+    assert_eq!(shares.len(), rows.len());
+    for (row, py) in rows.iter().zip(&shares) {
+        // The table prints six decimals.
+        assert!(
+            (row[7] - py).abs() <= 5.1e-7,
+            "CLI {} vs sweep.py {py}",
+            row[7]
+        );
+    }
+}
+
+/// Run `.venv/bin/python -c SCRIPT ARGS…` from the repo root; its stdout as numbers.
+fn python(script: &str, args: &[&str], more: &[String]) -> Vec<f64> {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let python = root.join(".venv/bin/python");
+    assert!(
+        python.exists(),
+        "{} missing: run scripts/python_env.sh",
+        python.display()
+    );
+    let out = Command::new(python)
+        .current_dir(&root)
+        .arg("-c")
+        .arg(script)
+        .args(args)
+        .args(more)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| l.parse().unwrap())
+        .collect()
+}
+
+#[test]
+fn subsynchronous_share_is_the_sweeps_definition() {
+    use rotor_bearing::analysis::spectrum::subsynchronous_share;
+    use std::f64::consts::PI;
+    use std::fmt::Write;
+    // 1× forward 10 µm, 0.43× backward 6 µm, 0.2× forward 3 µm, 2× 2 µm, an
+    // offset and a slow drift; 3001 samples every 0.17 ms at 37.3 Hz running speed.
+    let spin = 37.3;
+    let t: Vec<f64> = (0..3001).map(|k| 0.02 + k as f64 * 1.7e-4).collect();
+    let circle = |t: f64, order: f64, r: f64| {
+        let p = 2.0 * PI * order * spin * t;
+        (r * p.cos(), r * p.sin())
+    };
+    let (mut x, mut y) = (Vec::new(), Vec::new());
+    for &t in &t {
+        let parts = [
+            circle(t, 1.0, 1e-5),
+            circle(t, -0.43, 6e-6),
+            circle(t, 0.2, 3e-6),
+            circle(t, 2.0, 2e-6),
+            (3e-6 + 1e-6 * t, -2e-6),
+        ];
+        x.push(parts.iter().map(|p| p.0).sum::<f64>());
+        y.push(parts.iter().map(|p| p.1).sum::<f64>());
+    }
+    let rust = subsynchronous_share(&t, &x, &y, spin);
+    assert!(rust > 0.2 && rust < 0.5, "{rust}");
+    let csv = out_dir("share").join("orbit.csv");
+    let mut text = String::from("time_s,x_m,y_m\n");
+    for k in 0..t.len() {
+        writeln!(text, "{:e},{:e},{:e}", t[k], x[k], y[k]).unwrap();
+    }
+    std::fs::write(&csv, text).unwrap();
+    let script = r#"
+import sys
+import numpy as np
+sys.path.insert(0, "system")
+from sweep import whirl_metrics
+d = np.genfromtxt(sys.argv[1], delimiter=",", names=True)
+print(repr(whirl_metrics(d["time_s"], d["x_m"], d["y_m"], float(sys.argv[2]))["subsync_share"]))
+"#;
+    let py = python(script, &[csv.to_str().unwrap(), &format!("{spin:e}")], &[]);
+    assert!(
+        (rust - py[0]).abs() < 1e-9,
+        "Rust {rust} vs sweep.py {}",
+        py[0]
+    );
+}
+
+#[test]
+fn simulate_refuses_a_ratio_for_a_run_under_twenty_revolutions() {
+    // 3000 rpm for 0.3 s: 15 revolutions.
+    let prefix = out_dir("windows").join("short");
+    let png = PathBuf::from(format!("{}_waterfall.png", prefix.display()));
+    let _ = std::fs::remove_file(&png);
+    let (stdout, stderr) = simulate_with_plots(
+        &[
+            models().join("jeffcott.toml").to_str().unwrap(),
+            "--rpm",
+            "3000",
+            "--duration",
+            "0.3",
+        ],
+        "short",
+    );
+    assert!(
+        stdout.contains("too short: 15.0 revolutions < 20: no frequency ratio"),
+        "{stdout}"
+    );
+    assert!(window_table(&stdout).is_empty(), "{stdout}");
+    assert!(
+        stderr.contains("warning: too short: 15.0 revolutions < 20"),
+        "{stderr}"
+    );
+    assert!(!png.exists());
+}
+
+#[test]
+fn campbell_lists_overdamped_crossings_apart_from_critical_speeds() {
+    // The Jeffcott rotor's rigid-body modes on the films cross the 1× line at
+    // 419 rpm with ζ = 0.82: overdamped, no resonance peak.
+    let csv = out_dir("campbell_jeffcott").join("c.csv");
+    let out = rotor()
+        .arg("campbell")
+        .arg(models().join("jeffcott.toml"))
+        .arg("--csv")
+        .arg(&csv)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // Default top speed 1.25 × speed_rpm 3000; fluid films from 1 % of it.
+    assert!(
+        stdout.contains(
+            "speed grid of jeffcott: 37.50 to 3750.00 rpm in 40 steps (top speed: 1.25 × the model's speed_rpm 3000; fluid-film bearings: from 1 % of the top speed)"
+        ),
+        "{stdout}"
+    );
+    let zeta = |line: &str| -> f64 { line.rsplit("ζ = ").next().unwrap().parse().unwrap() };
+    let (critical, overdamped) = stdout.split_once("overdamped crossings").unwrap();
+    let critical: Vec<&str> = critical.lines().filter(|l| l.contains("ζ = ")).collect();
+    let overdamped: Vec<&str> = overdamped.lines().filter(|l| l.contains("ζ = ")).collect();
+    assert!(critical.iter().all(|l| zeta(l) < 0.5), "{stdout}");
+    assert!(overdamped.iter().all(|l| zeta(l) >= 0.5), "{stdout}");
+    assert!(
+        critical
+            .iter()
+            .any(|l| l.contains("2675.11 rpm") && l.contains("ζ = 3.156e-1")),
+        "{stdout}"
+    );
+    assert!(
+        overdamped
+            .iter()
+            .any(|l| l.contains("419.27 rpm") && l.contains("ζ = 8.182e-1")),
+        "{stdout}"
+    );
+}
+
+#[test]
+fn campbell_default_top_speed_follows_the_model() {
+    let dir = out_dir("campbell_range");
+    let base = rotor_bearing::model::DEFAULT_MODEL_TOML;
+    let cases = [
+        (
+            base.to_string(),
+            "0.00 to 1250.00 rpm in 40 steps (top speed: 1.25 × the model's speed_rpm 1000)",
+        ),
+        (
+            base.replace("speed_rpm = 1000", "speed_rpm = 1000\nmax_speed_rpm = 2000"),
+            "0.00 to 2500.00 rpm in 40 steps (top speed: 1.25 × the model's max_speed_rpm 2000)",
+        ),
+        (
+            base.replace("speed_rpm = 1000", ""),
+            "0.00 to 4000.00 rpm in 40 steps (top speed: the model states neither max_speed_rpm nor speed_rpm)",
+        ),
+    ];
+    for (k, (text, grid)) in cases.iter().enumerate() {
+        let path = dir.join(format!("m{k}.toml"));
+        std::fs::write(&path, text).unwrap();
+        let out = rotor()
+            .arg("campbell")
+            .arg(&path)
+            .args(["--modes", "2", "--csv"])
+            .arg(dir.join("c.csv"))
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(
+            stdout.contains(&format!("speed grid of classic_disk_rotor: {grid}")),
+            "{stdout}"
+        );
+        // The classic rotor's first critical speeds (1111 rpm) are inside every range.
+        assert!(stdout.contains("1111."), "{stdout}");
+    }
+}
+
+#[test]
+fn implausible_values_are_warned_by_every_command() {
+    let dir = out_dir("plausibility");
+    let path = dir.join("cst.toml");
+    let text = std::fs::read_to_string(models().join("jeffcott.toml"))
+        .unwrap()
+        .replacen("viscosity = 0.02 ", "viscosity = 32.0 ", 1);
+    std::fs::write(&path, text).unwrap();
+    let model = path.to_str().unwrap();
+    let stage = dir.join("stage");
+    let csv = dir.join("out.csv");
+    let csv = csv.to_str().unwrap();
+    let commands: [&[&str]; 7] = [
+        &["info", model],
+        &["static", model, "--rpm", "3000"],
+        &["modes", model, "--rpm", "3000", "--modes", "2"],
+        &[
+            "campbell", model, "--steps", "1", "--modes", "2", "--csv", csv,
+        ],
+        &["coefficients", model, "--points", "3", "--csv", csv],
+        &[
+            "simulate",
+            model,
+            "--rpm",
+            "3000",
+            "--duration",
+            "0.001",
+            "--csv",
+            csv,
+        ],
+        &["fmu-stage", model, stage.to_str().unwrap()],
+    ];
+    let expected = format!(
+        "warning: {model}: bearings[0].viscosity = 32: dynamic viscosity outside the plausible 1e-4 to 1 Pa·s"
+    );
+    for args in commands {
+        let out = rotor().args(args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(&expected), "{args:?}: {stderr}");
+    }
 }

@@ -317,7 +317,8 @@ fn fmu_equals_the_direct_simulator() {
         },
     )
     .unwrap();
-    sim.set_speed(model.nominal_speed, 0.0).unwrap();
+    // The FMU starts at standstill (shaft.speed start value 0).
+    sim.set_speed(0.0, 0.0).unwrap();
     sim.settle_static().unwrap();
     let speed_vr = fmu.vr("shaft.speed");
     let h = 0.01;
@@ -354,10 +355,7 @@ fn fmu_equals_the_direct_simulator() {
         }
     }
     let speed = fmu.get(&["shaft.speed"])[0];
-    assert!(
-        (speed - (model.nominal_speed + 2.0 * 0.5)).abs() < 1e-12,
-        "{speed}"
-    );
+    assert!((speed - 2.0 * 0.5).abs() < 1e-12, "{speed}");
 }
 
 /// Outputs at common times do not depend on the communication step.
@@ -614,6 +612,11 @@ fn instances_are_independent_across_threads() {
     let run = |name: String, unbalance: f64| {
         let fmu = Fmu::new(&name);
         assert_eq!(fmu.set("unbalance.generator", unbalance), fmi2Status_fmi2OK);
+        // At 150 rpm (the FMU starts at standstill, where unbalance has no effect).
+        assert_eq!(
+            fmu.set("shaft.speed", 5.0 * std::f64::consts::PI),
+            fmi2Status_fmi2OK
+        );
         fmu.init();
         for k in 0..20 {
             assert_eq!(fmu.step(k as f64 * 0.01, 0.01), fmi2Status_fmi2OK);
@@ -719,10 +722,15 @@ fn wrong_calls_and_bad_inputs_are_reported() {
         last_log()
     );
 
-    // A solver failure: an absurd unbalance (1e9 kg·m, 2.5e11 N at 150 rpm) drives
-    // the journal into the clearance. (At 1e6 kg·m the preloaded pads still carry
-    // the 2.5e8 N, the journal at 1.05 times the assembled clearance.)
+    // A genuine solver failure: an absurd unbalance (1e9 kg·m, 2.5e11 N at
+    // 150 rpm) would press the journal metres deep into its pads, where Newton
+    // no longer converges within the step cuts. (A rub within reason continues
+    // in contact: tests/operating_envelope.rs.)
     unsafe { fmu.lib.fmi2Reset(fmu.c) };
+    assert_eq!(
+        fmu.set("shaft.speed", 5.0 * std::f64::consts::PI),
+        fmi2Status_fmi2OK
+    );
     fmu.init();
     assert_eq!(fmu.step(0.0, 0.1), fmi2Status_fmi2OK);
     let mut state: fmi2FMUstate = std::ptr::null_mut();

@@ -64,6 +64,7 @@ fn plain_bearing_forces_mirror_under_reverse_spin() {
         length: 0.03,
         clearance: 1e-4,
         viscosity: 0.02,
+        contact: None,
     };
     let states = [
         (vec![2e-5, -5e-5], vec![0.0, 0.0], 314.16),
@@ -89,6 +90,7 @@ fn symmetric_tilting_pads_mirror_under_reverse_spin() {
             .iter()
             .map(|p| Pad::new(p.to_radians(), 80f64.to_radians(), 0.5, 0.2))
             .collect(),
+        contact: None,
     };
     let states = [
         (

@@ -14,6 +14,7 @@ const BEARING: PlainBearing = PlainBearing {
     length: 0.03,
     clearance: 1e-4,
     viscosity: 0.02,
+    contact: None,
 };
 
 /// A rigid symmetric rotor of 203.87 kg (101.94 kg per bearing) on two plain

@@ -42,6 +42,7 @@ fn bearing(case: &Value) -> (TiltingPadBearing, f64, f64) {
             clearance: num(&p["C"]),
             viscosity: num(&p["mu"]),
             pads,
+            contact: None,
         },
         num(&p["omega"]),
         num(&p["W"]),

@@ -1,7 +1,54 @@
 //! Campbell diagram (damped natural frequencies against spin speed) and critical
 //! speeds, where a frequency branch meets an excitation line `ω = h·Ω`.
+//!
+//! A crossing by a mode with damping ratio `ζ ≥` [`OVERDAMPED_DAMPING_RATIO`]
+//! is not a critical speed: the resonance amplification `1/(2ζ)` is at most 1,
+//! so the response has no peak there (rigid-body modes on fluid films at low
+//! speed cross the 1× line with ζ ≈ 0.8).
 
+use crate::model::RotorModel;
 use crate::rotor::Rotor;
+use crate::units::RAD_S_TO_RPM;
+
+/// Damping ratio from which a crossing of an excitation line is overdamped,
+/// not a critical speed: the amplification `1/(2ζ)` is at most 1.
+pub const OVERDAMPED_DAMPING_RATIO: f64 = 0.5;
+
+/// Top speed (rpm) of a Campbell diagram of a model that states neither
+/// `max_speed_rpm` nor `speed_rpm`.
+pub const FALLBACK_TOP_RPM: f64 = 4000.0;
+
+/// Start of the speed grid of a model with fluid-film bearings, as a fraction
+/// of the top speed: a film carries load only when turning.
+pub const FILM_START_FRACTION: f64 = 0.01;
+
+/// Default top speed (rad/s) of a Campbell diagram of `model`: 1.25 × its
+/// `max_speed_rpm` when the file states it, else 1.25 × its `speed_rpm` when
+/// not zero, else [`FALLBACK_TOP_RPM`].
+pub fn default_top_speed(model: &RotorModel) -> f64 {
+    if model.max_speed_stated {
+        1.25 * model.max_speed
+    } else if model.nominal_speed != 0.0 {
+        1.25 * model.nominal_speed.abs()
+    } else {
+        FALLBACK_TOP_RPM / RAD_S_TO_RPM
+    }
+}
+
+/// The `steps + 1` speeds (rad/s) of a Campbell diagram up to `top` (rad/s):
+/// evenly spaced from 0 for linear bearings, from [`FILM_START_FRACTION`] ×
+/// `top` when the rotor has fluid-film bearings.
+pub fn speed_grid(rotor: &Rotor, top: f64, steps: usize) -> Vec<f64> {
+    let first = if rotor.nonlinear_bearings.is_empty() {
+        0.0
+    } else {
+        FILM_START_FRACTION * top
+    };
+    let steps = steps.max(1);
+    (0..=steps)
+        .map(|k| first + (top - first) * k as f64 / steps as f64)
+        .collect()
+}
 
 use super::modal::{ModalError, ModalOptions, Mode, Whirl, modes_at};
 
@@ -51,6 +98,14 @@ pub struct CriticalSpeed {
     pub whirl: Whirl,
     /// Damping ratio there.
     pub damping_ratio: f64,
+}
+
+impl CriticalSpeed {
+    /// Whether the mode is overdamped there (`ζ ≥` [`OVERDAMPED_DAMPING_RATIO`]):
+    /// a crossing without a resonance peak, not a critical speed.
+    pub fn is_overdamped(&self) -> bool {
+        self.damping_ratio >= OVERDAMPED_DAMPING_RATIO
+    }
 }
 
 /// Modes at every speed of `speeds` (rad/s, increasing); nonlinear bearings are

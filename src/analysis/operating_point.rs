@@ -145,7 +145,7 @@ pub fn operating_point(
                 let tilts = &eq.tilts[tilt_offset..tilt_offset + n_pads];
                 tilt_offset += n_pads;
                 let q: Vec<f64> = j.iter().chain(tilts).copied().collect();
-                let report = bearing.report(&q, speed, eval);
+                let report = bearing.report(&q, &vec![0.0; q.len()], speed, eval);
                 let pads = match kind {
                     BearingKind::TiltingPad(tp) => tp
                         .pads

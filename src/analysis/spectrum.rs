@@ -2,8 +2,9 @@
 //!
 //! The *full spectrum* of an orbit treats `z = x + i y` as one complex signal:
 //! positive frequencies are forward whirl (in the spin direction), negative ones
-//! backward whirl. Amplitudes are Hann-windowed DFTs evaluated at any set of
-//! frequencies (no power-of-two restriction), scaled so that a circular orbit of
+//! backward whirl. Every spectrum here is one FFT (`rustfft`) of the record with
+//! its mean removed, multiplied by a Hann window `w_k = ½ − ½ cos(2πk/(n−1))`
+//! and zero-padded; amplitudes are `|Z(f)| / Σ w_k`, so that a circular orbit of
 //! radius `r` at frequency `f` shows a peak of height `r`.
 //!
 //! ```
@@ -20,36 +21,205 @@
 //! assert!((f - 25.0).abs() < 0.01); // forward: positive frequency
 //! assert!((a - 1e-5).abs() < 1e-7); // the orbit radius
 //! ```
+//!
+//! **Order analysis.** A frequency is only reported as a multiple of the running
+//! speed (an *order*, 1× for unbalance, ≈ 0.5× for oil whirl) from a record of
+//! at least [`MIN_REVOLUTIONS`] revolutions: with the Hann window the resolution
+//! is `1/T`, so 0.5× and 1× are then at least ten bins apart. A shorter record
+//! is a [`TooShort`], never a number. [`record_spectrum`] analyses one record;
+//! [`waterfall`] cuts a run into windows of [`MIN_REVOLUTIONS`] revolutions of
+//! spin angle (so slow parts of a ramp get longer windows), overlapping by at
+//! least half.
+//!
+//! ```
+//! use std::f64::consts::PI;
+//! use rotor_bearing::analysis::spectrum::record_spectrum;
+//!
+//! // Pure 1× response at 150 rpm (2.5 Hz), 10 s sampled every 3 ms: 25 revolutions.
+//! let speed = 150.0 * PI / 30.0;
+//! let t: Vec<f64> = (0..3334).map(|k| k as f64 * 3e-3).collect();
+//! let x: Vec<f64> = t.iter().map(|t| 2e-5 * (speed * t).cos()).collect();
+//! let y: Vec<f64> = t.iter().map(|t| 2e-5 * (speed * t).sin()).collect();
+//! let w = vec![speed; t.len()];
+//! let s = record_spectrum(&t, &x, &y, &w).unwrap();
+//! assert!((s.order().unwrap() - 1.0).abs() < 1e-3);
+//! // 4 s are only 10 revolutions: no ratio, a refusal that says why.
+//! let short = record_spectrum(&t[..1334], &x[..1334], &y[..1334], &w[..1334]).unwrap_err();
+//! assert_eq!(short.to_string(), "too short: 10.0 revolutions < 20");
+//! ```
 
 use std::f64::consts::PI;
 
-use nalgebra::Complex;
+use rustfft::FftPlanner;
+use rustfft::num_complex::Complex;
+
+/// Revolutions a record (or a waterfall window) must hold before a frequency is
+/// reported as a multiple of the running speed: with a Hann window the
+/// resolution is `1/T`, so 0.5× and 1× lie `MIN_REVOLUTIONS / 2` = 10 bins apart.
+pub const MIN_REVOLUTIONS: f64 = 20.0;
+
+/// The sub-synchronous band, in multiples of the running speed (both whirl
+/// directions): see [`subsynchronous_share`].
+pub const SUB_BAND: (f64, f64) = (0.05, 0.8);
+
+/// Least zero-padding factor of the FFTs behind peaks and displayed spectra.
+pub const ZERO_PADDING: usize = 8;
+
+/// Largest number of windows of a [`waterfall`]; a longer run spreads them
+/// further apart (they then overlap by less than half, or not at all).
+pub const MAX_WINDOWS: usize = 60;
+
+/// Number of frequencies of a [`waterfall`]'s display grid.
+pub const WATERFALL_FREQUENCIES: usize = 801;
+
+/// Largest FFT length used for display interpolation.
+const MAX_FFT_LEN: usize = 1 << 21;
+
+/// Hann window of length `n`, `½ − ½ cos(2πk/(n−1))` (NumPy's `hanning`).
+fn hann(n: usize) -> Vec<f64> {
+    if n == 1 {
+        return vec![1.0];
+    }
+    (0..n)
+        .map(|k| 0.5 - 0.5 * (2.0 * PI * k as f64 / (n - 1) as f64).cos())
+        .collect()
+}
+
+/// The FFT of `len` points (`len ≥ n`, zero-padded) of the Hann-windowed orbit
+/// `(x, y)` with its mean removed, divided by the window's sum.
+fn windowed_fft(x: &[f64], y: &[f64], len: usize) -> Vec<Complex<f64>> {
+    let n = x.len().min(y.len());
+    let mut buffer = vec![Complex::new(0.0, 0.0); len.max(n)];
+    if n == 0 {
+        return buffer;
+    }
+    let mean_x = x[..n].iter().sum::<f64>() / n as f64;
+    let mean_y = y[..n].iter().sum::<f64>() / n as f64;
+    let window = hann(n);
+    let gain: f64 = window.iter().sum();
+    for k in 0..n {
+        buffer[k] = Complex::new(x[k] - mean_x, y[k] - mean_y) * (window[k] / gain);
+    }
+    FftPlanner::new()
+        .plan_fft_forward(buffer.len())
+        .process(&mut buffer);
+    buffer
+}
+
+/// A zero-padded full spectrum on its FFT grid: bin `j` of `len` is frequency
+/// `k / (len·dt)` with `k ≡ j (mod len)` in `[−len/2, len/2)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Spectrum {
+    /// Sampling interval (s).
+    pub dt: f64,
+    /// Amplitude (m) per FFT bin, in FFT order.
+    pub amplitudes: Vec<f64>,
+}
+
+impl Spectrum {
+    /// The full spectrum of `(x, y)` sampled every `dt` (s), zero-padded to
+    /// `len` points (at least the record length).
+    pub fn new(x: &[f64], y: &[f64], dt: f64, len: usize) -> Self {
+        let amplitudes = windowed_fft(x, y, len).iter().map(|c| c.norm()).collect();
+        Self { dt, amplitudes }
+    }
+
+    /// Bin spacing (Hz).
+    pub fn resolution(&self) -> f64 {
+        1.0 / (self.amplitudes.len() as f64 * self.dt)
+    }
+
+    /// Amplitude at `f` (Hz, signed), linear between bins; frequencies alias
+    /// into `[−1/(2dt), 1/(2dt))` as sampling folds them.
+    pub fn at(&self, f: f64) -> f64 {
+        let m = self.amplitudes.len();
+        let p = f / self.resolution();
+        let j = p.floor();
+        let frac = p - j;
+        let bin = |k: f64| self.amplitudes[(k as i64).rem_euclid(m as i64) as usize];
+        (1.0 - frac) * bin(j) + frac * bin(j + 1.0)
+    }
+
+    /// The largest component: the top bin refined by a parabola through the
+    /// logarithms of it and its neighbours. With the Hann window and at least
+    /// [`ZERO_PADDING`]× padding the frequency is within 1e-3 of the record's
+    /// resolution `1/T` and the amplitude within 0.1 % for an isolated sinusoid
+    /// (unit test). `None` when the spectrum is zero.
+    pub fn peak(&self) -> Option<Peak> {
+        let m = self.amplitudes.len();
+        let (j, &top) = self
+            .amplitudes
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(b.1))?;
+        if !(top > 0.0 && top.is_finite()) {
+            return None;
+        }
+        let k = if j >= m.div_ceil(2) {
+            j as f64 - m as f64
+        } else {
+            j as f64
+        };
+        let ln = |i: usize| self.amplitudes[i].max(f64::MIN_POSITIVE).ln();
+        let (a, b, c) = (ln((j + m - 1) % m), ln(j), ln((j + 1) % m));
+        let denom = a - 2.0 * b + c;
+        let shift = if denom < 0.0 {
+            (0.5 * (a - c) / denom).clamp(-0.5, 0.5)
+        } else {
+            0.0
+        };
+        Some(Peak {
+            frequency: (k + shift) * self.resolution(),
+            amplitude: (b - 0.25 * (a - c) * shift).exp(),
+        })
+    }
+}
+
+/// A spectral peak.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Peak {
+    /// Frequency (Hz, signed: positive = forward whirl).
+    pub frequency: f64,
+    /// Amplitude (m): the radius of the circular component.
+    pub amplitude: f64,
+}
+
+/// FFT length for a record of `n` samples every `dt` (s) shown on a grid of
+/// spacing `spacing` (Hz): at least [`ZERO_PADDING`]`·n` and four bins per grid step.
+fn padded_len(n: usize, dt: f64, spacing: f64) -> usize {
+    let display = if spacing > 0.0 && dt > 0.0 {
+        (4.0 / (dt * spacing)).ceil().min(MAX_FFT_LEN as f64) as usize
+    } else {
+        0
+    };
+    (ZERO_PADDING * n).max(display).max(1)
+}
+
+/// Sampling interval of uniform times `t` (s).
+fn interval(t: &[f64]) -> f64 {
+    match t.len() {
+        0 | 1 => 1.0,
+        n => (t[n - 1] - t[0]) / (n - 1) as f64,
+    }
+}
 
 /// Full-spectrum amplitude (m) of the orbit `(x, y)` sampled at uniform times
-/// `t`, at each frequency of `freqs` (Hz, signed: positive = forward).
+/// `t`, at each frequency of `freqs` (Hz, signed: positive = forward):
+/// interpolated from a zero-padded FFT with at least four bins per grid step.
 pub fn full_spectrum(t: &[f64], x: &[f64], y: &[f64], freqs: &[f64]) -> Vec<f64> {
     let n = t.len().min(x.len()).min(y.len());
     if n < 2 {
         return vec![0.0; freqs.len()];
     }
-    let mean_x = x[..n].iter().sum::<f64>() / n as f64;
-    let mean_y = y[..n].iter().sum::<f64>() / n as f64;
-    let window: Vec<f64> = (0..n)
-        .map(|k| 0.5 - 0.5 * (2.0 * PI * k as f64 / (n - 1) as f64).cos())
-        .collect();
-    let gain: f64 = window.iter().sum();
-    freqs
-        .iter()
-        .map(|&f| {
-            let w = -2.0 * PI * f;
-            let mut acc = Complex::new(0.0, 0.0);
-            for k in 0..n {
-                let z = Complex::new(x[k] - mean_x, y[k] - mean_y);
-                acc += z * window[k] * Complex::from_polar(1.0, w * (t[k] - t[0]));
-            }
-            acc.norm() / gain
-        })
-        .collect()
+    let dt = interval(&t[..n]);
+    let spacing = freqs
+        .windows(2)
+        .map(|p| (p[1] - p[0]).abs())
+        .filter(|s| *s > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    let spacing = if spacing.is_finite() { spacing } else { 0.0 };
+    let s = Spectrum::new(&x[..n], &y[..n], dt, padded_len(n, dt, spacing));
+    freqs.iter().map(|&f| s.at(f)).collect()
 }
 
 /// Amplitude (m) of a real signal `x` at each frequency (Hz, ≥ 0).
@@ -99,25 +269,212 @@ pub fn band_limit(f: f64, dt: f64) -> f64 {
     f.max(1.0).min(0.5 / dt)
 }
 
-/// Number of frequencies of a [`waterfall`]'s grid.
-pub const WATERFALL_FREQUENCIES: usize = 801;
+/// The sub-synchronous share of the orbit `(x, y)` at uniform times `t` (s)
+/// running at `spin_hz` (Hz): the fraction of its spectral energy at
+/// `|f|` in [`SUB_BAND`] × `spin_hz` (both whirl directions, band ends
+/// included), between 0 and 1 (0 for a motionless orbit).
+///
+/// The spectrum is the unpadded `n`-point FFT of `z = x + i y`, mean removed,
+/// Hann-windowed; its energy is the squared amplitude per bin without the
+/// zero-frequency bin, at bin frequencies `k / (n·dt)` with
+/// `dt = (t_last − t_first)/(n − 1)`. `system/sweep.py` (`whirl_metrics`)
+/// computes the same number; a test feeds both the same orbit.
+pub fn subsynchronous_share(t: &[f64], x: &[f64], y: &[f64], spin_hz: f64) -> f64 {
+    let n = t.len().min(x.len()).min(y.len());
+    if n < 2 {
+        return 0.0;
+    }
+    let dt = interval(&t[..n]);
+    let spectrum = windowed_fft(&x[..n], &y[..n], n);
+    let step = 1.0 / (n as f64 * dt);
+    let (lo, hi) = (SUB_BAND.0 * spin_hz.abs(), SUB_BAND.1 * spin_hz.abs());
+    let (mut band, mut total) = (0.0, 0.0);
+    for (j, c) in spectrum.iter().enumerate().skip(1) {
+        let k = if j < n.div_ceil(2) {
+            j as f64
+        } else {
+            j as f64 - n as f64
+        };
+        let f = (k * step).abs();
+        let energy = c.norm_sqr();
+        total += energy;
+        if f >= lo && f <= hi {
+            band += energy;
+        }
+    }
+    if total > 0.0 { band / total } else { 0.0 }
+}
+
+/// A record too short for an order: it holds `revolutions` < `needed`
+/// (displayed rounded down to 0.1, so 19.97 reads 19.9).
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+#[error("too short: {:.1} revolutions < {needed}", (revolutions * 10.0 + 1e-6).floor() / 10.0)]
+pub struct TooShort {
+    /// Revolutions of the shaft over the record.
+    pub revolutions: f64,
+    /// Revolutions an order needs ([`MIN_REVOLUTIONS`]).
+    pub needed: f64,
+}
+
+/// Whether a record of `revolutions` is too short for an order: fewer than
+/// [`MIN_REVOLUTIONS`], up to the round-off of summing time steps.
+fn too_short(revolutions: f64) -> bool {
+    revolutions < MIN_REVOLUTIONS * (1.0 - 1e-9)
+}
+
+/// Spin angle (rad) at each sample: the trapezoidal integral of `|speed|`.
+fn spin_angle(t: &[f64], speed: &[f64]) -> Vec<f64> {
+    let mut angle = Vec::with_capacity(t.len());
+    let mut acc = 0.0;
+    for k in 0..t.len() {
+        if k > 0 {
+            acc += 0.5 * (speed[k].abs() + speed[k - 1].abs()) * (t[k] - t[k - 1]);
+        }
+        angle.push(acc);
+    }
+    angle
+}
+
+/// Signed mean speed (rad/s) of samples `r`: trapezoidal integral over the time span.
+fn mean_speed(t: &[f64], speed: &[f64], r: std::ops::Range<usize>) -> f64 {
+    let (a, b) = (r.start, r.end - 1);
+    if b <= a {
+        return speed[a];
+    }
+    let integral: f64 = (a..b)
+        .map(|k| 0.5 * (speed[k] + speed[k + 1]) * (t[k + 1] - t[k]))
+        .sum();
+    integral / (t[b] - t[a])
+}
+
+/// The spectrum of one record (or window) of a run, with its order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RecordSpectrum {
+    /// Time of its first sample (s).
+    pub start: f64,
+    /// Time of its last sample (s).
+    pub end: f64,
+    /// Revolutions of the shaft over it.
+    pub revolutions: f64,
+    /// Mean spin speed (rad/s, signed).
+    pub speed: f64,
+    /// Dominant component, `None` for a motionless orbit.
+    pub peak: Option<Peak>,
+    /// [`subsynchronous_share`] at the mean spin speed.
+    pub subsynchronous_share: f64,
+    /// The zero-padded full spectrum.
+    pub spectrum: Spectrum,
+}
+
+impl RecordSpectrum {
+    /// The dominant frequency as a multiple of the spin frequency, `2π f / Ω`.
+    pub fn order(&self) -> Option<f64> {
+        self.peak.map(|p| p.frequency * 2.0 * PI / self.speed)
+    }
+}
+
+/// Analyse samples `r` of a run (uniform times `t`, orbit `x`, `y`, spin speed
+/// `speed` in rad/s and spin angle `angle` in rad per sample), zero-padded for
+/// display on a grid of spacing `spacing` (Hz, 0 for none).
+fn analyse(
+    t: &[f64],
+    x: &[f64],
+    y: &[f64],
+    speed: &[f64],
+    angle: &[f64],
+    r: std::ops::Range<usize>,
+    spacing: f64,
+) -> RecordSpectrum {
+    let (a, b) = (r.start, r.end - 1);
+    let dt = interval(&t[r.clone()]);
+    let speed = mean_speed(t, speed, r.clone());
+    let len = padded_len(r.len(), dt, spacing);
+    let spectrum = Spectrum::new(&x[r.clone()], &y[r.clone()], dt, len);
+    RecordSpectrum {
+        start: t[a],
+        end: t[b],
+        revolutions: (angle[b] - angle[a]) / (2.0 * PI),
+        speed,
+        peak: spectrum.peak(),
+        subsynchronous_share: subsynchronous_share(
+            &t[r.clone()],
+            &x[r.clone()],
+            &y[r],
+            speed / (2.0 * PI),
+        ),
+        spectrum,
+    }
+}
+
+/// The spectrum and order of a whole record: the orbit `(x, y)` (m) at uniform
+/// times `t` (s) with spin speed `speed` (rad/s) per sample. A record of fewer
+/// than [`MIN_REVOLUTIONS`] revolutions is a [`TooShort`].
+pub fn record_spectrum(
+    t: &[f64],
+    x: &[f64],
+    y: &[f64],
+    speed: &[f64],
+) -> Result<RecordSpectrum, TooShort> {
+    let n = t.len().min(x.len()).min(y.len()).min(speed.len());
+    let angle = spin_angle(&t[..n], &speed[..n]);
+    let revolutions = angle.last().copied().unwrap_or(0.0) / (2.0 * PI);
+    if n < 2 || too_short(revolutions) {
+        return Err(TooShort {
+            revolutions,
+            needed: MIN_REVOLUTIONS,
+        });
+    }
+    Ok(analyse(t, x, y, speed, &angle, 0..n, 0.0))
+}
+
+/// Sample ranges of the waterfall windows of a run with spin angle `angle`
+/// (rad, non-decreasing) of `revolutions` in all (≥ [`MIN_REVOLUTIONS`]):
+/// windows of [`MIN_REVOLUTIONS`] revolutions from the first sample to the last,
+/// as many as a hop of at most half a window needs (at most [`MAX_WINDOWS`]),
+/// evenly spread. Each range runs from the last sample at or before its start
+/// angle to the first at or after its end angle.
+fn window_ranges(angle: &[f64], revolutions: f64) -> Vec<std::ops::Range<usize>> {
+    let half = 0.5 * MIN_REVOLUTIONS;
+    let extra = revolutions - MIN_REVOLUTIONS;
+    let count = (((extra / half) - 1e-9).ceil().max(0.0) as usize + 1).min(MAX_WINDOWS);
+    let hop = if count > 1 {
+        extra / (count - 1) as f64
+    } else {
+        0.0
+    };
+    let n = angle.len();
+    (0..count)
+        .map(|w| {
+            let from = 2.0 * PI * w as f64 * hop;
+            let to = from + 2.0 * PI * MIN_REVOLUTIONS;
+            let a = angle.partition_point(|&p| p <= from).saturating_sub(1);
+            let b = if w + 1 == count {
+                n - 1
+            } else {
+                angle.partition_point(|&p| p < to).min(n - 1)
+            };
+            a..b + 1
+        })
+        .collect()
+}
 
 /// One window of a waterfall: the full spectrum of a stretch of the run.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WaterfallRow {
+    /// Spectrum, peak, order and sub-synchronous share of the window.
+    pub window: RecordSpectrum,
     /// Mean spin speed over the window (rad/s).
     pub speed: f64,
     /// Full-spectrum amplitudes (m) on the waterfall's frequency grid.
     pub amplitudes: Vec<f64>,
-    /// Dominant component: frequency (Hz, signed) and amplitude (m), from
-    /// [`peak_frequency`].
+    /// Dominant component: frequency (Hz, signed) and amplitude (m).
     pub peak: Option<(f64, f64)>,
 }
 
 impl WaterfallRow {
     /// The dominant frequency as a multiple of the spin frequency, `2π f / Ω`.
     pub fn peak_order(&self) -> Option<f64> {
-        self.peak.map(|(f, _)| f * 2.0 * PI / self.speed)
+        self.window.order()
     }
 }
 
@@ -131,36 +488,77 @@ pub struct Waterfall {
 }
 
 /// Waterfall of the orbit `(x, y)` (m) sampled every `dt` (s) at times `t` with
-/// spin speed `speed` (rad/s) per sample: `min(40, n/64)` (at least one) equal
-/// consecutive windows (a remainder at the end is dropped), each analysed by
-/// [`full_spectrum`] on [`WATERFALL_FREQUENCIES`] frequencies spanning ±1.5 ×
-/// the top spin frequency (see [`band_limit`]).
-pub fn waterfall(t: &[f64], x: &[f64], y: &[f64], speed: &[f64], dt: f64) -> Waterfall {
+/// spin speed `speed` (rad/s) per sample.
+///
+/// Windows hold [`MIN_REVOLUTIONS`] revolutions of spin angle each (so their
+/// duration follows the speed: a ramp's slow part gets longer windows); the
+/// first starts with the run, the last ends with it, and consecutive ones
+/// overlap by at least half a window (fewer than half when [`MAX_WINDOWS`]
+/// would be exceeded). A constant-speed run of `R` revolutions has
+/// `⌈(R − 20)/10⌉ + 1` windows. Each window is analysed as by
+/// [`record_spectrum`] (Hann window, mean removed, zero-padded FFT, refined
+/// peak) and shown on [`WATERFALL_FREQUENCIES`] frequencies spanning ±1.5 × the
+/// top spin frequency (see [`band_limit`]). A run of fewer than
+/// [`MIN_REVOLUTIONS`] revolutions is a [`TooShort`].
+pub fn waterfall(
+    t: &[f64],
+    x: &[f64],
+    y: &[f64],
+    speed: &[f64],
+    dt: f64,
+) -> Result<Waterfall, TooShort> {
     let n = t.len().min(x.len()).min(y.len()).min(speed.len());
-    let windows = 40.min(n / 64).max(1);
-    let len = n / windows;
+    let angle = spin_angle(&t[..n], &speed[..n]);
+    let revolutions = angle.last().copied().unwrap_or(0.0) / (2.0 * PI);
+    if n < 2 || too_short(revolutions) {
+        return Err(TooShort {
+            revolutions,
+            needed: MIN_REVOLUTIONS,
+        });
+    }
     let top_speed = speed[..n].iter().map(|w| w.abs()).fold(0.0, f64::max);
     let f_top = band_limit(1.5 * top_speed / (2.0 * PI), dt);
     let freqs = frequency_grid(-f_top, f_top, WATERFALL_FREQUENCIES);
-    let rows = (0..windows)
-        .map(|w| {
-            let r = w * len..(w + 1) * len;
-            let amplitudes = full_spectrum(&t[r.clone()], &x[r.clone()], &y[r.clone()], &freqs);
-            let speed = speed[r].iter().sum::<f64>() / len as f64;
-            let peak = peak_frequency(&freqs, &amplitudes);
+    let spacing = freqs[1] - freqs[0];
+    let rows = window_ranges(&angle, revolutions)
+        .into_iter()
+        .map(|r| {
+            let window = analyse(t, x, y, speed, &angle, r, spacing);
             WaterfallRow {
-                speed,
-                amplitudes,
-                peak,
+                speed: window.speed,
+                amplitudes: freqs.iter().map(|&f| window.spectrum.at(f)).collect(),
+                peak: window.peak.map(|p| (p.frequency, p.amplitude)),
+                window,
             }
         })
         .collect();
-    Waterfall { freqs, rows }
+    Ok(Waterfall { freqs, rows })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Samples `0, dt, …` up to `duration` (s), not a power of two in length.
+    fn times(duration: f64, dt: f64) -> Vec<f64> {
+        (0..=(duration / dt).round() as usize)
+            .map(|k| k as f64 * dt)
+            .collect()
+    }
+
+    /// A synchronous elliptical orbit at constant `speed` (rad/s): forward
+    /// circle 10 µm, backward circle 3 µm, offset (−4, 7) µm.
+    fn synchronous(t: &[f64], speed: f64) -> (Vec<f64>, Vec<f64>) {
+        t.iter()
+            .map(|t| {
+                let p = speed * t + 0.3;
+                (
+                    -4e-6 + 1e-5 * p.cos() + 3e-6 * (-p).cos(),
+                    7e-6 + 1e-5 * p.sin() + 3e-6 * (-p).sin(),
+                )
+            })
+            .unzip()
+    }
 
     #[test]
     fn forward_and_backward_circles_are_told_apart() {
@@ -216,39 +614,237 @@ mod tests {
     }
 
     #[test]
+    fn refined_fft_peak_within_a_thousandth_of_the_resolution() {
+        // 1.37 s every 0.7 ms (1958 samples): resolution 1/T = 0.73 Hz. Circles
+        // of radius 5 µm at frequencies a tenth of a bin apart, both directions.
+        let (dt, n) = (7e-4, 1958);
+        let t: Vec<f64> = (0..n).map(|k| k as f64 * dt).collect();
+        let resolution = 1.0 / (n as f64 * dt);
+        for k in 0..10 {
+            for sign in [1.0, -1.0] {
+                let f = sign * (31.0 + 0.1 * k as f64) * resolution;
+                let (x, y): (Vec<f64>, Vec<f64>) = t
+                    .iter()
+                    .map(|t| {
+                        let p = 2.0 * PI * f * t;
+                        (5e-6 * p.cos(), 5e-6 * p.sin())
+                    })
+                    .unzip();
+                let peak = Spectrum::new(&x, &y, dt, ZERO_PADDING * n).peak().unwrap();
+                assert!(
+                    (peak.frequency - f).abs() < 1e-3 * resolution,
+                    "{f} Hz: {} Hz",
+                    peak.frequency
+                );
+                assert!(
+                    (peak.amplitude - 5e-6).abs() < 1e-3 * 5e-6,
+                    "{f} Hz: {peak:?}"
+                );
+            }
+        }
+        assert!(Spectrum::new(&[0.0; 8], &[0.0; 8], dt, 64).peak().is_none());
+    }
+
+    #[test]
+    fn pure_synchronous_response_is_one_times_running_speed_at_any_speed_and_length() {
+        // (rpm, duration s, time step s): dyadic and non-dyadic lengths, 20.6 to 50 revolutions.
+        for (rpm, duration, dt) in [
+            (3000.0, 0.5, 1e-4),
+            (3000.0, 1.0, 1e-4),
+            (150.0, 8.25, 1e-3),
+            (150.0, 12.0, 5e-3),
+            (1234.0, 1.37, 7e-5),
+            (9000.0, 0.137, 3e-5),
+        ] {
+            let speed = rpm * PI / 30.0;
+            let t = times(duration, dt);
+            let (x, y) = synchronous(&t, speed);
+            let w = vec![speed; t.len()];
+            let s = record_spectrum(&t, &x, &y, &w).unwrap();
+            let order = s.order().unwrap();
+            assert!(
+                (order - 1.0).abs() < 1e-3,
+                "{rpm} rpm {duration} s: {order}"
+            );
+            let amplitude = s.peak.unwrap().amplitude;
+            assert!((amplitude - 1e-5).abs() < 2e-8, "{rpm} rpm: {amplitude}");
+            let wf = waterfall(&t, &x, &y, &w, dt).unwrap();
+            for row in &wf.rows {
+                let order = row.peak_order().unwrap();
+                assert!(
+                    (order - 1.0).abs() < 0.01,
+                    "{rpm} rpm {duration} s: {order}"
+                );
+                assert!(row.window.revolutions >= MIN_REVOLUTIONS, "{rpm}");
+                assert!(row.window.subsynchronous_share < 1e-4, "{rpm}");
+            }
+        }
+    }
+
+    #[test]
+    fn half_speed_whirl_is_half_times_running_speed() {
+        // 10 000 rpm for 0.2 s (33 revolutions): forward 0.5× whirl of 40 µm over a 1× of 10 µm.
+        let speed = 10_000.0 * PI / 30.0;
+        let t = times(0.2, 3e-5);
+        let (x1, y1) = synchronous(&t, speed);
+        let x: Vec<f64> = t
+            .iter()
+            .zip(&x1)
+            .map(|(t, x)| x + 4e-5 * (0.5 * speed * t).cos())
+            .collect();
+        let y: Vec<f64> = t
+            .iter()
+            .zip(&y1)
+            .map(|(t, y)| y + 4e-5 * (0.5 * speed * t).sin())
+            .collect();
+        let w = vec![speed; t.len()];
+        let s = record_spectrum(&t, &x, &y, &w).unwrap();
+        assert!((s.order().unwrap() - 0.5).abs() < 1e-3, "{:?}", s.order());
+        // Energy 40² at 0.5× against 10² + 3² at ±1×.
+        let expected = 1600.0 / (1600.0 + 100.0 + 9.0);
+        assert!(
+            (s.subsynchronous_share - expected).abs() < 2e-3,
+            "{}",
+            s.subsynchronous_share
+        );
+    }
+
+    #[test]
+    fn subsynchronous_share_of_known_mixtures() {
+        let speed_hz = 50.0;
+        let t = times(0.6, 1e-4);
+        let circle = |f: f64, r: f64| -> (Vec<f64>, Vec<f64>) {
+            t.iter()
+                .map(|t| (r * (2.0 * PI * f * t).cos(), r * (2.0 * PI * f * t).sin()))
+                .unzip()
+        };
+        let (x1, y1) = circle(speed_hz, 1e-5);
+        let (xh, yh) = circle(-0.4 * speed_hz, 1e-5);
+        assert!(subsynchronous_share(&t, &x1, &y1, speed_hz) < 1e-4);
+        assert!(subsynchronous_share(&t, &xh, &yh, speed_hz) > 1.0 - 1e-4);
+        let x: Vec<f64> = x1.iter().zip(&xh).map(|(a, b)| a + b).collect();
+        let y: Vec<f64> = y1.iter().zip(&yh).map(|(a, b)| a + b).collect();
+        // Equal circles at 1× and at −0.4× (backward): half the energy each.
+        let share = subsynchronous_share(&t, &x, &y, speed_hz);
+        assert!((share - 0.5).abs() < 1e-3, "{share}");
+        assert_eq!(
+            subsynchronous_share(&t, &vec![1.0; t.len()], &vec![2.0; t.len()], 50.0),
+            0.0
+        );
+    }
+
+    #[test]
+    fn records_under_twenty_revolutions_are_refused() {
+        // 3000 rpm for 0.39 s: 19.5 revolutions.
+        let speed = 3000.0 * PI / 30.0;
+        let t = times(0.39, 1e-4);
+        let (x, y) = synchronous(&t, speed);
+        let w = vec![speed; t.len()];
+        let short = record_spectrum(&t, &x, &y, &w).unwrap_err();
+        assert!((short.revolutions - 19.5).abs() < 1e-9, "{short:?}");
+        assert_eq!(short.to_string(), "too short: 19.5 revolutions < 20");
+        assert_eq!(waterfall(&t, &x, &y, &w, 1e-4).unwrap_err(), short);
+        let almost = TooShort {
+            revolutions: 19.97,
+            needed: MIN_REVOLUTIONS,
+        };
+        assert_eq!(almost.to_string(), "too short: 19.9 revolutions < 20");
+        // 1500 rpm for 0.8 s: 20 revolutions up to the round-off of the time steps.
+        let slow = 1500.0 * PI / 30.0;
+        let t20 = times(0.8, 1e-4);
+        let (x20, y20) = synchronous(&t20, slow);
+        let w20 = vec![slow; t20.len()];
+        let s = record_spectrum(&t20, &x20, &y20, &w20).unwrap();
+        assert!((s.revolutions - 20.0).abs() < 1e-9 && (s.order().unwrap() - 1.0).abs() < 1e-3);
+        assert_eq!(
+            waterfall(&t20, &x20, &y20, &w20, 1e-4).unwrap().rows.len(),
+            1
+        );
+        let still = vec![0.0; t.len()];
+        assert_eq!(
+            record_spectrum(&t, &x, &y, &still).unwrap_err().revolutions,
+            0.0
+        );
+    }
+
+    #[test]
+    fn waterfall_windows_hold_twenty_revolutions_and_overlap_by_half() {
+        // Constant 3000 rpm for 1 s: 50 revolutions, ⌈30/10⌉ + 1 = 4 windows.
+        let speed = 3000.0 * PI / 30.0;
+        let t = times(1.0, 1e-4);
+        let (x, y) = synchronous(&t, speed);
+        let w = vec![speed; t.len()];
+        let wf = waterfall(&t, &x, &y, &w, 1e-4).unwrap();
+        assert_eq!(wf.rows.len(), 4);
+        assert_eq!(wf.freqs.len(), WATERFALL_FREQUENCIES);
+        assert!((wf.freqs[WATERFALL_FREQUENCIES - 1] - 75.0).abs() < 1e-9);
+        let starts: Vec<f64> = wf.rows.iter().map(|r| r.window.start).collect();
+        for (k, s) in starts.iter().enumerate() {
+            assert!((s - 0.2 * k as f64).abs() < 1.5e-4, "{starts:?}");
+        }
+        assert!((wf.rows[3].window.end - 1.0).abs() < 1e-12);
+        for row in &wf.rows {
+            assert!((row.window.revolutions - 20.0).abs() < 0.01, "{row:?}");
+            let (_, a) = row.peak.unwrap();
+            let shown = row.amplitudes.iter().fold(0.0f64, |m, v| m.max(*v));
+            assert!(
+                (a - 1e-5).abs() < 1e-8 && (shown - a).abs() < 1e-3 * a,
+                "{a} {shown}"
+            );
+        }
+        // Exactly 20 revolutions: one window, the whole run.
+        let t = times(0.4, 1e-4);
+        let (x, y) = synchronous(&t, speed);
+        let wf = waterfall(&t, &x, &y, &w[..t.len()], 1e-4).unwrap();
+        assert_eq!(wf.rows.len(), 1);
+    }
+
+    #[test]
+    fn ramp_windows_are_twenty_revolutions_so_slow_parts_last_longer() {
+        // Run-up 600 → 6000 rpm over 2 s with a synchronous response.
+        let dt = 1e-4;
+        let t = times(2.0, dt);
+        let speed: Vec<f64> = t.iter().map(|t| (600.0 + 2700.0 * t) * PI / 30.0).collect();
+        let angle: Vec<f64> = t
+            .iter()
+            .map(|t| (600.0 * t + 1350.0 * t * t) * PI / 30.0)
+            .collect();
+        let x: Vec<f64> = angle.iter().map(|p| 1e-5 * p.cos()).collect();
+        let y: Vec<f64> = angle.iter().map(|p| 1e-5 * p.sin()).collect();
+        let wf = waterfall(&t, &x, &y, &speed, dt).unwrap();
+        // 110 revolutions: ⌈90/10⌉ + 1 = 10 windows.
+        assert_eq!(wf.rows.len(), 10);
+        let first = &wf.rows[0].window;
+        let last = &wf.rows[9].window;
+        assert!(first.end - first.start > 2.0 * (last.end - last.start));
+        for row in &wf.rows {
+            assert!(row.window.revolutions >= MIN_REVOLUTIONS);
+            let order = row.peak_order().unwrap();
+            assert!(
+                (order - 1.0).abs() < 0.02,
+                "{} rpm: {order}",
+                row.speed * 30.0 / PI
+            );
+        }
+        assert!(wf.rows.windows(2).all(|p| p[1].speed > p[0].speed));
+    }
+
+    #[test]
+    fn a_long_run_is_spread_over_at_most_sixty_windows() {
+        // 3000 rpm for 20 s: 1000 revolutions.
+        let speed = 3000.0 * PI / 30.0;
+        let t = times(20.0, 1e-3);
+        let (x, y) = synchronous(&t, speed);
+        let w = vec![speed; t.len()];
+        let wf = waterfall(&t, &x, &y, &w, 1e-3).unwrap();
+        assert_eq!(wf.rows.len(), MAX_WINDOWS);
+        assert!((wf.rows[MAX_WINDOWS - 1].window.end - 20.0).abs() < 1e-9);
+    }
+
+    #[test]
     fn band_limit_clamps_to_one_hertz_and_nyquist() {
         assert_eq!(band_limit(0.2, 1e-3), 1.0);
         assert_eq!(band_limit(120.0, 1e-3), 120.0);
         assert_eq!(band_limit(900.0, 1e-3), 500.0);
-    }
-
-    #[test]
-    fn waterfall_follows_a_speed_step() {
-        // 2 s at 2 kHz: synchronous forward circle, spin 20 Hz then 40 Hz.
-        let dt = 5e-4;
-        let t: Vec<f64> = (0..4000).map(|k| k as f64 * dt).collect();
-        let speed: Vec<f64> = t
-            .iter()
-            .map(|&t| 2.0 * PI * if t < 1.0 { 20.0 } else { 40.0 })
-            .collect();
-        let mut angle = 0.0;
-        let (mut x, mut y) = (Vec::new(), Vec::new());
-        for w in &speed {
-            x.push(1e-5 * f64::cos(angle));
-            y.push(1e-5 * f64::sin(angle));
-            angle += w * dt;
-        }
-        let wf = waterfall(&t, &x, &y, &speed, dt);
-        assert_eq!(wf.rows.len(), 40);
-        assert_eq!(wf.freqs.len(), WATERFALL_FREQUENCIES);
-        assert!((wf.freqs[WATERFALL_FREQUENCIES - 1] - 60.0).abs() < 1e-9);
-        let spacing = wf.freqs[1] - wf.freqs[0];
-        for (k, row) in wf.rows.iter().enumerate() {
-            let f_spin = if k < 20 { 20.0 } else { 40.0 };
-            assert!((row.speed - 2.0 * PI * f_spin).abs() < 1e-9, "{k}");
-            let (f, _) = row.peak.unwrap();
-            assert!((f - f_spin).abs() < spacing, "window {k}: {f} Hz");
-            assert!((row.peak_order().unwrap() - 1.0).abs() < 0.02, "{k}");
-        }
     }
 }

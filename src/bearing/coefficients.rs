@@ -99,6 +99,7 @@ mod tests {
             length: 0.03,
             clearance: 1e-4,
             viscosity: 0.02,
+            contact: None,
         });
         let curve: Vec<DimensionlessPoint> = dimensionless_curve(&kind, 314.159, 12)
             .unwrap()

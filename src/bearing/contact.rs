@@ -59,6 +59,25 @@ pub struct ContactReport {
     pub friction_torque: f64,
 }
 
+impl ContactReport {
+    /// Apart or just touching: penetration `delta` (m), no force.
+    fn penetration(delta: f64) -> Self {
+        Self {
+            penetration: delta,
+            ..Self::default()
+        }
+    }
+}
+
+/// Zero force and Jacobians (no contact).
+fn no_force() -> BearingForce {
+    BearingForce {
+        force: Vector2::zeros(),
+        stiffness: Matrix2::zeros(),
+        damping: Matrix2::zeros(),
+    }
+}
+
 /// Why a contact law's parameters are not physical.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ContactError {
@@ -75,7 +94,7 @@ impl ContactLaw {
     /// Default smoothing length as a fraction of the gap.
     pub const SMOOTHING_PER_GAP: f64 = 1e-3;
     /// Default regularization velocity of the friction sign (m/s).
-    pub const SLIP_VELOCITY: f64 = 1e-3;
+    pub const SLIP_VELOCITY: f64 = 1e-2;
     /// Default contact time constant `c/k` (s) of the contact damping.
     pub const DAMPING_TIME: f64 = 1e-5;
 
@@ -193,28 +212,50 @@ impl ContactLaw {
 
     /// Contact force on the journal with `K = −∂F/∂p`, `C = −∂F/∂ṗ`, at position
     /// `position` (m) and velocity `velocity` (m/s) relative to the stator
-    /// centre and spin `speed` (rad/s).
+    /// centre and spin `speed` (rad/s): contact with the circle of radius `gap`.
     pub fn evaluate(
         &self,
         position: Vector2<f64>,
         velocity: Vector2<f64>,
         speed: f64,
     ) -> (BearingForce, ContactReport) {
-        let zero = BearingForce {
-            force: Vector2::zeros(),
-            stiffness: Matrix2::zeros(),
-            damping: Matrix2::zeros(),
-        };
         let r = position.norm();
-        let delta = r - self.gap;
-        let mut report = ContactReport {
-            penetration: delta,
-            ..ContactReport::default()
-        };
-        if delta <= 0.0 {
-            return (zero, report);
+        if r <= self.gap {
+            return (no_force(), ContactReport::penetration(r - self.gap));
         }
-        let n = position / r;
+        self.evaluate_on(position / r, r - self.gap, 1.0 / r, velocity, speed)
+    }
+
+    /// Contact with a straight stator edge of outward normal `normal` (unit) at
+    /// distance `gap` from the centre: penetration `δ = n·p − g`, the normal
+    /// does not turn with `p` (a pad's leading or trailing edge).
+    pub fn evaluate_edge(
+        &self,
+        normal: Vector2<f64>,
+        position: Vector2<f64>,
+        velocity: Vector2<f64>,
+        speed: f64,
+    ) -> (BearingForce, ContactReport) {
+        let delta = normal.dot(&position) - self.gap;
+        if delta <= 0.0 {
+            return (no_force(), ContactReport::penetration(delta));
+        }
+        self.evaluate_on(normal, delta, 0.0, velocity, speed)
+    }
+
+    /// The contact law at penetration `delta > 0` along the outward normal `n`
+    /// of a surface of curvature `kappa` (1/m; `1/r` for the circle, 0 for a
+    /// flat edge), so that `∂n/∂p = κ t tᵀ` and `∂t/∂p = −κ n tᵀ`.
+    fn evaluate_on(
+        &self,
+        n: Vector2<f64>,
+        delta: f64,
+        kappa: f64,
+        velocity: Vector2<f64>,
+        speed: f64,
+    ) -> (BearingForce, ContactReport) {
+        let zero = no_force();
+        let mut report = ContactReport::penetration(delta);
         let t = Vector2::new(-n.y, n.x);
         let delta_rate = n.dot(&velocity);
         let (s, ds) = self.penalty(delta);
@@ -236,13 +277,14 @@ impl ContactLaw {
         // F = −N (n + μ φ t).
         let dir = n + t * (mu * phi);
         let force = -dir * normal;
-        // ∂N/∂p = (k s' + c w' δ̇) nᵀ + c w (ṗ·t)/r tᵀ,  ∂N/∂ṗ = c w nᵀ.
+        // ∂N/∂p = (k s' + c w' δ̇) nᵀ + c w κ (ṗ·t) tᵀ,  ∂N/∂ṗ = c w nᵀ.
         let dn_dp = n.transpose() * (self.stiffness * ds + self.damping * dw * delta_rate)
-            + t.transpose() * (self.damping * w * v_t / r);
+            + t.transpose() * (self.damping * w * v_t * kappa);
         let dn_dv = n.transpose() * (self.damping * w);
-        // ∂n/∂p = t tᵀ/r, ∂t/∂p = −n tᵀ/r, ∂v_s/∂p = −(ṗ·n) tᵀ/r, ∂v_s/∂ṗ = tᵀ.
+        // ∂n/∂p = κ t tᵀ, ∂t/∂p = −κ n tᵀ, ∂v_s/∂p = −κ (ṗ·n) tᵀ, ∂v_s/∂ṗ = tᵀ.
         let ttt = t * t.transpose();
-        let ddir_dp = ttt / r - n * t.transpose() * (mu * phi / r) - ttt * (mu * dphi * v_n / r);
+        let ddir_dp =
+            ttt * kappa - n * t.transpose() * (mu * phi * kappa) - ttt * (mu * dphi * v_n * kappa);
         let ddir_dv = ttt * (mu * dphi);
         let df_dp = -(dir * dn_dp) - ddir_dp * normal;
         let df_dv = -(dir * dn_dv) - ddir_dv * normal;
@@ -309,6 +351,46 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn edge_contact_jacobians_match_finite_differences() {
+        let l = law();
+        let normal = at(-1.9, 1.0);
+        let along = at(-1.9 + FRAC_PI_2, 1.0);
+        let cases = [
+            (
+                normal * (l.gap + 4e-7) + along * 2e-5,
+                Vector2::new(1e-3, -2e-3),
+                120.0,
+            ),
+            (
+                normal * (l.gap + 5e-8) - along * 3e-5,
+                Vector2::new(-3e-3, 1e-3),
+                0.0,
+            ),
+        ];
+        for (p, v, speed) in cases {
+            let (f, rep) = l.evaluate_edge(normal, p, v, speed);
+            assert!(rep.normal_force > 0.0);
+            let scale = f.force.norm().max(1.0);
+            for j in 0..2 {
+                let mut e = Vector2::zeros();
+                e[j] = 1.0;
+                let d = |dp: f64, dv: f64| l.evaluate_edge(normal, p + e * dp, v + e * dv, speed).0;
+                for i in 0..2 {
+                    let k_fd = -(d(1e-11, 0.0).force[i] - d(-1e-11, 0.0).force[i]) / 2e-11;
+                    let c_fd = -(d(0.0, 1e-7).force[i] - d(0.0, -1e-7).force[i]) / 2e-7;
+                    let (k, c) = (f.stiffness[(i, j)], f.damping[(i, j)]);
+                    assert!((k - k_fd).abs() <= 1e-5 * scale / l.smoothing + 1e-6 * k.abs());
+                    assert!((c - c_fd).abs() <= 1e-5 * scale / l.slip_velocity + 1e-6 * c.abs());
+                }
+            }
+        }
+        // Apart from the edge: nothing.
+        let (f, rep) = l.evaluate_edge(normal, at(-1.9, 0.9 * l.gap), Vector2::zeros(), 10.0);
+        assert_eq!(f.force, Vector2::zeros());
+        assert!(rep.penetration < 0.0);
     }
 
     #[test]

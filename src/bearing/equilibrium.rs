@@ -227,7 +227,7 @@ pub fn coefficient_points(
             };
             let point = eq.map(|eq| {
                 let (stiffness, damping) = condensed_coefficients(&eq.eval, speed);
-                let report = bearing.report(&eq.q, speed, &eq.eval);
+                let report = bearing.report(&eq.q, &vec![0.0; eq.q.len()], speed, &eq.eval);
                 previous = Some(eq.q);
                 CoefficientPoint {
                     load: w,

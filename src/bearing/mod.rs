@@ -4,6 +4,9 @@
 //! Every bearing kind implements [`Bearing`]; the assembly and the solvers only
 //! see that trait. Sign conventions: the force acts **on the journal**;
 //! `K = −∂F/∂(x, y)` and `C = −∂F/∂(ẋ, ẏ)`, so a plain spring has positive `K`.
+//! Fluid-film bearings include the metal-to-metal contact of the journal with
+//! the bushing or the pads ([`contact`]), so they give a finite force for every
+//! finite state: the film at and beyond `ε = 1` is defined in [`plain`].
 //!
 //! Evaluating a plain journal bearing (short-bearing theory) with the journal
 //! below the centre at eccentricity ratio ε = 0.5, spinning at 3000 rpm:
@@ -16,6 +19,7 @@
 //!     length: 0.03,     // m
 //!     clearance: 1e-4,  // m
 //!     viscosity: 0.02,  // Pa·s
+//!     contact: None,    // steel contact law of this geometry at ε = 1
 //! };
 //! let speed = 3000.0 * std::f64::consts::PI / 30.0; // rad/s
 //! let q = [0.0, -0.5e-4]; // journal position (m)
@@ -27,7 +31,7 @@
 //! // (attitude angle), with positive direct stiffness and damping.
 //! assert!(f.force.y > 0.0 && f.force.x.abs() > 0.0);
 //! assert!(f.stiffness[(1, 1)] > 0.0 && f.damping[(0, 0)] > 0.0);
-//! let report = bearing.report(&q, speed, &eval);
+//! let report = bearing.report(&q, &qdot, speed, &eval);
 //! assert!((report.eccentricity - 0.5).abs() < 1e-12);
 //! # Ok::<(), rotor_bearing::bearing::BearingError>(())
 //! ```
@@ -38,12 +42,14 @@ pub mod equilibrium;
 pub mod film;
 pub mod linear;
 pub mod plain;
+pub mod rub;
 pub mod tilting_pad;
 
 use nalgebra::{Matrix2, Vector2};
 
 pub use linear::LinearBearing;
 pub use plain::PlainBearing;
+pub use rub::RubElement;
 pub use tilting_pad::TiltingPadBearing;
 
 /// Position and velocity of a journal centre relative to the bearing centre.
@@ -85,12 +91,6 @@ pub enum BearingError {
     /// State vectors of the wrong length.
     #[error("bearing state has {found} coordinates, expected {expected}")]
     Dimension { expected: usize, found: usize },
-    /// The journal reached or passed the clearance circle, where the film model
-    /// has no meaning (journal–bearing contact).
-    #[error(
-        "journal at eccentricity ratio {eccentricity:.6} reached the clearance circle (ε ≥ 1): the oil film has broken down (contact)"
-    )]
-    ClearanceExceeded { eccentricity: f64 },
 }
 
 /// Quantities a bearing reports besides its force (for outputs and coupling).
@@ -100,12 +100,16 @@ pub struct BearingReport {
     pub eccentricity: f64,
     /// Attitude angle (rad): from the load line to the eccentricity vector, in the spin direction.
     pub attitude_angle: f64,
-    /// Minimum film thickness `C (1 − ε)` (m); zero without a film.
+    /// Minimum film thickness `C (1 − ε)` (m), zero in contact or without a film.
     pub min_film_thickness: f64,
-    /// Viscous friction torque on the journal, opposing the spin (N·m).
+    /// Friction torque on the journal, opposing the spin (N·m): film shear plus
+    /// contact friction `μ N R` (at standstill the breakaway torque).
     pub friction_torque: f64,
-    /// Power dissipated in the film (W).
+    /// Power dissipated in the film and the contact friction (W).
     pub power_loss: f64,
+    /// Normal force of the journal's metal-to-metal contact (N); zero while
+    /// the journal floats. For tilting pads the magnitude of the resultant over the pads.
+    pub contact_force: f64,
 }
 
 /// Generalized forces and Jacobians of a bearing with `n = 2 + m` coordinates
@@ -231,9 +235,17 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
         internal.fill(0.0);
     }
 
-    /// Eccentricity, attitude angle, film thickness and friction at `q`, with `eval`
-    /// the evaluation there.
-    fn report(&self, _q: &[f64], _speed: f64, _eval: &BearingEval) -> BearingReport {
+    /// Where a journal pushed along the unit vector `direction` comes to rest
+    /// when its film carries nothing: the distance (m) from the bearing centre
+    /// at which it touches and the contact stiffness (N/m) there; `None` for a
+    /// bearing without contact (a linear one).
+    fn resting_contact(&self, _direction: [f64; 2]) -> Option<(f64, f64)> {
+        None
+    }
+
+    /// Eccentricity, attitude angle, film thickness, contact and friction at
+    /// `q`, `q̇`, with `eval` the evaluation there.
+    fn report(&self, _q: &[f64], _qdot: &[f64], _speed: f64, _eval: &BearingEval) -> BearingReport {
         BearingReport::default()
     }
 }
@@ -302,6 +314,8 @@ pub enum BearingKind {
     Plain(PlainBearing),
     /// Tilting-pad journal bearing, short-bearing film on each pad.
     TiltingPad(TiltingPadBearing),
+    /// Rub element (`[[rubs]]`): contact with a stator ring only.
+    Rub(RubElement),
 }
 
 impl BearingKind {
@@ -313,10 +327,17 @@ impl BearingKind {
             }
             BearingKind::Plain(b) => Box::new(*b),
             BearingKind::TiltingPad(b) => Box::new(b.clone()),
+            BearingKind::Rub(r) => Box::new(*r),
         }
     }
 
-    /// Whether the force depends nonlinearly on the journal state (a fluid film).
+    /// Whether this is a rub element rather than a bearing.
+    pub fn is_rub(&self) -> bool {
+        matches!(self, BearingKind::Rub(_))
+    }
+
+    /// Whether the force depends nonlinearly on the journal state (a fluid film
+    /// or a rub).
     pub fn is_nonlinear(&self) -> bool {
         !matches!(self, BearingKind::Linear { .. })
     }
@@ -325,7 +346,7 @@ impl BearingKind {
     /// For tilting pads the clearance is the pad (machined) clearance.
     pub fn film_geometry(&self) -> Option<FilmGeometry> {
         let (radius, length, clearance, viscosity) = match self {
-            BearingKind::Linear { .. } => return None,
+            BearingKind::Linear { .. } | BearingKind::Rub(_) => return None,
             BearingKind::Plain(b) => (b.radius, b.length, b.clearance, b.viscosity),
             BearingKind::TiltingPad(b) => (b.radius, b.length, b.clearance, b.viscosity),
         };
@@ -345,7 +366,7 @@ impl BearingKind {
     /// Set the oil viscosity (Pa·s); `false` (and nothing changed) for a linear bearing.
     pub fn set_viscosity(&mut self, viscosity: f64) -> bool {
         match self {
-            BearingKind::Linear { .. } => return false,
+            BearingKind::Linear { .. } | BearingKind::Rub(_) => return false,
             BearingKind::Plain(b) => b.viscosity = viscosity,
             BearingKind::TiltingPad(b) => b.viscosity = viscosity,
         }
@@ -353,13 +374,14 @@ impl BearingKind {
     }
 
     /// Radial clearance (m) the journal moves in: the bushing clearance of a plain
-    /// bearing, the assembled clearance `C (1 − preload)` of tilting pads; `None`
-    /// for a linear bearing.
+    /// bearing, the assembled clearance `C (1 − preload)` of tilting pads, the
+    /// radial gap of a rub element; `None` for a linear bearing.
     pub fn journal_clearance(&self) -> Option<f64> {
         match self {
             BearingKind::Linear { .. } => None,
             BearingKind::Plain(b) => Some(b.clearance),
             BearingKind::TiltingPad(b) => Some(b.assembled_clearance()),
+            BearingKind::Rub(r) => Some(r.contact.gap),
         }
     }
 }

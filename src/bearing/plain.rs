@@ -18,17 +18,50 @@
 //! `−K_y· = c [ω Φ_yy + (A Φ_xyy − B Φ_xxy)/C, −ω Φ_xy + (A Φ_yyy − B Φ_xyy)/C]`.
 //! Nothing divides by ω: at ω = 0 this is the pure squeeze film.
 //!
-//! At and beyond the clearance circle (`ε ≥ 1`) the film has no meaning: the
-//! bearing reports [`BearingError::ClearanceExceeded`] instead of a number.
+//! **Near and in contact** (`ε → 1` and beyond) the short-bearing film grows
+//! without bound (`∝ (1 − ε²)^-2`) and has no meaning at `ε ≥ 1`, where the
+//! journal touches the bushing. The film is therefore evaluated at a *saturated*
+//! journal position ([`film_position`]): the actual one up to
+//! [`FILM_SATURATION_START`], then radially
+//! `ε_f = ε_∞ − (ε_∞ − ε_a) exp(−(ε − ε_a)/(ε_∞ − ε_a))`, C¹ at `ε_a` and below
+//! [`FILM_SATURATION_LIMIT`] for every `ε`, so force, Jacobians and friction stay
+//! finite and continuous at and beyond contact (a film thinner than
+//! `(1 − ε_∞) C` — surface roughness — carries no more than that). The bushing
+//! itself acts through the contact law ([`super::contact`]) from `ε = 1` on.
 
 use std::f64::consts::PI;
 
 use nalgebra::{Matrix2, Vector2};
 
+use super::contact::{ContactLaw, ContactReport};
 use super::film::FilmIntegrals;
 use super::{
     Bearing, BearingError, BearingEval, BearingForce, BearingReport, JournalState, check_state,
 };
+
+/// Eccentricity ratio `ε_a` up to which the film sees the actual journal position.
+pub const FILM_SATURATION_START: f64 = 0.97;
+/// Eccentricity ratio `ε_∞` the saturated film position tends to as the journal
+/// goes on into contact.
+pub const FILM_SATURATION_LIMIT: f64 = 0.995;
+
+/// The journal position the film is evaluated at (m) for the actual `position`
+/// (m) in a clearance `clearance` (m), and its Jacobian
+/// `J = ∂p_f/∂p = ρ' n nᵀ + (ρ/ε)(I − n nᵀ)` (see the module docs; the identity
+/// up to [`FILM_SATURATION_START`]).
+pub fn film_position(position: Vector2<f64>, clearance: f64) -> (Vector2<f64>, Matrix2<f64>) {
+    let eps = position.norm() / clearance;
+    if eps <= FILM_SATURATION_START {
+        return (position, Matrix2::identity());
+    }
+    let span = FILM_SATURATION_LIMIT - FILM_SATURATION_START;
+    let decay = (-(eps - FILM_SATURATION_START) / span).exp();
+    let rho = FILM_SATURATION_LIMIT - span * decay;
+    let n = position / position.norm();
+    let nnt = n * n.transpose();
+    let jac = nnt * decay + (Matrix2::identity() - nnt) * (rho / eps);
+    (n * (rho * clearance), jac)
+}
 
 /// Geometry and lubricant of a plain journal bearing (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -41,6 +74,9 @@ pub struct PlainBearing {
     pub clearance: f64,
     /// Dynamic viscosity `μ` (Pa·s).
     pub viscosity: f64,
+    /// Journal–bushing contact at `ε ≥ 1`; `None`: the steel default
+    /// [`ContactLaw::steel`] for this geometry (gap = clearance).
+    pub contact: Option<ContactLaw>,
 }
 
 /// Short-bearing film of radius `R`, length `L`, clearance `C`, viscosity `μ`.
@@ -82,11 +118,12 @@ impl ShortFilm {
         window: Option<&FilmWindow>,
     ) -> Result<BearingForce, BearingError> {
         let cl = self.clearance;
+        let (position, saturation) = film_position(state.position, cl);
+        let state = &JournalState {
+            position,
+            velocity: state.velocity,
+        };
         let (x, y) = (state.position.x / cl, state.position.y / cl);
-        let eccentricity = x.hypot(y);
-        if eccentricity >= 1.0 {
-            return Err(BearingError::ClearanceExceeded { eccentricity });
-        }
         let (a, b) = source_coefficients(state, speed);
         // The positive-pressure half circle [α, α + π], α = atan2(B, A) + π, has
         // its ends' sines and cosines without trigonometry:
@@ -150,7 +187,7 @@ impl ShortFilm {
         let dfy_dy = c * (-speed * f.xy + (a * f.yyy - b * f.xyy) / cl);
         let out = BearingForce {
             force,
-            stiffness: -Matrix2::new(dfx_dx, dfx_dy, dfy_dx, dfy_dy),
+            stiffness: -Matrix2::new(dfx_dx, dfx_dy, dfy_dx, dfy_dy) * saturation,
             damping: Matrix2::new(f.xx, f.xy, f.xy, f.yy) * (2.0 * c),
         };
         let finite = out
@@ -162,7 +199,10 @@ impl ShortFilm {
         if finite {
             Ok(out)
         } else {
-            Err(BearingError::ClearanceExceeded { eccentricity })
+            Err(BearingError::NotFinite {
+                what: "film force",
+                value: out.force.norm(),
+            })
         }
     }
 
@@ -176,13 +216,8 @@ impl ShortFilm {
         speed: f64,
         window: Option<&FilmWindow>,
     ) -> f64 {
-        let (x, y) = (
-            state.position.x / self.clearance,
-            state.position.y / self.clearance,
-        );
-        if x.hypot(y) >= 1.0 {
-            return f64::INFINITY;
-        }
+        let (position, _) = film_position(state.position, self.clearance);
+        let (x, y) = (position.x / self.clearance, position.y / self.clearance);
         // Over the whole circle the antiderivative's atan terms cancel:
         // `∫₀^{2π} dθ/H = 2π/√(1 − ε²)`.
         let phi = match window {
@@ -205,6 +240,12 @@ impl PlainBearing {
         }
     }
 
+    /// The journal–bushing contact law (gap = the clearance).
+    pub fn contact_law(&self) -> ContactLaw {
+        self.contact
+            .unwrap_or_else(|| ContactLaw::steel(self.clearance, self.radius, self.length))
+    }
+
     /// Force on the journal and its 2×2 Jacobians at `state`, spin `speed` (rad/s).
     pub fn force_and_jacobian(
         &self,
@@ -214,8 +255,8 @@ impl PlainBearing {
         super::journal_force(self, state, speed)
     }
 
-    /// Eccentricity, attitude angle, film thickness and friction at `state`, with
-    /// `force` the film force there.
+    /// Eccentricity, attitude angle, film thickness, contact and friction at
+    /// `state`, with `force` the bearing force there.
     pub fn journal_report(
         &self,
         state: &JournalState,
@@ -223,15 +264,31 @@ impl PlainBearing {
         force: &Vector2<f64>,
     ) -> BearingReport {
         let eccentricity = state.position.norm() / self.clearance;
-        let friction_torque = self.film().friction_torque(state, speed, None);
+        let (_, contact) = self
+            .contact_law()
+            .evaluate(state.position, state.velocity, speed);
+        let friction_torque = self.film().friction_torque(state, speed, None)
+            + contact_friction_torque(&self.contact_law(), &contact, speed);
         BearingReport {
             eccentricity,
             attitude_angle: attitude_angle(&state.position, force),
-            min_film_thickness: self.clearance * (1.0 - eccentricity),
+            min_film_thickness: (self.clearance * (1.0 - eccentricity)).max(0.0),
             friction_torque,
             power_loss: friction_torque * speed,
+            contact_force: contact.normal_force,
         }
     }
+}
+
+/// Coulomb friction torque `μ N R` of a contact, opposing the spin (signed with
+/// `speed`; at standstill the breakaway torque the drive must overcome).
+pub(crate) fn contact_friction_torque(
+    law: &ContactLaw,
+    contact: &ContactReport,
+    speed: f64,
+) -> f64 {
+    let torque = law.friction * contact.normal_force * law.radius;
+    if speed < 0.0 { -torque } else { torque }
 }
 
 /// Start of the positive-pressure half circle `[α, α + π]` (rad), or `None` when
@@ -274,6 +331,10 @@ impl Bearing for PlainBearing {
         let part = self.film().force(&state, speed, None)?;
         out.clear();
         out.add_transformed(&part, None);
+        let (contact, _) = self
+            .contact_law()
+            .evaluate(state.position, state.velocity, speed);
+        out.add_transformed(&contact, None);
         Ok(())
     }
 
@@ -281,10 +342,15 @@ impl Bearing for PlainBearing {
         false
     }
 
-    fn report(&self, q: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
+    fn resting_contact(&self, _direction: [f64; 2]) -> Option<(f64, f64)> {
+        let law = self.contact_law();
+        Some((law.gap, law.stiffness))
+    }
+
+    fn report(&self, q: &[f64], qdot: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
         let state = JournalState {
             position: Vector2::new(q[0], q[1]),
-            velocity: Vector2::zeros(),
+            velocity: Vector2::new(qdot[0], qdot[1]),
         };
         self.journal_report(&state, speed, &eval.journal().force)
     }
@@ -304,6 +370,64 @@ pub fn attitude_angle(position: &Vector2<f64>, force: &Vector2<f64>) -> f64 {
 mod tests {
     use super::*;
 
+    /// The film is continuous through the start of its saturation and finite at
+    /// and beyond contact, and its closed-form stiffness there still matches
+    /// central differences of the force.
+    #[test]
+    fn film_saturates_continuously_and_stays_differentiable_into_contact() {
+        let b = PlainBearing {
+            radius: 0.05,
+            length: 0.03,
+            clearance: 1e-4,
+            viscosity: 0.02,
+            contact: None,
+        };
+        let film = b.film();
+        let speed = 314.16;
+        let dir = Vector2::new(0.28, -0.96);
+        let v = Vector2::new(2e-4, -1e-4);
+        let at = |eps: f64, dp: Vector2<f64>| {
+            let state = JournalState {
+                position: dir * eps * b.clearance + dp,
+                velocity: v,
+            };
+            film.force(&state, speed, None).unwrap()
+        };
+        let a = FILM_SATURATION_START;
+        let below = at(a * (1.0 - 1e-12), Vector2::zeros()).force;
+        let above = at(a * (1.0 + 1e-12), Vector2::zeros()).force;
+        assert!((below - above).norm() < 1e-8 * below.norm());
+        let mut previous = 0.0;
+        for eps in [0.98, 1.0, 1.01, 1.5, 10.0] {
+            let f = at(eps, Vector2::zeros());
+            let size = f.force.norm();
+            assert!(size.is_finite() && size >= previous, "ε = {eps}: {size}");
+            previous = size;
+            // A step 1e-6 C: round-off of forces of ~1e5 N is still 1e-6 below the change.
+            let h = 1e-10;
+            for j in 0..2 {
+                let mut e = Vector2::zeros();
+                e[j] = h;
+                let fd = -(at(eps, e).force - at(eps, -e).force) / (2.0 * h);
+                for i in 0..2 {
+                    let k = f.stiffness[(i, j)];
+                    assert!(
+                        (k - fd[i]).abs() < 1e-5 * f.stiffness.norm(),
+                        "ε = {eps}: K[{i}{j}] = {k:e} vs {:e}",
+                        fd[i]
+                    );
+                }
+            }
+        }
+        // The saturated position stays within the limit, and is the identity below ε_a.
+        let (p, _) = film_position(dir * 1.2 * b.clearance, b.clearance);
+        assert!(p.norm() < FILM_SATURATION_LIMIT * b.clearance);
+        let (p, _) = film_position(dir * 100.0 * b.clearance, b.clearance);
+        assert!(p.norm() <= FILM_SATURATION_LIMIT * b.clearance * (1.0 + 1e-15));
+        let (p, j) = film_position(dir * 0.5 * b.clearance, b.clearance);
+        assert_eq!((p, j), (dir * 0.5 * b.clearance, Matrix2::identity()));
+    }
+
     /// Petroff with the film-thickness correction: the full-circle Couette torque is
     /// `2π μ ω R³ L / (C √(1 − ε²))` (Hamrock, Fundamentals of Fluid Film Lubrication, eq. 8.58 without the pressure term).
     #[test]
@@ -313,9 +437,10 @@ mod tests {
             length: 0.03,
             clearance: 1e-4,
             viscosity: 0.02,
+            contact: None,
         };
         let speed = 314.16;
-        for eps in [0.0, 0.3, 0.8, 0.99] {
+        for eps in [0.0, 0.3, 0.8, 0.97] {
             let state = JournalState {
                 position: Vector2::new(0.6, -0.8) * eps * b.clearance,
                 velocity: Vector2::zeros(),

@@ -33,7 +33,9 @@ use std::f64::consts::PI;
 
 use nalgebra::Vector2;
 
-use super::plain::{FilmWindow, ShortFilm, attitude_angle};
+use super::BearingForce;
+use super::contact::{ContactLaw, ContactReport};
+use super::plain::{FilmWindow, ShortFilm, attitude_angle, contact_friction_torque};
 use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, check_state};
 
 /// Relative size of the pivot's restoring moment (see the module docs).
@@ -110,6 +112,9 @@ pub struct TiltingPadBearing {
     pub viscosity: f64,
     /// The pads.
     pub pads: Vec<Pad>,
+    /// Journal–pad contact; `None`: the steel default [`ContactLaw::steel`] for
+    /// this geometry (gap = the pad clearance, on each pad's effective position).
+    pub contact: Option<ContactLaw>,
 }
 
 impl TiltingPadBearing {
@@ -120,6 +125,41 @@ impl TiltingPadBearing {
             clearance: self.clearance,
             viscosity: self.viscosity,
         }
+    }
+
+    /// The journal–pad contact law (gap = the pad clearance `C`).
+    pub fn contact_law(&self) -> ContactLaw {
+        self.contact
+            .unwrap_or_else(|| ContactLaw::steel(self.clearance, self.radius, self.length))
+    }
+
+    /// Contact of the journal with pad `k` at the pad's effective journal state:
+    /// with the pad's circular surface (`|p_e| = C`) when the closest approach
+    /// lies on the pad's arc, else with its nearer edge (a flat contact of
+    /// normal `(cos θ_e, sin θ_e)`). Both give the same penetration and normal at
+    /// the arc's ends, so the force is continuous.
+    fn pad_contact(
+        &self,
+        law: &ContactLaw,
+        k: usize,
+        state: &JournalState,
+        speed: f64,
+    ) -> (BearingForce, ContactReport) {
+        let pad = &self.pads[k];
+        let window = &pad.window;
+        let p = state.position;
+        let phi = p.y.atan2(p.x);
+        if (phi - window.from).rem_euclid(2.0 * PI) <= pad.arc {
+            return law.evaluate(p, state.velocity, speed);
+        }
+        let lead = Vector2::new(window.from_sc.1, window.from_sc.0);
+        let trail = Vector2::new(window.to_sc.1, window.to_sc.0);
+        let normal = if p.dot(&lead) >= p.dot(&trail) {
+            lead
+        } else {
+            trail
+        };
+        law.evaluate_edge(normal, p, state.velocity, speed)
     }
 
     /// Assembled (bearing) clearance `C_b = C (1 − m)`, the smallest over the pads (m).
@@ -162,11 +202,12 @@ impl TiltingPadBearing {
         let phi = y.atan2(x);
         let inside = (phi - window.from).rem_euclid(2.0 * PI) <= pad.arc;
         let h = |t: f64| self.clearance - x * t.cos() - y * t.sin();
-        if inside {
+        let thinnest = if inside {
             h(phi)
         } else {
             h(window.from).min(h(window.to))
-        }
+        };
+        thinnest.max(0.0)
     }
 
     /// Film force on pad `k` alone at `q`, `q̇`: the force on the journal (N).
@@ -204,10 +245,13 @@ impl Bearing for TiltingPadBearing {
         let c_rest = PIVOT_REST * self.viscosity * self.radius * self.length.powi(3)
             / self.clearance.powi(3);
         let k_rest = c_rest * speed.abs().max(1.0);
+        let law = self.contact_law();
         for (k, pad) in self.pads.iter().enumerate() {
             let (s, c, state) = self.pad_state(k, q, qdot);
             let part = film.force(&state, speed, Some(&pad.window))?;
             out.add_transformed(&part, Some((k, -s, c)));
+            let (contact, _) = self.pad_contact(&law, k, &state, speed);
+            out.add_transformed(&contact, Some((k, -s, c)));
             let i = 2 + k;
             out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
             out.stiffness[i * n + i] += k_rest;
@@ -220,6 +264,27 @@ impl Bearing for TiltingPadBearing {
         false
     }
 
+    /// Pads free to tilt carry a journal where it reaches a pad's pivot:
+    /// `p·u_k = C (1 − m)` with `u_k` the pivot direction, first along
+    /// `direction` for `d·u_k > 0`; the assembled clearance when no pad faces it.
+    fn resting_contact(&self, direction: [f64; 2]) -> Option<(f64, f64)> {
+        let reach = self
+            .pads
+            .iter()
+            .filter_map(|pad| {
+                let (s, c) = pad.pivot_sc;
+                let facing = direction[0] * c + direction[1] * s;
+                (facing > 1e-9).then(|| self.clearance * (1.0 - pad.preload) / facing)
+            })
+            .fold(f64::INFINITY, f64::min);
+        let gap = if reach.is_finite() {
+            reach
+        } else {
+            self.assembled_clearance()
+        };
+        Some((gap, self.contact_law().stiffness))
+    }
+
     /// Each pad's stable zero-moment tilt with the journal held (pads alone, no
     /// rates): the first sign change of `Q_η` from + to − on a scan of tilts that
     /// keep the pad film open, refined by bisection. A pad with none (unloaded)
@@ -228,8 +293,15 @@ impl Bearing for TiltingPadBearing {
     fn guess_internal(&self, journal: [f64; 2], speed: f64, internal: &mut [f64]) {
         let film = self.film();
         for (k, pad) in self.pads.iter().enumerate() {
-            internal[k] = 0.0;
             let (s, c) = pad.pivot_sc;
+            // A journal pressed onto the pad's pivot line (at rest on the pad):
+            // the tilt that puts the contact at the pivot, `η = −p·t_k`.
+            let pressed = journal[0] * c + journal[1] * s >= self.clearance * (1.0 - pad.preload);
+            internal[k] = if pressed {
+                journal[0] * s - journal[1] * c
+            } else {
+                0.0
+            };
             let moment = |eta: f64| -> Option<f64> {
                 let state = JournalState {
                     position: self.pad_position(k, journal[0], journal[1], eta),
@@ -266,16 +338,18 @@ impl Bearing for TiltingPadBearing {
         }
     }
 
-    fn report(&self, q: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
+    fn report(&self, q: &[f64], qdot: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
         let film = self.film();
+        let law = self.contact_law();
         let mut friction_torque = 0.0;
         let mut min_film = f64::INFINITY;
+        let mut contact_resultant = Vector2::zeros();
         for (k, pad) in self.pads.iter().enumerate() {
-            let state = JournalState {
-                position: self.pad_position(k, q[0], q[1], q[2 + k]),
-                velocity: Vector2::zeros(),
-            };
+            let (_, _, state) = self.pad_state(k, q, qdot);
             friction_torque += film.friction_torque(&state, speed, Some(&pad.window));
+            let (contact, report) = self.pad_contact(&law, k, &state, speed);
+            friction_torque += contact_friction_torque(&law, &report, speed);
+            contact_resultant += contact.force;
             min_film = min_film.min(self.pad_min_film_thickness(k, q));
         }
         let position = Vector2::new(q[0], q[1]);
@@ -283,9 +357,10 @@ impl Bearing for TiltingPadBearing {
         BearingReport {
             eccentricity: position.norm() / self.assembled_clearance(),
             attitude_angle: attitude_angle(&position, &force),
-            min_film_thickness: min_film,
+            min_film_thickness: min_film.max(0.0),
             friction_torque,
             power_loss: friction_torque * speed,
+            contact_force: contact_resultant.norm(),
         }
     }
 }

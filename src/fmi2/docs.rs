@@ -69,7 +69,11 @@ roll back with <code>fmi2SetFMUstate</code>.</li>
 </ul>
 <h2>Coupling</h2>
 <p>Drive <code>shaft.speed</code> from a generator or governor model and feed <code>friction_torque</code> back into its torque
-balance. The FMU supports variable communication steps, rollback (<code>fmi2GetFMUstate</code>/<code>fmi2SetFMUstate</code>) and serialized
+balance. The machine starts at standstill (<code>shaft.speed</code> = 0), its journals resting on their bearings;
+<code>friction_torque</code> is the film shear plus the contact friction &mu;NR, at standstill the breakaway torque the drive
+must overcome (treat it as Coulomb friction: it holds the shaft, it never turns it backwards). Journals that reach their
+bushing, pads or a rub's stator go on in contact (<code>bearings.*.contact_force</code>, <code>rubs.*.contact_force</code>).
+The FMU supports variable communication steps, rollback (<code>fmi2GetFMUstate</code>/<code>fmi2SetFMUstate</code>) and serialized
 states, and it can be instantiated many times in one process.</p>
 <h2>Variables</h2>
 <table><tr><th>VR</th><th>name</th><th>causality</th><th>unit</th><th>start</th><th>description</th></tr>

@@ -37,7 +37,7 @@ use super::states::Call;
 pub use super::states::Phase;
 use super::variables::{
     Binding, Causality, DEFAULT_MAX_ITERATIONS, DEFAULT_TIME_STEP, DEFAULT_TOLERANCE, Kind,
-    VISCOSITY_RANGE, Variability, Variable, variables,
+    START_SPEED, VISCOSITY_RANGE, Variability, Variable, variables,
 };
 use super::xml::model_description;
 
@@ -144,8 +144,17 @@ fn model_viscosity(model: &RotorModel) -> Vec<f64> {
 }
 
 impl Instance {
-    /// A new instance of `model`, named `name`.
+    /// A new instance of `model`, named `name`; the model's plausibility
+    /// warnings are queued for the logger (`logStatusWarning`).
     pub fn new(name: &str, model: RotorModel) -> Result<Self, String> {
+        let warning = |w: crate::model::ModelWarning| {
+            (Status::Warning, category(Status::Warning), w.to_string())
+        };
+        let messages = model
+            .plausibility_warnings()
+            .into_iter()
+            .map(warning)
+            .collect();
         let vars = variables(&model);
         let (_, guid) = model_description(&model);
         let viscosity = model_viscosity(&model);
@@ -163,7 +172,7 @@ impl Instance {
             start_time: 0.0,
             stop_time: None,
             outputs: None,
-            messages: Vec::new(),
+            messages,
             step_statistics: false,
         })
     }
@@ -171,8 +180,8 @@ impl Instance {
     fn fresh_simulator(model: &RotorModel) -> Result<Simulator, String> {
         let rotor = Rotor::new(model.clone()).map_err(|e| e.to_string())?;
         let mut sim = Simulator::new(rotor, SolverOptions::default()).map_err(|e| e.to_string())?;
-        sim.set_speed(model.nominal_speed, 0.0)
-            .map_err(|e| e.to_string())?;
+        // The machine starts at standstill (the start value of `shaft.speed`).
+        sim.set_speed(START_SPEED, 0.0).map_err(|e| e.to_string())?;
         Ok(sim)
     }
 
@@ -342,6 +351,8 @@ impl Instance {
                     Binding::BearingFy(k) => o.bearings[k].fy,
                     Binding::BearingEccentricity(k) => o.bearings[k].report.eccentricity,
                     Binding::BearingFriction(k) => o.bearings[k].report.friction_torque,
+                    Binding::BearingContact(k) => o.bearings[k].report.contact_force,
+                    Binding::BearingMinFilm(k) => o.bearings[k].report.min_film_thickness,
                     Binding::ProbeX(k) => o.probes[k].x,
                     Binding::ProbeY(k) => o.probes[k].y,
                     Binding::SpinAngle => o.spin_angle,
@@ -689,5 +700,31 @@ impl Instance {
         self.check(call)?;
         Snapshot::from_bytes(bytes, &self.current_snapshot())
             .map_err(|why| self.report(Status::Error, format!("{}: {why}", call.name())))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn plausibility_warnings_are_queued_for_the_logger() {
+        let text = format!(
+            "{}\n[[bearings]]\nname = \"guide\"\ntype = \"plain\"\nnode = 2\nradius = 0.025\n\
+             length = 0.02\nclearance = 5e-5\nviscosity = 32.0\n",
+            crate::model::DEFAULT_MODEL_TOML
+        );
+        let model = RotorModel::from_toml(&text, "m.toml").unwrap();
+        let mut instance = Instance::new("i", model).unwrap();
+        let messages = instance.drain_messages();
+        assert_eq!(messages.len(), 1, "{messages:?}");
+        let (status, category, text) = &messages[0];
+        assert_eq!((*status, *category), (Status::Warning, "logStatusWarning"));
+        assert!(
+            text.starts_with("m.toml: bearings[2].viscosity = 32: "),
+            "{text}"
+        );
+        let mut plain = Instance::new("i", RotorModel::default_model()).unwrap();
+        assert!(plain.drain_messages().is_empty());
     }
 }

@@ -42,6 +42,10 @@ pub enum Binding {
     BearingEccentricity(usize),
     /// Friction torque of bearing `k` (N·m).
     BearingFriction(usize),
+    /// Contact normal force of bearing `k` (N).
+    BearingContact(usize),
+    /// Minimum film thickness of bearing `k` (m).
+    BearingMinFilm(usize),
     /// Probe `k` x (m).
     ProbeX(usize),
     /// Probe `k` y (m).
@@ -148,6 +152,10 @@ type OutputSpec = (
 
 /// Defaults of the solver parameters.
 pub const DEFAULT_TIME_STEP: f64 = 1e-3;
+/// Start value of `shaft.speed` (rad/s): the machine at standstill, its
+/// journals resting on their bearings; a master sets another start value to
+/// begin at speed.
+pub const START_SPEED: f64 = 0.0;
 /// Default relative tolerance.
 pub const DEFAULT_TOLERANCE: f64 = 1e-8;
 /// Default Newton iteration limit.
@@ -293,7 +301,7 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         Continuous,
         Some("rad/s"),
         Some("rpm"),
-        Some(model.nominal_speed),
+        Some(START_SPEED),
         Binding::Speed,
     );
     for (k, u) in model.unbalances.iter().enumerate() {
@@ -310,6 +318,9 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         );
     }
     for (k, b) in model.bearings.iter().enumerate() {
+        if b.kind.is_rub() {
+            continue;
+        }
         let node = b.node + 1;
         let n = &b.name;
         let outputs: [OutputSpec; 6] = [
@@ -350,7 +361,9 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
             ),
             (
                 "friction_torque",
-                format!("Viscous friction torque of bearing {n} on the journal, opposing the spin"),
+                format!(
+                    "Friction torque of bearing {n} on the journal, opposing the spin: film shear plus contact friction mu*N*R (at standstill the breakaway torque)"
+                ),
                 Some("N.m"),
                 None,
                 Binding::BearingFriction(k),
@@ -418,5 +431,63 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         None,
         Binding::FrictionTorque,
     );
+    // Contact outputs come last, so the value references above stay as they were.
+    for (k, b) in model.bearings.iter().enumerate() {
+        let n = &b.name;
+        if b.kind.is_rub() {
+            push(
+                format!("rubs.{n}.contact_force"),
+                format!(
+                    "Normal force of rub {n} (node {}) on the rotor (0 while clear of the stator)",
+                    b.node + 1
+                ),
+                Real,
+                Output,
+                Continuous,
+                Some("N"),
+                None,
+                None,
+                Binding::BearingContact(k),
+            );
+            push(
+                format!("rubs.{n}.friction_torque"),
+                format!("Friction torque mu*N*R of rub {n} on the rotor, opposing the spin"),
+                Real,
+                Output,
+                Continuous,
+                Some("N.m"),
+                None,
+                None,
+                Binding::BearingFriction(k),
+            );
+            continue;
+        }
+        push(
+            format!("bearings.{n}.contact_force"),
+            format!(
+                "Normal force of the metal-to-metal contact of the journal in bearing {n} (0 while it floats on its film)"
+            ),
+            Real,
+            Output,
+            Continuous,
+            Some("N"),
+            None,
+            None,
+            Binding::BearingContact(k),
+        );
+        push(
+            format!("bearings.{n}.min_film_thickness"),
+            format!(
+                "Minimum oil-film thickness of bearing {n} (0 in contact and for linear bearings)"
+            ),
+            Real,
+            Output,
+            Continuous,
+            Some("m"),
+            Some("um"),
+            None,
+            Binding::BearingMinFilm(k),
+        );
+    }
     out
 }

@@ -22,7 +22,8 @@ pub struct ModelFile {
     /// that does not give its own.
     #[serde(default)]
     pub axial_force: Option<f64>,
-    /// Nominal spin speed (rpm): the start value of the speed input of an FMU.
+    /// Nominal (operating) spin speed (rpm) of the machine, for analyses and
+    /// the CLI; an FMU starts at standstill whatever it is.
     #[serde(default)]
     pub speed_rpm: Option<f64>,
     /// Memory a model may need (MB) before it is refused; default
@@ -50,6 +51,9 @@ pub struct ModelFile {
     pub disks: Vec<DiskEntry>,
     #[serde(default)]
     pub bearings: Vec<BearingEntry>,
+    /// `[[rubs]]`.
+    #[serde(default)]
+    pub rubs: Vec<RubEntry>,
     #[serde(default)]
     pub unbalance: Vec<UnbalanceEntry>,
     #[serde(default)]
@@ -157,6 +161,13 @@ pub enum BearingEntry {
         clearance: f64,
         /// Oil dynamic viscosity (Pa·s).
         viscosity: f64,
+        /// Contact penalty stiffness (N/m) once the journal touches; default
+        /// the steel line contact `(π/4) E* L` of `ContactLaw::steel`.
+        contact_stiffness: Option<f64>,
+        /// Contact damping (N·s/m); default 1e-5 s × the contact stiffness.
+        contact_damping: Option<f64>,
+        /// Coulomb friction coefficient of the contact (–), default 0.2.
+        friction_coefficient: Option<f64>,
     },
     /// Tilting-pad journal bearing: short-bearing film on each pad, pads tilt freely.
     TiltingPad {
@@ -183,7 +194,33 @@ pub enum BearingEntry {
         pivot_offset: Option<f64>,
         /// Preload m = 1 − C_b/C, default 0.
         preload: Option<f64>,
+        /// Contact penalty stiffness (N/m) once the journal touches; default
+        /// the steel line contact `(π/4) E* L` of `ContactLaw::steel`.
+        contact_stiffness: Option<f64>,
+        /// Contact damping (N·s/m); default 1e-5 s × the contact stiffness.
+        contact_damping: Option<f64>,
+        /// Coulomb friction coefficient of the contact (–), default 0.2.
+        friction_coefficient: Option<f64>,
     },
+}
+
+/// `[[rubs]]`: a stator ring (seal, labyrinth, air gap) the rotor may touch.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RubEntry {
+    pub name: Option<String>,
+    pub node: Option<i64>,
+    pub z: Option<f64>,
+    /// Radial clearance between rotor and stator (m).
+    pub gap: f64,
+    /// Rotor surface radius at the rub (m); default the shaft's outer radius at the node.
+    pub radius: Option<f64>,
+    /// Contact stiffness (N/m); default the steel line contact of a 10 mm wide ring.
+    pub contact_stiffness: Option<f64>,
+    /// Contact damping (N·s/m); default 1e-5 s × the contact stiffness.
+    pub contact_damping: Option<f64>,
+    /// Coulomb friction coefficient (–), default 0.2.
+    pub friction_coefficient: Option<f64>,
 }
 
 /// `[[unbalance]]`: an unbalance plane.

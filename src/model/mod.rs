@@ -9,11 +9,13 @@ mod build;
 mod context;
 mod error;
 pub mod file;
+mod plausibility;
 mod source_map;
 pub mod speed_table;
 
 pub use error::ModelError;
 use error::Seg;
+pub use plausibility::{CLEARANCE_RATIO_RANGE, ModelWarning, RADIUS_TOLERANCE, VISCOSITY_RANGE};
 
 use std::path::Path;
 
@@ -134,6 +136,9 @@ pub struct RotorModel {
     pub nominal_speed: f64,
     /// Largest spin speed in either direction (rad/s): inputs beyond it are refused.
     pub max_speed: f64,
+    /// Whether the file states `max_speed_rpm` (else `max_speed` is
+    /// [`DEFAULT_MAX_SPEED_RPM`]).
+    pub max_speed_stated: bool,
 }
 
 impl RotorModel {

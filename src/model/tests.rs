@@ -450,3 +450,128 @@ fn a_type_error_in_a_later_bearing_names_that_bearing_and_key() {
         "{e}"
     );
 }
+
+/// The base model with a plain bearing at node 2 of the 0.05 m shaft
+/// (radius 0.025 m) with the given radius, clearance and viscosity.
+fn with_film_bearing(radius: f64, clearance: f64, viscosity: f64) -> RotorModel {
+    let text = format!(
+        "{BASE}\n[[bearings]]\nname = \"b\"\ntype = \"plain\"\nnode = 2\nradius = {radius:e}\n\
+         length = 0.02\nclearance = {clearance:e}\nviscosity = {viscosity:e}\n"
+    );
+    RotorModel::from_toml(&text, "m.toml").unwrap()
+}
+
+#[test]
+fn plausible_film_bearing_gives_no_warning() {
+    assert!(
+        with_film_bearing(0.025, 5e-5, 0.03)
+            .plausibility_warnings()
+            .is_empty()
+    );
+    // Within 1 % of the shaft radius, and the ends of both ranges.
+    assert!(
+        with_film_bearing(0.0252, 2.6e-6, 1e-4)
+            .plausibility_warnings()
+            .is_empty()
+    );
+    assert!(
+        with_film_bearing(0.0248, 2.4e-4, 1.0)
+            .plausibility_warnings()
+            .is_empty()
+    );
+}
+
+#[test]
+fn viscosity_in_centistokes_is_warned_with_file_field_value_and_range() {
+    for mu in [32.0, 5e-5] {
+        let w = with_film_bearing(0.025, 5e-5, mu).plausibility_warnings();
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert_eq!(
+            (w[0].file.as_str(), w[0].field.as_str(), w[0].value),
+            ("m.toml", "bearings[0].viscosity", mu)
+        );
+        let text = w[0].to_string();
+        assert!(
+            text.starts_with(&format!("m.toml: bearings[0].viscosity = {mu}: "))
+                && text.contains("1e-4 to 1 Pa·s"),
+            "{text}"
+        );
+    }
+}
+
+#[test]
+fn bearing_radius_in_millimetres_is_warned() {
+    // 25 (mm) next to the 0.025 m shaft radius; clearance 5e-5 m is then also
+    // implausibly small against it.
+    let w = with_film_bearing(25.0, 0.05, 0.03).plausibility_warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert_eq!(
+        (w[0].field.as_str(), w[0].value),
+        ("bearings[0].radius", 25.0)
+    );
+    let text = w[0].to_string();
+    assert!(
+        text.contains("from the shaft radius at node 2 (0.025 m)") && text.contains("1 %"),
+        "{text}"
+    );
+    // 2 % off: warned; the radius at a node between two sections matches either.
+    assert_eq!(
+        with_film_bearing(0.0255, 5e-5, 0.03)
+            .plausibility_warnings()
+            .len(),
+        1
+    );
+    let stepped = BASE.replace("length = 1.5", "length = 0.5")
+        + "\n[[shaft]]\nlength = 1.0\nouter_diameter = 0.06\nmaterial = \"steel\"\nelements = 4\n\
+           \n[[bearings]]\ntype = \"plain\"\nnode = 7\nradius = 0.03\nlength = 0.02\nclearance = 6e-5\nviscosity = 0.03\n";
+    let m = RotorModel::from_toml(&stepped, "m.toml").unwrap();
+    assert_eq!(m.elements[5].element.section.outer_diameter, 0.05);
+    assert_eq!(m.elements[6].element.section.outer_diameter, 0.06);
+    assert!(m.plausibility_warnings().is_empty());
+}
+
+#[test]
+fn clearance_ratio_outside_range_is_warned() {
+    // Diametral clearance mistaken for radial would still pass; these do not.
+    for (clearance, ratio) in [(1e-6, "4.000e-5"), (5e-4, "2.000e-2")] {
+        let w = with_film_bearing(0.025, clearance, 0.03).plausibility_warnings();
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert_eq!(
+            (w[0].field.as_str(), w[0].value),
+            ("bearings[0].clearance", clearance)
+        );
+        let text = w[0].to_string();
+        assert!(
+            text.contains(&format!("radial clearance / radius = {ratio}"))
+                && text.contains("1e-4 to 1e-2"),
+            "{text}"
+        );
+    }
+}
+
+#[test]
+fn shipped_models_are_plausible() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models");
+    let mut count = 0;
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        let m = RotorModel::from_file(&path).unwrap();
+        assert!(
+            m.plausibility_warnings().is_empty(),
+            "{}: {:?}",
+            path.display(),
+            m.plausibility_warnings()
+        );
+        count += 1;
+    }
+    assert_eq!(count, 6);
+}
+
+#[test]
+fn stated_maximum_speed_is_told_from_the_default() {
+    let m = RotorModel::from_toml(BASE, "m.toml").unwrap();
+    assert!(!m.max_speed_stated);
+    assert!((m.max_speed * 30.0 / std::f64::consts::PI - DEFAULT_MAX_SPEED_RPM).abs() < 1e-9);
+    let m = RotorModel::from_toml(&format!("max_speed_rpm = 5000.0\n{BASE}"), "m.toml").unwrap();
+    assert!(m.max_speed_stated);
+}

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use crate::analysis::campbell::{CampbellPoint, CriticalSpeed};
+use crate::analysis::campbell::{CampbellPoint, CriticalSpeed, OVERDAMPED_DAMPING_RATIO};
 use crate::analysis::modal::Whirl;
 
 pub use crate::units::RAD_S_TO_RPM;
@@ -49,7 +49,8 @@ fn whirl_color(w: Whirl) -> RGBColor {
 
 /// Campbell diagram: damped natural frequencies (Hz) against speed (rpm), markers
 /// coloured by whirl (red forward, blue backward, grey mixed), the excitation
-/// lines `ω = h Ω` for `harmonics`, and the critical speeds circled.
+/// lines `ω = h Ω` for `harmonics`, the critical speeds circled and the
+/// overdamped crossings ([`CriticalSpeed::is_overdamped`]) marked with grey crosses.
 pub fn campbell_png(
     path: &Path,
     title: &str,
@@ -130,7 +131,7 @@ pub fn campbell_png(
             .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLACK.stroke_width(2)));
     }
     chart
-        .draw_series(criticals.iter().map(|c| {
+        .draw_series(criticals.iter().filter(|c| !c.is_overdamped()).map(|c| {
             Circle::new(
                 (c.speed * RAD_S_TO_RPM, c.harmonic * c.speed * hz),
                 8,
@@ -140,6 +141,20 @@ pub fn campbell_png(
         .map_err(|e| failed(path, e))?
         .label("critical speed")
         .legend(|(x, y)| Circle::new((x + 10, y), 6, BLACK.stroke_width(2)));
+    let grey = RGBColor(120, 120, 120);
+    chart
+        .draw_series(criticals.iter().filter(|c| c.is_overdamped()).map(|c| {
+            Cross::new(
+                (c.speed * RAD_S_TO_RPM, c.harmonic * c.speed * hz),
+                7,
+                grey.stroke_width(2),
+            )
+        }))
+        .map_err(|e| failed(path, e))?
+        .label(format!(
+            "overdamped crossing (ζ ≥ {OVERDAMPED_DAMPING_RATIO}), not a critical speed"
+        ))
+        .legend(move |(x, y)| Cross::new((x + 10, y), 6, grey.stroke_width(2)));
     for (w, name) in [
         (Whirl::Forward, "forward whirl"),
         (Whirl::Backward, "backward whirl"),
@@ -355,9 +370,32 @@ pub fn spectrum_png(
     Ok(())
 }
 
-/// Waterfall (cascade): full spectra of successive windows of a run, each line
-/// drawn at the window's mean speed (rpm) with height proportional to amplitude,
-/// with the 1× and 0.5× lines.
+/// Length (m) and label of the amplitude scale bar for traces whose largest
+/// amplitude is `peak` (m): the largest 1, 2 or 5 × 10ᵏ µm not above it.
+pub fn scale_bar(peak: f64) -> (f64, String) {
+    let um = peak * 1e6;
+    if !(um > 0.0 && um.is_finite()) {
+        return (1e-6, "1 µm".to_string());
+    }
+    let k = um.log10().floor() as i32;
+    let decade = 10f64.powi(k);
+    let mantissa = [5.0, 2.0, 1.0]
+        .into_iter()
+        .find(|m| m * decade <= um * (1.0 + 1e-12))
+        .unwrap_or(1.0);
+    let value = mantissa * decade;
+    let label = if k >= 0 {
+        format!("{value:.0} µm")
+    } else {
+        format!("{value:.*} µm", (-k) as usize)
+    };
+    (value * 1e-6, label)
+}
+
+/// Waterfall: one full spectrum per row (amplitude in m, on the frequency grid
+/// `freqs` in Hz), each drawn at its spin speed (rpm) with its height
+/// proportional to amplitude; a scale bar ([`scale_bar`]) gives the amplitude
+/// a trace height stands for, and the 1× and 0.5× lines are drawn.
 pub fn waterfall_png(
     path: &Path,
     title: &str,
@@ -376,6 +414,7 @@ pub fn waterfall_png(
         .fold(0.0f64, |a, v| a.max(*v))
         .max(f64::MIN_POSITIVE);
     let scale = 4.0 * spacing / peak;
+    let (bar, bar_label) = scale_bar(peak);
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 24))
         .margin(16)
@@ -386,9 +425,26 @@ pub fn waterfall_png(
     chart
         .configure_mesh()
         .x_desc("frequency (Hz), positive = forward whirl")
-        .y_desc("spin speed (rpm) + amplitude")
+        .y_desc(format!(
+            "spin speed (rpm); trace height = amplitude, bar = {bar_label}"
+        ))
         .label_style(("sans-serif", 16))
         .draw()
+        .map_err(|e| failed(path, e))?;
+    let bar_x = f1 - 0.06 * (f1 - f0);
+    let bar_y = s_max + 0.5 * spacing;
+    chart
+        .draw_series(LineSeries::new(
+            [(bar_x, bar_y), (bar_x, bar_y + bar * scale)],
+            BLACK.stroke_width(4),
+        ))
+        .map_err(|e| failed(path, e))?;
+    chart
+        .draw_series([Text::new(
+            bar_label,
+            (bar_x - 0.12 * (f1 - f0), bar_y + 0.5 * bar * scale),
+            ("sans-serif", 16),
+        )])
         .map_err(|e| failed(path, e))?;
     for (order, color) in [(1.0, RGBColor(200, 30, 30)), (0.5, RGBColor(30, 60, 200))] {
         chart
@@ -424,3 +480,23 @@ pub use shapes::mode_shapes_png;
 pub use stability::stability_png;
 pub use ucs::ucs_png;
 pub use unbalance::unbalance_png;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scale_bar_is_a_round_amplitude_not_above_the_peak() {
+        for (peak, length, text) in [
+            (18.4e-6, 10e-6, "10 µm"),
+            (260.7e-6, 200e-6, "200 µm"),
+            (5e-6, 5e-6, "5 µm"),
+            (0.63e-6, 0.5e-6, "0.5 µm"),
+            (2e-8, 2e-8, "0.02 µm"),
+        ] {
+            let (v, label) = scale_bar(peak);
+            assert!((v - length).abs() < 1e-9 * length, "{peak}: {v}");
+            assert_eq!(label, text, "{peak}");
+        }
+    }
+}

@@ -114,15 +114,16 @@ pub fn coefficients(curve: &[DimensionlessPoint]) -> String {
 }
 
 /// Simulation outputs of `model`: time, speed, spin angle; per bearing the
-/// journal position (m), force (N), eccentricity ratio and friction torque
-/// (N·m); per probe the position (m); the total friction torque.
+/// journal position (m), force (N), eccentricity ratio, friction torque (N·m),
+/// contact normal force (N) and minimum film thickness (m); per probe the
+/// position (m); the total friction torque.
 pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
     let mut out = String::from("time_s,speed_rpm,spin_angle_rad");
     for b in &model.bearings {
         let n = &b.name;
         write!(
             out,
-            ",{n}_x_m,{n}_y_m,{n}_fx_N,{n}_fy_N,{n}_eccentricity,{n}_friction_torque_Nm"
+            ",{n}_x_m,{n}_y_m,{n}_fx_N,{n}_fy_N,{n}_eccentricity,{n}_friction_torque_Nm,{n}_contact_force_N,{n}_min_film_thickness_m"
         )
         .ok();
     }
@@ -142,8 +143,15 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
         for b in &o.bearings {
             write!(
                 out,
-                ",{:e},{:e},{:e},{:e},{},{}",
-                b.x, b.y, b.fx, b.fy, b.report.eccentricity, b.report.friction_torque
+                ",{:e},{:e},{:e},{:e},{},{},{},{:e}",
+                b.x,
+                b.y,
+                b.fx,
+                b.fy,
+                b.report.eccentricity,
+                b.report.friction_torque,
+                b.report.contact_force,
+                b.report.min_film_thickness
             )
             .ok();
         }
@@ -478,6 +486,8 @@ mod tests {
             report: BearingReport {
                 eccentricity: 0.25,
                 friction_torque: 0.5,
+                contact_force: 9.5,
+                min_film_thickness: 2.5e-5,
                 ..BearingReport::default()
             },
         };
@@ -491,14 +501,18 @@ mod tests {
         };
         let text = simulation(&model, &[record.clone(), record]);
         let header = text.lines().next().unwrap();
-        let columns = 3 + 6 * model.bearings.len() + 2 * model.probes.len() + 1;
+        let columns = 3 + 8 * model.bearings.len() + 2 * model.probes.len() + 1;
         assert_eq!(header.split(',').count(), columns);
         let b = &model.bearings[1].name;
         assert!(header.contains(&format!(",{b}_fx_N,")));
         let rows = parse(&text, header);
         assert_eq!(rows.len(), 2);
         assert_eq!(rows[0][..3], [0.125, 100.0 * RAD_S_TO_RPM, 12.5]);
-        assert_eq!(rows[0][3..9], [1e-6, -2e-6, 3.0, -4.0, 0.25, 0.5]);
+        assert_eq!(
+            rows[0][3..11],
+            [1e-6, -2e-6, 3.0, -4.0, 0.25, 0.5, 9.5, 2.5e-5]
+        );
+        assert!(header.contains(&format!(",{b}_contact_force_N,{b}_min_film_thickness_m")));
         assert_eq!(rows[0][columns - 3..], [7e-6, 8e-6, 1.0]);
     }
 }

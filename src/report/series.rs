@@ -42,11 +42,21 @@ pub fn orbits(model: &RotorModel, records: &[Outputs]) -> Vec<Orbit> {
 }
 
 /// Displacement `(x, y)` (m) of the first probe, else of the first bearing
-/// journal: the point a waterfall follows.
+/// journal: the point a waterfall follows (named by [`watched_point_name`]).
 pub fn watched_point(o: &Outputs) -> (f64, f64) {
     match o.probes.first() {
         Some(p) => (p.x, p.y),
         None => (o.bearings[0].x, o.bearings[0].y),
+    }
+}
+
+/// The name of the point [`watched_point`] follows in `model`: `probe NAME`
+/// (the first probe), else `bearing NAME` (the first bearing).
+pub fn watched_point_name(model: &RotorModel) -> String {
+    match (model.probes.first(), model.bearings.first()) {
+        (Some(p), _) => format!("probe {}", p.name),
+        (None, Some(b)) => format!("bearing {}", b.name),
+        (None, None) => "no probe or bearing".to_string(),
     }
 }
 
@@ -102,5 +112,9 @@ mod tests {
         assert_eq!(o[2].2, vec![0.0, 6.0, 12.0]);
         assert_eq!(watched_point(&records[2]), (10.0, 12.0));
         assert_eq!(watched_point(&outputs(2.0, false)), (2.0, -2.0));
+        assert_eq!(watched_point_name(&model), "probe disk");
+        let mut bare = model.clone();
+        bare.probes.clear();
+        assert_eq!(watched_point_name(&bare), "bearing drive_end");
     }
 }

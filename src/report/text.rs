@@ -128,6 +128,14 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
                 short(b.viscosity)
             )
         }
+        BearingKind::Rub(r) => format!(
+            "rub element, radial gap {} µm, rotor radius {} mm, contact stiffness {} N/m, damping {} N·s/m, friction μ = {}",
+            short(r.contact.gap * 1e6),
+            short(r.contact.radius * 1e3),
+            short(r.contact.stiffness),
+            short(r.contact.damping),
+            short(r.contact.friction)
+        ),
     }
 }
 

@@ -3,7 +3,6 @@
 //! predictor, the Newmark rates and the residuals of a step (see
 //! [`crate::solver`] for the equations).
 
-use crate::bearing::BearingError;
 use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
 
@@ -305,15 +304,7 @@ impl Simulator {
         };
         self.factor = factor;
         self.record_factor();
-        let outcome = match outcome {
-            Err(SolverError::Bearing {
-                source: BearingError::ClearanceExceeded { .. },
-                ..
-            }) if h > self.options.time_step * 0.5f64.powi(self.options.max_step_cuts as i32) => {
-                Some(f64::INFINITY)
-            }
-            other => other?,
-        };
+        let outcome = outcome?;
         if outcome.is_none() {
             let (s, w) = (&mut self.state, &mut self.newmark);
             std::mem::swap(&mut s.u, &mut w.u);

@@ -552,7 +552,7 @@ impl Simulator {
                     time: t,
                     source,
                 })?;
-            let report = bearing.report(q, speed, eval);
+            let report = bearing.report(q, qd, speed, eval);
             friction_torque += report.friction_torque;
             bearings.push(BearingOutput {
                 x,

@@ -34,8 +34,8 @@ pub struct Equilibrium {
 /// Without `start` Newton starts from the undeflected rotor with the bearings'
 /// own guess of their pad tilts; with `start` (e.g. the equilibrium at a nearby
 /// speed, as in a Campbell sweep) it starts from that displacement and those
-/// tilts. A fluid film at zero speed carries no load: the static stiffness is
-/// then singular and the error says so.
+/// tilts. A fluid film at zero speed carries no load: the journals then rest
+/// on their bushings or pads (the contact law carries them).
 ///
 /// ```
 /// use rotor_bearing::model::RotorModel;
@@ -134,10 +134,91 @@ impl StaticWork {
     }
 }
 
+/// Relative size of the journal regularization of the static Jacobian: `k_r =
+/// 10⁻⁹ max K_ii` on every journal DOF of a nonlinear bearing. A film at zero
+/// speed has no stiffness, so a journal floating in its clearance (a vertical
+/// rotor at rest) would make the Jacobian singular; the residual is left exact,
+/// so a converged equilibrium does not depend on `k_r`.
+const JOURNAL_REST: f64 = 1e-9;
+
 /// Newton with backtracking from `u0` (and `p0`, or the bearings' guess of the
 /// pad tilts at the journal positions of `u0`); returns the displacement and
 /// tilts. `time` (s) only labels bearing errors.
+///
+/// At standstill a fluid film carries nothing and the journals rest on their
+/// bushings or pads: Newton then starts from [`resting_start`]; at any other
+/// speed it falls back to that start when the given one fails (a film too weak
+/// to lift the journal off).
 pub(super) fn settle(
+    rotor: &Rotor,
+    sites: &mut Sites,
+    speed: f64,
+    options: &SolverOptions,
+    time: f64,
+    u0: Vec<f64>,
+    p0: Option<Vec<f64>>,
+) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
+    let f_ext = if options.gravity {
+        rotor.gravity_load.clone()
+    } else {
+        vec![0.0; rotor.dof_count()]
+    };
+    let resting = resting_start(rotor, sites, &f_ext);
+    if speed == 0.0 {
+        if let Some(u) = resting {
+            return newton_static(rotor, sites, speed, options, time, u, None);
+        }
+    }
+    let first = newton_static(rotor, sites, speed, options, time, u0, p0);
+    match (first, resting) {
+        (Err(_), Some(u)) => newton_static(rotor, sites, speed, options, time, u, None),
+        (outcome, _) => outcome,
+    }
+}
+
+/// The rotor resting on its fluid-film bearings, as a start for Newton: each
+/// journal held by its contact stiffness `k_c` at its resting gap `g` in the
+/// direction `d̂` it is pushed, `(K + Σ k_c E Eᵀ) u = f + Σ k_c g d̂`, with `d̂`
+/// from the same system without the offsets. `None` without a bearing that can
+/// rest on contact, or when no journal is pushed at all.
+fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>> {
+    let mut a = rotor.stiffness.clone();
+    let mut contacts = Vec::new();
+    for site in &sites.list {
+        if let Some((_, k)) = site.bearing.resting_contact([0.0, -1.0]) {
+            a.add(site.journal[0], site.journal[0], k);
+            a.add(site.journal[1], site.journal[1], k);
+            contacts.push((site, k));
+        }
+    }
+    if contacts.is_empty() {
+        return None;
+    }
+    let lu = a.lu().ok()?;
+    let mut u = f_ext.to_vec();
+    lu.solve_in_place(&mut u);
+    let mut rhs = f_ext.to_vec();
+    let mut pushed = false;
+    for &(site, k) in &contacts {
+        let [ix, iy] = site.journal;
+        let d = u[ix].hypot(u[iy]);
+        if d > 0.0 {
+            let direction = [u[ix] / d, u[iy] / d];
+            let (gap, _) = site.bearing.resting_contact(direction)?;
+            rhs[ix] += k * gap * direction[0];
+            rhs[iy] += k * gap * direction[1];
+            pushed = true;
+        }
+    }
+    if !pushed {
+        return None;
+    }
+    lu.solve_in_place(&mut rhs);
+    Some(rhs)
+}
+
+/// Newton with backtracking on the static residual from `u0`, `p0`.
+fn newton_static(
     rotor: &Rotor,
     sites: &mut Sites,
     speed: f64,
@@ -148,6 +229,10 @@ pub(super) fn settle(
 ) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
     let n = rotor.dof_count();
     let tol = options.tolerance;
+    let k_rest = JOURNAL_REST
+        * (0..n)
+            .map(|i| rotor.stiffness.get(i, i).abs())
+            .fold(0.0, f64::max);
     let mut work = StaticWork {
         f_ext: if options.gravity {
             rotor.gravity_load.clone()
@@ -191,6 +276,7 @@ pub(super) fn settle(
                 for (j, &gj) in site.journal.iter().enumerate() {
                     a.add(gi, gj, site.jk[i * n2 + j]);
                 }
+                a.add(gi, gi, k_rest);
             }
         }
         let factor = make_factor(

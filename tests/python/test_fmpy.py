@@ -65,6 +65,46 @@ else:
     if worst > 1e-12:
         failures.append(f"FMPy and the direct run differ by {worst:.3e} (relative)")
 
+# 3. The default FMU from standstill, with no start value set: the vertical hydro
+# unit at rest, journals centred in their bearings (no radial load), films open.
+res = simulate_fmu(os.path.join(out, "RotorBearing.fmu"), stop_time=0.5)
+still = [n for n in res.dtype.names if n.startswith("bearings.") and n.endswith((".x", ".y", ".contact_force"))]
+if not (np.all(res["shaft.speed"] == 0.0) if "shaft.speed" in res.dtype.names else True) \
+        or any(np.any(res[n] != 0.0) for n in still):
+    failures.append("the default FMU from standstill is not at rest: "
+                    + ", ".join(f"{n} {np.max(np.abs(res[n])):.3e}" for n in still))
+print(f"default FMU from shaft.speed = 0: {len(res)} points at rest")
+
+# 4. A rub: 1e3 kg·m of unbalance at 3000 rpm presses the journals of the Jeffcott
+# and vertical rotors onto their bushings; the run continues in contact for 1 s
+# (default 1 ms steps), the orbit at the clearance plus the penetration of the
+# largest contact force under the steel contact law k = (π/4) E/(2(1 − ν²)) L.
+import tomllib  # noqa: E402
+for stem in ("jeffcott", "vertical_rotor"):
+    path = os.path.join(out, stem + ".fmu")
+    model = tomllib.load(open(os.path.join(root, "models", stem + ".toml"), "rb"))
+    md = read_model_description(path)
+    planes = [u["name"] for u in model["unbalance"]]
+    start = {f"unbalance.{p}": 1e3 for p in planes}
+    start["shaft.speed"] = 3000.0 * np.pi / 30.0
+    names = [v.name for v in md.modelVariables if v.name.startswith("bearings.")
+             and v.name.endswith((".x", ".y", ".contact_force"))]
+    try:
+        res = simulate_fmu(path, stop_time=1.0, output_interval=1e-3, start_values=start, output=names)
+    except Exception as e:  # noqa: BLE001
+        failures.append(f"{stem} rub at 1e3 kg·m: {e}")
+        continue
+    for b in model["bearings"]:
+        n = b["name"]
+        k = np.pi / 4 * 2.1e11 / (2 * (1 - 0.3**2)) * b["length"]
+        orbit = np.max(np.hypot(res[f"bearings.{n}.x"], res[f"bearings.{n}.y"]))
+        force = np.max(res[f"bearings.{n}.contact_force"])
+        allowed = b["clearance"] * (1 + 1e-3) + force / k
+        print(f"{stem} rub, bearing {n}: orbit {orbit * 1e6:.1f} µm, clearance {b['clearance'] * 1e6:.0f} µm, "
+              f"peak contact force {force:.3e} N, allowed {allowed * 1e6:.1f} µm")
+        if not (force > 0.0 and b["clearance"] < orbit <= allowed):
+            failures.append(f"{stem} rub, bearing {n}: orbit {orbit} m outside ({b['clearance']}, {allowed}] m")
+
 if failures:
     print("\n".join(failures), file=sys.stderr)
     sys.exit(1)

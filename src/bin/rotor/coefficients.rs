@@ -5,7 +5,6 @@ use std::path::PathBuf;
 
 use rotor_bearing::bearing::coefficients::dimensionless_curve;
 use rotor_bearing::bearing::{BearingKind, PlainBearing};
-use rotor_bearing::model::RotorModel;
 use rotor_bearing::plot::{RAD_S_TO_RPM, coefficients_png};
 use rotor_bearing::report::csv as report_csv;
 
@@ -18,6 +17,7 @@ const REFERENCE_BEARING: PlainBearing = PlainBearing {
     length: 0.03,
     clearance: 1e-4,
     viscosity: 0.02,
+    contact: None,
 };
 
 pub fn coefficients(
@@ -39,10 +39,10 @@ pub fn coefficients(
             BearingKind::Plain(REFERENCE_BEARING),
         ),
         Some(path) => {
-            let m = RotorModel::from_file(path).map_err(|e| e.to_string())?;
+            let m = crate::read_model(path)?;
             let found = m.bearings.iter().find(|b| match &bearing {
                 Some(name) => &b.name == name,
-                None => b.kind.is_nonlinear(),
+                None => b.kind.film_geometry().is_some(),
             });
             let b = found.ok_or_else(|| {
                 let names: Vec<&str> = m.bearings.iter().map(|b| b.name.as_str()).collect();

@@ -2,14 +2,12 @@
 
 use std::path::Path;
 
-use rotor_bearing::model::RotorModel;
-
 use crate::write_file;
 
 /// Writes modelDescription.xml, resources/model.toml and
 /// documentation/index.html for `model` into `dir`; prints the model name and GUID.
 pub fn stage(model: &Path, dir: &Path) -> Result<(), String> {
-    let m = RotorModel::from_file(model).map_err(|e| e.to_string())?;
+    let m = crate::read_model(model)?;
     let text = std::fs::read_to_string(model).map_err(|e| format!("{}: {e}", model.display()))?;
     let (xml, guid) = rotor_bearing::fmi2::xml::model_description(&m);
     for sub in ["resources", "documentation", "binaries/linux64"] {

@@ -101,13 +101,16 @@ enum Command {
         #[arg(long)]
         shapes_png: Option<PathBuf>,
     },
-    /// Campbell diagram and critical speeds over 0..max-rpm.
+    /// Campbell diagram and critical speeds up to --max-rpm (from 0 on linear
+    /// bearings, from 1 % of --max-rpm with fluid-film bearings); crossings with
+    /// damping ratio ζ ≥ 0.5 are listed apart as overdamped, not as critical speeds.
     Campbell {
         #[command(flatten)]
         model: ModelArg,
-        /// Highest spin speed (rpm).
-        #[arg(long, default_value_t = 4000.0)]
-        max_rpm: f64,
+        /// Highest spin speed (rpm). Default: 1.25 × the model's max_speed_rpm if
+        /// the file states it, else 1.25 × its speed_rpm if given, else 4000.
+        #[arg(long)]
+        max_rpm: Option<f64>,
         /// Number of speed steps (the grid has steps + 1 points).
         #[arg(long, default_value_t = 40)]
         steps: usize,
@@ -156,7 +159,9 @@ enum Command {
         /// Write the outputs to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
-        /// Write PREFIX_orbits.png and PREFIX_spectrum.png (last half of the run).
+        /// Write PREFIX_orbits.png and PREFIX_spectrum.png (last half of the run) and
+        /// PREFIX_waterfall.png, and print the spectrum of each window of 20 revolutions
+        /// (a run under 20 revolutions gets no frequency ratio).
         #[arg(long)]
         plots: Option<String>,
     },
@@ -323,9 +328,18 @@ fn main() -> ExitCode {
     }
 }
 
+/// Read a model file and print its plausibility warnings on stderr.
+fn read_model(path: &Path) -> Result<RotorModel, String> {
+    let model = RotorModel::from_file(path).map_err(|e| e.to_string())?;
+    for w in model.plausibility_warnings() {
+        eprintln!("warning: {w}");
+    }
+    Ok(model)
+}
+
 fn load(arg: &ModelArg) -> Result<Rotor, String> {
     let model = match &arg.model {
-        Some(path) => RotorModel::from_file(path).map_err(|e| e.to_string())?,
+        Some(path) => read_model(path)?,
         None => RotorModel::default_model(),
     };
     Rotor::new(model).map_err(|e| e.to_string())

@@ -2,7 +2,10 @@
 
 use std::path::PathBuf;
 
-use rotor_bearing::analysis::campbell::{campbell, critical_speeds};
+use rotor_bearing::analysis::campbell::{
+    CriticalSpeed, OVERDAMPED_DAMPING_RATIO, campbell, critical_speeds, default_top_speed,
+    speed_grid,
+};
 use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
 use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png, mode_shapes_png};
 use rotor_bearing::report::{csv as report_csv, text};
@@ -44,15 +47,42 @@ pub fn modes(rotor: &Rotor, rpm: f64, count: usize, files: ModeFiles) -> Result<
     Ok(())
 }
 
-/// `rotor campbell`: the diagram over `0..max_rpm` and the 1× critical speeds.
+/// `rpm` rounded to 1e-6 rpm: the value a model file gave, without the
+/// round-off of its conversion to rad/s and back.
+fn rounded(rpm: f64) -> f64 {
+    (rpm * 1e6).round() / 1e6
+}
+
+/// `rotor campbell`: the diagram up to `max_rpm` (default from the model, see
+/// [`default_top_speed`]) and the 1× critical speeds, overdamped crossings apart.
 pub fn campbell_diagram(
     rotor: &Rotor,
-    max_rpm: f64,
+    max_rpm: Option<f64>,
     steps: usize,
     count: usize,
     csv: Option<PathBuf>,
     png: Option<PathBuf>,
 ) -> Result<(), String> {
+    let model = &rotor.model;
+    let (max_rpm, origin) = match max_rpm {
+        Some(rpm) => (rpm, "--max-rpm".to_string()),
+        None => {
+            let origin = if model.max_speed_stated {
+                format!(
+                    "1.25 × the model's max_speed_rpm {}",
+                    rounded(model.max_speed * RAD_S_TO_RPM)
+                )
+            } else if model.nominal_speed != 0.0 {
+                format!(
+                    "1.25 × the model's speed_rpm {}",
+                    rounded(model.nominal_speed.abs() * RAD_S_TO_RPM)
+                )
+            } else {
+                "the model states neither max_speed_rpm nor speed_rpm".to_string()
+            };
+            (default_top_speed(model) * RAD_S_TO_RPM, origin)
+        }
+    };
     if !(max_rpm.is_finite() && max_rpm > 0.0) || steps == 0 {
         return Err(format!(
             "--max-rpm must be positive (got {max_rpm}) and --steps at least 1 (got {steps})"
@@ -62,18 +92,21 @@ pub fn campbell_diagram(
         modes: count,
         ..ModalOptions::default()
     };
-    // Fluid-film bearings have no coefficients at standstill: start one step up.
-    let first = usize::from(!rotor.nonlinear_bearings.is_empty());
-    let speeds: Vec<f64> = (first..=steps)
-        .map(|k| max_rpm / RAD_S_TO_RPM * k as f64 / steps as f64)
-        .collect();
+    let speeds = speed_grid(rotor, max_rpm / RAD_S_TO_RPM, steps);
+    println!(
+        "speed grid of {}: {:.2} to {:.2} rpm in {steps} steps (top speed: {origin}{})",
+        model.name,
+        speeds[0] * RAD_S_TO_RPM,
+        max_rpm,
+        if rotor.nonlinear_bearings.is_empty() {
+            ""
+        } else {
+            "; fluid-film bearings: from 1 % of the top speed"
+        }
+    );
     let diagram = campbell(rotor, &speeds, &options).map_err(|e| e.to_string())?;
     let criticals = critical_speeds(rotor, &diagram, 1.0, &options).map_err(|e| e.to_string())?;
-    println!(
-        "critical speeds of {} (1× unbalance excitation):",
-        rotor.model.name
-    );
-    for c in &criticals {
+    let line = |c: &CriticalSpeed| {
         println!(
             "  {:10.2} rpm ({:9.3} rad/s)  branch {}  {} whirl  ζ = {:.3e}",
             c.speed * RAD_S_TO_RPM,
@@ -81,7 +114,23 @@ pub fn campbell_diagram(
             c.rank + 1,
             c.whirl.label(),
             c.damping_ratio
+        )
+    };
+    println!(
+        "critical speeds of {} (1× unbalance excitation, ζ < {OVERDAMPED_DAMPING_RATIO}):",
+        model.name
+    );
+    let (overdamped, critical): (Vec<_>, Vec<_>) =
+        criticals.iter().partition(|c| c.is_overdamped());
+    if critical.is_empty() {
+        println!("  none up to {max_rpm:.2} rpm");
+    }
+    critical.into_iter().for_each(line);
+    if !overdamped.is_empty() {
+        println!(
+            "overdamped crossings of the 1× line (ζ ≥ {OVERDAMPED_DAMPING_RATIO}: no resonance peak, not critical speeds):"
         );
+        overdamped.into_iter().for_each(line);
     }
     let out = report_csv::campbell(&diagram);
     match csv {
@@ -89,7 +138,7 @@ pub fn campbell_diagram(
         None => print!("{out}"),
     }
     if let Some(path) = png {
-        let title = format!("Campbell diagram: {}", rotor.model.name);
+        let title = format!("Campbell diagram: {}", model.name);
         campbell_png(&path, &title, &diagram, &[1.0], &criticals).map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
     }

@@ -2,7 +2,9 @@
 
 use std::path::{Path, PathBuf};
 
-use rotor_bearing::analysis::spectrum::{band_limit, frequency_grid, full_spectrum, waterfall};
+use rotor_bearing::analysis::spectrum::{
+    MIN_REVOLUTIONS, band_limit, frequency_grid, full_spectrum, waterfall,
+};
 use rotor_bearing::model::speed_table;
 use rotor_bearing::plot::{RAD_S_TO_RPM, orbits_png, spectrum_png, waterfall_png};
 use rotor_bearing::report::{csv as report_csv, series};
@@ -154,15 +156,38 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         let t: Vec<f64> = records.iter().map(|o| o.time).collect();
         let speed: Vec<f64> = records.iter().map(|o| o.speed).collect();
         let (x, y): (Vec<f64>, Vec<f64>) = records.iter().map(series::watched_point).unzip();
-        let wf = waterfall(&t, &x, &y, &speed, output_step);
-        println!("window  speed_rpm  dominant_Hz  ratio  amplitude_um");
-        for (w, row) in wf.rows.iter().enumerate() {
-            if let (Some((f, a)), Some(ratio)) = (row.peak, row.peak_order()) {
-                println!(
-                    "{w:6} {:10.1} {f:12.3} {ratio:6.3} {:12.4}",
-                    row.speed * RAD_S_TO_RPM,
-                    a * 1e6
+        let watched = series::watched_point_name(&model);
+        println!("spectra of {watched}, windows of {MIN_REVOLUTIONS} revolutions (Hann):");
+        println!(
+            "window    start_s      end_s  revolutions  speed_rpm  dominant_Hz   ratio  amplitude_um  subsync_share"
+        );
+        let wf = match waterfall(&t, &x, &y, &speed, output_step) {
+            Ok(wf) => wf,
+            Err(short) => {
+                println!("     -  {short}: no frequency ratio");
+                eprintln!(
+                    "warning: {short} in the whole run: no frequency ratio and no waterfall (run longer or faster)"
                 );
+                return Ok(());
+            }
+        };
+        for (w, row) in wf.rows.iter().enumerate() {
+            let s = &row.window;
+            print!(
+                "{w:6} {:10.6} {:10.6} {:12.1} {:10.1}",
+                s.start,
+                s.end,
+                s.revolutions,
+                s.speed * RAD_S_TO_RPM
+            );
+            match (s.peak, s.order()) {
+                (Some(p), Some(ratio)) => println!(
+                    " {:12.3} {ratio:7.3} {:13.4} {:14.6}",
+                    p.frequency,
+                    p.amplitude * 1e6,
+                    s.subsynchronous_share
+                ),
+                _ => println!("  no motion: no dominant frequency"),
             }
         }
         let rows: Vec<(f64, Vec<f64>)> = wf
@@ -173,7 +198,7 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         let path = PathBuf::from(format!("{prefix}_waterfall.png"));
         waterfall_png(
             &path,
-            &format!("Waterfall: {}", model.name),
+            &format!("Waterfall: {}, {watched}", model.name),
             &wf.freqs,
             &rows,
         )

@@ -1,22 +1,27 @@
 //! `[[bearings]]`: linear spring–dampers, plain and tilting-pad journal
 //! bearings, with the geometric checks thin-film theory needs.
 
+use crate::bearing::contact::ContactLaw;
 use crate::bearing::tilting_pad::Pad;
-use crate::bearing::{BearingKind, PlainBearing, TiltingPadBearing};
+use crate::bearing::{BearingKind, PlainBearing, RubElement, TiltingPadBearing};
 
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
-use crate::model::file::BearingEntry;
-use crate::model::{ModelError, PlacedBearing};
+use crate::model::file::{BearingEntry, RubEntry};
+use crate::model::{ModelError, PlacedBearing, PlacedElement};
 
 /// Check each bearing: unique name, its node and the parameters of its `type`; film bearings
 /// need a clearance below a tenth of the radius, tilting pads 3–18
 /// non-overlapping pads.
+///
+/// Rub elements (`[[rubs]]`) follow the bearings in the list, as
+/// [`BearingKind::Rub`], their names unique among the bearings'.
 pub(super) fn bearings(
     ctx: &Ctx,
     root: &FieldPath,
-    entries: Vec<BearingEntry>,
+    (entries, rubs): (Vec<BearingEntry>, Vec<RubEntry>),
     node_z: &[f64],
+    elements: &[PlacedElement],
 ) -> Result<Vec<PlacedBearing>, ModelError> {
     let mut bearings = Vec::new();
     let mut names = Names::default();
@@ -71,14 +76,24 @@ pub(super) fn bearings(
                 length,
                 clearance,
                 viscosity,
+                contact_stiffness,
+                contact_damping,
+                friction_coefficient,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
-                let bearing = PlainBearing {
+                let mut bearing = PlainBearing {
                     radius: ctx.positive(p.key("radius"), radius)?,
                     length: ctx.positive(p.key("length"), length)?,
                     clearance: ctx.positive(p.key("clearance"), clearance)?,
                     viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
+                    contact: None,
                 };
+                bearing.contact = contact_law(
+                    ctx,
+                    &p,
+                    bearing.contact_law(),
+                    [contact_stiffness, contact_damping, friction_coefficient],
+                )?;
                 if bearing.clearance >= 0.1 * bearing.radius {
                     return Err(ctx.err(
                         p.key("clearance"),
@@ -105,6 +120,9 @@ pub(super) fn bearings(
                 pad_arc_deg,
                 pivot_offset,
                 preload,
+                contact_stiffness,
+                contact_damping,
+                friction_coefficient,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
                 let radius = ctx.positive(p.key("radius"), radius)?;
@@ -174,7 +192,7 @@ pub(super) fn bearings(
                         "pads overlap: the arc exceeds the spacing of the pivots",
                     ));
                 }
-                let bearing = TiltingPadBearing {
+                let mut bearing = TiltingPadBearing {
                     radius,
                     length: ctx.positive(p.key("length"), length)?,
                     clearance,
@@ -183,7 +201,14 @@ pub(super) fn bearings(
                         .iter()
                         .map(|d| Pad::new(d.to_radians(), arc.to_radians(), offset, preload))
                         .collect(),
+                    contact: None,
                 };
+                bearing.contact = contact_law(
+                    ctx,
+                    &p,
+                    bearing.contact_law(),
+                    [contact_stiffness, contact_damping, friction_coefficient],
+                )?;
                 (name, node, BearingKind::TiltingPad(bearing))
             }
         };
@@ -193,6 +218,65 @@ pub(super) fn bearings(
             kind,
         });
     }
+    for (i, r) in rubs.into_iter().enumerate() {
+        let p = root.key("rubs").index(i);
+        let node = ctx.location(&p, r.node, r.z, node_z)?;
+        let gap = ctx.positive(p.key("gap"), r.gap)?;
+        // The shaft's outer radius at the node: the larger of its elements'.
+        let shaft_radius = elements
+            .iter()
+            .filter(|e| e.node == node || e.node + 1 == node)
+            .map(|e| 0.5 * e.element.section.outer_diameter)
+            .fold(0.0, f64::max);
+        let radius = ctx.positive(p.key("radius"), r.radius.unwrap_or(shaft_radius))?;
+        let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
+        let law = contact_law(
+            ctx,
+            &p,
+            default,
+            [
+                r.contact_stiffness,
+                r.contact_damping,
+                r.friction_coefficient,
+            ],
+        )?
+        .unwrap_or(default);
+        bearings.push(PlacedBearing {
+            name: names.claim(ctx, &p, default_name(r.name, "rub", i), "rub")?,
+            node,
+            kind: BearingKind::Rub(RubElement { contact: law }),
+        });
+    }
 
     Ok(bearings)
+}
+
+/// Axial width (m) of a rub's contact for its default steel stiffness.
+const RUB_WIDTH: f64 = 0.01;
+
+/// The contact law of a fluid-film bearing: `default` (the steel law of its
+/// geometry) with the model file's `contact_stiffness` (N/m, > 0),
+/// `contact_damping` (N·s/m, ≥ 0) and `friction_coefficient` (≥ 0) where given;
+/// `None` when none is given.
+fn contact_law(
+    ctx: &Ctx,
+    p: &FieldPath,
+    default: ContactLaw,
+    [stiffness, damping, friction]: [Option<f64>; 3],
+) -> Result<Option<ContactLaw>, ModelError> {
+    if stiffness.is_none() && damping.is_none() && friction.is_none() {
+        return Ok(None);
+    }
+    let mut law = default;
+    if let Some(k) = stiffness {
+        law.stiffness = ctx.positive(p.key("contact_stiffness"), k)?;
+        law.damping = ContactLaw::DAMPING_TIME * law.stiffness;
+    }
+    if let Some(c) = damping {
+        law.damping = ctx.non_negative(p.key("contact_damping"), c)?;
+    }
+    if let Some(mu) = friction {
+        law.friction = ctx.non_negative(p.key("friction_coefficient"), mu)?;
+    }
+    Ok(Some(law))
 }

@@ -23,7 +23,13 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     let shaft = shaft::shaft(ctx, &root, &raw, &materials)?;
     let node_z = shaft.node_z;
     let disks = disks::disks(ctx, &root, raw.disks, &node_z, &materials)?;
-    let bearings = bearings::bearings(ctx, &root, raw.bearings, &node_z)?;
+    let bearings = bearings::bearings(
+        ctx,
+        &root,
+        (raw.bearings, raw.rubs),
+        &node_z,
+        &shaft.elements,
+    )?;
     let unbalances = loads::unbalances(ctx, &root, raw.unbalance, &node_z)?;
     let probes = loads::probes(ctx, &root, raw.probes, &node_z)?;
     let supports = supports::supports(ctx, &root, raw.supports, &node_z)?;
@@ -47,6 +53,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     Ok(RotorModel {
         nominal_speed,
         max_speed,
+        max_speed_stated: raw.max_speed_rpm.is_some(),
         name: raw.name,
         description: raw.description,
         source: ctx.source.to_string(),

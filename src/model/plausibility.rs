@@ -1,0 +1,137 @@
+//! Plausibility warnings: values a model file may legally hold but that are
+//! probably typed in the wrong unit (a viscosity in cSt, a radius in mm, a
+//! diametral clearance). They do not stop the model; front ends print them.
+
+use std::fmt;
+
+use super::RotorModel;
+
+/// Plausible dynamic viscosity of a lubricant (Pa·s): water (≈ 1e-3) to heavy
+/// oils at low temperature.
+pub const VISCOSITY_RANGE: (f64, f64) = (1e-4, 1.0);
+
+/// Plausible ratio of radial clearance to journal radius of a fluid-film bearing.
+pub const CLEARANCE_RATIO_RANGE: (f64, f64) = (1e-4, 1e-2);
+
+/// Largest relative difference between a bearing's radius and the shaft's outer
+/// radius at its node.
+pub const RADIUS_TOLERANCE: f64 = 0.01;
+
+/// A value that passed validation but is probably a unit or typing slip.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelWarning {
+    /// The model file (its `source`).
+    pub file: String,
+    /// Field path, e.g. `bearings[0].viscosity`.
+    pub field: String,
+    /// The value as given (SI units).
+    pub value: f64,
+    /// What is implausible and the expected range.
+    pub problem: String,
+}
+
+impl fmt::Display for ModelWarning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{}: {} = {}: {}",
+            self.file, self.field, self.value, self.problem
+        )
+    }
+}
+
+impl RotorModel {
+    /// Outer radii (m) of the shaft elements that meet at `node` (0-based).
+    fn shaft_radii_at(&self, node: usize) -> Vec<f64> {
+        let mut radii: Vec<f64> = self
+            .elements
+            .iter()
+            .filter(|e| e.node == node || e.node + 1 == node)
+            .map(|e| 0.5 * e.element.section.outer_diameter)
+            .collect();
+        radii.dedup();
+        radii
+    }
+
+    /// Warnings for plausible-looking slips, per fluid-film bearing:
+    /// - viscosity outside [`VISCOSITY_RANGE`] (32 Pa·s is probably 32 cSt);
+    /// - radius differing by more than [`RADIUS_TOLERANCE`] from the outer
+    ///   radius of every shaft element at the bearing's node (30 next to a
+    ///   0.03 m shaft is probably millimetres);
+    /// - radial clearance / radius outside [`CLEARANCE_RATIO_RANGE`] (a
+    ///   diametral clearance or a unit slip).
+    ///
+    /// ```
+    /// use rotor_bearing::model::{DEFAULT_MODEL_TOML, RotorModel};
+    ///
+    /// // A plain bearing on the 50 mm shaft of the default model, oil given in cSt.
+    /// let text = format!(
+    ///     "{DEFAULT_MODEL_TOML}\n[[bearings]]\nname = \"guide\"\ntype = \"plain\"\nnode = 2\n\
+    ///      radius = 0.025\nlength = 0.02\nclearance = 5e-5\nviscosity = 32.0\n"
+    /// );
+    /// let model = RotorModel::from_toml(&text, "m.toml").unwrap();
+    /// let warnings = model.plausibility_warnings();
+    /// assert_eq!(warnings.len(), 1);
+    /// assert!(warnings[0].to_string().starts_with("m.toml: bearings[2].viscosity = 32: "));
+    /// assert!(RotorModel::default_model().plausibility_warnings().is_empty());
+    /// ```
+    pub fn plausibility_warnings(&self) -> Vec<ModelWarning> {
+        let mut warnings = Vec::new();
+        for (i, b) in self.bearings.iter().enumerate() {
+            let Some(g) = b.kind.film_geometry() else {
+                continue;
+            };
+            let mut warn = |key: &str, value: f64, problem: String| {
+                warnings.push(ModelWarning {
+                    file: self.source.clone(),
+                    field: format!("bearings[{i}].{key}"),
+                    value,
+                    problem,
+                })
+            };
+            let (lo, hi) = VISCOSITY_RANGE;
+            if !(lo..=hi).contains(&g.viscosity) {
+                warn(
+                    "viscosity",
+                    g.viscosity,
+                    format!(
+                        "dynamic viscosity outside the plausible {lo:e} to {hi} Pa·s \
+                         (a kinematic viscosity in cSt, or mPa·s?)"
+                    ),
+                );
+            }
+            let radii = self.shaft_radii_at(b.node);
+            if !radii.is_empty()
+                && radii
+                    .iter()
+                    .all(|r| (g.radius - r).abs() > RADIUS_TOLERANCE * r)
+            {
+                let shaft: Vec<String> = radii.iter().map(|r| format!("{r} m")).collect();
+                warn(
+                    "radius",
+                    g.radius,
+                    format!(
+                        "differs by more than {} % from the shaft radius at node {} ({}) \
+                         (millimetres instead of metres, or a diameter?)",
+                        RADIUS_TOLERANCE * 100.0,
+                        b.node + 1,
+                        shaft.join(", ")
+                    ),
+                );
+            }
+            let ratio = g.clearance / g.radius;
+            let (lo, hi) = CLEARANCE_RATIO_RANGE;
+            if !(lo..=hi).contains(&ratio) {
+                warn(
+                    "clearance",
+                    g.clearance,
+                    format!(
+                        "radial clearance / radius = {ratio:.3e}, outside the plausible {lo:e} to {hi:e} \
+                         (clearance is the radial clearance, in metres)"
+                    ),
+                );
+            }
+        }
+        warnings
+    }
+}
