@@ -3,6 +3,7 @@
 //! four-pad tilting-pad bearing, each carrying W = 1000 N along −y at
 //! ω = 314.16 rad/s, built as a one-bearing rotor whose whole weight is W.
 
+use rotor_bearing::report::text::short;
 use std::path::PathBuf;
 use std::process::Command;
 
@@ -201,10 +202,21 @@ fn command_prints_and_writes_the_reference_operating_point() {
         .args(["--rpm", "0"])
         .output()
         .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    // At standstill the journal rests on its bushing: the contact carries the
+    // load and the friction torque is the breakaway torque μ W R (μ = 0.2).
+    let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(
-        !out.status.success() && stderr.contains("at 0 rpm"),
-        "{stderr}"
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let w = num(&p["W"]);
+    let breakaway = 0.2 * w * num(&p["R"]);
+    assert!(
+        stdout.contains("minimum film thickness 0 µm")
+            && stdout.contains(&format!("in contact: normal force {}", short(w)))
+            && stdout.contains(&format!("friction torque {} N·m", short(breakaway))),
+        "{stdout}"
     );
 }
 

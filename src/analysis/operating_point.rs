@@ -53,8 +53,11 @@ pub struct FilmState {
     pub attitude_angle: f64,
     /// Minimum film thickness (m): `C(1 − ε)` for a plain bearing.
     pub min_film_thickness: f64,
-    /// Film friction torque on the journal (N·m).
+    /// Friction torque on the journal (N·m): film shear plus contact friction `μ N R`.
     pub friction_torque: f64,
+    /// Normal force of the journal's contact with its bushing or pads (N);
+    /// zero while the film carries it (at standstill it carries the load).
+    pub contact_force: f64,
     /// Power dissipated in the film, `T Ω` (W).
     pub power_loss: f64,
     /// Pads of a tilting-pad bearing, in model order (empty otherwise).
@@ -172,6 +175,7 @@ pub fn operating_point(
                         attitude_angle: report.attitude_angle,
                         min_film_thickness: report.min_film_thickness,
                         friction_torque: report.friction_torque,
+                        contact_force: report.contact_force,
                         power_loss: report.power_loss,
                         pads,
                     }),

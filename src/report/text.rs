@@ -226,6 +226,14 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
                 short(f.power_loss)
             )
             .ok();
+            if f.contact_force > 0.0 {
+                writeln!(
+                    s,
+                    "  in contact: normal force {} N (the film does not lift the journal)",
+                    short(f.contact_force)
+                )
+                .ok();
+            }
         }
         writeln!(s, "  K = {} N/m", matrix(&p.stiffness)).ok();
         writeln!(s, "  C = {} N·s/m", matrix(&p.damping)).ok();
