@@ -1,8 +1,15 @@
 //! Linear analyses of an assembled rotor: static deflection, unbalance response,
-//! complex modes and the Campbell diagram.
+//! complex modes and the Campbell diagram; and the analyst toolkit built on
+//! them: unbalance sweeps with peaks and separation margins, bearing operating
+//! points, mode-shape orbits, cross-coupling stability and the critical speed map.
 
 pub mod campbell;
 pub mod linear;
 pub mod linearize;
 pub mod modal;
+pub mod operating_point;
+pub mod shapes;
 pub mod spectrum;
+pub mod stability;
+pub mod ucs;
+pub mod unbalance;

@@ -190,6 +190,26 @@ impl TiltingPadBearing {
         (s, c, state)
     }
 
+    /// Minimum film thickness (m) on pad `k` at `q = [x, y, η…]`: the film
+    /// `h = C − X_e cos θ − Y_e sin θ` at the effective journal position is
+    /// thinnest at `θ = atan2(Y_e, X_e)` when that lies on the pad's arc, else at
+    /// the nearer edge.
+    pub fn pad_min_film_thickness(&self, k: usize, q: &[f64]) -> f64 {
+        let pad = &self.pads[k];
+        let position = self.pad_position(k, q[0], q[1], q[2 + k]);
+        let window = &pad.window;
+        let (x, y) = (position.x, position.y);
+        let phi = y.atan2(x);
+        let inside = (phi - window.from).rem_euclid(2.0 * PI) <= pad.arc;
+        let h = |t: f64| self.clearance - x * t.cos() - y * t.sin();
+        let thinnest = if inside {
+            h(phi)
+        } else {
+            h(window.from).min(h(window.to))
+        };
+        thinnest.max(0.0)
+    }
+
     /// Film force on pad `k` alone at `q`, `q̇`: the force on the journal (N).
     pub fn pad_force(
         &self,
@@ -330,18 +350,7 @@ impl Bearing for TiltingPadBearing {
             let (contact, report) = self.pad_contact(&law, k, &state, speed);
             friction_torque += contact_friction_torque(&law, &report, speed);
             contact_resultant += contact.force;
-            let window = &pad.window;
-            // H = 1 − ε_e cos(θ − φ_e) is smallest at φ_e, or at the nearer edge.
-            let (x, y) = (state.position.x, state.position.y);
-            let phi = y.atan2(x);
-            let inside = (phi - window.from).rem_euclid(2.0 * PI) <= pad.arc;
-            let h = |t: f64| self.clearance - x * t.cos() - y * t.sin();
-            let pad_min = if inside {
-                h(phi)
-            } else {
-                h(window.from).min(h(window.to))
-            };
-            min_film = min_film.min(pad_min);
+            min_film = min_film.min(self.pad_min_film_thickness(k, q));
         }
         let position = Vector2::new(q[0], q[1]);
         let force = eval.journal().force;

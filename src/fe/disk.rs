@@ -40,6 +40,18 @@ impl Disk {
         }
     }
 
+    /// Outer diameter and width (m) of the solid uniform disk with this mass and
+    /// these inertias, for drawings: `D = √(8 I_p/m)` and
+    /// `w = √(12 (I_d − I_p/2)/m)` (zero when `I_d ≤ I_p/2`, a thin disk),
+    /// inverting [`Disk::from_geometry`] with no bore.
+    pub fn equivalent_solid_dimensions(&self) -> (f64, f64) {
+        let diameter = (8.0 * self.polar_inertia / self.mass).sqrt();
+        let width = (12.0 * (self.diametral_inertia - self.polar_inertia / 2.0) / self.mass)
+            .max(0.0)
+            .sqrt();
+        (diameter, width)
+    }
+
     /// Mass matrix `diag(m, m, I_d, I_d)`.
     pub fn mass_matrix(&self) -> NodeMatrix {
         NodeMatrix::from_diagonal(&nalgebra::Vector4::new(
@@ -63,6 +75,14 @@ impl Disk {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn equivalent_dimensions_invert_the_solid_disk() {
+        let d = Disk::from_geometry(7810.0, 0.28, 0.0, 0.07);
+        let (diameter, width) = d.equivalent_solid_dimensions();
+        assert!((diameter - 0.28).abs() < 1e-14, "{diameter}");
+        assert!((width - 0.07).abs() < 1e-12, "{width}");
+    }
 
     /// The classic disk of Friswell et al. (2010), example 5.9.1.
     #[test]

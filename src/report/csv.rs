@@ -7,6 +7,11 @@ use std::fmt::Write as _;
 
 use crate::analysis::campbell::CampbellPoint;
 use crate::analysis::modal::Mode;
+use crate::analysis::operating_point::BearingOperatingPoint;
+use crate::analysis::shapes::node_orbits;
+use crate::analysis::stability::Stability;
+use crate::analysis::ucs::CriticalSpeedMap;
+use crate::analysis::unbalance::UnbalanceSweep;
 use crate::bearing::coefficients::DimensionlessPoint;
 use crate::model::RotorModel;
 use crate::solver::Outputs;
@@ -154,6 +159,194 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
             write!(out, ",{:e},{:e}", p.x, p.y).ok();
         }
         writeln!(out, ",{}", o.friction_torque).ok();
+    }
+    out
+}
+
+/// Column stem of a response point: `probe disk` → `probe_disk`.
+pub fn column_stem(label: &str) -> String {
+    label.replace(' ', "_")
+}
+
+/// An unbalance response sweep: speed (rpm, rad/s), then per point the x and y
+/// amplitudes `|X|`, `|Y|` (m) and phases `arg X`, `arg Y` (°, with
+/// `x(t) = |X| cos(Ωt + arg X)`, spin angle `Ωt` from +x toward +y), and the
+/// major semi-axis of the orbit (m).
+pub fn unbalance(sweep: &UnbalanceSweep) -> String {
+    let mut out = String::from("speed_rpm,speed_rad_s");
+    for p in &sweep.points {
+        let n = column_stem(&p.label);
+        write!(
+            out,
+            ",{n}_x_amplitude_m,{n}_x_phase_deg,{n}_y_amplitude_m,{n}_y_phase_deg,{n}_major_semi_axis_m"
+        )
+        .ok();
+    }
+    out.push('\n');
+    for (speed, row) in sweep.speeds.iter().zip(&sweep.response) {
+        write!(out, "{},{speed}", speed * RAD_S_TO_RPM).ok();
+        for &(x, y) in row {
+            write!(
+                out,
+                ",{:e},{},{:e},{},{:e}",
+                x.norm(),
+                x.arg().to_degrees(),
+                y.norm(),
+                y.arg().to_degrees(),
+                crate::analysis::unbalance::major_semi_axis((x, y))
+            )
+            .ok();
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// Bearings at an operating point, one row each: load and force (N), journal
+/// position (m), eccentricity ratio, attitude angle (°), minimum film thickness
+/// (m), friction torque (N·m), power loss (W) (empty for linear bearings), then
+/// K (N/m) and C (N·s/m) row-major.
+pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
+    let mut out = String::from(
+        "speed_rpm,bearing,load_N,fx_N,fy_N,x_m,y_m,eccentricity,attitude_angle_deg,min_film_thickness_m,friction_torque_Nm,power_loss_W,kxx_N_m,kxy_N_m,kyx_N_m,kyy_N_m,cxx_Ns_m,cxy_Ns_m,cyx_Ns_m,cyy_Ns_m\n",
+    );
+    for p in points {
+        write!(
+            out,
+            "{rpm},{},{},{},{},{:e},{:e}",
+            p.name, p.load, p.force[0], p.force[1], p.journal[0], p.journal[1]
+        )
+        .ok();
+        match &p.film {
+            Some(f) => write!(
+                out,
+                ",{},{},{:e},{},{}",
+                f.eccentricity,
+                f.attitude_angle.to_degrees(),
+                f.min_film_thickness,
+                f.friction_torque,
+                f.power_loss
+            ),
+            None => write!(out, ",,,,,"),
+        }
+        .ok();
+        for v in p.stiffness.iter().chain(&p.damping).flatten() {
+            write!(out, ",{v}").ok();
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// The pads of the tilting-pad bearings at an operating point: pivot angle
+/// (°), tilt `η = ψR` (m), tilt angle `ψ` (rad) and minimum film thickness (m).
+pub fn operating_pads(points: &[BearingOperatingPoint]) -> String {
+    let mut out =
+        String::from("bearing,pad,pivot_deg,tilt_m,tilt_angle_rad,min_film_thickness_m\n");
+    for p in points {
+        for (k, pad) in p.film.iter().flat_map(|f| f.pads.iter()).enumerate() {
+            writeln!(
+                out,
+                "{},{},{},{:e},{:e},{:e}",
+                p.name,
+                k + 1,
+                pad.pivot.to_degrees(),
+                pad.tilt,
+                pad.tilt_angle,
+                pad.min_film_thickness
+            )
+            .ok();
+        }
+    }
+    out
+}
+
+/// Complex mode shapes, one row per mode and node: the mode's damped frequency
+/// (Hz), logarithmic decrement and whirl, then per node its axial position (m),
+/// `X` and `Y` (real and imaginary parts; the shape is scaled so that its
+/// largest translation is exactly `1 + 0i`), the forward and backward whirl
+/// radii, the semi-axes and direction (°) of its orbit ellipse and the node's
+/// own whirl direction (`analysis::shapes`).
+pub fn mode_shapes(model: &RotorModel, modes: &[Mode]) -> String {
+    let mut out = String::from(
+        "mode,damped_frequency_hz,log_decrement,mode_whirl,node,z_m,x_re,x_im,y_re,y_im,forward_radius,backward_radius,major_semi_axis,minor_semi_axis,major_axis_deg,node_whirl\n",
+    );
+    for (k, m) in modes.iter().enumerate() {
+        for o in node_orbits(model, m) {
+            writeln!(
+                out,
+                "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
+                k + 1,
+                m.damped_frequency / (2.0 * PI),
+                m.log_decrement,
+                m.whirl.label(),
+                o.node + 1,
+                o.z,
+                o.x.re,
+                o.x.im,
+                o.y.re,
+                o.y.im,
+                o.forward,
+                o.backward,
+                o.major,
+                o.minor,
+                o.major_angle.to_degrees(),
+                o.direction()
+            )
+            .ok();
+        }
+    }
+    out
+}
+
+/// The least stable forward mode against the added cross-coupled stiffness `Q` (N/m):
+/// damped frequency (Hz), damping ratio and logarithmic decrement.
+pub fn stability(result: &Stability) -> String {
+    let mut out =
+        String::from("cross_coupling_N_m,damped_frequency_hz,damping_ratio,log_decrement\n");
+    for (q, m) in &result.curve {
+        writeln!(
+            out,
+            "{q},{},{},{}",
+            m.damped_frequency / (2.0 * PI),
+            m.damping_ratio,
+            m.log_decrement
+        )
+        .ok();
+    }
+    out
+}
+
+/// A critical speed map: per support stiffness (N/m) the forward synchronous
+/// critical speeds in rpm (`critical_k_rpm`, increasing; empty where fewer exist).
+pub fn critical_speed_map(map: &CriticalSpeedMap) -> String {
+    let count = map.speeds.iter().map(Vec::len).max().unwrap_or(0);
+    let mut out = String::from("support_stiffness_N_m");
+    for k in 1..=count {
+        write!(out, ",critical_{k}_rpm").ok();
+    }
+    out.push('\n');
+    for (k, speeds) in map.stiffness.iter().zip(&map.speeds) {
+        write!(out, "{k}").ok();
+        for j in 0..count {
+            match speeds.get(j) {
+                Some(s) => write!(out, ",{}", s * RAD_S_TO_RPM),
+                None => write!(out, ","),
+            }
+            .ok();
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// The bearings' direct stiffness over speed: bearing, speed (rpm), kxx, kyy (N/m).
+pub fn bearing_stiffness(map: &CriticalSpeedMap) -> String {
+    let mut out = String::from("bearing,speed_rpm,kxx_N_m,kyy_N_m\n");
+    for b in &map.bearings {
+        for (s, kxx, kyy) in &b.points {
+            writeln!(out, "{},{},{kxx},{kyy}", b.name, s * RAD_S_TO_RPM).ok();
+        }
     }
     out
 }

@@ -23,5 +23,6 @@
 //! ```
 
 pub mod csv;
+pub mod html;
 pub mod series;
 pub mod text;

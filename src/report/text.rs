@@ -3,8 +3,14 @@
 
 use std::fmt::Write;
 
+use crate::analysis::modal::Mode;
+use crate::analysis::operating_point::BearingOperatingPoint;
+use crate::analysis::stability::Stability;
+use crate::analysis::ucs::CriticalSpeedMap;
+use crate::analysis::unbalance::{Peak, SeparationMargin, UnbalanceSweep};
 use crate::bearing::BearingKind;
 use crate::rotor::Rotor;
+use crate::units::RAD_S_TO_RPM;
 
 /// What `rotor info` prints: sizes, disks, bearings, unbalances, probes, gravity.
 pub fn model_summary(rotor: &Rotor) -> String {
@@ -133,6 +139,213 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
     }
 }
 
+/// The table of unbalance response peaks `rotor unbalance` prints: point, peak
+/// speed (rpm), major semi-axis (µm), amplification factor, required and actual
+/// separation margins (%) and the verdict. A peak without both half-power
+/// speeds inside the sweep has no AF (and no margin); a row with an AF but no
+/// margin had no operating range to measure from.
+pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin>)]) -> String {
+    let mut s = String::from(
+        "point                      speed (rpm)  amplitude (µm)        AF  required SM  actual SM  result\n",
+    );
+    for (peak, margin) in rows {
+        let af = peak
+            .amplification_factor
+            .map_or("—".to_string(), |a| format!("{a:.2}"));
+        let (required, actual, verdict) = match margin {
+            Some(m) => (
+                m.required
+                    .map_or("none".to_string(), |r| format!("{:.1} %", 100.0 * r)),
+                format!("{:.1} %", 100.0 * m.actual),
+                if m.pass { "pass" } else { "FAIL" },
+            ),
+            None if peak.amplification_factor.is_none() => {
+                ("—".into(), "—".into(), "half-power speed outside the sweep")
+            }
+            None => ("—".into(), "—".into(), "no operating range"),
+        };
+        writeln!(
+            s,
+            "{:<26} {:>11.1} {:>15} {:>9} {:>12} {:>10}  {verdict}",
+            sweep.points[peak.point].label,
+            peak.speed * RAD_S_TO_RPM,
+            short(peak.amplitude * 1e6),
+            af,
+            required,
+            actual
+        )
+        .ok();
+    }
+    if rows.is_empty() {
+        s.push_str("(no peak inside the speed range)\n");
+    }
+    s
+}
+
+/// A 2×2 matrix in one line: `[[a, b], [c, d]]`, six significant digits.
+fn matrix(m: &[[f64; 2]; 2]) -> String {
+    format!(
+        "[[{}, {}], [{}, {}]]",
+        short(m[0][0]),
+        short(m[0][1]),
+        short(m[1][0]),
+        short(m[1][1])
+    )
+}
+
+/// What `rotor operating-point` prints per bearing: load, journal position,
+/// eccentricity, attitude angle, minimum film thickness (µm), friction torque
+/// and power loss, K and C, and each pad's tilt and film thickness.
+pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
+    let mut s = String::new();
+    for p in points {
+        writeln!(s, "bearing {} at {} rpm:", p.name, short(rpm)).ok();
+        writeln!(
+            s,
+            "  static load {} N (Fx = {} N, Fy = {} N), journal at x = {} µm, y = {} µm",
+            short(p.load),
+            short(p.force[0]),
+            short(p.force[1]),
+            short(p.journal[0] * 1e6),
+            short(p.journal[1] * 1e6)
+        )
+        .ok();
+        if let Some(f) = &p.film {
+            writeln!(
+                s,
+                "  eccentricity ratio {}, attitude angle {}°, minimum film thickness {} µm",
+                short(f.eccentricity),
+                short(f.attitude_angle.to_degrees()),
+                short(f.min_film_thickness * 1e6)
+            )
+            .ok();
+            writeln!(
+                s,
+                "  friction torque {} N·m, power loss {} W",
+                short(f.friction_torque),
+                short(f.power_loss)
+            )
+            .ok();
+            if f.contact_force > 0.0 {
+                writeln!(
+                    s,
+                    "  in contact: normal force {} N (the film does not lift the journal)",
+                    short(f.contact_force)
+                )
+                .ok();
+            }
+        }
+        writeln!(s, "  K = {} N/m", matrix(&p.stiffness)).ok();
+        writeln!(s, "  C = {} N·s/m", matrix(&p.damping)).ok();
+        for (k, pad) in p.film.iter().flat_map(|f| f.pads.iter()).enumerate() {
+            writeln!(
+                s,
+                "  pad {} (pivot {}°): tilt {} µm ({} mrad), minimum film thickness {} µm",
+                k + 1,
+                short(pad.pivot.to_degrees()),
+                short(pad.tilt * 1e6),
+                short(pad.tilt_angle * 1e3),
+                short(pad.min_film_thickness * 1e6)
+            )
+            .ok();
+        }
+    }
+    s
+}
+
+/// What `rotor stability` prints: the modes at the speed (frequency, damping
+/// ratio, logarithmic decrement, whirl), where the cross-coupling acts and the
+/// threshold `Q` of the least stable forward mode.
+pub fn stability(result: &Stability, q_max: f64) -> String {
+    let mut s = format!(
+        "modes at {} rpm (no added cross-coupling):\n mode  f_d (Hz)   damping ratio   log dec     whirl\n",
+        short(result.speed * RAD_S_TO_RPM)
+    );
+    for (k, m) in result.modes.iter().enumerate() {
+        writeln!(
+            s,
+            "{:5} {:9.4} {:15.6} {:9.6} {:>9}",
+            k + 1,
+            m.damped_frequency / (2.0 * std::f64::consts::PI),
+            m.damping_ratio,
+            m.log_decrement,
+            m.whirl.label()
+        )
+        .ok();
+    }
+    writeln!(
+        s,
+        "cross-coupled stiffness [[0, Q], [-Q, 0]] at node {} (mid-span between the bearings)",
+        result.node + 1
+    )
+    .ok();
+    match (result.threshold, &result.threshold_mode) {
+        (Some(0.0), _) => {
+            writeln!(
+                s,
+                "the least stable forward mode is unstable without cross-coupling"
+            )
+            .ok();
+        }
+        (Some(q), Some(m)) => {
+            writeln!(
+                s,
+                "threshold Q = {} N/m: least stable forward mode at {} Hz reaches log dec {:.1e}",
+                short(q),
+                short(m.damped_frequency / (2.0 * std::f64::consts::PI)),
+                m.log_decrement
+            )
+            .ok();
+        }
+        _ => {
+            writeln!(
+                s,
+                "stable up to Q = {} N/m (no threshold found)",
+                short(q_max)
+            )
+            .ok();
+        }
+    }
+    s
+}
+
+/// The modes table `rotor modes` prints: damped frequency (rad/s, Hz), damping
+/// ratio, logarithmic decrement and whirl.
+pub fn modes(name: &str, rpm: f64, modes: &[Mode]) -> String {
+    let mut s = format!(
+        "{name} at {rpm} rpm:\n mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl\n"
+    );
+    for (k, m) in modes.iter().enumerate() {
+        writeln!(
+            s,
+            "{:5} {:12.4} {:11.4} {:14.4e} {:9.4} {:>9}",
+            k + 1,
+            m.damped_frequency,
+            m.damped_frequency / (2.0 * std::f64::consts::PI),
+            m.damping_ratio,
+            m.log_decrement,
+            m.whirl.label()
+        )
+        .ok();
+    }
+    s
+}
+
+/// Every `step`-th row of a critical speed map: stiffness (N/m) and the forward
+/// critical speeds (rpm).
+pub fn critical_speed_map(name: &str, map: &CriticalSpeedMap, step: usize) -> String {
+    let mut s =
+        format!("forward critical speeds (rpm) of {name} against isotropic support stiffness:\n");
+    for (k, speeds) in map.stiffness.iter().zip(&map.speeds).step_by(step.max(1)) {
+        let rpm: Vec<String> = speeds
+            .iter()
+            .map(|v| format!("{:10.1}", v * RAD_S_TO_RPM))
+            .collect();
+        writeln!(s, "  k = {k:9.3e} N/m: {}", rpm.join(" ")).ok();
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -144,5 +357,45 @@ mod tests {
         assert_eq!(short(-9.81), "-9.81");
         assert_eq!(short(1e-4 * 1e6), "100");
         assert_eq!(short(2.5e-9), "2.5e-9");
+    }
+
+    #[test]
+    fn peak_table_prints_every_column_and_the_verdict() {
+        use crate::analysis::unbalance::{ResponsePoint, UnbalanceSweep};
+        let sweep = UnbalanceSweep {
+            speeds: vec![],
+            points: vec![ResponsePoint {
+                label: "probe disk".into(),
+                node: 3,
+            }],
+            response: vec![],
+        };
+        let peak = Peak {
+            point: 0,
+            speed: 1000.0 / RAD_S_TO_RPM,
+            amplitude: 12.5e-6,
+            half_power: Some((1.0, 2.0)),
+            amplification_factor: Some(4.0),
+        };
+        let margin = SeparationMargin {
+            required: Some(0.16),
+            actual: 0.125,
+            pass: false,
+        };
+        let no_af = Peak {
+            amplification_factor: None,
+            ..peak
+        };
+        let table = peak_table(&sweep, &[(peak, Some(margin)), (peak, None), (no_af, None)]);
+        let lines: Vec<&str> = table.lines().collect();
+        let cells: Vec<&str> = lines[1].split_whitespace().collect();
+        assert_eq!(
+            cells,
+            [
+                "probe", "disk", "1000.0", "12.5", "4.00", "16.0", "%", "12.5", "%", "FAIL"
+            ]
+        );
+        assert!(lines[2].ends_with("no operating range"), "{}", lines[2]);
+        assert!(lines[3].ends_with("half-power speed outside the sweep"));
     }
 }

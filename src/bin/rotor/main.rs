@@ -2,12 +2,20 @@
 //!
 //! ```text
 //! rotor info     [MODEL.toml]
+//! rotor draw     [MODEL.toml] --png FILE
 //! rotor static   [MODEL.toml] [--csv FILE]
-//! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE]
+//! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE] [--shapes-csv FILE] [--shapes-png FILE]
 //! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--csv FILE] [--png FILE]
 //! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--csv FILE] [--png FILE]
 //! rotor simulate [MODEL.toml] (--rpm N | --ramp-rpm A:B | --speed-csv FILE) [--duration S] [--step S]
 //!                [--output-step S] [--ramp-time S] [--no-gravity] [--csv FILE] [--plots PREFIX]
+//! rotor unbalance [MODEL.toml] [--min-rpm N] [--max-rpm N] [--points P] [--node N --unbalance KGM]
+//!                 [--operating-rpm A:B] [--csv FILE] [--png FILE]
+//! rotor operating-point [MODEL.toml] --rpm N [--csv FILE] [--pads-csv FILE]
+//! rotor ucs [MODEL.toml] [--min-stiffness K] [--max-stiffness K] [--points P] [--modes K] [--max-rpm N]
+//!           [--speeds S] [--csv FILE] [--bearings-csv FILE] [--png FILE]
+//! rotor report [MODEL.toml] --rpm N --out FILE.html
+//! rotor stability [MODEL.toml] --rpm N [--cross-coupling-max Q] [--points P] [--modes K] [--csv FILE] [--png FILE]
 //! ```
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
 //! `coefficients`, the reference plain short bearing).
@@ -15,8 +23,13 @@
 mod coefficients;
 mod fmu_stage;
 mod modal;
+mod operating_point;
+mod report;
 mod simulate;
+mod stability;
 mod statics;
+mod ucs;
+mod unbalance;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -49,6 +62,14 @@ enum Command {
         #[command(flatten)]
         model: ModelArg,
     },
+    /// Draw the rotor: shaft sections to scale, disks, bearings, probes, node numbers.
+    Draw {
+        #[command(flatten)]
+        model: ModelArg,
+        /// PNG file to draw to.
+        #[arg(long)]
+        png: PathBuf,
+    },
     /// Static deflection under gravity (linear bearings).
     Static {
         #[command(flatten)]
@@ -73,6 +94,12 @@ enum Command {
         /// Write the modes to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
+        /// Write the complex mode shapes (x, y per node, orbit ellipses) to this CSV file.
+        #[arg(long)]
+        shapes_csv: Option<PathBuf>,
+        /// Draw the mode shapes (orbits along the shaft) to this PNG file.
+        #[arg(long)]
+        shapes_png: Option<PathBuf>,
     },
     /// Campbell diagram and critical speeds up to --max-rpm (from 0 on linear
     /// bearings, from 1 % of --max-rpm with fluid-film bearings); crossings with
@@ -167,6 +194,120 @@ enum Command {
         #[arg(long)]
         png: Option<PathBuf>,
     },
+    /// Every bearing at one speed: static load, eccentricity, attitude angle,
+    /// minimum film thickness, friction power, stiffness and damping.
+    OperatingPoint {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Spin speed (rpm).
+        #[arg(long)]
+        rpm: f64,
+        /// Write one row per bearing to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Write the tilting pads' tilts and film thicknesses to this CSV file.
+        #[arg(long)]
+        pads_csv: Option<PathBuf>,
+    },
+    /// Log decrements at a speed and the threshold of cross-coupled stiffness
+    /// at mid-span where the least stable forward mode turns unstable (API 684 Level I).
+    Stability {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Spin speed (rpm).
+        #[arg(long)]
+        rpm: f64,
+        /// Largest cross-coupled stiffness Q (N/m); default a tenth of the largest direct bearing stiffness.
+        #[arg(long)]
+        cross_coupling_max: Option<f64>,
+        /// Number of Q values from 0 to the maximum.
+        #[arg(long, default_value_t = 21)]
+        points: usize,
+        /// Number of modes listed (and searched for the least stable forward one).
+        #[arg(long, default_value_t = 8)]
+        modes: usize,
+        /// Write log decrement against Q to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw it to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
+    /// Undamped critical speed map: forward critical speeds against isotropic
+    /// support stiffness, with the bearings' stiffness over a speed range.
+    Ucs {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Softest support stiffness (N/m).
+        #[arg(long, default_value_t = 1e5)]
+        min_stiffness: f64,
+        /// Stiffest support stiffness (N/m).
+        #[arg(long, default_value_t = 1e10)]
+        max_stiffness: f64,
+        /// Number of stiffnesses (geometric spacing).
+        #[arg(long, default_value_t = 31)]
+        points: usize,
+        /// Number of critical speeds per stiffness.
+        #[arg(long, default_value_t = 4)]
+        modes: usize,
+        /// Highest speed (rpm) of the bearings' stiffness curves.
+        #[arg(long, default_value_t = 4000.0)]
+        max_rpm: f64,
+        /// Number of speeds of the bearings' stiffness curves.
+        #[arg(long, default_value_t = 20)]
+        speeds: usize,
+        /// Write the map to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Write the bearings' kxx, kyy against speed to this CSV file.
+        #[arg(long)]
+        bearings_csv: Option<PathBuf>,
+        /// Draw the map to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
+    /// One self-contained HTML page: model and drawing, operating point,
+    /// unbalance response, modes and shapes, stability, critical speed map.
+    Report {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Operating speed (rpm).
+        #[arg(long)]
+        rpm: f64,
+        /// HTML file to write.
+        #[arg(long)]
+        out: PathBuf,
+    },
+    /// Unbalance response over a speed range (Bode and polar plots), its peaks,
+    /// amplification factors and API 684 separation margins.
+    Unbalance {
+        #[command(flatten)]
+        model: ModelArg,
+        /// Lowest spin speed (rpm).
+        #[arg(long, default_value_t = 0.0)]
+        min_rpm: f64,
+        /// Highest spin speed (rpm).
+        #[arg(long, default_value_t = 4000.0)]
+        max_rpm: f64,
+        /// Number of speeds of the grid (both ends included).
+        #[arg(long, default_value_t = 200)]
+        points: usize,
+        /// Excite with one unbalance at this node (numbered from 1) instead of the model's planes.
+        #[arg(long)]
+        node: Option<usize>,
+        /// Size of that unbalance (kg·m).
+        #[arg(long, default_value_t = 1e-3, requires = "node")]
+        unbalance: f64,
+        /// Operating speed range MIN:MAX (rpm) for the separation margins; default: the model's speed_rpm.
+        #[arg(long)]
+        operating_rpm: Option<String>,
+        /// Write the response to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Draw the Bode and polar plots to this PNG file.
+        #[arg(long)]
+        png: Option<PathBuf>,
+    },
 }
 
 fn main() -> ExitCode {
@@ -213,13 +354,25 @@ fn write_file(path: &Path, text: &str) -> Result<(), String> {
 fn run(cli: Cli) -> Result<(), String> {
     match cli.command {
         Command::Info { model } => statics::info(&load(&model)?),
+        Command::Draw { model, png } => statics::draw(&load(&model)?, &png),
         Command::Static { model, rpm, csv } => statics::deflection(&load(&model)?, rpm, csv),
         Command::Modes {
             model,
             rpm,
             modes,
             csv,
-        } => modal::modes(&load(&model)?, rpm, modes, csv),
+            shapes_csv,
+            shapes_png,
+        } => modal::modes(
+            &load(&model)?,
+            rpm,
+            modes,
+            modal::ModeFiles {
+                csv,
+                shapes_csv,
+                shapes_png,
+            },
+        ),
         Command::Campbell {
             model,
             max_rpm,
@@ -236,6 +389,80 @@ fn run(cli: Cli) -> Result<(), String> {
             csv,
             png,
         } => coefficients::coefficients(model, bearing, rpm, points, csv, png),
+        Command::Unbalance {
+            model,
+            min_rpm,
+            max_rpm,
+            points,
+            node,
+            unbalance: size,
+            operating_rpm,
+            csv,
+            png,
+        } => unbalance::unbalance(
+            &load(&model)?,
+            unbalance::Request {
+                min_rpm,
+                max_rpm,
+                points,
+                node,
+                unbalance: size,
+                operating_rpm,
+                csv,
+                png,
+            },
+        ),
+        Command::OperatingPoint {
+            model,
+            rpm,
+            csv,
+            pads_csv,
+        } => operating_point::run(&load(&model)?, rpm, csv, pads_csv),
+        Command::Stability {
+            model,
+            rpm,
+            cross_coupling_max,
+            points,
+            modes,
+            csv,
+            png,
+        } => stability::run(
+            &load(&model)?,
+            stability::Request {
+                rpm,
+                q_max: cross_coupling_max,
+                points,
+                modes,
+                csv,
+                png,
+            },
+        ),
+        Command::Ucs {
+            model,
+            min_stiffness,
+            max_stiffness,
+            points,
+            modes,
+            max_rpm,
+            speeds,
+            csv,
+            bearings_csv,
+            png,
+        } => ucs::run(
+            &load(&model)?,
+            ucs::Request {
+                min_stiffness,
+                max_stiffness,
+                points,
+                criticals: modes,
+                max_rpm,
+                speeds,
+                csv,
+                bearings_csv,
+                png,
+            },
+        ),
+        Command::Report { model, rpm, out } => report::run(&load(&model)?, rpm, out),
         Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
         Command::Simulate {
             model,

@@ -7,36 +7,42 @@ use rotor_bearing::analysis::campbell::{
     speed_grid,
 };
 use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
-use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png};
-use rotor_bearing::report::csv as report_csv;
+use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png, mode_shapes_png};
+use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
 
 use crate::write_file;
 
-/// `rotor modes`: damped frequencies, damping, log dec and whirl at `rpm`.
-pub fn modes(rotor: &Rotor, rpm: f64, count: usize, csv: Option<PathBuf>) -> Result<(), String> {
+/// Where `rotor modes` writes its files.
+pub struct ModeFiles {
+    pub csv: Option<PathBuf>,
+    pub shapes_csv: Option<PathBuf>,
+    pub shapes_png: Option<PathBuf>,
+}
+
+/// `rotor modes`: damped frequencies, damping, log dec and whirl at `rpm`, and
+/// the mode shapes.
+pub fn modes(rotor: &Rotor, rpm: f64, count: usize, files: ModeFiles) -> Result<(), String> {
     let speed = rpm / RAD_S_TO_RPM;
     let options = ModalOptions {
         modes: count,
         ..ModalOptions::default()
     };
     let ms = modes_at(rotor, speed, &options).map_err(|e| e.to_string())?;
-    println!("{} at {rpm} rpm:", rotor.model.name);
-    println!(" mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl");
-    for (k, m) in ms.iter().enumerate() {
-        let f = m.damped_frequency / (2.0 * std::f64::consts::PI);
-        println!(
-            "{:5} {:12.4} {:11.4} {:14.4e} {:9.4} {:>9}",
-            k + 1,
-            m.damped_frequency,
-            f,
-            m.damping_ratio,
-            m.log_decrement,
-            m.whirl.label()
-        );
-    }
-    if let Some(path) = csv {
+    print!("{}", text::modes(&rotor.model.name, rpm, &ms));
+    if let Some(path) = files.csv {
         write_file(&path, &report_csv::modes(rpm, &ms))?;
+    }
+    if let Some(path) = files.shapes_csv {
+        write_file(&path, &report_csv::mode_shapes(&rotor.model, &ms))?;
+    }
+    if let Some(path) = files.shapes_png {
+        let title = format!(
+            "Mode shapes of {} at {rpm} rpm (red forward, blue backward whirl)",
+            rotor.model.name
+        );
+        mode_shapes_png(&path, &title, &rotor.model, &ms).map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
     }
     Ok(())
 }

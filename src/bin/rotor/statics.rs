@@ -1,4 +1,5 @@
-//! `rotor info` and `rotor static`: the model summary and its static deflection.
+//! `rotor info`, `rotor draw` and `rotor static`: the model summary, its drawing
+//! and its static deflection.
 
 use std::path::PathBuf;
 
@@ -11,6 +12,19 @@ use rotor_bearing::solver::SolverOptions;
 use rotor_bearing::solver::statics::equilibrium;
 
 use crate::write_file;
+
+/// `rotor draw`: the rotor's side view (shaft sections, disks, bearings,
+/// probes, node numbers).
+pub fn draw(rotor: &Rotor, png: &std::path::Path) -> Result<(), String> {
+    let title = format!("Rotor {}", rotor.model.name);
+    rotor_bearing::plot::rotor_png(png, &title, &rotor.model).map_err(|e| e.to_string())?;
+    let scale = rotor_bearing::plot::radial_exaggeration(&rotor.model);
+    if scale > 1.0 {
+        println!("radial scale exaggerated ×{scale:.1}");
+    }
+    eprintln!("wrote {}", png.display());
+    Ok(())
+}
 
 /// `rotor info`: nodes, elements, masses and bearings in engineering units.
 pub fn info(rotor: &Rotor) -> Result<(), String> {

@@ -1,4 +1,5 @@
-//! PNG figures (plotters, bitmap backend): the Campbell diagram.
+//! PNG figures (plotters, bitmap backend): Campbell diagram, coefficient curves,
+//! orbits, spectra and waterfalls here; the analyst toolkit figures in submodules.
 
 use std::path::Path;
 
@@ -467,6 +468,18 @@ pub fn waterfall_png(
     root.present().map_err(|e| failed(path, e))?;
     Ok(())
 }
+
+mod drawing;
+mod shapes;
+mod stability;
+mod ucs;
+mod unbalance;
+
+pub use drawing::{radial_exaggeration, rotor_png};
+pub use shapes::mode_shapes_png;
+pub use stability::stability_png;
+pub use ucs::ucs_png;
+pub use unbalance::unbalance_png;
 
 #[cfg(test)]
 mod tests {

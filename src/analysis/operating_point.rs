@@ -1,0 +1,190 @@
+//! The operating point of every bearing at one speed: static load, journal
+//! position, eccentricity, attitude angle, minimum film thickness, friction
+//! and its power loss, and the synchronous stiffness and damping there.
+//!
+//! The rotor is put in static equilibrium under gravity at the speed
+//! ([`equilibrium`]); each fluid-film bearing then reports from its own
+//! evaluation there ([`Bearing::report`](crate::bearing::Bearing::report)):
+//! `ε = e/C`, the attitude angle from the load line to the eccentricity vector
+//! in the spin direction, `h_min = C(1 − ε)` for a plain bearing (per pad for
+//! tilting pads), the Petroff-corrected film friction torque `T` and the power
+//! `P = T Ω`. The coefficients are those the linearized analyses use
+//! ([`bearing_coefficients`], pad tilts condensed at `ω = Ω`). Linear bearings
+//! report their load `−K u` at the static deflection and their own K and C.
+
+use crate::bearing::BearingKind;
+use crate::fe::{DOF_X, DOF_Y};
+use crate::rotor::Rotor;
+use crate::solver::{SolverError, SolverOptions, equilibrium};
+
+use super::linear::{LinearError, static_deflection};
+use super::linearize::bearing_coefficients;
+
+/// Why an operating point could not be found.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum OperatingPointError {
+    /// No static equilibrium at that speed.
+    #[error("operating point at {speed} rad/s: {source}")]
+    Solver { speed: f64, source: SolverError },
+    /// The static deflection of a linear rotor failed.
+    #[error(transparent)]
+    Linear(#[from] LinearError),
+}
+
+/// One pad of a tilting-pad bearing at the operating point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PadState {
+    /// Pivot angle from +x toward +y (rad).
+    pub pivot: f64,
+    /// Tilt as the pad's surface displacement `η = ψ R` (m).
+    pub tilt: f64,
+    /// Tilt angle `ψ = η / R` (rad), counter-clockwise.
+    pub tilt_angle: f64,
+    /// Minimum film thickness on the pad (m).
+    pub min_film_thickness: f64,
+}
+
+/// The film state of a fluid-film bearing at the operating point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FilmState {
+    /// Eccentricity ratio `ε = e/C` (`C` the assembled clearance for tilting pads).
+    pub eccentricity: f64,
+    /// Attitude angle (rad): from the load line to the eccentricity vector, in the spin direction.
+    pub attitude_angle: f64,
+    /// Minimum film thickness (m): `C(1 − ε)` for a plain bearing.
+    pub min_film_thickness: f64,
+    /// Friction torque on the journal (N·m): film shear plus contact friction `μ N R`.
+    pub friction_torque: f64,
+    /// Normal force of the journal's contact with its bushing or pads (N);
+    /// zero while the film carries it (at standstill it carries the load).
+    pub contact_force: f64,
+    /// Power dissipated in the film, `T Ω` (W).
+    pub power_loss: f64,
+    /// Pads of a tilting-pad bearing, in model order (empty otherwise).
+    pub pads: Vec<PadState>,
+}
+
+/// One bearing at the operating point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BearingOperatingPoint {
+    /// Bearing index in the model.
+    pub bearing: usize,
+    /// Bearing name.
+    pub name: String,
+    /// Journal position `(x, y)` relative to the bearing centre (m).
+    pub journal: [f64; 2],
+    /// Force of the bearing on the journal `(Fx, Fy)` (N).
+    pub force: [f64; 2],
+    /// Static load `|F|` (N).
+    pub load: f64,
+    /// Film state; `None` for a linear bearing.
+    pub film: Option<FilmState>,
+    /// Stiffness `K = −∂F/∂q` (N/m), row-major `[[kxx, kxy], [kyx, kyy]]`.
+    pub stiffness: [[f64; 2]; 2],
+    /// Damping `C = −∂F/∂q̇` (N·s/m), row-major.
+    pub damping: [[f64; 2]; 2],
+}
+
+/// Every bearing of `rotor` at the static equilibrium under gravity at `speed` (rad/s).
+pub fn operating_point(
+    rotor: &Rotor,
+    speed: f64,
+) -> Result<Vec<BearingOperatingPoint>, OperatingPointError> {
+    let model = &rotor.model;
+    let (displacement, at) = if rotor.nonlinear_bearings.is_empty() {
+        (static_deflection(rotor)?, None)
+    } else {
+        let eq = equilibrium(rotor, speed, &SolverOptions::default(), None)
+            .map_err(|source| OperatingPointError::Solver { speed, source })?;
+        (rotor.dofs.expand(&eq.displacement), Some(eq))
+    };
+    let journal = |node: usize| {
+        [
+            displacement[node * crate::fe::DOF_PER_NODE + DOF_X],
+            displacement[node * crate::fe::DOF_PER_NODE + DOF_Y],
+        ]
+    };
+    let mut out = Vec::with_capacity(model.bearings.len());
+    let mut tilt_offset = 0;
+    let film_coefficients = at
+        .as_ref()
+        .map(|eq| bearing_coefficients(eq, speed))
+        .unwrap_or_default();
+    for (index, b) in model.bearings.iter().enumerate() {
+        let j = journal(b.node);
+        let point = match &b.kind {
+            BearingKind::Linear { stiffness, damping } => {
+                let f = [
+                    -(stiffness[0][0] * j[0] + stiffness[0][1] * j[1]),
+                    -(stiffness[1][0] * j[0] + stiffness[1][1] * j[1]),
+                ];
+                BearingOperatingPoint {
+                    bearing: index,
+                    name: b.name.clone(),
+                    journal: j,
+                    force: f,
+                    load: f[0].hypot(f[1]),
+                    film: None,
+                    stiffness: *stiffness,
+                    damping: *damping,
+                }
+            }
+            kind => {
+                let eq = at
+                    .as_ref()
+                    .expect("a film bearing makes the rotor nonlinear");
+                let eval = &eq
+                    .bearings
+                    .iter()
+                    .find(|(i, _)| *i == index)
+                    .expect("the equilibrium evaluates every film bearing")
+                    .1;
+                let coefficients = film_coefficients
+                    .iter()
+                    .find(|c| c.bearing == index)
+                    .expect("coefficients of every film bearing");
+                let bearing = kind.build();
+                let n_pads = bearing.internal_dofs();
+                let tilts = &eq.tilts[tilt_offset..tilt_offset + n_pads];
+                tilt_offset += n_pads;
+                let q: Vec<f64> = j.iter().chain(tilts).copied().collect();
+                let report = bearing.report(&q, &vec![0.0; q.len()], speed, eval);
+                let pads = match kind {
+                    BearingKind::TiltingPad(tp) => tp
+                        .pads
+                        .iter()
+                        .enumerate()
+                        .map(|(k, pad)| PadState {
+                            pivot: pad.pivot(),
+                            tilt: tilts[k],
+                            tilt_angle: tilts[k] / tp.radius,
+                            min_film_thickness: tp.pad_min_film_thickness(k, &q),
+                        })
+                        .collect(),
+                    _ => Vec::new(),
+                };
+                let f = eval.journal().force;
+                BearingOperatingPoint {
+                    bearing: index,
+                    name: b.name.clone(),
+                    journal: j,
+                    force: [f.x, f.y],
+                    load: f.norm(),
+                    film: Some(FilmState {
+                        eccentricity: report.eccentricity,
+                        attitude_angle: report.attitude_angle,
+                        min_film_thickness: report.min_film_thickness,
+                        friction_torque: report.friction_torque,
+                        contact_force: report.contact_force,
+                        power_loss: report.power_loss,
+                        pads,
+                    }),
+                    stiffness: coefficients.stiffness,
+                    damping: coefficients.damping,
+                }
+            }
+        };
+        out.push(point);
+    }
+    Ok(out)
+}

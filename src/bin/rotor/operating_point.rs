@@ -1,0 +1,32 @@
+//! `rotor operating-point`: every bearing's load, film state, friction and
+//! coefficients at one speed.
+
+use std::path::PathBuf;
+
+use rotor_bearing::analysis::operating_point::operating_point;
+use rotor_bearing::plot::RAD_S_TO_RPM;
+use rotor_bearing::report::{csv as report_csv, text};
+use rotor_bearing::rotor::Rotor;
+
+use crate::write_file;
+
+pub fn run(
+    rotor: &Rotor,
+    rpm: f64,
+    csv: Option<PathBuf>,
+    pads_csv: Option<PathBuf>,
+) -> Result<(), String> {
+    if !rpm.is_finite() {
+        return Err(format!("--rpm must be finite, got {rpm}"));
+    }
+    let points = operating_point(rotor, rpm / RAD_S_TO_RPM)
+        .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
+    print!("{}", text::operating_point(rpm, &points));
+    if let Some(path) = csv {
+        write_file(&path, &report_csv::operating_point(rpm, &points))?;
+    }
+    if let Some(path) = pads_csv {
+        write_file(&path, &report_csv::operating_pads(&points))?;
+    }
+    Ok(())
+}

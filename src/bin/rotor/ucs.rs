@@ -1,0 +1,60 @@
+//! `rotor ucs`: undamped critical speed map against support stiffness, with
+//! the bearings' stiffness over a speed range.
+
+use std::path::PathBuf;
+
+use rotor_bearing::analysis::ucs::{critical_speed_map, stiffness_grid};
+use rotor_bearing::plot::{RAD_S_TO_RPM, ucs_png};
+use rotor_bearing::report::{csv as report_csv, text};
+use rotor_bearing::rotor::Rotor;
+
+use crate::write_file;
+
+/// What `rotor ucs` was asked for.
+pub struct Request {
+    pub min_stiffness: f64,
+    pub max_stiffness: f64,
+    pub points: usize,
+    pub criticals: usize,
+    pub max_rpm: f64,
+    pub speeds: usize,
+    pub csv: Option<PathBuf>,
+    pub bearings_csv: Option<PathBuf>,
+    pub png: Option<PathBuf>,
+}
+
+pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
+    if req.criticals == 0 {
+        return Err("--modes must be at least 1".into());
+    }
+    if !(req.max_rpm.is_finite() && req.max_rpm > 0.0) || req.speeds == 0 {
+        return Err(format!(
+            "--max-rpm must be positive (got {}) and --speeds at least 1 (got {})",
+            req.max_rpm, req.speeds
+        ));
+    }
+    let stiffness = stiffness_grid(req.min_stiffness, req.max_stiffness, req.points)
+        .map_err(|e| e.to_string())?;
+    // The bearings' stiffness from max_rpm/speeds up to max_rpm (no film at standstill).
+    let speeds: Vec<f64> = (1..=req.speeds)
+        .map(|k| req.max_rpm / RAD_S_TO_RPM * k as f64 / req.speeds as f64)
+        .collect();
+    let map = critical_speed_map(rotor, &stiffness, req.criticals, &speeds)
+        .map_err(|e| format!("{}: {e}", rotor.model.name))?;
+    print!(
+        "{}",
+        text::critical_speed_map(&rotor.model.name, &map, req.points / 10)
+    );
+    if let Some(path) = req.csv {
+        write_file(&path, &report_csv::critical_speed_map(&map))?;
+    }
+    if let Some(path) = req.bearings_csv {
+        write_file(&path, &report_csv::bearing_stiffness(&map))?;
+    }
+    if let Some(path) = req.png {
+        let title = format!("Undamped critical speed map: {}", rotor.model.name);
+        ucs_png(&path, &title, &map).map_err(|e| e.to_string())?;
+        eprintln!("wrote {}", path.display());
+    }
+    Ok(())
+}

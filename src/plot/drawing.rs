@@ -1,0 +1,191 @@
+//! Rotor drawing: shaft sections to scale, disks, bearings, probes, supports
+//! and node numbers.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+
+use crate::model::RotorModel;
+
+use super::{PlotError, failed};
+
+/// Width of the drawing (pixels).
+const WIDTH: u32 = 1400;
+
+/// Radial scale of [`rotor_png`] relative to the axial one: 1 (true scale)
+/// unless the rotor is so slender that it would be drawn thinner than a tenth
+/// of its length, then the exaggeration that makes it a tenth.
+pub fn radial_exaggeration(model: &RotorModel) -> f64 {
+    let length = (model.node_z[model.node_count() - 1] - model.node_z[0]).max(1e-9);
+    let diameter = largest_diameter(model).max(1e-9);
+    (0.1 * length / diameter).max(1.0)
+}
+
+fn largest_diameter(model: &RotorModel) -> f64 {
+    let shaft = model
+        .elements
+        .iter()
+        .map(|e| e.element.section.outer_diameter)
+        .fold(0.0, f64::max);
+    model
+        .disks
+        .iter()
+        .map(|d| d.disk.equivalent_solid_dimensions().0)
+        .fold(shaft, f64::max)
+}
+
+/// Side view of `model` in the y–z plane: shaft elements as their outer (and
+/// bore) outline, disks as the equivalent solid disk
+/// ([`Disk::equivalent_solid_dimensions`](crate::fe::disk::Disk::equivalent_solid_dimensions)),
+/// bearings as triangles under the shaft with their names, probes as arrows
+/// above it, supports as crosses, node numbers along the bottom. Axial and
+/// radial scales are equal unless [`radial_exaggeration`] says otherwise (the
+/// title then says by how much).
+pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), PlotError> {
+    let z0 = model.node_z[0];
+    let z1 = model.node_z[model.node_count() - 1];
+    let length = (z1 - z0).max(1e-9);
+    let scale = radial_exaggeration(model);
+    let r_max = 0.5 * largest_diameter(model) * scale;
+    // Room for labels: 0.9 r_max above and below the rotor.
+    let half = 1.9 * r_max.max(0.02 * length);
+    let margin = 0.1 * length;
+    let plot_w = f64::from(WIDTH - 120);
+    let height = ((2.0 * half) / (length + 2.0 * margin) * plot_w) as u32 + 140;
+    let root = BitMapBackend::new(path, (WIDTH, height.clamp(300, 1400))).into_drawing_area();
+    root.fill(&WHITE).map_err(|e| failed(path, e))?;
+    let caption = if scale > 1.0 {
+        format!("{title} (radial scale ×{scale:.1})")
+    } else {
+        format!("{title} (to scale)")
+    };
+    let mut chart = ChartBuilder::on(&root)
+        .caption(caption, ("sans-serif", 24))
+        .margin(20)
+        .x_label_area_size(40)
+        .y_label_area_size(60)
+        .build_cartesian_2d((z0 - margin)..(z1 + margin), -half..half)
+        .map_err(|e| failed(path, e))?;
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc("z (m)")
+        .y_desc(if scale > 1.0 {
+            "radius (exaggerated)"
+        } else {
+            "radius (m)"
+        })
+        .label_style(("sans-serif", 14))
+        .draw()
+        .map_err(|e| failed(path, e))?;
+    let steel = RGBColor(160, 170, 185);
+    for e in &model.elements {
+        let (za, zb) = (model.node_z[e.node], model.node_z[e.node + 1]);
+        let ro = 0.5 * e.element.section.outer_diameter * scale;
+        let ri = 0.5 * e.element.section.inner_diameter * scale;
+        chart
+            .draw_series([
+                Rectangle::new([(za, -ro), (zb, ro)], steel.filled()),
+                Rectangle::new([(za, -ro), (zb, ro)], BLACK.stroke_width(1)),
+            ])
+            .map_err(|e| failed(path, e))?;
+        if ri > 0.0 {
+            chart
+                .draw_series([Rectangle::new([(za, -ri), (zb, ri)], WHITE.filled())])
+                .map_err(|e| failed(path, e))?;
+        }
+    }
+    chart
+        .draw_series(DashedLineSeries::new(
+            [(z0 - 0.5 * margin, 0.0), (z1 + 0.5 * margin, 0.0)],
+            10,
+            6,
+            BLACK.stroke_width(1),
+        ))
+        .map_err(|e| failed(path, e))?;
+    for d in &model.disks {
+        let z = model.node_z[d.node];
+        let (diameter, width) = d.disk.equivalent_solid_dimensions();
+        let (r, w) = (0.5 * diameter * scale, width.max(0.004 * length));
+        chart
+            .draw_series([
+                Rectangle::new(
+                    [(z - w / 2.0, -r), (z + w / 2.0, r)],
+                    RGBColor(90, 110, 160).filled(),
+                ),
+                Rectangle::new([(z - w / 2.0, -r), (z + w / 2.0, r)], BLACK.stroke_width(1)),
+            ])
+            .map_err(|e| failed(path, e))?;
+        chart
+            .draw_series([Text::new(
+                format!("disk {}", d.name),
+                (z + w, -r - 0.1 * r_max),
+                ("sans-serif", 15),
+            )])
+            .map_err(|e| failed(path, e))?;
+    }
+    // Outer radius of the rotor at a node: its shaft sections and disks.
+    let radius_at = |node: usize| -> f64 {
+        let shaft = model
+            .elements
+            .iter()
+            .filter(|e| e.node == node || e.node + 1 == node)
+            .map(|e| 0.5 * e.element.section.outer_diameter * scale)
+            .fold(0.0, f64::max);
+        model
+            .disks
+            .iter()
+            .filter(|d| d.node == node)
+            .map(|d| 0.5 * d.disk.equivalent_solid_dimensions().0 * scale)
+            .fold(shaft, f64::max)
+    };
+    let red = RGBColor(190, 30, 30);
+    for b in &model.bearings {
+        let z = model.node_z[b.node];
+        let y = -radius_at(b.node) - 0.25 * r_max;
+        chart
+            .draw_series([EmptyElement::at((z, y))
+                + TriangleMarker::new((0, 0), 12, red.filled())
+                + Text::new(
+                    format!("bearing {}", b.name),
+                    (-30, 14),
+                    ("sans-serif", 15).into_font().color(&red),
+                )])
+            .map_err(|e| failed(path, e))?;
+    }
+    let green = RGBColor(20, 130, 60);
+    for p in &model.probes {
+        let z = model.node_z[p.node];
+        let top = radius_at(p.node) + 0.45 * r_max;
+        chart
+            .draw_series(LineSeries::new(
+                [(z, top), (z, radius_at(p.node) + 0.05 * r_max)],
+                green.stroke_width(2),
+            ))
+            .map_err(|e| failed(path, e))?;
+        chart
+            .draw_series([EmptyElement::at((z, top))
+                + Text::new(
+                    format!("probe {}", p.name),
+                    (-20, -20),
+                    ("sans-serif", 15).into_font().color(&green),
+                )])
+            .map_err(|e| failed(path, e))?;
+    }
+    for s in &model.supports {
+        let z = model.node_z[s.node];
+        chart
+            .draw_series([Cross::new((z, 0.0), 8, BLACK.stroke_width(3))])
+            .map_err(|e| failed(path, e))?;
+    }
+    let y_nodes = -1.6 * r_max.max(0.02 * length);
+    for (k, z) in model.node_z.iter().enumerate() {
+        chart
+            .draw_series([EmptyElement::at((*z, y_nodes))
+                + Circle::new((0, 0), 2, BLACK.filled())
+                + Text::new(format!("{}", k + 1), (-4, 6), ("sans-serif", 13))])
+            .map_err(|e| failed(path, e))?;
+    }
+    root.present().map_err(|e| failed(path, e))?;
+    Ok(())
+}

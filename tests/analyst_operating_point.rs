@@ -1,0 +1,323 @@
+//! `rotor operating-point` and `analysis::operating_point` against the
+//! quadrature oracles of `tests/data/`: the plain short bearing and the
+//! four-pad tilting-pad bearing, each carrying W = 1000 N along −y at
+//! ω = 314.16 rad/s, built as a one-bearing rotor whose whole weight is W.
+
+use rotor_bearing::report::text::short;
+use std::path::PathBuf;
+use std::process::Command;
+
+use serde_json::Value;
+
+#[path = "common/reference.rs"]
+mod reference;
+use reference::{mat, num, reference};
+
+use rotor_bearing::analysis::operating_point::operating_point;
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
+use rotor_bearing::units::RAD_S_TO_RPM;
+
+/// A rotor of one shaft element (rotations fixed at both nodes) whose only
+/// bearing, at node 1, carries its whole weight, scaled to exactly `W` by
+/// choosing gravity `g = W / m`.
+fn one_bearing_rotor(bearing: &str, load: f64) -> (String, RotorModel) {
+    let text = format!(
+        r#"
+name = "one_bearing"
+gravity = [0.0, -9.81, 0.0]
+[[materials]]
+name = "steel"
+youngs_modulus = 2e11
+poisson_ratio = 0.3
+density = 7800.0
+[[shaft]]
+length = 0.2
+outer_diameter = 0.1
+material = "steel"
+elements = 1
+[[disks]]
+node = 2
+mass = 50.0
+polar_inertia = 0.1
+diametral_inertia = 0.05
+[[bearings]]
+name = "journal"
+node = 1
+{bearing}
+[[supports]]
+node = 1
+fix = ["rx", "ry"]
+[[supports]]
+node = 2
+fix = ["rx", "ry"]
+"#
+    );
+    let mut model = RotorModel::from_toml(&text, "one_bearing.toml").unwrap();
+    let g = load / model.total_mass();
+    model.gravity = [0.0, -g, 0.0];
+    (text.replace("-9.81", &format!("{:?}", -g)), model)
+}
+
+fn plain_bearing(p: &Value) -> String {
+    format!(
+        "type = \"plain\"\nradius = {:?}\nlength = {:?}\nclearance = {:?}\nviscosity = {:?}",
+        num(&p["R"]),
+        num(&p["L"]),
+        num(&p["C"]),
+        num(&p["mu"])
+    )
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+#[test]
+fn plain_bearing_operating_point_matches_the_short_bearing_reference() {
+    let r = reference("short_bearing_reference.json");
+    let p = &r["parameters"];
+    let (_, model) = one_bearing_rotor(&plain_bearing(p), num(&p["W"]));
+    let rotor = Rotor::new(model).unwrap();
+    let points = operating_point(&rotor, num(&p["omega"])).unwrap();
+    let b = &points[0];
+    let film = b.film.as_ref().unwrap();
+    let eq = &r["equilibrium"];
+    let co = &r["coefficients_at_equilibrium"];
+    let (k, c) = (mat(&co["K"]), mat(&co["C"]));
+    eprintln!(
+        "ε {} (ref {}), attitude {}° (ref {}), h_min {} m",
+        film.eccentricity,
+        num(&eq["eps"]),
+        film.attitude_angle.to_degrees(),
+        num(&eq["attitude_deg"]),
+        film.min_film_thickness
+    );
+    // The static solve stops at a relative residual of 1e-8 of the load.
+    assert!(rel(b.load, num(&p["W"])) < 1e-8, "load {}", b.load);
+    assert!(rel(film.eccentricity, num(&eq["eps"])) < 1e-6);
+    assert!(rel(film.attitude_angle.to_degrees(), num(&eq["attitude_deg"])) < 1e-6);
+    assert!(rel(film.min_film_thickness, num(&eq["h_min"])) < 1e-6);
+    let clearance = num(&p["C"]);
+    assert!(
+        rel(
+            film.min_film_thickness,
+            clearance * (1.0 - film.eccentricity)
+        ) < 1e-12
+    );
+    let mut worst: f64 = 0.0;
+    for i in 0..2 {
+        for j in 0..2 {
+            worst = worst
+                .max(rel(b.stiffness[i][j], k[(i, j)]))
+                .max(rel(b.damping[i][j], c[(i, j)]));
+            assert!(rel(b.stiffness[i][j], k[(i, j)]) < 1e-6, "K{i}{j}");
+            assert!(rel(b.damping[i][j], c[(i, j)]) < 1e-6, "C{i}{j}");
+        }
+    }
+    eprintln!("worst relative error of K and C: {worst:.1e}");
+    // Petroff-corrected friction torque over the whole film, T = 2π μ ω R³ L / (C √(1 − ε²)),
+    // and its power T ω.
+    let (mu, omega, radius, length) = (num(&p["mu"]), num(&p["omega"]), num(&p["R"]), num(&p["L"]));
+    let eps = film.eccentricity;
+    let torque = 2.0 * std::f64::consts::PI * mu * omega * radius.powi(3) * length
+        / (clearance * (1.0 - eps * eps).sqrt());
+    assert!(rel(film.friction_torque, torque) < 1e-12);
+    assert!(rel(film.power_loss, torque * omega) < 1e-12);
+}
+
+fn out_dir(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Header and rows (text cells) of a CSV file.
+fn read_csv(path: &std::path::Path) -> Vec<std::collections::BTreeMap<String, String>> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+    lines
+        .map(|l| {
+            header
+                .iter()
+                .cloned()
+                .zip(l.split(',').map(String::from))
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn command_prints_and_writes_the_reference_operating_point() {
+    let r = reference("short_bearing_reference.json");
+    let p = &r["parameters"];
+    let (text, _) = one_bearing_rotor(&plain_bearing(p), num(&p["W"]));
+    let dir = out_dir("operating_point");
+    let (model, csv) = (dir.join("one_bearing.toml"), dir.join("op.csv"));
+    std::fs::write(&model, text).unwrap();
+    let rpm = num(&p["omega"]) * RAD_S_TO_RPM;
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("operating-point")
+        .arg(&model)
+        .args(["--rpm", &format!("{rpm:?}"), "--csv"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // ε = 0.586463, φ = 47.3274°, h_min = C(1 − ε) = 41.3537 µm, 1000 N.
+    for needle in [
+        "static load 1000 N",
+        "eccentricity ratio 0.586463",
+        "attitude angle 47.3274°",
+        "minimum film thickness 41.3537 µm",
+        "K = [[2.10807e7, 3757590], [-4.10333e7, 3.78281e7]] N/m",
+        "C = [[74331.9, -68525.7], [-68525.7, 210815]] N·s/m",
+    ] {
+        assert!(stdout.contains(needle), "{needle} not in\n{stdout}");
+    }
+    let rows = read_csv(&csv);
+    let row = &rows[0];
+    let eq = &r["equilibrium"];
+    let get = |k: &str| -> f64 { row[k].parse().unwrap() };
+    assert_eq!(row["bearing"], "journal");
+    assert!(rel(get("eccentricity"), num(&eq["eps"])) < 1e-6);
+    assert!(rel(get("attitude_angle_deg"), num(&eq["attitude_deg"])) < 1e-6);
+    assert!(
+        rel(
+            get("min_film_thickness_m"),
+            num(&p["C"]) * (1.0 - get("eccentricity"))
+        ) < 1e-12
+    );
+    let k = mat(&r["coefficients_at_equilibrium"]["K"]);
+    assert!(rel(get("kyx_N_m"), k[(1, 0)]) < 1e-6);
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("operating-point")
+        .arg(&model)
+        .args(["--rpm", "0"])
+        .output()
+        .unwrap();
+    // At standstill the journal rests on its bushing: the contact carries the
+    // load and the friction torque is the breakaway torque μ W R (μ = 0.2).
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let w = num(&p["W"]);
+    let breakaway = 0.2 * w * num(&p["R"]);
+    assert!(
+        stdout.contains("minimum film thickness 0 µm")
+            && stdout.contains(&format!("in contact: normal force {}", short(w)))
+            && stdout.contains(&format!("friction torque {} N·m", short(breakaway))),
+        "{stdout}"
+    );
+}
+
+#[test]
+fn tilting_pad_operating_point_matches_the_pad_reference() {
+    let r = reference("tilting_pad_reference.json");
+    let p = &r["parameters"];
+    let pivots: Vec<String> = p["pivots_deg"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| format!("{:?}", num(d)))
+        .collect();
+    let bearing = format!(
+        "type = \"tilting_pad\"\nradius = {:?}\nlength = {:?}\nclearance = {:?}\nviscosity = {:?}\npad_arc_deg = {:?}\npivots_deg = [{}]\npivot_offset = {:?}\npreload = {:?}",
+        num(&p["R"]),
+        num(&p["L"]),
+        num(&p["C"]),
+        num(&p["mu"]),
+        num(&p["pad_arc_deg"]),
+        pivots.join(", "),
+        num(&p["pivot_offset"]),
+        num(&p["preload"])
+    );
+    let (text, model) = one_bearing_rotor(&bearing, num(&p["W"]));
+    let rotor = Rotor::new(model).unwrap();
+    let points = operating_point(&rotor, num(&p["omega"])).unwrap();
+    let film = points[0].film.as_ref().unwrap();
+    // The command's pad table holds the same tilts and film thicknesses.
+    let dir = out_dir("operating_point_pads");
+    let (path, pads_csv) = (dir.join("pads.toml"), dir.join("pads.csv"));
+    std::fs::write(&path, text).unwrap();
+    let rpm = num(&p["omega"]) * RAD_S_TO_RPM;
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("operating-point")
+        .arg(&path)
+        .args(["--rpm", &format!("{rpm:?}"), "--pads-csv"])
+        .arg(&pads_csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rows = read_csv(&pads_csv);
+    assert_eq!(rows.len(), 4);
+    for (row, pad) in rows.iter().zip(&film.pads) {
+        let get = |k: &str| -> f64 { row[k].parse().unwrap() };
+        assert_eq!(row["bearing"], "journal");
+        assert!((get("pivot_deg") - pad.pivot.to_degrees()).abs() < 1e-12);
+        assert!(rel(get("tilt_m"), pad.tilt) < 1e-6);
+        assert!(rel(get("min_film_thickness_m"), pad.min_film_thickness) < 1e-6);
+    }
+    let eq = &r["equilibrium"];
+    // The oracle's tolerance (tests/tilting_pad_reference.rs): 1e-5.
+    assert!(
+        rel(film.eccentricity, num(&eq["eps"])) < 1e-5,
+        "ε {}",
+        film.eccentricity
+    );
+    assert_eq!(film.pads.len(), 4);
+    for pad in eq["pads"].as_array().unwrap() {
+        let k = pad["pad"].as_u64().unwrap() as usize;
+        let mine = film.pads[k];
+        assert!((mine.pivot.to_degrees() - num(&pad["pivot_deg"])).abs() < 1e-12);
+        if pad["loaded"].as_bool().unwrap() {
+            assert!(
+                rel(mine.tilt, num(&pad["eta"])) < 1e-5,
+                "pad {k} η {}",
+                mine.tilt
+            );
+            assert!(rel(mine.tilt_angle, num(&pad["psi_rad"])) < 1e-5);
+            assert!(
+                rel(mine.min_film_thickness, num(&pad["h_min"])) < 1e-5,
+                "pad {k} h_min {}",
+                mine.min_film_thickness
+            );
+        }
+    }
+    let smallest = film
+        .pads
+        .iter()
+        .map(|p| p.min_film_thickness)
+        .fold(f64::INFINITY, f64::min);
+    assert_eq!(film.min_film_thickness, smallest);
+    let sync = &r["synchronous_reduced"];
+    let (k, c) = (mat(&sync["K"]), mat(&sync["C"]));
+    let b = &points[0];
+    for i in 0..2 {
+        assert!(
+            rel(b.stiffness[i][i], k[(i, i)]) < 1e-5,
+            "K{i}{i} {}",
+            b.stiffness[i][i]
+        );
+        assert!(
+            rel(b.damping[i][i], c[(i, i)]) < 1e-5,
+            "C{i}{i} {}",
+            b.damping[i][i]
+        );
+        // Cross-coupling below 1e-3 of the direct terms (the oracle's own limit).
+        assert!(b.stiffness[i][1 - i].abs() < 1e-3 * k[(i, i)]);
+    }
+}

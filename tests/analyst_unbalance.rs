@@ -1,0 +1,294 @@
+//! `rotor unbalance` and `analysis::unbalance`: peaks, amplification factors and
+//! separation margins against the single-degree-of-freedom rotor's closed form,
+//! and the command's CSV against the library's direct solve.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use rotor_bearing::analysis::linear::{node_xy, unbalance_response};
+use rotor_bearing::analysis::unbalance::{
+    OperatingRange, peaks, response_points, separation_margin, speed_grid, sweep,
+};
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
+
+#[path = "common/sdof.rs"]
+mod sdof;
+use sdof::{K_EACH, MASS, ZETA, sdof_model};
+
+fn rotor_cli() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_rotor"))
+}
+
+fn out_dir(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(name);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Half-power speeds of the closed-form unbalance response
+/// `A(r) = r²/√((1 − r²)² + (2ζr)²)` (an independent bisection on the formula).
+fn closed_form_half_power(zeta: f64) -> (f64, f64, f64) {
+    let a = |r: f64| r * r / ((1.0 - r * r).powi(2) + (2.0 * zeta * r).powi(2)).sqrt();
+    let rp = 1.0 / (1.0 - 2.0 * zeta * zeta).sqrt();
+    let level = a(rp) / 2f64.sqrt();
+    let root = |mut lo: f64, mut hi: f64| {
+        let rising = a(lo) < level;
+        for _ in 0..200 {
+            let m = 0.5 * (lo + hi);
+            if (a(m) < level) == rising {
+                lo = m;
+            } else {
+                hi = m;
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    (rp, root(0.5, rp), root(rp, 2.0))
+}
+
+#[test]
+fn single_dof_rotor_peak_and_amplification_factor_match_the_closed_form() {
+    let rotor = Rotor::new(RotorModel::from_toml(&sdof_model(), "sdof.toml").unwrap()).unwrap();
+    let wn = (2.0 * K_EACH / MASS).sqrt();
+    let speeds = speed_grid(0.2 * wn, 2.0 * wn, 61).unwrap();
+    let points = response_points(&rotor);
+    assert_eq!(points[0].label, "probe disk");
+    let result = sweep(&rotor, &speeds, &points).unwrap();
+    let found = peaks(&rotor, &result, 0).unwrap();
+    assert_eq!(found.len(), 1, "{found:?}");
+    let peak = found[0];
+    let (rp, r1, r2) = closed_form_half_power(ZETA);
+    let speed_error = peak.speed / (rp * wn) - 1.0;
+    let af = peak.amplification_factor.unwrap();
+    let af_error = af * 2.0 * ZETA - 1.0;
+    let af_exact = rp / (r2 - r1);
+    eprintln!(
+        "peak {:.6} rad/s (closed form {:.6}, error {speed_error:.2e}); AF {af:.5} (1/(2ζ) = {}, error {af_error:.2e}; exact half-power {af_exact:.5})",
+        peak.speed,
+        rp * wn,
+        1.0 / (2.0 * ZETA)
+    );
+    // Model error (shaft flexibility and mass) ≈ 2e-5; the search resolves 1e-10.
+    assert!(speed_error.abs() < 5e-5, "{speed_error}");
+    // 1/(2ζ) is the light-damping limit (off by ≈ 4ζ² = 0.16 % at ζ = 0.02).
+    assert!(af_error.abs() < 0.01, "{af_error}");
+    // Against the exact half-power points of the closed form: the model error again.
+    assert!((af / af_exact - 1.0).abs() < 2e-4, "{af} vs {af_exact}");
+    // Peak amplitude: m e / m · r_p²/(2ζ√(1 − ζ²)) … = A(r_p) · (m e / M).
+    let a_peak =
+        rp * rp / ((1.0 - rp * rp).powi(2) + (2.0 * ZETA * rp).powi(2)).sqrt() * 1e-3 / MASS;
+    assert!(
+        (peak.amplitude / a_peak - 1.0).abs() < 1e-4,
+        "{} vs {a_peak}",
+        peak.amplitude
+    );
+    // Below the operating range by 25 %: API 684 asks min(16, 17(1 − 1/(AF − 1.5))) = 16 %.
+    let range = OperatingRange {
+        min: 1.25 * peak.speed,
+        max: 1.5 * peak.speed,
+    };
+    let margin = separation_margin(peak.speed, af, &range);
+    assert_eq!(margin.required, Some(0.16));
+    assert!((margin.actual - 0.25).abs() < 1e-12 && margin.pass);
+}
+
+/// Rows of a CSV file: header and numbers.
+fn read_csv(path: &std::path::Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines();
+    let header = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    let rows = lines
+        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    (header, rows)
+}
+
+#[test]
+fn command_csv_equals_the_library_solve_on_the_classic_rotor() {
+    let dir = out_dir("unbalance_classic");
+    let (csv, png) = (dir.join("u.csv"), dir.join("u.png"));
+    let out = rotor_cli()
+        .args(["unbalance", "--max-rpm", "3000", "--points", "31", "--csv"])
+        .arg(&csv)
+        .arg("--png")
+        .arg(&png)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rotor = Rotor::new(RotorModel::default_model()).unwrap();
+    let (header, rows) = read_csv(&csv);
+    assert_eq!(header[..2], ["speed_rpm", "speed_rad_s"]);
+    // Points: probe disk (node 4), bearings drive_end (node 1), non_drive_end (node 7).
+    let nodes = [3, 0, 6];
+    assert_eq!(header.len(), 2 + 5 * nodes.len());
+    assert_eq!(header[2], "probe_disk_x_amplitude_m");
+    assert_eq!(header[12], "bearing_non_drive_end_x_amplitude_m");
+    assert_eq!(rows.len(), 31);
+    for row in &rows {
+        let q = unbalance_response(&rotor, row[1]).unwrap();
+        for (k, &node) in nodes.iter().enumerate() {
+            let (x, y) = node_xy(&q, node);
+            let c = &row[2 + 5 * k..7 + 5 * k];
+            assert_eq!(c[0], x.norm());
+            assert_eq!(c[1], x.arg().to_degrees());
+            assert_eq!(c[2], y.norm());
+            assert_eq!(c[3], y.arg().to_degrees());
+            // Major semi-axis of the orbit: |X + iY|/2 + |X − iY|/2.
+            let i = nalgebra::Complex::new(0.0, 1.0);
+            let major = (x + i * y).norm() / 2.0 + (x - i * y).norm() / 2.0;
+            assert!(
+                (c[4] - major).abs() <= 1e-15 * major.max(1e-300),
+                "{} vs {major}",
+                c[4]
+            );
+        }
+    }
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    assert!(bytes.len() > 20_000, "PNG of {} bytes", bytes.len());
+}
+
+/// The damped classic rotor: the printed peak sits at the first forward
+/// critical speed and its AF is 1/(2ζ) of that mode within 1 % (the light-damping
+/// limit is off by ≈ 4ζ² = 0.7 % at ζ = 0.021, and a two-bearing rotor is not one
+/// oscillator: the forward frequency moves with speed).
+#[test]
+fn printed_peak_table_of_the_damped_classic_rotor() {
+    let model =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor_damped.toml");
+    let out = rotor_cli()
+        .arg("unbalance")
+        .arg(&model)
+        .args([
+            "--max-rpm",
+            "3000",
+            "--points",
+            "61",
+            "--operating-rpm",
+            "1500:1800",
+        ])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with("probe disk"))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    let cells: Vec<&str> = line.split_whitespace().collect();
+    let rpm: f64 = cells[2].parse().unwrap();
+    let af: f64 = cells[4].parse().unwrap();
+    let rotor = Rotor::new(RotorModel::from_file(&model).unwrap()).unwrap();
+    let speed = rpm * std::f64::consts::PI / 30.0;
+    let modes = rotor_bearing::analysis::modal::modes(
+        &rotor,
+        speed,
+        &rotor_bearing::analysis::modal::ModalOptions {
+            modes: 4,
+            ..Default::default()
+        },
+    )
+    .unwrap();
+    let forward = modes
+        .iter()
+        .find(|m| m.whirl == rotor_bearing::analysis::modal::Whirl::Forward)
+        .unwrap();
+    eprintln!(
+        "peak {rpm} rpm, AF {af}; forward mode {:.2} rad/s, 1/(2ζ) = {:.3}",
+        forward.damped_frequency,
+        0.5 / forward.damping_ratio
+    );
+    assert!((speed / forward.damped_frequency - 1.0).abs() < 2e-3);
+    assert!((af * 2.0 * forward.damping_ratio - 1.0).abs() < 0.01);
+    // 1500 rpm is (1500 − Nc)/Nc above it: required min(16, …) = 16 %.
+    let actual = (1500.0 - rpm) / rpm * 100.0;
+    assert!(
+        line.contains(&format!("{actual:.1} %")) && line.contains("16.0 %"),
+        "{line} (actual {actual:.1})"
+    );
+    assert!(line.ends_with(if actual >= 16.0 { "pass" } else { "FAIL" }));
+}
+
+#[test]
+fn bad_options_are_named() {
+    for (args, needle) in [
+        (&["--node", "0"][..], "--node counts from 1"),
+        (
+            &["--node", "99"][..],
+            "--node 99 is outside the model's nodes 1..7",
+        ),
+        (&["--points", "2"][..], "--points must be at least 3, got 2"),
+        (
+            &["--min-rpm", "500", "--max-rpm", "100"][..],
+            "--min-rpm < --max-rpm",
+        ),
+        (&["--operating-rpm", "3000"][..], "--operating-rpm \"3000\""),
+        (
+            &["--node", "4", "--unbalance=-1"][..],
+            "--unbalance must be positive",
+        ),
+    ] {
+        let out = rotor_cli().arg("unbalance").args(args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{args:?}");
+        assert!(stderr.contains(needle), "{args:?}: {stderr}");
+    }
+}
+
+/// A fluid-film rotor: the grid skips standstill, every speed is linearized,
+/// and a single unbalance at a chosen node replaces the model's planes.
+#[test]
+fn jeffcott_rotor_on_plain_bearings_with_a_unit_unbalance() {
+    let model = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml");
+    let dir = out_dir("unbalance_jeffcott");
+    let csv = dir.join("j.csv");
+    let out = rotor_cli()
+        .arg("unbalance")
+        .arg(&model)
+        .args([
+            "--max-rpm",
+            "8000",
+            "--points",
+            "9",
+            "--node",
+            "5",
+            "--unbalance",
+            "1e-4",
+            "--csv",
+        ])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let (_, rows) = read_csv(&csv);
+    assert_eq!(rows.len(), 8);
+    assert_eq!(rows[0][0], 1000.0);
+    // Linear in the unbalance: 1e-4 kg·m is 5× the model's 2e-5 kg·m plane at node 5.
+    let rotor = Rotor::new(RotorModel::from_file(&model).unwrap()).unwrap();
+    let q = rotor_bearing::analysis::unbalance::response_at(&rotor, rows[3][1]).unwrap();
+    let (x, _) = node_xy(&q, 4);
+    assert!(
+        (rows[3][2] / x.norm() - 5.0).abs() < 1e-9,
+        "{} vs {}",
+        rows[3][2],
+        x.norm()
+    );
+}
