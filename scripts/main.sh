@@ -14,6 +14,13 @@ $rotor static --csv out/static_deflection.csv
 $rotor modes --rpm 4000 --modes 8 --csv out/modes_4000rpm.csv
 $rotor campbell --max-rpm 6000 --steps 60 --modes 8 --csv out/campbell.csv --png out/campbell.png
 $rotor coefficients --csv out/plain_bearing_coefficients.csv --png out/plain_bearing_coefficients.png
+# The analyst's set: unbalance response with amplification factors and API 684
+# separation margins (damped classic rotor), and one HTML report of the Jeffcott
+# rotor at 3000 rpm (operating point, unbalance response, modes and shapes,
+# stability, critical speed map, drawing).
+$rotor unbalance models/classic_disk_rotor_damped.toml --max-rpm 4000 --operating-rpm 2000:2500 \
+  --csv out/unbalance_response.csv --png out/unbalance_response.png
+$rotor report models/jeffcott.toml --rpm 3000 --out out/jeffcott_report.html
 # Nonlinear transient: a Jeffcott rotor on plain bearings run up through oil whirl into oil whip.
 $rotor simulate models/jeffcott.toml --ramp-rpm 3000:16000 --duration 8 --step 1e-4 --output-step 2e-4 \
   --csv out/jeffcott_run_up.csv --plots out/jeffcott_run_up > out/jeffcott_run_up_windows.txt
@@ -40,4 +47,4 @@ bash fmu_pack.sh --model models/classic_disk_rotor_damped.toml
 .venv/bin/python system/couple.py all 2>&1 | grep '→'
 .venv/bin/python system/sweep.py --fmu out/jeffcott.fmu --rpm 4000:16000:13 \
   --param "bearings.left.viscosity,bearings.right.viscosity=0.01,0.02,0.04" --duration 0.6 --out out/sweep_jeffcott
-echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*)"
+echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, unbalance_response.csv/png, jeffcott_report.html, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*)"

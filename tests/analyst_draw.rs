@@ -84,3 +84,38 @@ kyy = 1e6
         .unwrap();
     assert!(String::from_utf8_lossy(&out.stdout).contains("radial scale exaggerated ×10.0"));
 }
+
+/// A rub element is drawn (as a stator ring), so the picture of a model with a
+/// `[[rubs]]` entry differs from the same model without it.
+#[test]
+fn rub_elements_are_drawn() {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("draw_rub");
+    std::fs::create_dir_all(&dir).unwrap();
+    let base = std::fs::read_to_string(
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml"),
+    )
+    .unwrap();
+    let with_rub = format!("{base}\n[[rubs]]\nname = \"seal\"\nnode = 3\ngap = 2e-4\n");
+    let mut pictures = Vec::new();
+    for (stem, text) in [("plain", base), ("rub", with_rub)] {
+        let (toml, png) = (
+            dir.join(format!("{stem}.toml")),
+            dir.join(format!("{stem}.png")),
+        );
+        std::fs::write(&toml, text).unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .arg("draw")
+            .arg(&toml)
+            .arg("--png")
+            .arg(&png)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        pictures.push(std::fs::read(&png).unwrap());
+    }
+    assert_ne!(pictures[0], pictures[1]);
+}

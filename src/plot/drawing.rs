@@ -37,7 +37,8 @@ fn largest_diameter(model: &RotorModel) -> f64 {
 /// Side view of `model` in the y–z plane: shaft elements as their outer (and
 /// bore) outline, disks as the equivalent solid disk
 /// ([`Disk::equivalent_solid_dimensions`](crate::fe::disk::Disk::equivalent_solid_dimensions)),
-/// bearings as triangles under the shaft with their names, probes as arrows
+/// bearings as triangles under the shaft with their names, rub elements as
+/// stator bars around it, probes as arrows
 /// above it, supports as crosses, node numbers along the bottom. Axial and
 /// radial scales are equal unless [`radial_exaggeration`] says otherwise (the
 /// title then says by how much).
@@ -140,8 +141,30 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
             .fold(shaft, f64::max)
     };
     let red = RGBColor(190, 30, 30);
+    let purple = RGBColor(120, 40, 150);
     for b in &model.bearings {
         let z = model.node_z[b.node];
+        if b.kind.is_rub() {
+            // A stator ring: bars above and below the rotor at the node.
+            let r = radius_at(b.node) + 0.12 * r_max;
+            for side in [1.0, -1.0] {
+                chart
+                    .draw_series(LineSeries::new(
+                        [(z, side * r), (z, side * (r + 0.2 * r_max))],
+                        purple.stroke_width(5),
+                    ))
+                    .map_err(|e| failed(path, e))?;
+            }
+            chart
+                .draw_series([EmptyElement::at((z, r + 0.2 * r_max))
+                    + Text::new(
+                        format!("rub {}", b.name),
+                        (-20, -20),
+                        ("sans-serif", 15).into_font().color(&purple),
+                    )])
+                .map_err(|e| failed(path, e))?;
+            continue;
+        }
         let y = -radius_at(b.node) - 0.25 * r_max;
         chart
             .draw_series([EmptyElement::at((z, y))
