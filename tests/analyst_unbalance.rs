@@ -292,3 +292,29 @@ fn jeffcott_rotor_on_plain_bearings_with_a_unit_unbalance() {
         x.norm()
     );
 }
+
+/// The classic rotor has no damping: its 1111 rpm resonance is infinite in
+/// theory, and the peak table says so ("unbounded", AF "∞") instead of printing
+/// the refinement's resolution as an amplitude; the damped classic rotor's
+/// peak keeps its numbers.
+#[test]
+fn an_undamped_resonance_is_reported_as_unbounded() {
+    let out = rotor_cli().args(["unbalance"]).output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let row = stdout
+        .lines()
+        .find(|l| l.starts_with("probe disk"))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!(row.contains("unbounded") && row.contains('∞'), "{row}");
+    let damped = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/models/classic_disk_rotor_damped.toml"
+    );
+    let out = rotor_cli().args(["unbalance", damped]).output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let row = stdout
+        .lines()
+        .find(|l| l.starts_with("probe disk"))
+        .unwrap();
+    assert!(!row.contains("unbounded") && !row.contains('∞'), "{row}");
+}

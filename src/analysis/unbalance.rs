@@ -254,6 +254,19 @@ pub struct Peak {
     pub amplification_factor: Option<f64>,
 }
 
+/// Amplification factor above which a peak is an undamped resonance
+/// (`AF = 1/(2ζ)` for `ζ < 10⁻⁶`): its amplitude and width are set by the
+/// refinement's resolution, not by the rotor.
+pub const UNDAMPED_AMPLIFICATION: f64 = 5e5;
+
+impl Peak {
+    /// Whether the peak is an undamped resonance (see [`UNDAMPED_AMPLIFICATION`]).
+    pub fn is_undamped(&self) -> bool {
+        self.amplification_factor
+            .is_some_and(|af| af > UNDAMPED_AMPLIFICATION)
+    }
+}
+
 /// Golden-section refinement ratio `(√5 − 1)/2`.
 const GOLDEN: f64 = 0.618_033_988_749_894_9;
 

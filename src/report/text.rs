@@ -141,7 +141,9 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
 
 /// The table of unbalance response peaks `rotor unbalance` prints: point, peak
 /// speed (rpm), major semi-axis (µm), amplification factor, required and actual
-/// separation margins (%) and the verdict. A peak without both half-power
+/// separation margins (%) and the verdict. An undamped resonance
+/// ([`Peak::is_undamped`]) shows amplitude "unbounded" and AF "∞" (its margin
+/// is the one required for any AF past the cap). A peak without both half-power
 /// speeds inside the sweep has no AF (and no margin); a row with an AF but no
 /// margin had no operating range to measure from.
 pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin>)]) -> String {
@@ -149,9 +151,19 @@ pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin
         "point                      speed (rpm)  amplitude (µm)        AF  required SM  actual SM  result\n",
     );
     for (peak, margin) in rows {
-        let af = peak
-            .amplification_factor
-            .map_or("—".to_string(), |a| format!("{a:.2}"));
+        // An undamped resonance: infinite in theory, its numbers only the
+        // refinement's resolution.
+        let undamped = peak.is_undamped();
+        let af = match peak.amplification_factor {
+            _ if undamped => "∞".to_string(),
+            Some(a) => format!("{a:.2}"),
+            None => "—".to_string(),
+        };
+        let amplitude = if undamped {
+            "unbounded".to_string()
+        } else {
+            short(peak.amplitude * 1e6)
+        };
         let (required, actual, verdict) = match margin {
             Some(m) => (
                 m.required
@@ -169,7 +181,7 @@ pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin
             "{:<26} {:>11.1} {:>15} {:>9} {:>12} {:>10}  {verdict}",
             sweep.points[peak.point].label,
             peak.speed * RAD_S_TO_RPM,
-            short(peak.amplitude * 1e6),
+            amplitude,
             af,
             required,
             actual
