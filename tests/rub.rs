@@ -297,3 +297,12 @@ fn rubs_are_read_checked_and_reported_as_rubs() {
         assert!(e.contains(field), "{keys}: {e}");
     }
 }
+
+/// The operating point lists the bearings only: a rub element is not a bearing.
+#[test]
+fn the_operating_point_lists_bearings_not_rubs() {
+    let rotor = rub_rotor("", 0.0);
+    let points = rotor_bearing::analysis::operating_point::operating_point(&rotor, 100.0).unwrap();
+    let names: Vec<&str> = points.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["left", "right"]);
+}

@@ -85,7 +85,9 @@ pub struct BearingOperatingPoint {
     pub damping: [[f64; 2]; 2],
 }
 
-/// Every bearing of `rotor` at the static equilibrium under gravity at `speed` (rad/s).
+/// Every bearing of `rotor` at the static equilibrium under gravity at `speed`
+/// (rad/s). Rub elements are not bearings and are left out (their contact
+/// forces are outputs of the transient simulator and the FMU).
 pub fn operating_point(
     rotor: &Rotor,
     speed: f64,
@@ -111,6 +113,9 @@ pub fn operating_point(
         .map(|eq| bearing_coefficients(eq, speed))
         .unwrap_or_default();
     for (index, b) in model.bearings.iter().enumerate() {
+        if b.kind.is_rub() {
+            continue;
+        }
         let j = journal(b.node);
         let point = match &b.kind {
             BearingKind::Linear { stiffness, damping } => {
