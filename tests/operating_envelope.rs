@@ -211,9 +211,11 @@ fn slow_run_up_lifts_off_and_coast_down_touches_down_at_the_static_lift_off_spee
         (lift - lift_off).abs() < 0.02 * lift_off,
         "run-up lifts off at {lift} rad/s, static lift-off {lift_off} rad/s"
     );
+    eprintln!("static lift-off {lift_off} rad/s, run-up lifts off at {lift} rad/s");
     let down = ramp(&model, (above, below), (200.0, 0.0), 1e-2);
     assert_eq!(contact(&down[0]), 0.0, "floating at {above} rad/s");
     let touch = down[down.iter().position(|o| contact(o) > 0.0).unwrap()].speed;
+    eprintln!("coast-down touches down at {touch} rad/s");
     assert!(
         (touch - lift_off).abs() < 0.02 * lift_off,
         "coast-down touches down at {touch} rad/s, static lift-off {lift_off} rad/s"
