@@ -418,7 +418,10 @@ fn long_rotor_train_modes_are_found_with_banded_shift_invert() {
         eprintln!("{} {:e}", m.damped_frequency, m.residual);
     }
     for (f, c) in fine_modes.iter().zip(&coarse_modes) {
-        assert!(f.residual < 1e-8, "residual {}", f.residual);
+        // Backward error of the real-arithmetic Arnoldi vectors on this
+        // 16 004-DOF train: up to 1.2e-8 (the complex process gave 3e-9; the
+        // frequencies of both agree to 5e-14, tests/modal_reference.rs).
+        assert!(f.residual < 2e-8, "residual {}", f.residual);
         let rel = (f.damped_frequency - c.damped_frequency).abs() / f.damped_frequency;
         assert!(
             rel < 1e-5,

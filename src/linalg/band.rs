@@ -1,5 +1,7 @@
 //! General banded matrices in LAPACK band storage and their LU factorization
-//! with partial pivoting (the unblocked algorithm of LAPACK `xGBTF2`/`xGBTRS`).
+//! with partial pivoting (the unblocked algorithm of LAPACK `xGBTF2`/`xGBTRS`;
+//! like LAPACK's `izamax`, pivots and the singularity threshold measure a
+//! complex entry by `|re| + |im|`, which needs no square root).
 
 use nalgebra::{Complex, ComplexField, DMatrix};
 
@@ -246,7 +248,7 @@ impl<T: Scalar> BandMatrix<T> {
                 if !a.is_finite() {
                     return Err(LinalgError::NotFinite);
                 }
-                amax = amax.max(a.modulus());
+                amax = amax.max(a.norm1());
             }
         }
         let thresh = n as f64 * f64::EPSILON * amax;
@@ -273,7 +275,7 @@ impl<T: Scalar> BandMatrix<T> {
             let mut p = 0usize;
             let mut pmax = -1.0_f64;
             for (r, v) in a[diag..=diag + km].iter().enumerate() {
-                let m = v.modulus();
+                let m = v.norm1();
                 if m > pmax {
                     pmax = m;
                     p = r;

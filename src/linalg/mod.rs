@@ -8,7 +8,10 @@ use std::fmt;
 pub mod arnoldi;
 pub mod band;
 
-pub use arnoldi::{ArnoldiOptions, EigenPair, LinearOperator, largest_eigenpairs};
+pub use arnoldi::{
+    ArnoldiOptions, EigenPair, LinearOperator, RealOperator, largest_eigenpairs,
+    largest_eigenpairs_real,
+};
 pub use band::{BandLu, BandMatrix, Scalar, map_to_complex};
 
 /// Numerical failures of the linear-algebra routines. Programming errors (an
