@@ -80,7 +80,8 @@ fn rub_of(rotor: &Rotor) -> (ContactLaw, usize) {
 }
 
 /// Kinetic + elastic (shaft, bearings, contact) energy (J) of the state.
-fn energy(rotor: &Rotor, sim: &Simulator) -> f64 {
+fn energy(sim: &Simulator) -> f64 {
+    let rotor = sim.rotor();
     let s = sim.state();
     let n = rotor.dof_count();
     let (mut mv, mut ku) = (vec![0.0; n], vec![0.0; n]);
@@ -88,12 +89,13 @@ fn energy(rotor: &Rotor, sim: &Simulator) -> f64 {
     rotor.stiffness.mul_vec(&s.u, &mut ku);
     let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
     let (law, node) = rub_of(rotor);
-    let (x, y) = rub_position(rotor, sim, node);
+    let (x, y) = rub_position(sim, node);
     0.5 * dot(&s.ud, &mv) + 0.5 * dot(&s.u, &ku) + law.potential_energy(x.0.hypot(y.0) - law.gap)
 }
 
 /// Position and velocity of `node`: `((x, ẋ), (y, ẏ))`.
-fn rub_position(rotor: &Rotor, sim: &Simulator, node: usize) -> ((f64, f64), (f64, f64)) {
+fn rub_position(sim: &Simulator, node: usize) -> ((f64, f64), (f64, f64)) {
+    let rotor = sim.rotor();
     let s = sim.state();
     let ix = rotor.dofs.free(node, DOF_X).unwrap();
     let iy = rotor.dofs.free(node, DOF_Y).unwrap();
@@ -142,21 +144,17 @@ fn frictionless_undamped_bounce_conserves_energy() {
         "contact_stiffness = 1e8\ncontact_damping = 0.0\nfriction_coefficient = 0.0",
         0.0,
     );
-    let check = rub_rotor(
-        "contact_stiffness = 1e8\ncontact_damping = 0.0\nfriction_coefficient = 0.0",
-        0.0,
-    );
-    let (law, node) = rub_of(&check);
+    let (law, node) = rub_of(&rotor);
     let mut sim = thrown(rotor, 0.0, 0.0, (0.18, -0.24), 1e-5);
-    let e0 = energy(&check, &sim);
+    let e0 = energy(&sim);
     let (mut worst, mut contact_steps) = (0.0f64, 0);
     for k in 1..=3000 {
         sim.advance_to(k as f64 * 1e-5).unwrap();
-        let ((x, _), (y, _)) = rub_position(&check, &sim, node);
+        let ((x, _), (y, _)) = rub_position(&sim, node);
         if x.hypot(y) > law.gap {
             contact_steps += 1;
         }
-        worst = worst.max((energy(&check, &sim) - e0).abs() / e0);
+        worst = worst.max((energy(&sim) - e0).abs() / e0);
     }
     eprintln!("energy drift {worst:e} of {e0} J over {contact_steps} steps in contact");
     assert!(contact_steps > 100, "only {contact_steps} steps in contact");
@@ -169,13 +167,13 @@ fn frictionless_undamped_bounce_conserves_energy() {
 #[test]
 fn energy_lost_to_friction_equals_the_friction_work() {
     let keys = "contact_stiffness = 1e8\ncontact_damping = 0.0\nfriction_coefficient = 0.3";
-    let check = rub_rotor(keys, 0.0);
-    let (law, node) = rub_of(&check);
+    let rotor = rub_rotor(keys, 0.0);
+    let (law, node) = rub_of(&rotor);
     // Thrown at the stator obliquely: it slides along it while in contact.
-    let mut sim = thrown(rub_rotor(keys, 0.0), 0.0, 6e-5, (0.3, 0.0), 1e-5);
-    let e0 = energy(&check, &sim);
+    let mut sim = thrown(rotor, 0.0, 6e-5, (0.3, 0.0), 1e-5);
+    let e0 = energy(&sim);
     let power = |sim: &Simulator| {
-        let ((x, vx), (y, vy)) = rub_position(&check, sim, node);
+        let ((x, vx), (y, vy)) = rub_position(sim, node);
         let (_, report) = law.evaluate(
             nalgebra::Vector2::new(x, y),
             nalgebra::Vector2::new(vx, vy),
@@ -192,7 +190,7 @@ fn energy_lost_to_friction_equals_the_friction_work() {
         work += 0.5 * (last + p) * 1e-5;
         last = p;
     }
-    let lost = e0 - energy(&check, &sim);
+    let lost = e0 - energy(&sim);
     eprintln!("energy lost {lost} J, friction work {work} J, of {e0} J");
     assert!(
         work > 0.05 * e0,
@@ -210,16 +208,16 @@ fn energy_lost_to_friction_equals_the_friction_work() {
 /// radially onto the stator at 0.3 m/s.
 fn whirl_after_impact(friction: f64) -> (f64, f64) {
     let keys = format!("contact_stiffness = 1e8\nfriction_coefficient = {friction}");
-    let check = rub_rotor(&keys, 2000.0);
-    let (law, node) = rub_of(&check);
-    let mut sim = thrown(rub_rotor(&keys, 2000.0), 500.0, 0.0, (0.0, -0.3), 1e-5);
+    let rotor = rub_rotor(&keys, 2000.0);
+    let (law, node) = rub_of(&rotor);
+    let mut sim = thrown(rotor, 500.0, 0.0, (0.0, -0.3), 1e-5);
     let (mut angle, mut last, mut contact, mut count) = (0.0, None::<f64>, 0, 0);
     for k in 1..=40_000 {
         sim.advance_to(k as f64 * 1e-5).unwrap();
         if k < 20_000 {
             continue;
         }
-        let ((x, _), (y, _)) = rub_position(&check, &sim, node);
+        let ((x, _), (y, _)) = rub_position(&sim, node);
         let a = y.atan2(x);
         if let Some(l) = last {
             let d = a - l;

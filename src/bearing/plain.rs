@@ -264,11 +264,10 @@ impl PlainBearing {
         force: &Vector2<f64>,
     ) -> BearingReport {
         let eccentricity = state.position.norm() / self.clearance;
-        let (_, contact) = self
-            .contact_law()
-            .evaluate(state.position, state.velocity, speed);
+        let law = self.contact_law();
+        let (_, contact) = law.evaluate(state.position, state.velocity, speed);
         let friction_torque = self.film().friction_torque(state, speed, None)
-            + contact_friction_torque(&self.contact_law(), &contact, speed);
+            + contact_friction_torque(&law, &contact, speed);
         BearingReport {
             eccentricity,
             attitude_angle: attitude_angle(&state.position, force),

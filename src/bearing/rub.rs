@@ -62,10 +62,11 @@ impl Bearing for RubElement {
             Vector2::new(qdot[0], qdot[1]),
             speed,
         );
+        let friction_torque = contact_friction_torque(&self.contact, &contact, speed);
         BearingReport {
             eccentricity: q[0].hypot(q[1]) / self.contact.gap,
-            friction_torque: contact_friction_torque(&self.contact, &contact, speed),
-            power_loss: contact_friction_torque(&self.contact, &contact, speed) * speed,
+            friction_torque,
+            power_loss: friction_torque * speed,
             contact_force: contact.normal_force,
             ..BearingReport::default()
         }

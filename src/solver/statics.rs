@@ -163,16 +163,18 @@ pub(super) fn settle(
     } else {
         vec![0.0; rotor.dof_count()]
     };
-    let resting = resting_start(rotor, sites, &f_ext);
+    // The resting start costs a banded factorization: build it only when used.
     if speed == 0.0 {
-        if let Some(u) = resting {
+        if let Some(u) = resting_start(rotor, sites, &f_ext) {
             return newton_static(rotor, sites, speed, options, time, u, None);
         }
     }
-    let first = newton_static(rotor, sites, speed, options, time, u0, p0);
-    match (first, resting) {
-        (Err(_), Some(u)) => newton_static(rotor, sites, speed, options, time, u, None),
-        (outcome, _) => outcome,
+    match newton_static(rotor, sites, speed, options, time, u0, p0) {
+        Err(e) => match resting_start(rotor, sites, &f_ext) {
+            Some(u) => newton_static(rotor, sites, speed, options, time, u, None),
+            None => Err(e),
+        },
+        outcome => outcome,
     }
 }
 
