@@ -25,7 +25,7 @@ $rotor report models/jeffcott.toml --rpm 3000 --out out/jeffcott_report.html
 $rotor simulate models/jeffcott.toml --ramp-rpm 3000:16000 --duration 8 --step 1e-4 --output-step 2e-4 \
   --csv out/jeffcott_run_up.csv --plots out/jeffcott_run_up > out/jeffcott_run_up_windows.txt
 # The whole operating envelope: the Jeffcott rotor from rest on its bushings up to
-# 3000 rpm (lift-off at about 2.5 rpm) and a coast-down back to standstill.
+# 3000 rpm (lift-off at 2.3 rpm) and a coast-down back to standstill.
 $rotor simulate models/jeffcott.toml --ramp-rpm 0:3000 --duration 2 --step 1e-4 --output-step 5e-4 \
   --csv out/jeffcott_start_from_rest.csv
 $rotor simulate models/jeffcott.toml --ramp-rpm 3000:0 --duration 2 --step 1e-4 --output-step 5e-4 \
