@@ -60,6 +60,19 @@ pub struct ModelFile {
     pub probes: Vec<ProbeEntry>,
     #[serde(default)]
     pub supports: Vec<SupportEntry>,
+    /// `[reduction]`: transients on a reduced rotor.
+    #[serde(default)]
+    pub reduction: Option<ReductionEntry>,
+}
+
+/// `[reduction]`: run transients on a Craig–Bampton reduced rotor (the
+/// nonlinear bearings, rubs, probes and unbalance planes kept physical).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ReductionEntry {
+    /// Fixed-interface modes kept; default
+    /// [`crate::model::DEFAULT_REDUCED_MODES`].
+    pub modes: Option<i64>,
 }
 
 /// `[[materials]]`: give `shear_modulus` or `poisson_ratio`.

@@ -30,6 +30,10 @@ use source_map::{culprit_in_entry, field_at, line_of, line_of_field};
 /// hydro, pump or turbine rotor, so only nonsense is refused.
 pub const DEFAULT_MAX_SPEED_RPM: f64 = 60_000.0;
 
+/// Fixed-interface modes a reduced rotor keeps when the model's `[reduction]`
+/// gives no `modes` (see [`crate::rotor::Rotor::reduced`]).
+pub const DEFAULT_REDUCED_MODES: usize = 10;
+
 /// Default memory budget (MB) of a model: its assembled matrices, factors and
 /// work vectors must fit, estimated at [`BYTES_PER_DOF`] per degree of freedom.
 pub const DEFAULT_MEMORY_BUDGET_MB: f64 = 4096.0;
@@ -139,6 +143,9 @@ pub struct RotorModel {
     /// Whether the file states `max_speed_rpm` (else `max_speed` is
     /// [`DEFAULT_MAX_SPEED_RPM`]).
     pub max_speed_stated: bool,
+    /// Fixed-interface modes of the reduced rotor transients run on
+    /// (`[reduction]`, see [`crate::rotor::Rotor::reduced`]); `None`: the full rotor.
+    pub reduced_modes: Option<usize>,
 }
 
 impl RotorModel {

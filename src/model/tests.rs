@@ -575,3 +575,23 @@ fn stated_maximum_speed_is_told_from_the_default() {
     let m = RotorModel::from_toml(&format!("max_speed_rpm = 5000.0\n{BASE}"), "m.toml").unwrap();
     assert!(m.max_speed_stated);
 }
+
+/// `[reduction]` asks for a reduced rotor: the documented default count
+/// without `modes`, the count given, and a count out of range is refused
+/// with the field, value and line.
+#[test]
+fn reduction_section_sets_the_mode_count() {
+    let m = RotorModel::from_toml(BASE, "m.toml").unwrap();
+    assert_eq!(m.reduced_modes, None);
+    let m = RotorModel::from_toml(&format!("{BASE}\n[reduction]\n"), "m.toml").unwrap();
+    assert_eq!(m.reduced_modes, Some(DEFAULT_REDUCED_MODES));
+    let m = RotorModel::from_toml(&format!("{BASE}\n[reduction]\nmodes = 4\n"), "m.toml").unwrap();
+    assert_eq!(m.reduced_modes, Some(4));
+    for bad in ["0", "-3", "1001"] {
+        let e = err_of(&format!("\n[reduction]\nmodes = {bad}\n"));
+        assert!(e.contains("reduction.modes") && e.contains(bad), "{e}");
+        assert!(e.contains("m.toml:16"), "{e}");
+    }
+    let e = err_of("\n[reduction]\nnodes = 4\n");
+    assert!(e.contains("nodes"), "{e}");
+}

@@ -4,7 +4,6 @@
 //! closing with a Schur complement on the bearing DOFs (see [`crate::solver`]).
 
 use crate::bearing::BearingEval;
-use crate::fe::DOF_PER_NODE;
 use crate::linalg::LinalgError;
 
 use super::condense::condense_internal;
@@ -396,7 +395,7 @@ impl Simulator {
             let mut inc: f64 = 0.0;
             let mut mag: f64 = 0.0;
             for (i, d) in w.du.iter().enumerate() {
-                if self.rotor.dofs.full(i) % DOF_PER_NODE < 2 {
+                if self.rotor.dofs.is_displacement(i) {
                     inc = inc.max(d.abs());
                     mag = mag.max(w.u[i].abs());
                 }

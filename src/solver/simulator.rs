@@ -530,7 +530,7 @@ impl Simulator {
         let mut friction_torque = 0.0;
         for (k, (bearing, site)) in self.output_bearings.iter().enumerate() {
             let node = self.rotor.model.bearings[k].node;
-            let at = |dof: usize, v: &[f64]| self.rotor.dofs.free(node, dof).map_or(0.0, |i| v[i]);
+            let at = |dof: usize, v: &[f64]| self.rotor.node_value(node, dof, v);
             let (x, y) = (at(DOF_X, &self.state.u), at(DOF_Y, &self.state.u));
             let (vx, vy) = (at(DOF_X, &self.state.ud), at(DOF_Y, &self.state.ud));
             let internal = bearing.internal_dofs();
@@ -568,16 +568,8 @@ impl Simulator {
             .probes
             .iter()
             .map(|p| ProbeOutput {
-                x: self
-                    .rotor
-                    .dofs
-                    .free(p.node, DOF_X)
-                    .map_or(0.0, |i| self.state.u[i]),
-                y: self
-                    .rotor
-                    .dofs
-                    .free(p.node, DOF_Y)
-                    .map_or(0.0, |i| self.state.u[i]),
+                x: self.rotor.node_value(p.node, DOF_X, &self.state.u),
+                y: self.rotor.node_value(p.node, DOF_Y, &self.state.u),
             })
             .collect();
         Ok(Outputs {

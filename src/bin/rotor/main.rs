@@ -156,6 +156,11 @@ enum Command {
         /// Start from rest at the bearing centres instead of the static equilibrium.
         #[arg(long)]
         no_settle: bool,
+        /// Run on a Craig–Bampton reduced rotor with this many fixed-interface
+        /// modes (bearings, rubs, probes and unbalance planes kept physical);
+        /// 0 for the full rotor. Default: the model's `[reduction]`, else full.
+        #[arg(long)]
+        reduced_modes: Option<usize>,
         /// Write the outputs to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
@@ -475,12 +480,19 @@ fn run(cli: Cli) -> Result<(), String> {
             ramp_time,
             no_gravity,
             no_settle,
+            reduced_modes,
             csv,
             plots,
         } => {
             let profile =
                 simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
             let rotor = load(&model)?;
+            let modes = reduced_modes.unwrap_or(rotor.model.reduced_modes.unwrap_or(0));
+            let rotor = if modes == 0 {
+                rotor
+            } else {
+                rotor.reduced(modes).map_err(|e| e.to_string())?
+            };
             let options = rotor_bearing::solver::SolverOptions {
                 time_step: step,
                 unbalance_ramp_time: ramp_time,

@@ -50,7 +50,22 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
             "must not exceed max_speed_rpm",
         ));
     }
+    let reduced_modes = match raw.reduction {
+        None => None,
+        Some(r) => Some(match r.modes {
+            None => super::DEFAULT_REDUCED_MODES,
+            Some(m) if (1..=MAX_REDUCED_MODES).contains(&m) => m as usize,
+            Some(m) => {
+                return Err(ctx.err(
+                    root.key("reduction").key("modes"),
+                    m,
+                    &format!("must be a mode count from 1 to {MAX_REDUCED_MODES}"),
+                ));
+            }
+        }),
+    };
     Ok(RotorModel {
+        reduced_modes,
         nominal_speed,
         max_speed,
         max_speed_stated: raw.max_speed_rpm.is_some(),
@@ -67,6 +82,9 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         gravity,
     })
 }
+
+/// Most fixed-interface modes a model may ask for (the reduced matrices are dense).
+const MAX_REDUCED_MODES: i64 = 1000;
 
 /// The model name must be an identifier (it becomes the FMU's model name).
 fn check_name(ctx: &Ctx, root: &FieldPath, name: &str) -> Result<(), ModelError> {

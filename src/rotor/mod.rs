@@ -13,12 +13,20 @@ use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
 use crate::model::RotorModel;
 
+mod reduction;
+
+pub use crate::model::DEFAULT_REDUCED_MODES;
+pub use reduction::Reduction;
+
 /// Map between the full DOF numbering (`4·node + k`) and the free DOFs left
-/// after ideal supports are removed.
+/// after ideal supports are removed. A [reduced](Rotor::reduced) rotor's map
+/// has its physical coordinates first (the kept nodes' free DOFs) and then
+/// `modal` coordinates that belong to no node.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DofMap {
     full_to_free: Vec<Option<usize>>,
     free_to_full: Vec<usize>,
+    modal: usize,
 }
 
 impl DofMap {
@@ -41,12 +49,21 @@ impl DofMap {
         Self {
             full_to_free,
             free_to_full,
+            modal: 0,
         }
     }
 
-    /// Number of free DOFs.
+    /// Number of free DOFs (coordinates, for a reduced rotor).
     pub fn free_count(&self) -> usize {
-        self.free_to_full.len()
+        self.free_to_full.len() + self.modal
+    }
+
+    /// Whether coordinate `i` is a displacement in metres: a translation `x`,
+    /// `y`, or a modal coordinate (scaled to its mode's peak translation).
+    pub fn is_displacement(&self, i: usize) -> bool {
+        self.free_to_full
+            .get(i)
+            .is_none_or(|&full| full % DOF_PER_NODE < 2)
     }
 
     /// Number of DOFs before constraints.
@@ -60,12 +77,20 @@ impl DofMap {
     }
 
     /// Full index of a free DOF.
+    ///
+    /// # Panics
+    /// For a modal coordinate of a reduced rotor (it belongs to no node).
     pub fn full(&self, free: usize) -> usize {
         self.free_to_full[free]
     }
 
     /// Expand a free-DOF vector to all DOFs (fixed DOFs are zero).
+    ///
+    /// # Panics
+    /// For a reduced rotor's map: expand its coordinates with
+    /// [`Reduction::expand`] first.
     pub fn expand<T: Copy + Default>(&self, free: &[T]) -> Vec<T> {
+        assert_eq!(self.modal, 0, "DofMap::expand of reduced coordinates");
         let mut out = vec![T::default(); self.full_count()];
         for (i, &v) in free.iter().enumerate() {
             out[self.free_to_full[i]] = v;
@@ -102,6 +127,9 @@ pub struct Rotor {
     pub nonlinear_bearings: Vec<BearingSite>,
     /// Consistent gravity load on the free DOFs (N, N·m).
     pub gravity_load: Vec<f64>,
+    /// `Some` for a [reduced](Rotor::reduced) rotor: matrices, load and
+    /// coordinates are then those of the reduced system.
+    pub reduction: Option<Reduction>,
 }
 
 /// Linear stiffness and damping of one bearing on its journal `(x, y)`.
@@ -124,6 +152,9 @@ pub enum AssemblyError {
     /// A linear bearing could not be evaluated.
     #[error("bearing {name}: {message}")]
     Bearing { name: String, message: String },
+    /// The rotor cannot be reduced as asked.
+    #[error("model {model}: reduction: {message}")]
+    Reduction { model: String, message: String },
 }
 
 impl Rotor {
@@ -218,10 +249,33 @@ impl Rotor {
             gyroscopic,
             nonlinear_bearings,
             gravity_load,
+            reduction: None,
         })
     }
 
-    /// Number of free DOFs.
+    /// The rotor transients run on: `model` [reduced](Rotor::reduced) to
+    /// `modes` fixed-interface modes, or the full rotor for `modes = 0`.
+    pub fn for_transients(model: RotorModel, modes: usize) -> Result<Self, AssemblyError> {
+        let full = Self::new(model)?;
+        if modes == 0 {
+            Ok(full)
+        } else {
+            full.reduced(modes)
+        }
+    }
+
+    /// Displacement `k` (0–3: x, y, θx, θy) of `node` in the coordinates `q`
+    /// of this rotor (through the basis for a reduced rotor's interior nodes;
+    /// 0 for a fixed DOF).
+    pub fn node_value(&self, node: usize, k: usize, q: &[f64]) -> f64 {
+        match (self.dofs.free(node, k), &self.reduction) {
+            (Some(i), _) => q[i],
+            (None, Some(r)) => r.node_value(node, k, q),
+            (None, None) => 0.0,
+        }
+    }
+
+    /// Number of free DOFs (coordinates, for a reduced rotor).
     pub fn dof_count(&self) -> usize {
         self.dofs.free_count()
     }
@@ -237,6 +291,12 @@ impl Rotor {
         &self,
         coefficients: &[JournalCoefficients],
     ) -> Result<Self, AssemblyError> {
+        if self.reduction.is_some() {
+            return Err(AssemblyError::Reduction {
+                model: self.model.name.clone(),
+                message: "linear analyses need the full rotor".into(),
+            });
+        }
         let mut model = self.model.clone();
         let mut stiffness = self.stiffness.clone();
         let mut damping = self.damping.clone();
@@ -283,12 +343,18 @@ impl Rotor {
             gyroscopic: self.gyroscopic.clone(),
             nonlinear_bearings: Vec::new(),
             gravity_load: self.gravity_load.clone(),
+            reduction: None,
         })
     }
 
     /// A freshly assembled copy (bearing objects are not clonable).
+    /// (A reduced rotor is reduced again with the same mode count.)
     pub fn clone_model(&self) -> Result<Self, AssemblyError> {
-        Self::new(self.model.clone())
+        let full = Self::new(self.model.clone())?;
+        match &self.reduction {
+            Some(r) => full.reduced(r.requested),
+            None => Ok(full),
+        }
     }
 
     /// Unbalance force amplitude vector for synchronous excitation at unit speed²:

@@ -1,0 +1,535 @@
+//! Craig–Bampton reduction of the assembled rotor for long transients.
+//!
+//! The free DOFs split into **physical** ones `b` (all free DOFs of the kept
+//! nodes: nonlinear bearings and rubs, probes, unbalance planes) and
+//! **interior** ones `i`. The interior moves with the boundary statically plus
+//! `m` fixed-interface modes (Craig & Bampton, AIAA J. 6(7), 1968):
+//!
+//! `u = T q`, `T = [[I, 0], [Ψ, Φ]]`, `Ψ = −K_ii⁻¹ K_ib`,
+//! `K_ii φ_k = ω_k² M_ii φ_k` for the `m` lowest `ω_k`,
+//!
+//! and every matrix becomes `Tᵀ X T` (`X` = M, K, C, G; dense, of order
+//! `r = n_b + m`), the gravity load `Tᵀ f_g`. Forces on kept nodes (bearing,
+//! rub and unbalance forces) enter `q` unchanged, because the boundary rows
+//! of `T` are the identity: the nonlinear forces act exactly where they do in
+//! the full model, and the static response to them is exact (Ψ). The modes
+//! carry the interior's dynamics up to `ω_m`; each is scaled to a largest
+//! translation of 1, so its coordinate is the peak interior displacement (m).
+//! The gyroscopic matrix is projected on the same basis, so one reduction
+//! serves every speed.
+
+use nalgebra::{DMatrix, SymmetricEigen};
+
+use super::{AssemblyError, DofMap, Rotor};
+use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
+use crate::linalg::BandMatrix;
+
+/// Relative change of the kept eigenvalues at which subspace iteration stops.
+const EIGEN_TOL: f64 = 1e-12;
+/// Subspace iterations allowed (each costs one banded solve per vector).
+const MAX_SUBSPACE_ITERATIONS: usize = 200;
+
+/// What a reduced rotor keeps, and its basis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Reduction {
+    /// Nodes kept as physical coordinates (0-based, ascending).
+    pub kept_nodes: Vec<usize>,
+    /// Physical coordinates (the free DOFs of the kept nodes), first in `q`.
+    pub physical: usize,
+    /// Fixed-interface modes kept, after the physical coordinates.
+    pub modes: usize,
+    /// Modes asked for (clamped to the interior's DOF count).
+    pub requested: usize,
+    /// Free DOFs of the full rotor.
+    pub full_dofs: usize,
+    /// Natural frequencies of the kept fixed-interface modes (rad/s), ascending.
+    pub mode_frequencies: Vec<f64>,
+    /// `T`: full free DOFs × reduced coordinates, `u = T q`.
+    pub basis: DMatrix<f64>,
+    /// The full rotor's DOF numbering (the rows of `basis`).
+    pub full_map: DofMap,
+    /// `Tᵀ`, so that a node's row of `T` is contiguous.
+    rows: DMatrix<f64>,
+}
+
+impl Reduction {
+    /// Full free-DOF vector `u = T q` of reduced coordinates `q`.
+    ///
+    /// # Panics
+    /// If `q` does not have one entry per reduced coordinate.
+    pub fn expand(&self, q: &[f64]) -> Vec<f64> {
+        assert_eq!(q.len(), self.basis.ncols(), "reduced coordinates");
+        (self.basis.clone() * nalgebra::DVector::from_column_slice(q))
+            .as_slice()
+            .to_vec()
+    }
+
+    /// Displacement `k` (0–3: x, y, θx, θy) of `node` for reduced
+    /// coordinates `q`: row `(node, k)` of `T` times `q` (0 for a fixed DOF).
+    pub fn node_value(&self, node: usize, k: usize, q: &[f64]) -> f64 {
+        self.full_map.free(node, k).map_or(0.0, |i| {
+            self.rows.column(i).iter().zip(q).map(|(t, x)| t * x).sum()
+        })
+    }
+
+    /// Highest kept fixed-interface frequency (rad/s), 0 without modes.
+    pub fn highest_frequency(&self) -> f64 {
+        self.mode_frequencies.last().copied().unwrap_or(0.0)
+    }
+
+    /// One line for logs and the CLI: what is kept and how far the modes reach.
+    pub fn describe(&self) -> String {
+        let nodes: Vec<String> = self
+            .kept_nodes
+            .iter()
+            .map(|n| (n + 1).to_string())
+            .collect();
+        let clamped = if self.requested > self.modes {
+            format!(" ({} asked, all the interior has)", self.requested)
+        } else {
+            String::new()
+        };
+        format!(
+            "reduced rotor (Craig–Bampton): {} coordinates for {} DOFs — {} physical at nodes {} + {} fixed-interface modes{clamped} up to {:.1} Hz",
+            self.physical + self.modes,
+            self.full_dofs,
+            self.physical,
+            nodes.join(", "),
+            self.modes,
+            self.highest_frequency() / std::f64::consts::TAU,
+        )
+    }
+}
+
+impl Rotor {
+    /// Nodes a reduced rotor keeps physical: every bearing kept out of the
+    /// matrices (nonlinear bearings, rubs), every probe and unbalance plane.
+    /// (Linear bearings stay in the matrices; their journals are read
+    /// through the basis.)
+    pub fn kept_nodes(&self) -> Vec<usize> {
+        let m = &self.model;
+        let bearings = m.bearings.iter().filter(|b| {
+            let bearing = b.kind.build();
+            !(bearing.is_linear() && bearing.internal_dofs() == 0)
+        });
+        let mut nodes: Vec<usize> = bearings
+            .map(|b| b.node)
+            .chain(m.probes.iter().map(|p| p.node))
+            .chain(m.unbalances.iter().map(|u| u.node))
+            .collect();
+        nodes.sort_unstable();
+        nodes.dedup();
+        nodes
+    }
+
+    /// This rotor reduced to its [kept nodes](Rotor::kept_nodes) and `modes`
+    /// fixed-interface modes (clamped to the interior DOF count), for the
+    /// transient [`Simulator`](crate::solver::Simulator).
+    ///
+    /// ```
+    /// use rotor_bearing::model::RotorModel;
+    /// use rotor_bearing::rotor::Rotor;
+    ///
+    /// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/hydro_unit.toml");
+    /// let rotor = Rotor::new(RotorModel::from_file(std::path::Path::new(path))?)?;
+    /// let reduced = rotor.reduced(10)?;
+    /// let r = reduced.reduction.as_ref().unwrap();
+    /// // Two guide bearings, the probes and the unbalance planes stay physical.
+    /// assert_eq!(r.physical + r.modes, reduced.dof_count());
+    /// assert!(reduced.dof_count() < rotor.dof_count());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn reduced(&self, modes: usize) -> Result<Rotor, AssemblyError> {
+        let fail = |message: String| AssemblyError::Reduction {
+            model: self.model.name.clone(),
+            message,
+        };
+        if self.reduction.is_some() {
+            return Err(fail("the rotor is already reduced".into()));
+        }
+        if modes == 0 {
+            return Err(fail("reduced_modes = 0: ask for at least one mode".into()));
+        }
+        let kept_nodes = self.kept_nodes();
+        if kept_nodes.is_empty() {
+            return Err(fail(
+                "no node to keep: the model has no nonlinear bearing, rub, probe or unbalance"
+                    .into(),
+            ));
+        }
+        let n = self.dof_count();
+        let mut is_kept = vec![false; n];
+        for &node in &kept_nodes {
+            for k in 0..DOF_PER_NODE {
+                if let Some(i) = self.dofs.free(node, k) {
+                    is_kept[i] = true;
+                }
+            }
+        }
+        let boundary: Vec<usize> = (0..n).filter(|&i| is_kept[i]).collect();
+        let interior: Vec<usize> = (0..n).filter(|&i| !is_kept[i]).collect();
+        let (nb, ni) = (boundary.len(), interior.len());
+        let m = modes.min(ni);
+
+        let k_ii = sub_band(&self.stiffness, &interior);
+        let m_ii = sub_band(&self.mass, &interior);
+        let lu = k_ii.lu().map_err(|e| {
+            fail(format!(
+                "the interior is not held by the kept nodes and linear bearings (K_ii: {e})"
+            ))
+        })?;
+        let (omega_sq, phi) = fixed_interface_modes(&k_ii, &m_ii, &lu, m).map_err(&fail)?;
+
+        // T = [[I, 0], [Ψ, Φ]] in the full free numbering.
+        let r = nb + m;
+        let mut basis = DMatrix::zeros(n, r);
+        let mut column = vec![0.0; ni];
+        for (c, &b) in boundary.iter().enumerate() {
+            basis[(b, c)] = 1.0;
+            for (x, &i) in column.iter_mut().zip(&interior) {
+                *x = -self.stiffness.get(i, b);
+            }
+            lu.solve_in_place(&mut column);
+            for (x, &i) in column.iter().zip(&interior) {
+                basis[(i, c)] = *x;
+            }
+        }
+        for k in 0..m {
+            let mut v: Vec<f64> = phi.column(k).iter().copied().collect();
+            normalize_to_peak_translation(&mut v, &interior, &self.dofs);
+            for (x, &i) in v.iter().zip(&interior) {
+                basis[(i, nb + k)] = *x;
+            }
+        }
+
+        let project = |x: &BandMatrix<f64>| -> BandMatrix<f64> {
+            let mut xt = DMatrix::zeros(n, r);
+            let mut y = vec![0.0; n];
+            for c in 0..r {
+                x.mul_vec(basis.column(c).as_slice(), &mut y);
+                xt.column_mut(c).copy_from_slice(&y);
+            }
+            let dense = basis.transpose() * xt;
+            let mut out = BandMatrix::new(r, r - 1, r - 1);
+            for j in 0..r {
+                for i in 0..r {
+                    out.set(i, j, dense[(i, j)]);
+                }
+            }
+            out
+        };
+        let gravity = basis.transpose() * nalgebra::DVector::from_column_slice(&self.gravity_load);
+
+        let mut dofs = DofMap {
+            full_to_free: vec![None; self.dofs.full_count()],
+            free_to_full: boundary.iter().map(|&b| self.dofs.full(b)).collect(),
+            modal: m,
+        };
+        for (c, &b) in boundary.iter().enumerate() {
+            dofs.full_to_free[self.dofs.full(b)] = Some(c);
+        }
+        Ok(Rotor {
+            model: self.model.clone(),
+            dofs,
+            mass: project(&self.mass),
+            stiffness: project(&self.stiffness),
+            damping: project(&self.damping),
+            gyroscopic: project(&self.gyroscopic),
+            nonlinear_bearings: self.nonlinear_bearings.clone(),
+            gravity_load: gravity.as_slice().to_vec(),
+            reduction: Some(Reduction {
+                kept_nodes,
+                physical: nb,
+                modes: m,
+                requested: modes,
+                full_dofs: n,
+                mode_frequencies: omega_sq.iter().map(|w2| w2.sqrt()).collect(),
+                rows: basis.transpose(),
+                basis,
+                full_map: self.dofs.clone(),
+            }),
+        })
+    }
+}
+
+/// The rows and columns `keep` (ascending) of a banded matrix, as a banded
+/// matrix of the same half-bandwidths (dropping DOFs never widens the band).
+fn sub_band(a: &BandMatrix<f64>, keep: &[usize]) -> BandMatrix<f64> {
+    let n = keep.len();
+    let mut out = BandMatrix::new(n, a.kl(), a.ku());
+    for j in 0..n {
+        for i in j.saturating_sub(out.ku())..(j + out.kl() + 1).min(n) {
+            let v = a.get(keep[i], keep[j]);
+            if v != 0.0 {
+                out.set(i, j, v);
+            }
+        }
+    }
+    out
+}
+
+/// The `m` lowest eigenpairs of `K φ = ω² M φ` (`K`, `M` symmetric positive
+/// definite), by subspace iteration with Rayleigh–Ritz (Bathe, *Finite Element
+/// Procedures*, §11.6): a block of `p = max(2m, m + 8)` vectors (all DOFs when
+/// fewer, which makes it one exact dense solve), `Y = K⁻¹ M X`, then the
+/// `p × p` pencil `(Yᵀ M X, Yᵀ M Y)` (`K Y = M X`, so `K` itself, badly
+/// conditioned, is never multiplied). Repeated eigenvalues (the two planes of
+/// an isotropic rotor) need no special care. Vectors come M-orthonormal.
+/// Converged when the kept eigenvalues change by less than [`EIGEN_TOL`], or
+/// stop improving below 1e-9 (their round-off floor).
+fn fixed_interface_modes(
+    k: &BandMatrix<f64>,
+    mass: &BandMatrix<f64>,
+    lu: &crate::linalg::BandLu<f64>,
+    m: usize,
+) -> Result<(Vec<f64>, DMatrix<f64>), String> {
+    let n = k.n();
+    if m == 0 {
+        return Ok((Vec::new(), DMatrix::zeros(n, 0)));
+    }
+    let p = (2 * m).max(m + 8).min(n);
+    // Start: unit vectors on the DOFs of largest M_jj / K_jj (Bathe's choice),
+    // plus a spread vector so no mode starts orthogonal to the block.
+    let mut x = DMatrix::zeros(n, p);
+    if p == n {
+        x.fill_with_identity();
+    } else {
+        let mut ratio: Vec<(f64, usize)> = (0..n)
+            .map(|j| (mass.get(j, j) / k.get(j, j).abs().max(f64::MIN_POSITIVE), j))
+            .collect();
+        ratio.sort_by(|a, b| b.0.total_cmp(&a.0));
+        for c in 1..p {
+            x[(ratio[c - 1].1, c)] = 1.0;
+        }
+        for j in 0..n {
+            x[(j, 0)] = 1.0 + (j % 7) as f64 * 0.1;
+        }
+    }
+    let mut previous: Vec<f64> = vec![f64::INFINITY; m];
+    let mut last_change = f64::INFINITY;
+    let (mut y, mut mx) = (DMatrix::zeros(n, p), DMatrix::zeros(n, p));
+    let mut work = vec![0.0; n];
+    for _ in 0..MAX_SUBSPACE_ITERATIONS {
+        for c in 0..p {
+            mass.mul_vec(x.column(c).as_slice(), &mut work);
+            mx.column_mut(c).copy_from_slice(&work);
+            lu.solve_in_place(&mut work);
+            y.column_mut(c).copy_from_slice(&work);
+        }
+        let kr = y.transpose() * &mx;
+        let mut my = DMatrix::zeros(n, p);
+        for c in 0..p {
+            mass.mul_vec(y.column(c).as_slice(), &mut work);
+            my.column_mut(c).copy_from_slice(&work);
+        }
+        let mr = y.transpose() * my;
+        let (values, vectors) = rayleigh_ritz(kr, mr)?;
+        x = &y * vectors;
+        let change = values[..m]
+            .iter()
+            .zip(&previous)
+            .map(|(v, p)| ((v - p) / v).abs())
+            .fold(0.0, f64::max);
+        previous = values[..m].to_vec();
+        if p == n || change <= EIGEN_TOL || (change <= 1e-9 && change >= last_change) {
+            return Ok((previous, x.columns(0, m).into_owned()));
+        }
+        last_change = change;
+    }
+    Err(format!(
+        "the fixed-interface modes did not converge in {MAX_SUBSPACE_ITERATIONS} subspace iterations"
+    ))
+}
+
+/// Eigenpairs of the pencil `(kr, mr)` (symmetrized), ascending, vectors
+/// `mr`-orthonormal.
+fn rayleigh_ritz(kr: DMatrix<f64>, mr: DMatrix<f64>) -> Result<(Vec<f64>, DMatrix<f64>), String> {
+    let p = kr.nrows();
+    let kr = (&kr + kr.transpose()) * 0.5;
+    let mr = (&mr + mr.transpose()) * 0.5;
+    let chol = mr
+        .cholesky()
+        .ok_or("the interior mass matrix is not positive definite")?;
+    let l = chol.l();
+    let linv_k = l
+        .solve_lower_triangular(&kr)
+        .ok_or("singular Rayleigh–Ritz mass")?;
+    let c = l
+        .solve_lower_triangular(&linv_k.transpose())
+        .ok_or("singular Rayleigh–Ritz mass")?;
+    let eig = SymmetricEigen::new((&c + c.transpose()) * 0.5);
+    let mut order: Vec<usize> = (0..p).collect();
+    order.sort_by(|&a, &b| eig.eigenvalues[a].total_cmp(&eig.eigenvalues[b]));
+    let values: Vec<f64> = order.iter().map(|&j| eig.eigenvalues[j]).collect();
+    let sorted = DMatrix::from_fn(p, p, |i, j| eig.eigenvectors[(i, order[j])]);
+    let vectors = l
+        .transpose()
+        .solve_upper_triangular(&sorted)
+        .ok_or("singular Rayleigh–Ritz mass")?;
+    Ok((values, vectors))
+}
+
+/// Scale an interior mode to a largest translation of 1 (its largest entry
+/// when it has no translation), the largest entry positive.
+fn normalize_to_peak_translation(v: &mut [f64], interior: &[usize], dofs: &DofMap) {
+    let translation = |j: usize| matches!(dofs.full(interior[j]) % DOF_PER_NODE, DOF_X | DOF_Y);
+    let peak = |only_translation: bool| {
+        (0..v.len())
+            .filter(|&j| !only_translation || translation(j))
+            .max_by(|&a, &b| v[a].abs().total_cmp(&v[b].abs()))
+    };
+    let largest = peak(false).map_or(0.0, |j| v[j].abs());
+    let j = match peak(true) {
+        Some(j) if v[j].abs() > 1e-9 * largest => j,
+        _ => match peak(false) {
+            Some(j) => j,
+            None => return,
+        },
+    };
+    let scale = 1.0 / v[j];
+    for x in v.iter_mut() {
+        *x *= scale;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::RotorModel;
+
+    /// An Euler–Bernoulli shaft (no shear, no rotary inertia) of 1 m, 50 mm,
+    /// in `elements` elements, probes at both ends and no bearings.
+    fn clamped_interior(elements: usize) -> Rotor {
+        let text = format!(
+            r#"
+name = "beam"
+shear_deformation = false
+rotary_inertia = false
+[[materials]]
+name = "steel"
+youngs_modulus = 211e9
+shear_modulus = 81.2e9
+density = 7810.0
+[[shaft]]
+length = 1.0
+outer_diameter = 0.05
+material = "steel"
+elements = {elements}
+[[probes]]
+name = "a"
+node = 1
+[[probes]]
+name = "b"
+node = {}
+"#,
+            elements + 1
+        );
+        Rotor::new(RotorModel::from_toml(&text, "beam.toml").unwrap()).unwrap()
+    }
+
+    /// With both ends kept, the interior is a clamped–clamped beam:
+    /// `ω_k = (β_k L)² √(EI / (ρ A L⁴))`, `β₁L = 4.730041`, `β₂L = 7.853205`,
+    /// each twice (the two planes). 80 cubic elements are within 1e-6 of it
+    /// (the discretization error falls as `h⁴`: 1e-6 for mode 2 at 40).
+    #[test]
+    fn fixed_interface_modes_are_those_of_the_clamped_interior() {
+        let rotor = clamped_interior(80);
+        let reduced = rotor.reduced(4).unwrap();
+        let r = reduced.reduction.as_ref().unwrap();
+        assert_eq!(
+            (r.kept_nodes.clone(), r.physical, r.modes),
+            (vec![0, 80], 8, 4)
+        );
+        let d: f64 = 0.05;
+        let (e, rho) = (211e9, 7810.0);
+        let (area, inertia) = (
+            std::f64::consts::PI * d * d / 4.0,
+            std::f64::consts::PI * d.powi(4) / 64.0,
+        );
+        let unit = (e * inertia / (rho * area)).sqrt();
+        for (k, bl) in [4.730_040_745, 4.730_040_745, 7.853_204_624, 7.853_204_624]
+            .iter()
+            .enumerate()
+        {
+            let exact = bl * bl * unit;
+            let rel = (r.mode_frequencies[k] / exact - 1.0).abs();
+            assert!(
+                rel < 1e-6,
+                "mode {k}: {} against {exact} rad/s ({rel:.1e})",
+                r.mode_frequencies[k]
+            );
+        }
+    }
+
+    /// Subspace iteration (block smaller than the interior) gives the
+    /// eigenvalues of a dense generalized solution of `(K_ii, M_ii)` to 1e-10,
+    /// repeated pairs included.
+    #[test]
+    fn subspace_iteration_matches_a_dense_eigensolution() {
+        let rotor = clamped_interior(30);
+        let interior: Vec<usize> = (4..rotor.dof_count() - 4).collect();
+        let k = sub_band(&rotor.stiffness, &interior);
+        let m = sub_band(&rotor.mass, &interior);
+        let lu = k.lu().unwrap();
+        let (values, vectors) = fixed_interface_modes(&k, &m, &lu, 6).unwrap();
+        assert!(2 * 6 < interior.len());
+        let (kd, md) = (k.to_dense(), m.to_dense());
+        // The inverse problem `L⁻¹ M L⁻ᵀ y = (1/ω²) y`, `K = L Lᵀ`, whose largest
+        // eigenvalues (the lowest modes) a dense solver gets to round-off.
+        let l = kd.cholesky().unwrap().l();
+        let a = l.solve_lower_triangular(&md).unwrap();
+        let a = l.solve_lower_triangular(&a.transpose()).unwrap();
+        let mut dense: Vec<f64> = SymmetricEigen::new(a)
+            .eigenvalues
+            .iter()
+            .map(|mu| 1.0 / mu)
+            .collect();
+        dense.sort_by(f64::total_cmp);
+        for (v, d) in values.iter().zip(&dense) {
+            assert!((v / d - 1.0).abs() < 1e-10, "{v} against {d}");
+        }
+        // M-orthonormal vectors.
+        let gram = vectors.transpose() * &md * &vectors;
+        assert!((gram - DMatrix::identity(6, 6)).amax() < 1e-10);
+    }
+
+    /// The reduced matrices are `Tᵀ X T` with `T` identity on the kept DOFs:
+    /// a static load on a kept DOF gives the full model's displacement there.
+    #[test]
+    fn static_condensation_is_exact_at_the_kept_nodes() {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/hydro_unit.toml");
+        let model = RotorModel::from_file(std::path::Path::new(path)).unwrap();
+        let mut full = Rotor::new(model).unwrap();
+        // Hold the journals (the guide bearings are kept out of K) with springs.
+        for b in full.model.bearings.clone() {
+            for k in [DOF_X, DOF_Y] {
+                let i = full.dofs.free(b.node, k).unwrap();
+                full.stiffness.add(i, i, 1e9);
+            }
+        }
+        let reduced = full.reduced(3).unwrap();
+        let node = reduced.reduction.as_ref().unwrap().kept_nodes[1];
+        let (i_full, i_red) = (
+            full.dofs.free(node, DOF_Y).unwrap(),
+            reduced.dofs.free(node, DOF_Y).unwrap(),
+        );
+        let mut f = vec![0.0; full.dof_count()];
+        f[i_full] = 1e6;
+        full.stiffness.lu().unwrap().solve_in_place(&mut f);
+        let mut g = vec![0.0; reduced.dof_count()];
+        g[i_red] = 1e6;
+        reduced.stiffness.lu().unwrap().solve_in_place(&mut g);
+        for &n in &reduced.reduction.as_ref().unwrap().kept_nodes {
+            for k in 0..DOF_PER_NODE {
+                let (a, b) = (
+                    f[full.dofs.free(n, k).unwrap()],
+                    reduced.node_value(n, k, &g),
+                );
+                assert!(
+                    (a - b).abs() <= 1e-12 * f[i_full].abs(),
+                    "node {n} dof {k}: {a} against {b}"
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,233 @@
+//! Reduced-order (Craig–Bampton) rotor against the full model.
+
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::{DEFAULT_REDUCED_MODES, Rotor};
+use rotor_bearing::solver::{Simulator, SolverOptions};
+
+fn model(name: &str) -> RotorModel {
+    let path = format!("{}/models/{name}.toml", env!("CARGO_MANIFEST_DIR"));
+    RotorModel::from_file(std::path::Path::new(&path)).unwrap()
+}
+
+/// Probe and journal displacements over a transient: `[output][time] = (x, y)`.
+fn run(rotor: Rotor, speed: f64, step: f64, duration: f64) -> Vec<Vec<(f64, f64)>> {
+    let opts = SolverOptions {
+        time_step: step,
+        ..SolverOptions::default()
+    };
+    let mut sim = Simulator::new(rotor, opts).unwrap();
+    sim.set_speed(speed, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    let records = (duration / step).round() as usize;
+    let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
+    for k in 0..=records {
+        if k > 0 {
+            sim.advance_to(k as f64 * step).unwrap();
+        }
+        let o = sim.outputs().unwrap();
+        let points: Vec<(f64, f64)> = o
+            .bearings
+            .iter()
+            .map(|b| (b.x, b.y))
+            .chain(o.probes.iter().map(|p| (p.x, p.y)))
+            .collect();
+        if out.is_empty() {
+            out = vec![Vec::new(); points.len()];
+        }
+        for (series, p) in out.iter_mut().zip(points) {
+            series.push(p);
+        }
+    }
+    out
+}
+
+/// Largest distance between two runs at any output and time, over the largest
+/// orbit radius about its mean.
+fn orbit_error(full: &[Vec<(f64, f64)>], reduced: &[Vec<(f64, f64)>]) -> f64 {
+    let mut diff: f64 = 0.0;
+    let mut size: f64 = 0.0;
+    for (a, b) in full.iter().zip(reduced) {
+        let n = a.len() as f64;
+        let (mx, my) = a
+            .iter()
+            .fold((0.0, 0.0), |s, p| (s.0 + p.0 / n, s.1 + p.1 / n));
+        for (p, q) in a.iter().zip(b) {
+            diff = diff.max((p.0 - q.0).hypot(p.1 - q.1));
+            size = size.max((p.0 - mx).hypot(p.1 - my));
+        }
+    }
+    diff / size
+}
+
+/// The shipped models with a transient that shows their orbit: time step (s)
+/// and duration (s), at the nominal speed from the static equilibrium.
+const SHIPPED: [(&str, f64, f64); 6] = [
+    ("classic_disk_rotor", 1e-4, 0.3),
+    ("classic_disk_rotor_damped", 1e-4, 0.5),
+    ("jeffcott", 1e-4, 0.3),
+    ("vertical_rotor", 5e-4, 1.0),
+    ("hydro_unit", 5e-3, 8.0),
+    ("hydro_unit_plain", 5e-3, 8.0),
+];
+
+/// Acceptance of issue 17: on every shipped model, whose spin speed lies
+/// below the highest kept fixed-interface mode, the orbits (journals and
+/// probes, from the static equilibrium on) converge to the full model's as
+/// modes are added, and are within 1 % with the documented default count.
+#[test]
+fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
+    let shipped: Vec<String> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/models"))
+        .unwrap()
+        .map(|e| {
+            e.unwrap()
+                .path()
+                .file_stem()
+                .unwrap()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect();
+    assert_eq!(
+        shipped.len(),
+        SHIPPED.len(),
+        "a shipped model is missing here: {shipped:?}"
+    );
+    for (name, step, duration) in SHIPPED {
+        let m = model(name);
+        let speed = m.nominal_speed;
+        assert!(speed > 0.0, "{name}");
+        let full = run(Rotor::new(m.clone()).unwrap(), speed, step, duration);
+        let mut errors = Vec::new();
+        for modes in [1, 4, DEFAULT_REDUCED_MODES, 20] {
+            let rotor = Rotor::for_transients(m.clone(), modes).unwrap();
+            let r = rotor.reduction.clone().unwrap();
+            let error = orbit_error(&full, &run(rotor, speed, step, duration));
+            println!(
+                "{name}, {modes} modes: orbit error {error:.2e}; {}",
+                r.describe()
+            );
+            if modes == DEFAULT_REDUCED_MODES {
+                assert!(
+                    speed < r.highest_frequency(),
+                    "{name}: excitation above the kept modes"
+                );
+                assert!(
+                    error < 0.01,
+                    "{name}: {error:.2e} with the default {modes} modes"
+                );
+            }
+            errors.push(error);
+        }
+        assert!(
+            errors[3] < errors[0] && errors[3] < 1e-3,
+            "{name}: {errors:?}"
+        );
+    }
+}
+
+/// With every fixed-interface mode kept, `T` is a change of basis: the
+/// reduced transient is the full one up to round-off.
+#[test]
+fn keeping_every_mode_reproduces_the_full_model() {
+    for (name, step, duration) in [
+        ("jeffcott", 1e-4, 0.1),
+        ("classic_disk_rotor_damped", 1e-4, 0.1),
+    ] {
+        let m = model(name);
+        let full_rotor = Rotor::new(m.clone()).unwrap();
+        let interior = full_rotor.dof_count() - 4 * full_rotor.kept_nodes().len();
+        let reduced = full_rotor.reduced(interior).unwrap();
+        assert_eq!(reduced.dof_count(), full_rotor.dof_count());
+        let speed = m.nominal_speed;
+        let error = orbit_error(
+            &run(full_rotor, speed, step, duration),
+            &run(reduced, speed, step, duration),
+        );
+        assert!(error < 1e-7, "{name}: {error:.2e}");
+    }
+}
+
+/// Static condensation is exact at the kept nodes: the static equilibrium on
+/// nonlinear bearings (plain and tilting-pad, gravity across and along the
+/// shaft) is the full model's, whatever the mode count.
+#[test]
+fn static_equilibrium_on_the_bearings_is_exact() {
+    for name in ["jeffcott", "hydro_unit", "vertical_rotor"] {
+        let m = model(name);
+        let speed = m.nominal_speed;
+        let full = run(Rotor::new(m.clone()).unwrap(), speed, 1e-4, 0.0);
+        for modes in [1, 3] {
+            let reduced = run(
+                Rotor::for_transients(m.clone(), modes).unwrap(),
+                speed,
+                1e-4,
+                0.0,
+            );
+            for (a, b) in full.iter().zip(&reduced) {
+                let scale = a[0].0.hypot(a[0].1).max(1e-9);
+                let d = (a[0].0 - b[0].0).hypot(a[0].1 - b[0].1);
+                assert!(
+                    d <= 1e-9 * scale,
+                    "{name}, {modes} modes: {:?} against {:?}",
+                    a[0],
+                    b[0]
+                );
+            }
+        }
+    }
+}
+
+/// Journals of linear bearings stay in the matrices and off the kept nodes;
+/// their outputs come through the basis and agree with the full model's.
+#[test]
+fn linear_bearing_outputs_come_through_the_basis() {
+    let m = model("classic_disk_rotor_damped");
+    let rotor = Rotor::for_transients(m.clone(), DEFAULT_REDUCED_MODES).unwrap();
+    assert_eq!(rotor.kept_nodes(), vec![3]);
+    let speed = m.nominal_speed;
+    let full = run(Rotor::new(m).unwrap(), speed, 1e-4, 0.2);
+    let reduced = run(rotor, speed, 1e-4, 0.2);
+    for (a, b) in full[..2].iter().zip(&reduced[..2]) {
+        let size = a.iter().fold(0.0f64, |s, p| s.max(p.0.hypot(p.1)));
+        assert!(size > 1e-6);
+        let d = a
+            .iter()
+            .zip(b)
+            .fold(0.0f64, |s, (p, q)| s.max((p.0 - q.0).hypot(p.1 - q.1)));
+        assert!(d < 0.01 * size, "{d} against {size}");
+    }
+}
+
+/// Asking for too much or too little is a clear error; a count above the
+/// interior's is clamped and said.
+#[test]
+fn reduction_requests_are_checked() {
+    let rotor = Rotor::new(model("jeffcott")).unwrap();
+    let e = rotor.reduced(0).unwrap_err().to_string();
+    assert!(
+        e.contains("jeffcott") && e.contains("reduced_modes = 0"),
+        "{e}"
+    );
+    let reduced = rotor.reduced(500).unwrap();
+    let r = reduced.reduction.as_ref().unwrap();
+    assert_eq!(r.physical + r.modes, rotor.dof_count());
+    assert!(
+        r.describe().contains("500 asked, all the interior has"),
+        "{}",
+        r.describe()
+    );
+    let e = reduced.reduced(4).unwrap_err().to_string();
+    assert!(e.contains("already reduced"), "{e}");
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/models/classic_disk_rotor.toml"
+    ))
+    .unwrap();
+    let bare: String = text.split("[[unbalance]]").next().unwrap().to_string();
+    let e = Rotor::new(RotorModel::from_toml(&bare, "bare.toml").unwrap())
+        .unwrap()
+        .reduced(4)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("no node to keep"), "{e}");
+}
