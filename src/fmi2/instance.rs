@@ -76,6 +76,8 @@ pub(super) struct Params {
     pub(super) ramp_time: f64,
     /// Gravity on/off.
     pub(super) gravity: bool,
+    /// Fixed-interface modes of the reduced rotor, 0 for the full rotor.
+    pub(super) reduced_modes: i32,
 }
 
 impl Params {
@@ -92,14 +94,16 @@ impl Params {
     }
 }
 
-impl Default for Params {
-    fn default() -> Self {
+impl Params {
+    /// The start values of `model`'s parameters.
+    pub(super) fn start(model: &RotorModel) -> Self {
         Self {
             time_step: DEFAULT_TIME_STEP,
             tolerance: DEFAULT_TOLERANCE,
             max_iterations: DEFAULT_MAX_ITERATIONS as i32,
             ramp_time: 0.0,
             gravity: true,
+            reduced_modes: model.reduced_modes.unwrap_or(0) as i32,
         }
     }
 }
@@ -121,6 +125,15 @@ pub struct Instance {
     outputs: Option<Outputs>,
     messages: Vec<LogMessage>,
     step_statistics: bool,
+}
+
+/// Which rotor the simulator runs on, for the log.
+fn coordinates(sim: &Simulator) -> String {
+    let rotor = sim.rotor();
+    match &rotor.reduction {
+        Some(r) => r.describe(),
+        None => format!("full rotor: {} DOFs", rotor.dof_count()),
+    }
 }
 
 fn category(status: Status) -> &'static str {
@@ -158,7 +171,10 @@ impl Instance {
         let vars = variables(&model);
         let (_, guid) = model_description(&model);
         let viscosity = model_viscosity(&model);
-        let sim = Self::fresh_simulator(&model)?;
+        let params = Params::start(&model);
+        let sim = Self::fresh_simulator(&model, params.reduced_modes)?;
+        let mut messages: Vec<LogMessage> = messages;
+        messages.push((Status::Ok, category(Status::Ok), coordinates(&sim)));
         Ok(Self {
             name: name.to_string(),
             model,
@@ -166,7 +182,7 @@ impl Instance {
             guid,
             vars,
             sim,
-            params: Params::default(),
+            params,
             viscosity,
             phase: Phase::Instantiated,
             start_time: 0.0,
@@ -177,12 +193,44 @@ impl Instance {
         })
     }
 
-    fn fresh_simulator(model: &RotorModel) -> Result<Simulator, String> {
-        let rotor = Rotor::new(model.clone()).map_err(|e| e.to_string())?;
+    /// A simulator at standstill on the rotor `reduced_modes` selects (0: full).
+    fn fresh_simulator(model: &RotorModel, reduced_modes: i32) -> Result<Simulator, String> {
+        let modes = usize::try_from(reduced_modes)
+            .map_err(|_| format!("solver.reduced_modes = {reduced_modes} must not be negative"))?;
+        let rotor = Rotor::for_transients(model.clone(), modes).map_err(|e| e.to_string())?;
         let mut sim = Simulator::new(rotor, SolverOptions::default()).map_err(|e| e.to_string())?;
         // The machine starts at standstill (the start value of `shaft.speed`).
         sim.set_speed(START_SPEED, 0.0).map_err(|e| e.to_string())?;
         Ok(sim)
+    }
+
+    /// Rebuild the simulator on the rotor `modes` selects (0: full), carrying
+    /// the inputs, their rates and the tuned viscosities over; the choice is
+    /// logged (`logAll`).
+    fn rebuild_simulator(&mut self, modes: i32) -> Result<(), SolverError> {
+        let mut sim = Self::fresh_simulator(&self.model, modes).map_err(SolverError::Input)?;
+        let old = self.sim.state();
+        let mut state = sim.state().clone();
+        state.time = old.time;
+        state.spin_angle = old.spin_angle;
+        state.speed = old.speed;
+        state.speed_rate = old.speed_rate;
+        state.speed_time = old.speed_time;
+        state.unbalance.clone_from(&old.unbalance);
+        state.unbalance_rate.clone_from(&old.unbalance_rate);
+        state.unbalance_phase.clone_from(&old.unbalance_phase);
+        sim.set_state(state)?;
+        let model = model_viscosity(&self.model);
+        for (k, (&mu, &given)) in self.viscosity.iter().zip(&model).enumerate() {
+            if mu != given {
+                sim.set_bearing_viscosity(k, mu)?;
+            }
+        }
+        self.sim = sim;
+        self.params.reduced_modes = modes;
+        let line = coordinates(&self.sim);
+        self.messages.push((Status::Ok, category(Status::Ok), line));
+        Ok(())
     }
 
     /// Instance name.
@@ -335,6 +383,7 @@ impl Instance {
             Binding::MaxIterations => f64::from(p.max_iterations),
             Binding::RampTime => p.ramp_time,
             Binding::Gravity => f64::from(u8::from(p.gravity)),
+            Binding::ReducedModes => f64::from(p.reduced_modes),
             Binding::Viscosity(k) => self.viscosity[k],
             Binding::UnbalancePhase(k) => s.unbalance_phase[k],
             Binding::Speed => self.sim.speed_at(s.time),
@@ -439,6 +488,8 @@ impl Instance {
                 self.params.gravity = value != 0.0;
                 Ok(())
             }
+            Binding::ReducedModes if value as i32 == self.params.reduced_modes => Ok(()),
+            Binding::ReducedModes => self.rebuild_simulator(value as i32),
             Binding::Viscosity(k) => {
                 let r = self.sim.set_bearing_viscosity(k, value);
                 if r.is_ok() {
@@ -595,10 +646,11 @@ impl Instance {
         if let Err(s) = self.check(Call::Reset) {
             return s;
         }
-        match Self::fresh_simulator(&self.model) {
+        let params = Params::start(&self.model);
+        match Self::fresh_simulator(&self.model, params.reduced_modes) {
             Ok(sim) => {
                 self.sim = sim;
-                self.params = Params::default();
+                self.params = params;
                 self.viscosity = model_viscosity(&self.model);
                 self.phase = Phase::Instantiated;
                 self.outputs = None;
@@ -716,7 +768,8 @@ mod tests {
         );
         let model = RotorModel::from_toml(&text, "m.toml").unwrap();
         let mut instance = Instance::new("i", model).unwrap();
-        let messages = instance.drain_messages();
+        let mut messages = instance.drain_messages();
+        messages.retain(|m| m.0 == Status::Warning);
         assert_eq!(messages.len(), 1, "{messages:?}");
         let (status, category, text) = &messages[0];
         assert_eq!((*status, *category), (Status::Warning, "logStatusWarning"));
@@ -725,6 +778,8 @@ mod tests {
             "{text}"
         );
         let mut plain = Instance::new("i", RotorModel::default_model()).unwrap();
-        assert!(plain.drain_messages().is_empty());
+        let messages = plain.drain_messages();
+        assert!(messages.iter().all(|m| m.0 == Status::Ok), "{messages:?}");
+        assert_eq!(messages[0].2, "full rotor: 28 DOFs");
     }
 }

@@ -35,8 +35,9 @@ pub struct Snapshot {
 /// Start of every serialized state.
 pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
 /// Format version of the byte image (1 was the unversioned `RBFMU01` image;
-/// 3 added the step and speed of the factorization in hand).
-pub const VERSION: u64 = 3;
+/// 3 added the step and speed of the factorization in hand, 4 the reduced
+/// rotor's mode count).
+pub const VERSION: u64 = 4;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -62,7 +63,7 @@ fn phase_index(phase: Phase) -> f64 {
 }
 
 /// The scalar fields, in image order.
-const SCALARS: [Scalar; 13] = [
+const SCALARS: [Scalar; 14] = [
     ("time", |s| s.sim.time, |s, v| put(&mut s.sim.time, v)),
     (
         "spin_angle",
@@ -112,6 +113,17 @@ const SCALARS: [Scalar; 13] = [
         |s, v| {
             s.params.gravity = v == 1.0;
             v == 0.0 || v == 1.0
+        },
+    ),
+    (
+        "reduced_modes",
+        |s| f64::from(s.params.reduced_modes),
+        |s, v| {
+            let ok = v.fract() == 0.0 && (0.0..=f64::from(i32::MAX)).contains(&v);
+            if ok {
+                s.params.reduced_modes = v as i32;
+            }
+            ok
         },
     ),
     (
@@ -220,6 +232,12 @@ impl Snapshot {
                 self.fingerprint, current.fingerprint
             ));
         }
+        let (saved, running) = (self.params.reduced_modes, current.params.reduced_modes);
+        if saved != running {
+            return Err(format!(
+                "the state was saved with solver.reduced_modes = {saved}, this instance runs {running} (a fixed parameter: set it before restoring)"
+            ));
+        }
         for (name, get, _) in VECTORS {
             let (n, m) = (get(self).len(), get(current).len());
             if n != m {
@@ -280,6 +298,7 @@ impl Snapshot {
                 return Err(format!("corrupt state ({name} = {v})"));
             }
         }
+        snap.fits(current)?;
         for (name, _, get_mut) in VECTORS {
             let n = r.u64()?;
             let expected = get_mut(&mut snap).len();
@@ -333,6 +352,7 @@ mod tests {
                 max_iterations: 17,
                 ramp_time: 0.5,
                 gravity: false,
+                reduced_modes: 6,
             },
             viscosity: v(2, 0.03),
             phase: Phase::StepFailed,
@@ -349,6 +369,8 @@ mod tests {
         for (_, _, get_mut) in VECTORS {
             get_mut(&mut z).iter_mut().for_each(|x| *x = -1.0);
         }
+        // The mode count must match the reading instance's (tested apart).
+        z.params.reduced_modes = s.params.reduced_modes;
         z
     }
 
@@ -390,18 +412,24 @@ mod tests {
         assert!(e.contains("u has 9 values, this model 8"), "{e}");
         assert!(longer.fits(&s).is_err());
 
-        let mut v4 = s.to_bytes();
-        v4[MAGIC.len()..MAGIC.len() + 8].copy_from_slice(&4u64.to_le_bytes());
-        let e = Snapshot::from_bytes(&v4, &s).unwrap_err();
-        assert!(e.contains("version 4"), "{e}");
+        let mut v5 = s.to_bytes();
+        v5[MAGIC.len()..MAGIC.len() + 8].copy_from_slice(&5u64.to_le_bytes());
+        let e = Snapshot::from_bytes(&v5, &s).unwrap_err();
+        assert!(e.contains("version 5"), "{e}");
+
+        let mut reduced = s.clone();
+        reduced.params.reduced_modes = 12;
+        let e = Snapshot::from_bytes(&reduced.to_bytes(), &s).unwrap_err();
+        assert!(e.contains("reduced_modes = 12, this instance runs 6"), "{e}");
+        assert!(reduced.fits(&s).is_err());
     }
 
     #[test]
     fn out_of_domain_fields_are_refused() {
         let s = sample();
         let mut bytes = s.to_bytes();
-        // The phase is the eleventh scalar, right after the header and ten others.
-        let at = HEADER + 10 * 8;
+        // The phase is the twelfth scalar, right after the header and eleven others.
+        let at = HEADER + 11 * 8;
         bytes[at..at + 8].copy_from_slice(&9.0f64.to_le_bytes());
         let body = bytes.len() - TRAILER;
         let sum = fnv1a(&bytes[..body]);

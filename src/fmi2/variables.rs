@@ -22,6 +22,8 @@ pub enum Binding {
     RampTime,
     /// Gravity on/off (Boolean).
     Gravity,
+    /// Fixed-interface modes of the reduced rotor, 0 for the full rotor (Integer).
+    ReducedModes,
     /// Oil viscosity of model bearing `k` (Pa·s).
     Viscosity(usize),
     /// Angular position of unbalance plane `k` (rad).
@@ -133,6 +135,7 @@ pub fn value_range(binding: Binding, model: &RotorModel) -> (Option<f64>, Option
         Binding::TimeStep => pair(SolverOptions::TIME_STEP_RANGE),
         Binding::Tolerance => pair(SolverOptions::TOLERANCE_RANGE),
         Binding::MaxIterations => ints(SolverOptions::MAX_ITERATIONS_RANGE),
+        Binding::ReducedModes => ints((0, crate::model::MAX_REDUCED_MODES)),
         Binding::RampTime => pair(SolverOptions::RAMP_TIME_RANGE),
         Binding::Viscosity(_) => pair(VISCOSITY_RANGE),
         Binding::Speed => (Some(-model.max_speed), Some(model.max_speed)),
@@ -489,5 +492,17 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
             Binding::BearingMinFilm(k),
         );
     }
+    // Appended after the contact outputs, so earlier value references stay.
+    push(
+        "solver.reduced_modes".into(),
+        "Fixed-interface modes of the Craig-Bampton reduced rotor the transient runs on (nonlinear bearings, rubs, probes and unbalance planes kept physical); 0 runs the full rotor".into(),
+        Integer,
+        Parameter,
+        Fixed,
+        None,
+        None,
+        Some(model.reduced_modes.unwrap_or(0) as f64),
+        Binding::ReducedModes,
+    );
     out
 }

@@ -34,6 +34,9 @@ pub const DEFAULT_MAX_SPEED_RPM: f64 = 60_000.0;
 /// gives no `modes` (see [`crate::rotor::Rotor::reduced`]).
 pub const DEFAULT_REDUCED_MODES: usize = 10;
 
+/// Most fixed-interface modes a reduced rotor may keep (its matrices are dense).
+pub const MAX_REDUCED_MODES: usize = 1000;
+
 /// Default memory budget (MB) of a model: its assembled matrices, factors and
 /// work vectors must fit, estimated at [`BYTES_PER_DOF`] per degree of freedom.
 pub const DEFAULT_MEMORY_BUDGET_MB: f64 = 4096.0;

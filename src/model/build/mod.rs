@@ -54,12 +54,15 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         None => None,
         Some(r) => Some(match r.modes {
             None => super::DEFAULT_REDUCED_MODES,
-            Some(m) if (1..=MAX_REDUCED_MODES).contains(&m) => m as usize,
+            Some(m) if (1..=super::MAX_REDUCED_MODES as i64).contains(&m) => m as usize,
             Some(m) => {
                 return Err(ctx.err(
                     root.key("reduction").key("modes"),
                     m,
-                    &format!("must be a mode count from 1 to {MAX_REDUCED_MODES}"),
+                    &format!(
+                        "must be a mode count from 1 to {}",
+                        super::MAX_REDUCED_MODES
+                    ),
                 ));
             }
         }),
@@ -82,9 +85,6 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         gravity,
     })
 }
-
-/// Most fixed-interface modes a model may ask for (the reduced matrices are dense).
-const MAX_REDUCED_MODES: i64 = 1000;
 
 /// The model name must be an identifier (it becomes the FMU's model name).
 fn check_name(ctx: &Ctx, root: &FieldPath, name: &str) -> Result<(), ModelError> {
