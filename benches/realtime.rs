@@ -1,6 +1,7 @@
 //! Real-time factors (simulated seconds per wall-clock second) of the simulator
 //! the FMU drives: the hydro unit on tilting pads at the paper's 5 ms step and at
-//! 0.1 ms, and the Jeffcott rotor on plain bearings; medians of three runs.
+//! 0.1 ms, and the Jeffcott rotor on plain bearings, each on the full rotor and
+//! on the reduced one (10 fixed-interface modes); medians of three runs.
 //! `cargo bench --bench realtime`.
 
 use std::path::PathBuf;
@@ -10,13 +11,13 @@ use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
-fn realtime(name: &str, step: f64, seconds: f64) -> (f64, f64) {
+fn realtime(name: &str, modes: usize, step: f64, seconds: f64) -> (f64, f64) {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("models")
         .join(format!("{name}.toml"));
     let model = RotorModel::from_file(&path).unwrap();
     let mut sim = Simulator::new(
-        Rotor::new(model.clone()).unwrap(),
+        Rotor::for_transients(model.clone(), modes).unwrap(),
         SolverOptions {
             time_step: step,
             ..SolverOptions::default()
@@ -43,18 +44,27 @@ fn main() {
     if std::env::args().any(|a| a == "--list") {
         return;
     }
-    println!("| model | internal step | real-time factor | µs per step |");
-    println!("|---|---:|---:|---:|");
+    println!("| model | rotor | internal step | real-time factor | µs per step |");
+    println!("|---|---|---:|---:|---:|");
     for (name, step, seconds) in [
         ("hydro_unit", 5e-3, 60.0),
         ("hydro_unit", 1e-4, 4.0),
         ("hydro_unit_plain", 5e-3, 60.0),
         ("jeffcott", 1e-4, 4.0),
     ] {
-        // Median of three runs.
-        let mut runs: Vec<(f64, f64)> = (0..3).map(|_| realtime(name, step, seconds)).collect();
-        runs.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let (factor, per_step) = runs[1];
-        println!("| {name} | {step} s | {factor:.0}× | {per_step:.1} |");
+        for modes in [0, 10] {
+            // Median of three runs.
+            let mut runs: Vec<(f64, f64)> = (0..3)
+                .map(|_| realtime(name, modes, step, seconds))
+                .collect();
+            runs.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let (factor, per_step) = runs[1];
+            let rotor = if modes == 0 {
+                "full".to_string()
+            } else {
+                format!("reduced, {modes} modes")
+            };
+            println!("| {name} | {rotor} | {step} s | {factor:.0}× | {per_step:.1} |");
+        }
     }
 }

@@ -721,3 +721,56 @@ fn implausible_values_are_warned_by_every_command() {
         assert!(stderr.contains(&expected), "{args:?}: {stderr}");
     }
 }
+
+/// `simulate` says which rotor it runs on; `--reduced-modes` runs the
+/// Craig–Bampton rotor (the disk, where the unbalance and probe are, kept
+/// physical) and its disk orbit ends within 1 % of the full model's; a
+/// `[reduction]` section in the model selects it without the flag, and
+/// `--reduced-modes 0` forces the full rotor.
+#[test]
+fn simulate_says_which_rotor_runs_and_reduces_on_request() {
+    let dir = out_dir("reduced_cli");
+    let damped = models().join("classic_disk_rotor_damped.toml");
+    let run = |model: &std::path::Path, extra: &[&str], name: &str| {
+        let csv = dir.join(name);
+        let out = rotor()
+            .args([
+                "simulate",
+                model.to_str().unwrap(),
+                "--rpm",
+                "1000",
+                "--duration",
+                "0.3",
+            ])
+            .args(["--csv", csv.to_str().unwrap()])
+            .args(extra)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+        assert!(out.status.success(), "{stderr}");
+        (stderr, last_probe(&csv))
+    };
+    let (stderr, full) = run(&damped, &[], "full.csv");
+    assert!(stderr.contains("full rotor: 28 DOFs"), "{stderr}");
+    let (stderr, reduced) = run(&damped, &["--reduced-modes", "10"], "reduced.csv");
+    assert!(
+        stderr.contains("reduced rotor (Craig–Bampton): 14 coordinates for 28 DOFs — 4 physical at nodes 4 + 10 fixed-interface modes up to 1113.5 Hz"),
+        "{stderr}"
+    );
+    let radius = full.0.hypot(full.1);
+    let d = (full.0 - reduced.0).hypot(full.1 - reduced.1);
+    assert!(
+        radius > 1e-6 && d < 0.01 * radius,
+        "{d:e} against {radius:e}"
+    );
+
+    let text = std::fs::read_to_string(&damped).unwrap();
+    let with_section = dir.join("with_reduction.toml");
+    std::fs::write(&with_section, format!("{text}\n[reduction]\nmodes = 10\n")).unwrap();
+    let (stderr, again) = run(&with_section, &[], "section.csv");
+    assert!(stderr.contains("14 coordinates for 28 DOFs"), "{stderr}");
+    assert_eq!(again, reduced);
+    let (stderr, forced) = run(&with_section, &["--reduced-modes", "0"], "forced.csv");
+    assert!(stderr.contains("full rotor: 28 DOFs"), "{stderr}");
+    assert_eq!(forced, full);
+}

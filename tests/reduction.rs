@@ -61,19 +61,42 @@ fn orbit_error(full: &[Vec<(f64, f64)>], reduced: &[Vec<(f64, f64)>]) -> f64 {
 
 /// The shipped models with a transient that shows their orbit: time step (s)
 /// and duration (s), at the nominal speed from the static equilibrium.
-const SHIPPED: [(&str, f64, f64); 6] = [
-    ("classic_disk_rotor", 1e-4, 0.3),
-    ("classic_disk_rotor_damped", 1e-4, 0.5),
-    ("jeffcott", 1e-4, 0.3),
-    ("vertical_rotor", 5e-4, 1.0),
-    ("hydro_unit", 5e-3, 8.0),
-    ("hydro_unit_plain", 5e-3, 8.0),
+/// The README's table: orbit errors with 1, 4, 10 and 20 modes.
+const SHIPPED: [(&str, f64, f64, [f64; 4]); 6] = [
+    (
+        "classic_disk_rotor",
+        1e-4,
+        0.3,
+        [1.6e-1, 7.4e-3, 6.3e-4, 3.0e-6],
+    ),
+    (
+        "classic_disk_rotor_damped",
+        1e-4,
+        0.5,
+        [2.2e-1, 1.0e-2, 9.4e-4, 1.5e-5],
+    ),
+    ("jeffcott", 1e-4, 0.3, [8.9e-5, 6.2e-6, 9.9e-7, 5.0e-8]),
+    (
+        "vertical_rotor",
+        5e-4,
+        1.0,
+        [2.7e-5, 5.6e-7, 1.1e-7, 9.2e-12],
+    ),
+    ("hydro_unit", 5e-3, 8.0, [2.5e-2, 3.1e-3, 8.6e-5, 5.3e-6]),
+    (
+        "hydro_unit_plain",
+        5e-3,
+        8.0,
+        [4.7e-4, 1.1e-4, 1.5e-6, 1.3e-7],
+    ),
 ];
 
 /// Acceptance of issue 17: on every shipped model, whose spin speed lies
 /// below the highest kept fixed-interface mode, the orbits (journals and
 /// probes, from the static equilibrium on) converge to the full model's as
 /// modes are added, and are within 1 % with the documented default count.
+/// Each error is the README's, as printed there to two digits (the last,
+/// round-off-sized entry of the vertical rotor only in order of magnitude).
 #[test]
 fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
     let shipped: Vec<String> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/models"))
@@ -92,7 +115,7 @@ fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
         SHIPPED.len(),
         "a shipped model is missing here: {shipped:?}"
     );
-    for (name, step, duration) in SHIPPED {
+    for (name, step, duration, readme) in SHIPPED {
         let m = model(name);
         let speed = m.nominal_speed;
         assert!(speed > 0.0, "{name}");
@@ -118,10 +141,18 @@ fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
             }
             errors.push(error);
         }
-        assert!(
-            errors[3] < errors[0] && errors[3] < 1e-3,
-            "{name}: {errors:?}"
-        );
+        assert!(errors.windows(2).all(|w| w[1] < w[0]), "{name}: {errors:?}");
+        for (e, r) in errors.iter().zip(readme) {
+            let printed_alike = if r < 1e-10 {
+                (e / r).log10().abs() < 0.5
+            } else {
+                (e - r).abs() <= 0.05 * r + 1e-13
+            };
+            assert!(
+                printed_alike,
+                "{name}: {e:.2e} against the README's {r:.1e}"
+            );
+        }
     }
 }
 

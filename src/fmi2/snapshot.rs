@@ -420,7 +420,10 @@ mod tests {
         let mut reduced = s.clone();
         reduced.params.reduced_modes = 12;
         let e = Snapshot::from_bytes(&reduced.to_bytes(), &s).unwrap_err();
-        assert!(e.contains("reduced_modes = 12, this instance runs 6"), "{e}");
+        assert!(
+            e.contains("reduced_modes = 12, this instance runs 6"),
+            "{e}"
+        );
         assert!(reduced.fits(&s).is_err());
     }
 
