@@ -261,4 +261,16 @@ fn reduction_requests_are_checked() {
         .unwrap_err()
         .to_string();
     assert!(e.contains("no node to keep"), "{e}");
+    // Every node kept: nothing left to reduce, the rotor is the full one.
+    let both_ends =
+        format!("{bare}[[probes]]\nname = \"a\"\nnode = 1\n[[probes]]\nname = \"b\"\nnode = 7\n");
+    let short = both_ends
+        .replace("elements = 6", "elements = 1")
+        .replace("node = 4", "node = 2")
+        .replace("node = 7", "node = 2");
+    let full = Rotor::new(RotorModel::from_toml(&short, "short.toml").unwrap()).unwrap();
+    let all = full.reduced(3).unwrap();
+    let r = all.reduction.as_ref().unwrap();
+    assert_eq!((r.physical, r.modes), (full.dof_count(), 0));
+    assert_eq!(all.mass.to_dense(), full.mass.to_dense());
 }

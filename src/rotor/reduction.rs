@@ -48,8 +48,8 @@ pub struct Reduction {
     pub basis: DMatrix<f64>,
     /// The full rotor's DOF numbering (the rows of `basis`).
     pub full_map: DofMap,
-    /// `Tᵀ`, so that a node's row of `T` is contiguous.
-    rows: DMatrix<f64>,
+    /// `T` row by row (row-major), so that a node's row is one contiguous slice.
+    rows: Vec<f64>,
 }
 
 impl Reduction {
@@ -67,8 +67,10 @@ impl Reduction {
     /// Displacement `k` (0–3: x, y, θx, θy) of `node` for reduced
     /// coordinates `q`: row `(node, k)` of `T` times `q` (0 for a fixed DOF).
     pub fn node_value(&self, node: usize, k: usize, q: &[f64]) -> f64 {
+        let r = self.basis.ncols();
         self.full_map.free(node, k).map_or(0.0, |i| {
-            self.rows.column(i).iter().zip(q).map(|(t, x)| t * x).sum()
+            let row = &self.rows[i * r..(i + 1) * r];
+            row.iter().zip(q).fold(0.0, |sum, (t, x)| sum + t * x)
         })
     }
 
@@ -244,7 +246,7 @@ impl Rotor {
                 requested: modes,
                 full_dofs: n,
                 mode_frequencies: omega_sq.iter().map(|w2| w2.sqrt()).collect(),
-                rows: basis.transpose(),
+                rows: basis.transpose().as_slice().to_vec(),
                 basis,
                 full_map: self.dofs.clone(),
             }),
