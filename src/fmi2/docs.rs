@@ -56,13 +56,19 @@ pads whose tilts are extra unknowns). Each <code>fmi2DoStep</code> integrates th
 with Newmark's average-acceleration method (β = 1/4, γ = 1/2) and modified Newton–Raphson iterations in equal
 internal sub-steps no longer than <code>solver.time_step</code>. At <code>fmi2ExitInitializationMode</code> the rotor is put in
 static equilibrium under gravity at the start speed.</p>
+<p>With <code>solver.reduced_modes</code> &gt; 0 (start value from the model's <code>[reduction]</code>) the transient runs on a
+Craig–Bampton reduced rotor: the nodes of nonlinear bearings, rubs, probes and unbalance planes stay physical
+coordinates, the rest of the shaft follows them statically plus that many fixed-interface modes. Bearing forces act
+exactly as in the full model and static equilibria are the full model's; the orbits converge to the full model's as
+modes are added. The FMU logs which rotor runs (<code>logAll</code>).</p>
 <h2>Bearings</h2><ul>{bearings}</ul>
 <h2>Conventions and assumptions</h2>
 <ul>
 <li>SI units; the shaft axis is z, spin positive about +z (from +x toward +y).</li>
 <li>Bearing forces act on the journal. The journal position is relative to the bearing centre.</li>
-<li>A journal reaching the clearance circle (ε ≥ 1) is a solver failure: <code>fmi2DoStep</code> returns <code>fmi2Discard</code>;
-roll back with <code>fmi2SetFMUstate</code>.</li>
+<li>A journal reaching its bushing or pads goes on in metal-to-metal contact (penalty normal force, Coulomb friction).
+A step whose Newton iterations fail even after halving returns <code>fmi2Discard</code>; roll back with
+<code>fmi2SetFMUstate</code>.</li>
 <li>Unbalance force of a plane: m e (Ω² cos φ + Ω̇ sin φ, Ω² sin φ − Ω̇ cos φ), φ = spin angle + phase.</li>
 <li>Inputs are held constant over a step unless a first-order derivative is given
 (<code>fmi2SetRealInputDerivatives</code>, e.g. a speed ramp).</li>
