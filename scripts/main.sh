@@ -33,6 +33,9 @@ $rotor simulate models/jeffcott.toml --ramp-rpm 3000:0 --duration 2 --step 1e-4 
 # The hydro unit at 150 rpm on tilting-pad guide bearings.
 $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --output-step 5e-3 --ramp-time 2 \
   --csv out/hydro_unit.csv --plots out/hydro_unit > out/hydro_unit_windows.txt
+# The same run on the Craig–Bampton reduced rotor (34 coordinates for 80 DOFs).
+$rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --output-step 5e-3 --ramp-time 2 \
+  --reduced-modes 10 --csv out/hydro_unit_reduced.csv
 # The FMU: build, pack, validate with FMPy, and simulate it with FMPy.
 bash fmu_pack.sh
 .venv/bin/python scripts/fmpy_demo.py out/RotorBearing.fmu out/fmpy_hydro_unit
