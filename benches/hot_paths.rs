@@ -1,5 +1,5 @@
 //! Criterion benchmarks of the hot paths: one bearing evaluation (plain, tilting
-//! pad with 4 and 12 pads), one Newmark step of each shipped model, and one
+//! pad with 4 and 12 pads), one Newmark step of each shipped model (full and reduced), and one
 //! fmi2DoStep of the default FMU (through the safe instance the C exports call).
 
 use std::hint::black_box;
@@ -79,24 +79,35 @@ fn newmark_steps(c: &mut Criterion) {
         ("hydro_unit", 5e-3),
         ("hydro_unit_plain", 5e-3),
     ] {
-        let m = model(name);
-        let mut sim = Simulator::new(
-            Rotor::new(m.clone()).unwrap(),
-            SolverOptions {
-                time_step: step,
-                ..SolverOptions::default()
-            },
-        )
-        .unwrap();
-        sim.set_speed(m.nominal_speed, 0.0).unwrap();
-        sim.settle_static().unwrap();
-        sim.advance_to(50.0 * step).unwrap();
-        c.bench_function(&format!("Newmark step: {name} (h = {step} s)"), |b| {
-            b.iter(|| {
-                let t = sim.time() + step;
-                sim.advance_to(t).unwrap();
-            })
-        });
+        // The full rotor, then the reduced one with the default mode count.
+        for modes in [0, rotor_bearing::model::DEFAULT_REDUCED_MODES] {
+            let m = model(name);
+            let mut sim = Simulator::new(
+                Rotor::for_transients(m.clone(), modes).unwrap(),
+                SolverOptions {
+                    time_step: step,
+                    ..SolverOptions::default()
+                },
+            )
+            .unwrap();
+            sim.set_speed(m.nominal_speed, 0.0).unwrap();
+            sim.settle_static().unwrap();
+            sim.advance_to(50.0 * step).unwrap();
+            let rotor = if modes == 0 {
+                String::new()
+            } else {
+                format!(", reduced to {modes} modes")
+            };
+            c.bench_function(
+                &format!("Newmark step: {name}{rotor} (h = {step} s)"),
+                |b| {
+                    b.iter(|| {
+                        let t = sim.time() + step;
+                        sim.advance_to(t).unwrap();
+                    })
+                },
+            );
+        }
     }
 }
 
