@@ -320,6 +320,41 @@ impl<T: Scalar> BandMatrix<T> {
     }
 }
 
+impl BandMatrix<Complex<f64>> {
+    /// `self = Σ cᵢ Aᵢ` for real `Aᵢ` whose bands lie within the band of
+    /// `self`, summed term by term in the given order: the value of
+    /// [`map_to_complex`] of the first term followed by [`BandMatrix::scale_add`]
+    /// of the others, without complex copies of the operands (no allocation).
+    ///
+    /// # Panics
+    /// If a dimension differs or a band is not contained in the band of `self`.
+    pub fn assign_real_combination(&mut self, terms: &[(Complex<f64>, &BandMatrix<f64>)]) {
+        self.data.fill(Complex::new(0.0, 0.0));
+        for &(alpha, other) in terms {
+            check_len("operand of assign_real_combination", self.n, other.n);
+            assert!(
+                other.kl <= self.kl && other.ku <= self.ku,
+                "assign_real_combination: operand band (kl = {}, ku = {}) is not contained in the target band (kl = {}, ku = {})",
+                other.kl,
+                other.ku,
+                self.kl,
+                self.ku
+            );
+            for j in 0..self.n {
+                let i0 = j.saturating_sub(other.ku);
+                let i1 = (j + other.kl).min(self.n - 1);
+                let sb = j * self.ldab + self.ku - j;
+                let ob = j * other.ldab + other.ku - j;
+                let dst = &mut self.data[sb + i0..=sb + i1];
+                let src = &other.data[ob + i0..=ob + i1];
+                for (d, &s) in dst.iter_mut().zip(src) {
+                    *d += Complex::new(alpha.re * s, alpha.im * s);
+                }
+            }
+        }
+    }
+}
+
 /// `BandMatrix<f64>` → `BandMatrix<Complex<f64>>` with the same band.
 pub fn map_to_complex(a: &BandMatrix<f64>) -> BandMatrix<Complex<f64>> {
     BandMatrix {
