@@ -417,8 +417,7 @@ struct Polisher<'a> {
     k: &'a BandMatrix<f64>,
     d: &'a BandMatrix<f64>,
     m: &'a BandMatrix<f64>,
-    q: BandMatrix<C64>,
-    lu: Option<crate::linalg::BandLu<C64>>,
+    lu: crate::linalg::BandLu<C64>,
     /// Real and imaginary parts of `x`, and `D x_r`, `D x_i`, `M x_r`, `M x_i`.
     parts: [Vec<f64>; 6],
 }
@@ -430,23 +429,20 @@ impl<'a> Polisher<'a> {
             k: &rotor.stiffness,
             d,
             m: &rotor.mass,
-            q: map_to_complex(&rotor.stiffness.zeroed_like()),
-            lu: None,
+            lu: Default::default(),
             parts: std::array::from_fn(|_| vec![0.0; n]),
         }
     }
 
     /// Whether `Q(at)` is factored into `self.lu` (not singular).
     fn factored(&mut self, at: C64) -> bool {
-        self.q.assign_real_combination(&[
-            (C64::new(1.0, 0.0), self.k),
-            (at, self.d),
-            (at * at, self.m),
-        ]);
-        match &mut self.lu {
-            Some(lu) => self.q.lu_into(lu).is_ok(),
-            None => self.q.lu().map(|lu| self.lu = Some(lu)).is_ok(),
-        }
+        self.lu
+            .factor_real_combination(&[
+                (C64::new(1.0, 0.0), self.k),
+                (at, self.d),
+                (at * at, self.m),
+            ])
+            .is_ok()
     }
 
     /// `λ` polished with the Arnoldi vector `x` (see [`Polisher`]).
@@ -467,9 +463,7 @@ impl<'a> Polisher<'a> {
             else {
                 break;
             };
-            let Some(lu) = self.lu.as_ref() else {
-                break;
-            };
+            let lu = &self.lu;
             // u = Q'(at) x = D x + 2 at M x, with real products.
             let [xr, xi, dr, di, mr, mi] = &mut self.parts;
             for ((r, i), z) in xr.iter_mut().zip(xi.iter_mut()).zip(&x) {
