@@ -349,11 +349,9 @@ impl BandLu<Complex<f64>> {
         let first = terms.first().expect("at least one term").1;
         let (n, kl, ku) = (first.n, first.kl, first.ku);
         self.shape(n, kl, ku);
-        for col in self.data.chunks_exact_mut(self.ldab) {
-            col.fill(Complex::new(0.0, 0.0));
-        }
+        self.data.fill(Complex::new(0.0, 0.0));
         let ldab = self.ldab;
-        for &(alpha, other) in terms {
+        for &(_, other) in terms {
             check_len("operand of factor_real_combination", n, other.n);
             assert!(
                 other.kl <= kl && other.ku <= ku,
@@ -361,13 +359,15 @@ impl BandLu<Complex<f64>> {
                 other.kl,
                 other.ku,
             );
-            for j in 0..n {
+        }
+        for (j, col) in self.data.chunks_exact_mut(ldab).enumerate() {
+            // Row i of column j: `kl + ku + i - j` in the factor storage.
+            let sb = kl + ku - j;
+            for &(alpha, other) in terms {
                 let i0 = j.saturating_sub(other.ku);
                 let i1 = (j + other.kl).min(n - 1);
-                // Row i of column j: `kl + ku + i - j` in the factor storage.
-                let sb = j * ldab + kl + ku - j;
                 let ob = j * other.ldab + other.ku - j;
-                let dst = &mut self.data[sb + i0..=sb + i1];
+                let dst = &mut col[sb + i0..=sb + i1];
                 let src = &other.data[ob + i0..=ob + i1];
                 for (d, &s) in dst.iter_mut().zip(src) {
                     *d += Complex::new(alpha.re * s, alpha.im * s);
