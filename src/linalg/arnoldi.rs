@@ -9,7 +9,8 @@
 //! applied twice with the Daniel–Gragg–Kaufman–Stewart (DGKS) criterion,
 //! Ritz pairs from the complex Schur form of the projected Hessenberg matrix
 //! (Saad, *Numerical Methods for Large Eigenvalue Problems*, 2nd ed., ch. 6),
-//! explicit restarts with a growing Krylov dimension. An invariant subspace
+//! the factorization grown in place (convergence checked every 8 steps) up to
+//! a dimension that doubles at each explicit restart. An invariant subspace
 //! ("lucky breakdown") is continued with a fresh vector orthogonal to the
 //! basis, as in ARPACK's `getv0`.
 
@@ -1035,5 +1036,43 @@ mod tests {
         let first = run().expect("converged after restarts");
         assert_eq!(first.len(), 3);
         assert_eq!(Ok(first), run());
+    }
+
+    #[test]
+    fn converge_only_the_leading_ritz_values() {
+        // Eigenvalues 1/(k+1): the leading ones converge long before the fifth.
+        let n = 3000;
+        let d: Vec<f64> = (0..n).map(|k| 1.0 / (k as f64 + 1.0)).collect();
+        let mut apply = |x: &[f64], y: &mut [f64]| {
+            for ((yi, xi), di) in y.iter_mut().zip(x).zip(&d) {
+                *yi = xi * di;
+            }
+            Ok(())
+        };
+        let opts = ArnoldiOptions {
+            tol: 1e-12,
+            converge: Some(2),
+            ..ArnoldiOptions::default()
+        };
+        let pairs = largest_eigenpairs_real(n, 5, &mut apply, &opts).expect("converged");
+        assert_eq!(pairs.len(), 5);
+        for (k, p) in pairs.iter().enumerate().take(2) {
+            assert!(p.residual <= 1e-12, "{k}: {:e}", p.residual);
+            assert!((p.value - c(d[k], 0.0)).norm() < 1e-11 * d[k]);
+        }
+        let all = largest_eigenpairs_real(
+            n,
+            5,
+            &mut apply,
+            &ArnoldiOptions {
+                converge: None,
+                ..opts
+            },
+        )
+        .expect("converged");
+        for (k, p) in all.iter().enumerate() {
+            assert!(p.residual <= 1e-12, "{k}: {:e}", p.residual);
+            assert!((p.value - c(d[k], 0.0)).norm() < 1e-11 * d[k]);
+        }
     }
 }

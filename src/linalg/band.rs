@@ -750,4 +750,30 @@ mod tests {
         assert_eq!(c.get(0, 2), Complex::new(4.0, 0.0));
         assert_eq!(c.to_dense().map(|v| v.re), a.to_dense());
     }
+
+    #[test]
+    fn factor_real_combination_matches_complex_copies() {
+        let mut rng = Rng(5);
+        let n = 40;
+        let k: BandMatrix<f64> = random_band(&mut rng, n, 3, 2, false);
+        let d: BandMatrix<f64> = random_band(&mut rng, n, 2, 2, false);
+        let m: BandMatrix<f64> = random_band(&mut rng, n, 1, 1, false);
+        let (s, t) = (Complex::new(0.3, -1.2), Complex::new(-0.7, 0.4));
+        let mut q = map_to_complex(&k);
+        q.scale_add(s, &map_to_complex(&d));
+        q.scale_add(t, &map_to_complex(&m));
+        let reference = q.lu().expect("nonsingular");
+        let mut lu = BandLu::default();
+        for _ in 0..2 {
+            lu.factor_real_combination(&[(Complex::new(1.0, 0.0), &k), (s, &d), (t, &m)])
+                .expect("nonsingular");
+            assert_eq!(lu.data, reference.data);
+            assert_eq!(lu.ipiv, reference.ipiv);
+        }
+        // lu_into reuses the storage of a wider factorization.
+        let narrow: BandMatrix<Complex<f64>> = map_to_complex(&m);
+        narrow.lu_into(&mut lu).expect("nonsingular");
+        let direct = narrow.lu().expect("nonsingular");
+        assert_eq!((lu.data, lu.ipiv), (direct.data, direct.ipiv));
+    }
 }
