@@ -134,9 +134,8 @@ pub(crate) fn damping_at_speed(rotor: &Rotor, speed: f64) -> BandMatrix<f64> {
 /// the quadratic eigenproblem near 1e-10 even for modes far from the shift.
 const ARNOLDI_TOL: f64 = 1e-13;
 
-/// An eigenvalue `λ` with its first-order vector `[x; λx]` and whether its
-/// Ritz residual met [`ARNOLDI_TOL`].
-type Eigenpair = (C64, Vec<C64>, bool);
+/// An eigenvalue `λ` with its first-order vector `[x; λx]`.
+type Eigenpair = (C64, Vec<C64>);
 
 /// The shift-inverted first-order operator of one speed: `K + σD + σ²M`
 /// factored once, with `M` and `D + σM` for the right-hand sides.
@@ -189,13 +188,8 @@ impl ShiftInvert {
 
     /// The `nev` eigenvalues `λ = σ + 1/μ` nearest the shift, with their
     /// first-order vectors `[x; λx]`, and how many of a conjugate pair the list
-    /// holds (1 on the real path: the member with `Im λ ≥ 0`). On the real path
-    /// only the `converge` nearest (all if `None`) are sure to have converged.
-    fn eigenpairs(
-        &mut self,
-        nev: usize,
-        converge: Option<usize>,
-    ) -> Result<(Vec<Eigenpair>, usize), LinalgError> {
+    /// holds (1 on the real path: the member with `Im λ ≥ 0`).
+    fn eigenpairs(&mut self, nev: usize) -> Result<(Vec<Eigenpair>, usize), LinalgError> {
         let arnoldi = ArnoldiOptions {
             tol: ARNOLDI_TOL,
             ..ArnoldiOptions::default()
@@ -225,15 +219,11 @@ impl ShiftInvert {
                     }
                     Ok(())
                 };
-                let arnoldi = ArnoldiOptions {
-                    converge,
-                    ..arnoldi
-                };
                 let pairs = largest_eigenpairs_real(2 * n, nev, &mut apply, &arnoldi)?;
                 let conjugated = |p: EigenPair| {
                     let lambda = sigma + C64::new(1.0, 0.0) / p.value;
                     let vector = p.vector.iter().map(|z| z.conj()).collect();
-                    (lambda.conj(), vector, p.residual <= ARNOLDI_TOL)
+                    (lambda.conj(), vector)
                 };
                 Ok((pairs.into_iter().map(conjugated).collect(), 1))
             }
@@ -262,7 +252,7 @@ impl ShiftInvert {
                     Ok(())
                 };
                 let pairs = largest_eigenpairs(2 * n, nev, &mut apply, &arnoldi)?;
-                let shifted = |p: EigenPair| (sigma + C64::new(1.0, 0.0) / p.value, p.vector, true);
+                let shifted = |p: EigenPair| (sigma + C64::new(1.0, 0.0) / p.value, p.vector);
                 Ok((pairs.into_iter().map(shifted).collect(), 2))
             }
         }
@@ -331,10 +321,20 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
     // oscillating ones are found or the whole spectrum is in hand.
     let oscillating = |l: &C64| l.im > 1e-6 * l.norm() + 1e-9 * scale;
     let mut nev = (2 * options.modes + 4).min(2 * n);
-    // The real path converges the `2 · modes` eigenvalues nearest the shift
-    // (the others are spare slots for non-oscillating ones); should a mode
-    // that can be listed lie beyond them unconverged, all `nev` are converged.
-    let mut converge = Some(2 * options.modes);
+    let mut eigen = loop {
+        let (found, per_pair) = solver.eigenpairs(nev).map_err(lin)?;
+        let kept = found.iter().filter(|(l, _)| oscillating(l)).count();
+        if kept >= options.modes || nev == 2 * n {
+            break found;
+        }
+        let not_oscillating = found.len() - per_pair * kept;
+        nev = (nev + 2 * (options.modes - kept) + not_oscillating).min(2 * n);
+    };
+    eigen.retain(|(l, _)| oscillating(l));
+    // Only the modes that can be listed are polished: those ranked within
+    // `options.modes` by the Arnoldi values, or close enough to the last of
+    // them (1e-6 relative, fifty times the largest change polishing makes)
+    // that polishing could move them into the list.
     let t = options.target_frequency;
     let key = |l: &C64| {
         if t > 0.0 {
@@ -343,34 +343,15 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
             l.im.abs()
         }
     };
-    let eigen = loop {
-        let (mut found, per_pair) = solver.eigenpairs(nev, converge).map_err(lin)?;
-        let kept = found.iter().filter(|(l, _, _)| oscillating(l)).count();
-        if kept < options.modes && nev < 2 * n {
-            let not_oscillating = found.len() - per_pair * kept;
-            nev = (nev + 2 * (options.modes - kept) + not_oscillating).min(2 * n);
-            continue;
-        }
-        found.retain(|(l, _, _)| oscillating(l));
-        // Only the modes that can be listed are polished: those ranked within
-        // `options.modes` by the Arnoldi values, or close enough to the last
-        // of them (1e-6 relative, fifty times the largest change polishing
-        // makes) that polishing could move them into the list.
-        found.sort_by(|a, b| key(&a.0).total_cmp(&key(&b.0)));
-        if let Some((cut, _, _)) = found.get(options.modes - 1) {
-            let (cut_key, cut_norm) = (key(cut), cut.norm());
-            found.retain(|(l, _, _)| key(l) <= cut_key + 1e-6 * (l.norm() + cut_norm));
-        }
-        if converge.is_some() && found.iter().any(|(_, _, converged)| !converged) {
-            converge = None;
-            continue;
-        }
-        break found;
-    };
+    eigen.sort_by(|a, b| key(&a.0).total_cmp(&key(&b.0)));
+    if let Some((cut, _)) = eigen.get(options.modes - 1) {
+        let (cut_key, cut_norm) = (key(cut), cut.norm());
+        eigen.retain(|(l, _)| key(l) <= cut_key + 1e-6 * (l.norm() + cut_norm));
+    }
     let mut polish = Polisher::new(rotor, &d);
     let mut out: Vec<Mode> = eigen
         .into_iter()
-        .map(|(lambda, z, _)| {
+        .map(|(lambda, z)| {
             let lambda = polish.polished(lambda, &z[..n]);
             make_mode(rotor, &d, speed, lambda, &z[..n])
         })
