@@ -236,15 +236,37 @@ impl<T: Scalar> BandMatrix<T> {
     /// allocation when the sizes match, as in a time stepper refactoring at a
     /// new speed).
     pub fn lu_into(&self, lu: &mut BandLu<T>) -> Result<(), LinalgError> {
-        let (n, kl, ku) = (self.n, self.kl, self.ku);
+        lu.shape(self.n, self.kl, self.ku);
+        for (dst, src) in lu
+            .data
+            .chunks_exact_mut(lu.ldab)
+            .zip(self.data.chunks_exact(self.ldab))
+        {
+            dst[..self.kl].fill(T::zero());
+            dst[self.kl..].copy_from_slice(src);
+        }
+        lu.factor()
+    }
+}
+
+impl<T: Scalar> BandLu<T> {
+    /// Sets the dimensions of the factor storage (contents unspecified).
+    fn shape(&mut self, n: usize, kl: usize, ku: usize) {
+        self.n = n;
+        self.kl = kl;
+        self.ku = ku;
+        self.ldab = 2 * kl + ku + 1;
+        self.data.resize(self.ldab * n, T::zero());
+    }
+
+    /// Factors in place the matrix stored in the last `kl + ku + 1` rows of
+    /// `data` (the first `kl` rows zero), as described at [`BandMatrix::lu`].
+    fn factor(&mut self) -> Result<(), LinalgError> {
+        let (n, kl, ku, ldab) = (self.n, self.kl, self.ku, self.ldab);
         let kv = kl + ku;
-        let ldab = 2 * kl + ku + 1;
         let mut amax = 0.0_f64;
-        for j in 0..n {
-            let i0 = j.saturating_sub(ku);
-            let i1 = (j + kl).min(n - 1);
-            let base = j * self.ldab + ku - j;
-            for a in &self.data[base + i0..=base + i1] {
+        for col in self.data.chunks_exact(ldab) {
+            for a in &col[kl..] {
                 if !a.is_finite() {
                     return Err(LinalgError::NotFinite);
                 }
@@ -252,19 +274,7 @@ impl<T: Scalar> BandMatrix<T> {
             }
         }
         let thresh = n as f64 * f64::EPSILON * amax;
-        lu.n = n;
-        lu.kl = kl;
-        lu.ku = ku;
-        lu.ldab = ldab;
-        lu.data.clear();
-        lu.data.resize(ldab * n, T::zero());
-        for (dst, src) in lu
-            .data
-            .chunks_exact_mut(ldab)
-            .zip(self.data.chunks_exact(self.ldab))
-        {
-            dst[kl..].copy_from_slice(src);
-        }
+        let lu = self;
         lu.ipiv.clear();
         lu.ipiv.resize(n, 0);
         let (a, ipiv) = (&mut lu.data, &mut lu.ipiv);
@@ -317,6 +327,68 @@ impl<T: Scalar> BandMatrix<T> {
             *d = T::one() / *d;
         }
         Ok(())
+    }
+}
+
+impl BandLu<Complex<f64>> {
+    /// Factors `Σ cᵢ Aᵢ` for real `Aᵢ` into `self` (as [`BandMatrix::lu_into`]),
+    /// with the band of the first term, which must contain the bands of the
+    /// others; the sum is formed term by term in the given order (the value
+    /// of [`map_to_complex`] of the first term followed by
+    /// [`BandMatrix::scale_add`] of the others) directly in the factor
+    /// storage, without complex copies of the operands (no allocation when
+    /// the sizes match).
+    ///
+    /// # Panics
+    /// If `terms` is empty, a dimension differs or a band is not contained in
+    /// the band of the first term.
+    pub fn factor_real_combination(
+        &mut self,
+        terms: &[(Complex<f64>, &BandMatrix<f64>)],
+    ) -> Result<(), LinalgError> {
+        let first = terms.first().expect("at least one term").1;
+        let (n, kl, ku) = (first.n, first.kl, first.ku);
+        self.shape(n, kl, ku);
+        self.data.fill(Complex::new(0.0, 0.0));
+        let ldab = self.ldab;
+        for &(_, other) in terms {
+            check_len("operand of factor_real_combination", n, other.n);
+            assert!(
+                other.kl <= kl && other.ku <= ku,
+                "factor_real_combination: operand band (kl = {}, ku = {}) is not contained in the band (kl = {kl}, ku = {ku})",
+                other.kl,
+                other.ku,
+            );
+        }
+        for (j, col) in self.data.chunks_exact_mut(ldab).enumerate() {
+            // Row i of column j: `kl + ku + i - j` in the factor storage.
+            let sb = kl + ku - j;
+            for &(alpha, other) in terms {
+                let i0 = j.saturating_sub(other.ku);
+                let i1 = (j + other.kl).min(n - 1);
+                let ob = j * other.ldab + other.ku - j;
+                let dst = &mut col[sb + i0..=sb + i1];
+                let src = &other.data[ob + i0..=ob + i1];
+                for (d, &s) in dst.iter_mut().zip(src) {
+                    *d += Complex::new(alpha.re * s, alpha.im * s);
+                }
+            }
+        }
+        self.factor()
+    }
+}
+
+impl<T: Scalar> Default for BandLu<T> {
+    /// Empty factors (`n = 0`), storage for [`BandMatrix::lu_into`].
+    fn default() -> Self {
+        Self {
+            n: 0,
+            kl: 0,
+            ku: 0,
+            ldab: 0,
+            data: Vec::new(),
+            ipiv: Vec::new(),
+        }
     }
 }
 
@@ -677,5 +749,31 @@ mod tests {
         let c = map_to_complex(&a);
         assert_eq!(c.get(0, 2), Complex::new(4.0, 0.0));
         assert_eq!(c.to_dense().map(|v| v.re), a.to_dense());
+    }
+
+    #[test]
+    fn factor_real_combination_matches_complex_copies() {
+        let mut rng = Rng(5);
+        let n = 40;
+        let k: BandMatrix<f64> = random_band(&mut rng, n, 3, 2, false);
+        let d: BandMatrix<f64> = random_band(&mut rng, n, 2, 2, false);
+        let m: BandMatrix<f64> = random_band(&mut rng, n, 1, 1, false);
+        let (s, t) = (Complex::new(0.3, -1.2), Complex::new(-0.7, 0.4));
+        let mut q = map_to_complex(&k);
+        q.scale_add(s, &map_to_complex(&d));
+        q.scale_add(t, &map_to_complex(&m));
+        let reference = q.lu().expect("nonsingular");
+        let mut lu = BandLu::default();
+        for _ in 0..2 {
+            lu.factor_real_combination(&[(Complex::new(1.0, 0.0), &k), (s, &d), (t, &m)])
+                .expect("nonsingular");
+            assert_eq!(lu.data, reference.data);
+            assert_eq!(lu.ipiv, reference.ipiv);
+        }
+        // lu_into reuses the storage of a wider factorization.
+        let narrow: BandMatrix<Complex<f64>> = map_to_complex(&m);
+        narrow.lu_into(&mut lu).expect("nonsingular");
+        let direct = narrow.lu().expect("nonsingular");
+        assert_eq!((lu.data, lu.ipiv), (direct.data, direct.ipiv));
     }
 }
