@@ -361,13 +361,13 @@ impl BandLu<Complex<f64>> {
             );
         }
         for (j, col) in self.data.chunks_exact_mut(ldab).enumerate() {
-            // Row i of column j: `kl + ku + i - j` in the factor storage.
-            let sb = kl + ku - j;
+            // Row i of column j: `kl + ku + i - j` in the factor storage
+            // (`i ≥ j - ku`, so the index is never negative).
             for &(alpha, other) in terms {
                 let i0 = j.saturating_sub(other.ku);
                 let i1 = (j + other.kl).min(n - 1);
                 let ob = j * other.ldab + other.ku - j;
-                let dst = &mut col[sb + i0..=sb + i1];
+                let dst = &mut col[kl + ku + i0 - j..=kl + ku + i1 - j];
                 let src = &other.data[ob + i0..=ob + i1];
                 for (d, &s) in dst.iter_mut().zip(src) {
                     *d += Complex::new(alpha.re * s, alpha.im * s);
