@@ -9,18 +9,9 @@ use rotor_bearing::fmi2::variables::{Kind, variables};
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::solver::SolverOptions;
 
-fn model(name: &str) -> RotorModel {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("models/{name}.toml"));
-    RotorModel::from_file(&path).unwrap()
-}
-
-fn vr(model: &RotorModel, name: &str) -> u32 {
-    variables(model)
-        .iter()
-        .find(|v| v.name == name)
-        .unwrap_or_else(|| panic!("no variable {name}"))
-        .value_reference
-}
+#[path = "common/fmu.rs"]
+mod fmu;
+use fmu::{model, vr};
 
 fn started(model: &RotorModel) -> Instance {
     let mut fmu = Instance::new("limits", model.clone()).unwrap();

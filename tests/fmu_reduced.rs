@@ -6,18 +6,9 @@ use rotor_bearing::fmi2::instance::{Instance, Status};
 use rotor_bearing::fmi2::variables::{Kind, variables};
 use rotor_bearing::model::{DEFAULT_REDUCED_MODES, RotorModel};
 
-fn model(name: &str) -> RotorModel {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("models/{name}.toml"));
-    RotorModel::from_file(&path).unwrap()
-}
-
-fn vr(model: &RotorModel, name: &str) -> u32 {
-    variables(model)
-        .iter()
-        .find(|v| v.name == name)
-        .unwrap_or_else(|| panic!("no variable {name}"))
-        .value_reference
-}
+#[path = "common/fmu.rs"]
+mod fmu;
+use fmu::{model, vr};
 
 /// Journal x, y of the first bearing every 1 ms over 0.2 s at 3000 rpm,
 /// with `modes` set before initialization (`None`: left at its start value),

@@ -275,6 +275,15 @@ impl Rotor {
         }
     }
 
+    /// Which rotor this is, in one line for logs and the CLI: the reduction's
+    /// [`Reduction::describe`], or `full rotor: N DOFs`.
+    pub fn coordinates(&self) -> String {
+        match &self.reduction {
+            Some(r) => r.describe(),
+            None => format!("full rotor: {} DOFs", self.dof_count()),
+        }
+    }
+
     /// Number of free DOFs (coordinates, for a reduced rotor).
     pub fn dof_count(&self) -> usize {
         self.dofs.free_count()

@@ -56,14 +56,6 @@ pub fn speed_profile(
     }
 }
 
-/// Which rotor a transient runs on, in one line.
-pub fn coordinates(rotor: &Rotor) -> String {
-    match &rotor.reduction {
-        Some(r) => r.describe(),
-        None => format!("full rotor: {} DOFs", rotor.dof_count()),
-    }
-}
-
 /// What `rotor simulate` records and writes.
 pub struct Run {
     pub profile: SpeedProfile,
@@ -85,7 +77,7 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
     } = run;
     let profile = &profile;
     let model = rotor.model.clone();
-    eprintln!("{}", coordinates(&rotor));
+    eprintln!("{}", rotor.coordinates());
     let mut sim = Simulator::new(rotor, options).map_err(|e| e.to_string())?;
     let (w0, _) = profile.at(0.0);
     sim.set_speed(w0, 0.0).map_err(|e| e.to_string())?;

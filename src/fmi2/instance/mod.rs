@@ -129,15 +129,6 @@ pub struct Instance {
     step_statistics: bool,
 }
 
-/// Which rotor the simulator runs on, for the log.
-fn coordinates(sim: &Simulator) -> String {
-    let rotor = sim.rotor();
-    match &rotor.reduction {
-        Some(r) => r.describe(),
-        None => format!("full rotor: {} DOFs", rotor.dof_count()),
-    }
-}
-
 fn category(status: Status) -> &'static str {
     match status {
         Status::Ok => "logAll",
@@ -176,7 +167,7 @@ impl Instance {
         let params = Params::start(&model);
         let sim = Self::fresh_simulator(&model, params.reduced_modes)?;
         let mut messages: Vec<LogMessage> = messages;
-        messages.push((Status::Ok, category(Status::Ok), coordinates(&sim)));
+        messages.push((Status::Ok, category(Status::Ok), sim.rotor().coordinates()));
         Ok(Self {
             name: name.to_string(),
             model,
@@ -230,7 +221,7 @@ impl Instance {
         }
         self.sim = sim;
         self.params.reduced_modes = modes;
-        let line = coordinates(&self.sim);
+        let line = self.sim.rotor().coordinates();
         self.messages.push((Status::Ok, category(Status::Ok), line));
         Ok(())
     }
