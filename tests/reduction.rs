@@ -247,6 +247,10 @@ fn reduction_requests_are_checked() {
         "{}",
         r.describe()
     );
+    // A fresh copy of a reduced rotor is reduced again with the count asked.
+    let copy = reduced.clone_model().unwrap();
+    assert_eq!(copy.reduction.as_ref().unwrap().requested, 500);
+    assert_eq!(copy.mass.to_dense(), reduced.mass.to_dense());
     let e = reduced.reduced(4).unwrap_err().to_string();
     assert!(e.contains("already reduced"), "{e}");
     let text = std::fs::read_to_string(concat!(

@@ -21,7 +21,7 @@ use nalgebra::Complex;
 
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::{
-    ArnoldiOptions, BandMatrix, EigenPair, LinalgError, largest_eigenpairs,
+    ArnoldiOptions, BandLu, BandMatrix, EigenPair, LinalgError, Scalar, largest_eigenpairs,
     largest_eigenpairs_real, map_to_complex,
 };
 use crate::rotor::Rotor;
@@ -137,20 +137,48 @@ const ARNOLDI_TOL: f64 = 1e-13;
 /// An eigenvalue `λ` with its first-order vector `[x; λx]`.
 type Eigenpair = (C64, Vec<C64>);
 
+/// One application of the shift-inverted first-order operator to `z = [c; d]`
+/// (either field): `a = −(K + σD + σ²M)⁻¹ ((D + σM) c + M d)`, `out = [a; c + σa]`.
+#[allow(clippy::too_many_arguments)]
+fn shift_invert_apply<T: Scalar>(
+    sigma: T,
+    factor: &BandLu<T>,
+    mass: &BandMatrix<T>,
+    d_sigma: &BandMatrix<T>,
+    z: &[T],
+    out: &mut [T],
+    rhs: &mut [T],
+    tmp: &mut [T],
+) {
+    let n = mass.n();
+    let (c, dd) = z.split_at(n);
+    mass.mul_vec(dd, rhs);
+    d_sigma.mul_vec(c, tmp);
+    for (r, t) in rhs.iter_mut().zip(tmp.iter()) {
+        *r = -(*r + *t);
+    }
+    factor.solve_in_place(rhs);
+    let (a, b) = out.split_at_mut(n);
+    a.copy_from_slice(rhs);
+    for ((bi, ci), ai) in b.iter_mut().zip(c).zip(rhs.iter()) {
+        *bi = *ci + sigma * *ai;
+    }
+}
+
 /// The shift-inverted first-order operator of one speed: `K + σD + σ²M`
 /// factored once, with `M` and `D + σM` for the right-hand sides.
 enum ShiftInvert {
     /// Real shift: real band matrices and a real Krylov basis.
     Real {
         sigma: f64,
-        factor: crate::linalg::BandLu<f64>,
+        factor: BandLu<f64>,
         mass: BandMatrix<f64>,
         d_sigma: BandMatrix<f64>,
     },
     /// Complex shift (a target frequency).
     Complex {
         sigma: C64,
-        factor: crate::linalg::BandLu<C64>,
+        factor: BandLu<C64>,
         mass: BandMatrix<C64>,
         d_sigma: BandMatrix<C64>,
     },
@@ -205,18 +233,7 @@ impl ShiftInvert {
                 let mut rhs = vec![0.0; n];
                 let mut tmp = vec![0.0; n];
                 let mut apply = |z: &[f64], out: &mut [f64]| -> Result<(), LinalgError> {
-                    let (c, dd) = z.split_at(n);
-                    mass.mul_vec(dd, &mut rhs);
-                    d_sigma.mul_vec(c, &mut tmp);
-                    for (r, t) in rhs.iter_mut().zip(&tmp) {
-                        *r = -(*r + *t);
-                    }
-                    factor.solve_in_place(&mut rhs);
-                    let (a, b) = out.split_at_mut(n);
-                    a.copy_from_slice(&rhs);
-                    for ((bi, ci), ai) in b.iter_mut().zip(c).zip(rhs.iter()) {
-                        *bi = *ci + sigma * *ai;
-                    }
+                    shift_invert_apply(sigma, factor, mass, d_sigma, z, out, &mut rhs, &mut tmp);
                     Ok(())
                 };
                 let pairs = largest_eigenpairs_real(2 * n, nev, &mut apply, &arnoldi)?;
@@ -237,18 +254,7 @@ impl ShiftInvert {
                 let mut rhs = vec![C64::new(0.0, 0.0); n];
                 let mut tmp = vec![C64::new(0.0, 0.0); n];
                 let mut apply = |z: &[C64], out: &mut [C64]| -> Result<(), LinalgError> {
-                    let (c, dd) = z.split_at(n);
-                    mass.mul_vec(dd, &mut rhs);
-                    d_sigma.mul_vec(c, &mut tmp);
-                    for (r, t) in rhs.iter_mut().zip(&tmp) {
-                        *r = -(*r + *t);
-                    }
-                    factor.solve_in_place(&mut rhs);
-                    let (a, b) = out.split_at_mut(n);
-                    a.copy_from_slice(&rhs);
-                    for ((bi, ci), ai) in b.iter_mut().zip(c).zip(rhs.iter()) {
-                        *bi = *ci + sigma * *ai;
-                    }
+                    shift_invert_apply(sigma, factor, mass, d_sigma, z, out, &mut rhs, &mut tmp);
                     Ok(())
                 };
                 let pairs = largest_eigenpairs(2 * n, nev, &mut apply, &arnoldi)?;

@@ -87,8 +87,7 @@ impl DofMap {
     /// Expand a free-DOF vector to all DOFs (fixed DOFs are zero).
     ///
     /// # Panics
-    /// For a reduced rotor's map: expand its coordinates with
-    /// [`Reduction::expand`] first.
+    /// For a reduced rotor's map: read its nodes with [`Rotor::node_value`].
     pub fn expand<T: Copy + Default>(&self, free: &[T]) -> Vec<T> {
         assert_eq!(self.modal, 0, "DofMap::expand of reduced coordinates");
         let mut out = vec![T::default(); self.full_count()];

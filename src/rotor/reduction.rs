@@ -40,34 +40,20 @@ pub struct Reduction {
     pub modes: usize,
     /// Modes asked for (clamped to the interior's DOF count).
     pub requested: usize,
-    /// Free DOFs of the full rotor.
-    pub full_dofs: usize,
     /// Natural frequencies of the kept fixed-interface modes (rad/s), ascending.
     pub mode_frequencies: Vec<f64>,
-    /// `T`: full free DOFs × reduced coordinates, `u = T q`.
-    pub basis: DMatrix<f64>,
-    /// The full rotor's DOF numbering (the rows of `basis`).
+    /// The full rotor's DOF numbering (the rows of `T`).
     pub full_map: DofMap,
-    /// `T` row by row (row-major), so that a node's row is one contiguous slice.
+    /// `T` (full free DOFs × reduced coordinates, `u = T q`) row by row,
+    /// so that a node's row is one contiguous slice.
     rows: Vec<f64>,
 }
 
 impl Reduction {
-    /// Full free-DOF vector `u = T q` of reduced coordinates `q`.
-    ///
-    /// # Panics
-    /// If `q` does not have one entry per reduced coordinate.
-    pub fn expand(&self, q: &[f64]) -> Vec<f64> {
-        assert_eq!(q.len(), self.basis.ncols(), "reduced coordinates");
-        (self.basis.clone() * nalgebra::DVector::from_column_slice(q))
-            .as_slice()
-            .to_vec()
-    }
-
     /// Displacement `k` (0–3: x, y, θx, θy) of `node` for reduced
     /// coordinates `q`: row `(node, k)` of `T` times `q` (0 for a fixed DOF).
     pub fn node_value(&self, node: usize, k: usize, q: &[f64]) -> f64 {
-        let r = self.basis.ncols();
+        let r = self.physical + self.modes;
         self.full_map.free(node, k).map_or(0.0, |i| {
             let row = &self.rows[i * r..(i + 1) * r];
             row.iter().zip(q).fold(0.0, |sum, (t, x)| sum + t * x)
@@ -94,7 +80,7 @@ impl Reduction {
         format!(
             "reduced rotor (Craig–Bampton): {} coordinates for {} DOFs — {} physical at nodes {} + {} fixed-interface modes{clamped} up to {:.1} Hz",
             self.physical + self.modes,
-            self.full_dofs,
+            self.full_map.free_count(),
             self.physical,
             nodes.join(", "),
             self.modes,
@@ -244,10 +230,8 @@ impl Rotor {
                 physical: nb,
                 modes: m,
                 requested: modes,
-                full_dofs: n,
                 mode_frequencies: omega_sq.iter().map(|w2| w2.sqrt()).collect(),
                 rows: basis.transpose().as_slice().to_vec(),
-                basis,
                 full_map: self.dofs.clone(),
             }),
         })
