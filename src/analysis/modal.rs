@@ -524,10 +524,11 @@ fn make_mode(rotor: &Rotor, d: &BandMatrix<f64>, speed: f64, lambda: C64, x: &[C
     let residual = norm(&r) / norms.iter().sum::<f64>().max(f64::MIN_POSITIVE);
 
     let mut shape = rotor.dofs.expand(x);
+    let nodes = rotor.dofs.node_count();
     let peak = shape
         .iter()
         .enumerate()
-        .filter(|(i, _)| i % DOF_PER_NODE < 2)
+        .filter(|(i, _)| *i < nodes * DOF_PER_NODE && i % DOF_PER_NODE < 2)
         .map(|(_, v)| *v)
         .max_by(|a, b| a.norm().total_cmp(&b.norm()))
         .unwrap_or(C64::new(1.0, 0.0));
@@ -555,7 +556,7 @@ fn make_mode(rotor: &Rotor, d: &BandMatrix<f64>, speed: f64, lambda: C64, x: &[C
         damped_frequency,
         damping_ratio,
         log_decrement,
-        whirl: classify_whirl(&shape, speed),
+        whirl: classify_whirl(&shape[..nodes * DOF_PER_NODE], speed),
         shape,
         residual,
     }
@@ -572,8 +573,9 @@ pub fn orbit_radii(x: C64, y: C64) -> (f64, f64) {
     ((x + i * y).norm() / 2.0, (x - i * y).norm() / 2.0)
 }
 
-/// Whirl relative to the spin; without spin there is no direction to compare
-/// with (and degenerate pairs are arbitrary combinations): `Mixed`.
+/// Whirl relative to the spin of the rotor nodes' DOFs `shape`; without spin
+/// there is no direction to compare with (and degenerate pairs are arbitrary
+/// combinations): `Mixed`.
 fn classify_whirl(shape: &[C64], speed: f64) -> Whirl {
     if speed == 0.0 {
         return Whirl::Mixed;

@@ -92,7 +92,7 @@ pub fn synchronous_critical_speeds(rotor: &Rotor, count: usize) -> Result<Vec<f6
 fn is_forward(rotor: &Rotor, free: &[C64]) -> bool {
     let all = rotor.dofs.expand(free);
     let (mut f, mut b) = (0.0, 0.0);
-    for node in 0..all.len() / DOF_PER_NODE {
+    for node in 0..rotor.dofs.node_count() {
         let (rf, rb) = orbit_radii(
             all[node * DOF_PER_NODE + DOF_X],
             all[node * DOF_PER_NODE + DOF_Y],

@@ -72,7 +72,8 @@ pub struct PlacedDisk {
     pub disk: Disk,
 }
 
-/// A bearing between a shaft node and ground.
+/// A bearing between a shaft node (the journal) and its housing: ground, or
+/// a pedestal.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlacedBearing {
     /// Name (default `bearing<k>`).
@@ -81,6 +82,28 @@ pub struct PlacedBearing {
     pub node: usize,
     /// Bearing type and parameters.
     pub kind: BearingKind,
+    /// The pedestal its housing stands on (index into
+    /// [`RotorModel::pedestals`]); `None`: rigid ground.
+    pub pedestal: Option<usize>,
+}
+
+/// A bearing support in series with its bearings (`[[pedestals]]`): a
+/// non-rotating lumped mass on a spring–damper to ground, or to the pedestal
+/// it stands on (a bracket on a foundation). Its force on the mass is
+/// `F = −K (q − q_on) − C (q̇ − q̇_on)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pedestal {
+    /// Name, unique among the pedestals.
+    pub name: String,
+    /// Mass (kg), the same in `x` and `y`.
+    pub mass: f64,
+    /// Stiffness (N/m), row-major `[[kxx, kxy], [kyx, kyy]]`.
+    pub stiffness: [[f64; 2]; 2],
+    /// Damping (N·s/m), row-major.
+    pub damping: [[f64; 2]; 2],
+    /// The pedestal it stands on (index, always an earlier-validated
+    /// acyclic chain); `None`: ground.
+    pub on: Option<usize>,
 }
 
 /// An unbalance plane: a mass `m` at radius `e` rotating with the shaft.
@@ -137,6 +160,8 @@ pub struct RotorModel {
     pub probes: Vec<Probe>,
     /// Ideal supports.
     pub supports: Vec<Support>,
+    /// Bearing supports (pedestals, brackets, foundations) in series with bearings.
+    pub pedestals: Vec<Pedestal>,
     /// Gravity vector (m/s²), `z` along the shaft.
     pub gravity: [f64; 3],
     /// Nominal spin speed (rad/s), 0 when the file gives none.
@@ -258,6 +283,26 @@ impl RotorModel {
     /// Number of nodes.
     pub fn node_count(&self) -> usize {
         self.node_z.len()
+    }
+
+    /// Where each pedestal's DOFs are numbered: `(pedestal, node)` with node
+    /// the lowest journal node of the bearings standing on it, directly or
+    /// through the pedestals on it (node 0 for a pedestal that carries none).
+    pub fn pedestal_anchors(&self) -> Vec<(usize, usize)> {
+        let mut anchor = vec![usize::MAX; self.pedestals.len()];
+        for b in &self.bearings {
+            let mut at = b.pedestal;
+            // Up the chain: every pedestal below this bearing carries it.
+            while let Some(p) = at {
+                anchor[p] = anchor[p].min(b.node);
+                at = self.pedestals[p].on;
+            }
+        }
+        anchor
+            .into_iter()
+            .map(|node| if node == usize::MAX { 0 } else { node })
+            .enumerate()
+            .collect()
     }
 
     /// Total rotating mass: shaft plus disks (kg).

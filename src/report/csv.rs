@@ -490,6 +490,7 @@ mod tests {
                 min_film_thickness: 2.5e-5,
                 ..BearingReport::default()
             },
+            housing: Default::default(),
         };
         let record = Outputs {
             time: 0.125,

@@ -13,90 +13,14 @@ use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
 use crate::model::RotorModel;
 
+mod dofs;
+pub mod elements;
 mod reduction;
 
 pub use crate::model::DEFAULT_REDUCED_MODES;
+pub use dofs::{DOF_PER_PEDESTAL, Dof, DofMap};
+pub use elements::LinearElement;
 pub use reduction::Reduction;
-
-/// Map between the full DOF numbering (`4·node + k`) and the free DOFs left
-/// after ideal supports are removed. A [reduced](Rotor::reduced) rotor's map
-/// has its physical coordinates first (the kept nodes' free DOFs) and then
-/// `modal` coordinates that belong to no node.
-#[derive(Debug, Clone, PartialEq)]
-pub struct DofMap {
-    full_to_free: Vec<Option<usize>>,
-    free_to_full: Vec<usize>,
-    modal: usize,
-}
-
-impl DofMap {
-    fn new(model: &RotorModel) -> Self {
-        let n_full = model.node_count() * DOF_PER_NODE;
-        let mut fixed = vec![false; n_full];
-        for s in &model.supports {
-            for (k, &f) in s.fixed.iter().enumerate() {
-                fixed[s.node * DOF_PER_NODE + k] |= f;
-            }
-        }
-        let mut full_to_free = vec![None; n_full];
-        let mut free_to_full = Vec::with_capacity(n_full);
-        for (i, &is_fixed) in fixed.iter().enumerate() {
-            if !is_fixed {
-                full_to_free[i] = Some(free_to_full.len());
-                free_to_full.push(i);
-            }
-        }
-        Self {
-            full_to_free,
-            free_to_full,
-            modal: 0,
-        }
-    }
-
-    /// Number of free DOFs (coordinates, for a reduced rotor).
-    pub fn free_count(&self) -> usize {
-        self.free_to_full.len() + self.modal
-    }
-
-    /// Whether coordinate `i` is a displacement in metres: a translation `x`,
-    /// `y`, or a modal coordinate (scaled to its mode's peak translation).
-    pub fn is_displacement(&self, i: usize) -> bool {
-        self.free_to_full
-            .get(i)
-            .is_none_or(|&full| full % DOF_PER_NODE < 2)
-    }
-
-    /// Number of DOFs before constraints.
-    pub fn full_count(&self) -> usize {
-        self.full_to_free.len()
-    }
-
-    /// Free index of DOF `k` of `node`, `None` when that DOF is fixed.
-    pub fn free(&self, node: usize, k: usize) -> Option<usize> {
-        self.full_to_free[node * DOF_PER_NODE + k]
-    }
-
-    /// Full index of a free DOF.
-    ///
-    /// # Panics
-    /// For a modal coordinate of a reduced rotor (it belongs to no node).
-    pub fn full(&self, free: usize) -> usize {
-        self.free_to_full[free]
-    }
-
-    /// Expand a free-DOF vector to all DOFs (fixed DOFs are zero).
-    ///
-    /// # Panics
-    /// For a reduced rotor's map: read its nodes with [`Rotor::node_value`].
-    pub fn expand<T: Copy + Default>(&self, free: &[T]) -> Vec<T> {
-        assert_eq!(self.modal, 0, "DofMap::expand of reduced coordinates");
-        let mut out = vec![T::default(); self.full_count()];
-        for (i, &v) in free.iter().enumerate() {
-            out[self.free_to_full[i]] = v;
-        }
-        out
-    }
-}
 
 /// A bearing that is not linear and is therefore kept out of the matrices (the
 /// solver builds its force model from the model's bearing of the same index).
@@ -178,37 +102,15 @@ impl Rotor {
         if n == 0 {
             return Err(AssemblyError::NoFreeDofs(model.name.clone()));
         }
-        let bw = half_bandwidth(&model, &dofs);
-        let mut mass = BandMatrix::new(n, bw, bw);
-        let mut stiffness = BandMatrix::new(n, bw, bw);
-        let mut damping = BandMatrix::new(n, bw, bw);
-        let mut gyroscopic = BandMatrix::new(n, bw, bw);
-
-        let node_dofs = |node: usize| -> [Option<usize>; DOF_PER_NODE] {
-            std::array::from_fn(|k| dofs.free(node, k))
-        };
-        for placed in &model.elements {
-            let mats = placed.element.matrices();
-            let local: Vec<Option<usize>> = node_dofs(placed.node)
-                .into_iter()
-                .chain(node_dofs(placed.node + 1))
-                .collect();
-            let k_total = mats.stiffness + mats.axial_per_newton * placed.axial_force;
-            scatter(&mut mass, &local, |a, b| mats.mass[(a, b)]);
-            scatter(&mut stiffness, &local, |a, b| k_total[(a, b)]);
-            scatter(&mut gyroscopic, &local, |a, b| mats.gyroscopic[(a, b)]);
-        }
-        for d in &model.disks {
-            let local = node_dofs(d.node);
-            let (m, g) = (d.disk.mass_matrix(), d.disk.gyroscopic_matrix());
-            scatter(&mut mass, &local, |a, b| m[(a, b)]);
-            scatter(&mut gyroscopic, &local, |a, b| g[(a, b)]);
-        }
-
+        let mut linear = elements::structure(&model, &dofs);
+        linear.extend(elements::pedestals(&model, &dofs));
         let mut nonlinear_bearings = Vec::new();
+        // Every bearing couples its journal to its housing: the band holds
+        // the nonlinear ones' Jacobians too (statics, linearization).
+        let mut spread = 0;
         for b in &model.bearings {
             let bearing = b.kind.build();
-            let journal = [dofs.free(b.node, DOF_X), dofs.free(b.node, DOF_Y)];
+            spread = spread.max(elements::spread(&elements::bearing_dofs(&dofs, b)));
             if bearing.is_linear() && bearing.internal_dofs() == 0 {
                 let mut eval = BearingEval::new(2);
                 bearing
@@ -218,22 +120,47 @@ impl Rotor {
                         message: e.to_string(),
                     })?;
                 let coeff = eval.journal();
-                scatter(&mut stiffness, &journal, |a, c| coeff.stiffness[(a, c)]);
-                scatter(&mut damping, &journal, |a, c| coeff.damping[(a, c)]);
+                let k = [
+                    [coeff.stiffness[(0, 0)], coeff.stiffness[(0, 1)]],
+                    [coeff.stiffness[(1, 0)], coeff.stiffness[(1, 1)]],
+                ];
+                let c = [
+                    [coeff.damping[(0, 0)], coeff.damping[(0, 1)]],
+                    [coeff.damping[(1, 0)], coeff.damping[(1, 1)]],
+                ];
+                linear.push(elements::bearing_link(&dofs, b, &k, &c));
             } else {
                 nonlinear_bearings.push(BearingSite {
                     name: b.name.clone(),
                 });
             }
         }
+        let bw = linear
+            .iter()
+            .map(LinearElement::spread)
+            .fold((DOF_PER_NODE - 1).max(spread), usize::max);
+        let mut mass = BandMatrix::new(n, bw, bw);
+        let mut stiffness = BandMatrix::new(n, bw, bw);
+        let mut damping = BandMatrix::new(n, bw, bw);
+        let mut gyroscopic = BandMatrix::new(n, bw, bw);
+        for e in &linear {
+            for (target, local) in [
+                (&mut mass, &e.mass),
+                (&mut stiffness, &e.stiffness),
+                (&mut damping, &e.damping),
+                (&mut gyroscopic, &e.gyroscopic),
+            ] {
+                if let Some(local) = local {
+                    scatter(target, &e.dofs, |a, b| local[(a, b)]);
+                }
+            }
+        }
 
         // Consistent gravity load f = M·u_g, u_g the rigid translation by the gravity vector.
         let mut u_g = vec![0.0; n];
         for (i, u) in u_g.iter_mut().enumerate() {
-            match dofs.full(i) % DOF_PER_NODE {
-                DOF_X => *u = model.gravity[0],
-                DOF_Y => *u = model.gravity[1],
-                _ => {}
+            if let Some(k) = dofs.kind(i).translation() {
+                *u = model.gravity[k];
             }
         }
         let mut gravity_load = vec![0.0; n];
@@ -274,6 +201,13 @@ impl Rotor {
         }
     }
 
+    /// Translation `k` (0: `x`, 1: `y`) of pedestal `pedestal` in the
+    /// coordinates `q` of this rotor (pedestals are physical coordinates of
+    /// a reduced rotor too).
+    pub fn pedestal_value(&self, pedestal: usize, k: usize, q: &[f64]) -> f64 {
+        self.dofs.pedestal(pedestal, k).map_or(0.0, |i| q[i])
+    }
+
     /// Which rotor this is, in one line for logs and the CLI: the reduction's
     /// [`Reduction::describe`], or `full rotor: N DOFs`.
     pub fn coordinates(&self) -> String {
@@ -290,8 +224,8 @@ impl Rotor {
 
     /// A linear copy of this rotor: every nonlinear bearing replaced by the
     /// coefficients given for it (one entry per nonlinear bearing, by model
-    /// index), scattered as 2×2 blocks at its journal DOFs,
-    /// `K' = K + E K_b Eᵀ`, `C' = C + E C_b Eᵀ`. Mass, gyroscopic matrix and
+    /// index), scattered between its journal and housing DOFs
+    /// ([`elements::bearing_link`]), `K' = K + E K_b Eᵀ`, `C' = C + E C_b Eᵀ`. Mass, gyroscopic matrix and
     /// gravity load are copied, nothing is re-assembled; the copy's model lists
     /// those bearings as [`BearingKind::Linear`], so it equals the assembly of
     /// that model.
@@ -325,12 +259,15 @@ impl Rotor {
                 });
             }
             given[c.bearing] = true;
-            let journal = [
-                self.dofs.free(placed.node, DOF_X),
-                self.dofs.free(placed.node, DOF_Y),
-            ];
-            scatter(&mut stiffness, &journal, |a, b| c.stiffness[a][b]);
-            scatter(&mut damping, &journal, |a, b| c.damping[a][b]);
+            let link = elements::bearing_link(&self.dofs, placed, &c.stiffness, &c.damping);
+            for (target, local) in [
+                (&mut stiffness, &link.stiffness),
+                (&mut damping, &link.damping),
+            ] {
+                if let Some(local) = local {
+                    scatter(target, &link.dofs, |a, b| local[(a, b)]);
+                }
+            }
             placed.kind = BearingKind::Linear {
                 stiffness: c.stiffness,
                 damping: c.damping,
@@ -381,21 +318,6 @@ impl Rotor {
         }
         f
     }
-}
-
-/// Half-bandwidth of the free-DOF numbering: the largest index distance between
-/// two DOFs coupled by an element.
-fn half_bandwidth(model: &RotorModel, dofs: &DofMap) -> usize {
-    let mut bw = DOF_PER_NODE - 1;
-    for placed in &model.elements {
-        let free: Vec<usize> = (0..2 * DOF_PER_NODE)
-            .filter_map(|k| dofs.free(placed.node + k / DOF_PER_NODE, k % DOF_PER_NODE))
-            .collect();
-        if let (Some(lo), Some(hi)) = (free.iter().min(), free.iter().max()) {
-            bw = bw.max(hi - lo);
-        }
-    }
-    bw
 }
 
 /// Add a local matrix `value(a, b)` into `target` at the free DOFs `local`.

@@ -1,7 +1,8 @@
 //! Craig–Bampton reduction of the assembled rotor for long transients.
 //!
 //! The free DOFs split into **physical** ones `b` (all free DOFs of the kept
-//! nodes: nonlinear bearings and rubs, probes, unbalance planes) and
+//! nodes: nonlinear bearings and rubs, probes, unbalance planes; and every
+//! pedestal's translations) and
 //! **interior** ones `i`. The interior moves with the boundary statically plus
 //! `m` fixed-interface modes (Craig & Bampton, AIAA J. 6(7), 1968):
 //!
@@ -20,8 +21,8 @@
 
 use nalgebra::{DMatrix, SymmetricEigen};
 
-use super::{AssemblyError, DofMap, Rotor};
-use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
+use super::{AssemblyError, Dof, DofMap, Rotor};
+use crate::fe::DOF_PER_NODE;
 use crate::linalg::BandMatrix;
 
 /// Relative change of the kept eigenvalues at which subspace iteration stops.
@@ -154,6 +155,12 @@ impl Rotor {
                 }
             }
         }
+        // Pedestals carry bearing reactions: they stay physical too.
+        for (i, kept) in is_kept.iter_mut().enumerate() {
+            if matches!(self.dofs.kind(i), Dof::Pedestal { .. }) {
+                *kept = true;
+            }
+        }
         let boundary: Vec<usize> = (0..n).filter(|&i| is_kept[i]).collect();
         let interior: Vec<usize> = (0..n).filter(|&i| !is_kept[i]).collect();
         let (nb, ni) = (boundary.len(), interior.len());
@@ -212,6 +219,7 @@ impl Rotor {
             full_to_free: vec![None; self.dofs.full_count()],
             free_to_full: boundary.iter().map(|&b| self.dofs.full(b)).collect(),
             modal: m,
+            nodes: self.dofs.nodes,
         };
         for (c, &b) in boundary.iter().enumerate() {
             dofs.full_to_free[self.dofs.full(b)] = Some(c);
@@ -358,7 +366,7 @@ fn rayleigh_ritz(kr: DMatrix<f64>, mr: DMatrix<f64>) -> Result<(Vec<f64>, DMatri
 /// Scale an interior mode to a largest translation of 1 (its largest entry
 /// when it has no translation), the largest entry positive.
 fn normalize_to_peak_translation(v: &mut [f64], interior: &[usize], dofs: &DofMap) {
-    let translation = |j: usize| matches!(dofs.full(interior[j]) % DOF_PER_NODE, DOF_X | DOF_Y);
+    let translation = |j: usize| dofs.kind(interior[j]).translation().is_some();
     let peak = |only_translation: bool| {
         (0..v.len())
             .filter(|&j| !only_translation || translation(j))
@@ -381,6 +389,7 @@ fn normalize_to_peak_translation(v: &mut [f64], interior: &[usize], dofs: &DofMa
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fe::{DOF_X, DOF_Y};
     use crate::model::RotorModel;
 
     /// An Euler–Bernoulli shaft (no shear, no rotary inertia) of 1 m, 50 mm,

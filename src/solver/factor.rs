@@ -7,6 +7,7 @@ use crate::linalg::{BandLu, BandMatrix, LinalgError};
 use crate::rotor::Rotor;
 
 use super::simulator::{Simulator, SolverError};
+use super::sites::Coordinate;
 
 /// Factorized linear part and its Schur data.
 #[derive(Debug)]
@@ -20,7 +21,7 @@ pub(super) struct Factor {
     pub g: Vec<f64>,
     /// `C + Ω G` at the factor's speed (for the Newmark effective load).
     pub damping: BandMatrix<f64>,
-    /// `Z = A⁻¹ E` column by column (`n` per journal DOF) when applying it costs
+    /// `Z = A⁻¹ E` column by column (`n` per journal coordinate) when applying it costs
     /// less than a banded solve (few journal DOFs); empty otherwise.
     pub z: Vec<f64>,
 }
@@ -44,18 +45,18 @@ impl FactorWork {
     }
 }
 
-/// Factor `a` and form `G = Eᵀ A⁻¹ E` (one solve per journal DOF in
-/// `journal_dofs`), reusing the storage of `reuse` (no allocation then);
-/// `column` is workspace of length `n`.
+/// Factor `a` and form `G = Eᵀ A⁻¹ E` (one solve per journal coordinate in
+/// `coordinates`, the columns of `E`), reusing the storage of `reuse` (no
+/// allocation then); `column` is workspace of length `n`.
 pub(super) fn make_factor(
     a: &BandMatrix<f64>,
     rotor: &Rotor,
-    journal_dofs: &[usize],
+    coordinates: &[Coordinate],
     (step, speed): (f64, f64),
     reuse: Option<Factor>,
     column: &mut [f64],
 ) -> Result<Factor, LinalgError> {
-    let sj = journal_dofs.len();
+    let sj = coordinates.len();
     let mut factor = match reuse {
         Some(mut f) => {
             a.lu_into(&mut f.lu)?;
@@ -78,12 +79,14 @@ pub(super) fn make_factor(
     factor.speed = speed;
     factor.damping.assign(&rotor.damping);
     factor.damping.scale_add(speed, &rotor.gyroscopic);
-    for (c, &dof) in journal_dofs.iter().enumerate() {
+    for (c, coordinate) in coordinates.iter().enumerate() {
         column.fill(0.0);
-        column[dof] = 1.0;
+        for (dof, sign) in coordinate.entries() {
+            column[dof] = sign;
+        }
         factor.lu.solve_in_place(column);
-        for (r, &row_dof) in journal_dofs.iter().enumerate() {
-            factor.g[r * sj + c] = column[row_dof];
+        for (r, row) in coordinates.iter().enumerate() {
+            factor.g[r * sj + c] = row.of(column);
         }
         if !factor.z.is_empty() {
             let n = column.len();
@@ -118,7 +121,7 @@ impl Simulator {
         let factor = make_factor(
             &w.a,
             rotor,
-            &self.sites.journal_dofs,
+            &self.sites.coordinates,
             (h, speed),
             reuse,
             &mut w.column,

@@ -61,7 +61,8 @@ pub mod statics;
 
 pub use run::{SpeedProfile, record};
 pub use simulator::{
-    BearingOutput, Outputs, ProbeOutput, Simulator, SolverError, SolverOptions, StepStats,
+    BearingOutput, HousingOutput, Outputs, ProbeOutput, Simulator, SolverError, SolverOptions,
+    StepStats,
 };
 pub use state::SimState;
 pub use statics::{Equilibrium, equilibrium};

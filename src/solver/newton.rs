@@ -66,9 +66,8 @@ impl SchurSolve {
         if s == 0 {
             return Ok(());
         }
-        for (k, site) in sites.list.iter().enumerate() {
-            self.ey[2 * k] = y[site.journal[0]];
-            self.ey[2 * k + 1] = y[site.journal[1]];
+        for (e, c) in self.ey.iter_mut().zip(&sites.coordinates) {
+            *e = c.of(y);
         }
         // The matrix depends only on the frozen Jacobians and G: factor it once per
         // refresh (modified Newton), then only the right-hand side changes.
@@ -139,9 +138,8 @@ impl SchurSolve {
         if sj > 0 {
             let z = &mut self.correction;
             z.fill(0.0);
-            for (k, site) in sites.list.iter().enumerate() {
-                z[site.journal[0]] += self.rhs[2 * k];
-                z[site.journal[1]] += self.rhs[2 * k + 1];
+            for (c, f) in sites.coordinates.iter().zip(&self.rhs) {
+                c.add(z, *f);
             }
             factor.lu.solve_in_place(z);
             for (yi, zi) in y.iter_mut().zip(z.iter()) {
@@ -153,11 +151,14 @@ impl SchurSolve {
     }
 }
 
-/// Buffers of the condensed Newton on the journal DOFs: bearing forces `F_j`,
+/// Buffers of the condensed Newton on the journal coordinates: the iterate
+/// `j` (set to the predictor before the first iteration), bearing forces `F_j`,
 /// pad terms `K_jp K_pp⁻¹ (−F_p)`, condensed 2×2 stiffnesses (4 per bearing),
 /// the matrix `I + G K_c` with its pivots, and the right-hand side / increment.
 #[derive(Debug)]
 pub(super) struct CondensedWork {
+    /// The journal coordinates `j = Eᵀ u` of the iterate.
+    pub j: Vec<f64>,
     fj: Vec<f64>,
     wv: Vec<f64>,
     kc: Vec<f64>,
@@ -170,6 +171,7 @@ impl CondensedWork {
     /// Buffers for `n_journal` journal DOFs.
     pub fn new(n_journal: usize) -> Self {
         Self {
+            j: vec![0.0; n_journal],
             fj: vec![0.0; n_journal],
             wv: vec![0.0; n_journal],
             kc: vec![0.0; 2 * n_journal],
@@ -229,9 +231,10 @@ impl Simulator {
             self.stats.iterations += 1;
             let (s, w, c) = (&self.state, &mut self.newmark, &mut self.condensed);
             for (k, site) in self.sites.list.iter_mut().enumerate() {
-                for (a, &dof) in site.journal.iter().enumerate() {
-                    site.q[a] = w.u[dof];
-                    site.qd[a] = a1 * (w.u[dof] - s.u[dof]) - s.ud[dof];
+                for (a, coordinate) in site.journal.iter().enumerate() {
+                    let j = c.j[2 * k + a];
+                    site.q[a] = j;
+                    site.qd[a] = a1 * (j - coordinate.of(&s.u)) - coordinate.of(&s.ud);
                 }
                 for m in 0..site.internal {
                     let i = site.offset + m;
@@ -253,9 +256,9 @@ impl Simulator {
                 c.fj[2 * k..2 * k + 2].copy_from_slice(&ev.force[..2]);
                 c.wv[2 * k..2 * k + 2].copy_from_slice(&wv);
             }
-            for (r, &dof) in self.sites.journal_dofs.iter().enumerate() {
+            for (r, coordinate) in self.sites.coordinates.iter().enumerate() {
                 let g = &f.g[r * sj..(r + 1) * sj];
-                let mut rhs = w.lin[dof] - w.u[dof];
+                let mut rhs = coordinate.of(&w.lin) - c.j[r];
                 for (gc, (fc, wc)) in g.iter().zip(c.fj.iter().zip(&c.wv)) {
                     rhs += gc * (fc + wc);
                 }
@@ -275,10 +278,10 @@ impl Simulator {
             }
             lu_solve(&c.cj, sj, &c.cj_piv, &mut c.cj_rhs);
             let (mut inc, mut mag): (f64, f64) = (0.0, 0.0);
-            for (&dof, d) in self.sites.journal_dofs.iter().zip(&c.cj_rhs) {
+            for (j, d) in c.j.iter_mut().zip(&c.cj_rhs) {
                 inc = inc.max(d.abs());
-                mag = mag.max(w.u[dof].abs());
-                w.u[dof] += d;
+                mag = mag.max(j.abs());
+                *j += d;
             }
             for (k, site) in self.sites.list.iter().enumerate() {
                 let mi = site.internal;
@@ -302,8 +305,8 @@ impl Simulator {
                 }
                 if f.z.is_empty() {
                     w.mv.fill(0.0);
-                    for (&dof, fk) in self.sites.journal_dofs.iter().zip(&c.fj) {
-                        w.mv[dof] = *fk;
+                    for (coordinate, fk) in self.sites.coordinates.iter().zip(&c.fj) {
+                        coordinate.add(&mut w.mv, *fk);
                     }
                     f.lu.solve_in_place(&mut w.mv);
                     self.set_displacement_and_rates(h, Displacement::LinearPlusCorrection);
@@ -418,8 +421,8 @@ impl Simulator {
                 let w = &mut self.newmark;
                 w.lin.fill(0.0);
                 for (k, site) in self.sites.list.iter().enumerate() {
-                    for (a, &dof) in site.journal.iter().enumerate() {
-                        w.lin[dof] = self.schur.rhs[2 * k + a] - site.eval.force[a];
+                    for (a, coordinate) in site.journal.iter().enumerate() {
+                        coordinate.add(&mut w.lin, self.schur.rhs[2 * k + a] - site.eval.force[a]);
                     }
                 }
             } else {

@@ -112,19 +112,44 @@ pub enum SolverError {
     Budget(String),
 }
 
+/// Absolute motion of a bearing's housing (zero on rigid ground): what a
+/// seismic sensor on the bracket or pedestal measures.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct HousingOutput {
+    /// Displacement (m).
+    pub x: f64,
+    /// Displacement (m).
+    pub y: f64,
+    /// Velocity (m/s).
+    pub vx: f64,
+    /// Velocity (m/s).
+    pub vy: f64,
+}
+
 /// Outputs of one bearing.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct BearingOutput {
-    /// Journal displacement (m).
+    /// Journal displacement (m), absolute; relative to the housing (what a
+    /// proximity probe on the bearing measures) it is `x − housing.x`.
     pub x: f64,
-    /// Journal displacement (m).
+    /// Journal displacement (m), absolute.
     pub y: f64,
     /// Force of the bearing on the journal (N).
     pub fx: f64,
     /// Force of the bearing on the journal (N).
     pub fy: f64,
-    /// Film reports (eccentricity, friction…).
+    /// Film reports (eccentricity, friction…), from the journal's motion
+    /// relative to its housing.
     pub report: BearingReport,
+    /// The housing's absolute motion (zero on rigid ground).
+    pub housing: HousingOutput,
+}
+
+impl BearingOutput {
+    /// Journal displacement relative to the housing, `(x, y)` (m).
+    pub fn relative(&self) -> (f64, f64) {
+        (self.x - self.housing.x, self.y - self.housing.y)
+    }
 }
 
 /// Displacements of one probe.
@@ -529,17 +554,35 @@ impl Simulator {
         let mut bearings = Vec::with_capacity(self.output_bearings.len());
         let mut friction_torque = 0.0;
         for (k, (bearing, site)) in self.output_bearings.iter().enumerate() {
-            let node = self.rotor.model.bearings[k].node;
+            let placed = &self.rotor.model.bearings[k];
+            let node = placed.node;
             let at = |dof: usize, v: &[f64]| self.rotor.node_value(node, dof, v);
             let (x, y) = (at(DOF_X, &self.state.u), at(DOF_Y, &self.state.u));
             let (vx, vy) = (at(DOF_X, &self.state.ud), at(DOF_Y, &self.state.ud));
+            let housing = match placed.pedestal {
+                None => HousingOutput::default(),
+                Some(p) => {
+                    let at = |k: usize, v: &[f64]| self.rotor.pedestal_value(p, k, v);
+                    HousingOutput {
+                        x: at(0, &self.state.u),
+                        y: at(1, &self.state.u),
+                        vx: at(0, &self.state.ud),
+                        vy: at(1, &self.state.ud),
+                    }
+                }
+            };
             let internal = bearing.internal_dofs();
             let eval = &mut self.output_evals[k];
             let (q, qd) = (
                 &mut self.output_q[..2 + internal],
                 &mut self.output_qd[..2 + internal],
             );
-            (q[0], q[1], qd[0], qd[1]) = (x, y, vx, vy);
+            (q[0], q[1], qd[0], qd[1]) = (
+                x - housing.x,
+                y - housing.y,
+                vx - housing.vx,
+                vy - housing.vy,
+            );
             if let Some(si) = site {
                 let s = &self.sites.list[*si];
                 q[2..].copy_from_slice(&self.state.p[s.offset..s.offset + internal]);
@@ -560,6 +603,7 @@ impl Simulator {
                 fx: eval.force[0],
                 fy: eval.force[1],
                 report,
+                housing,
             });
         }
         let probes = self

@@ -1,12 +1,54 @@
-//! The nonlinear bearings the solver integrates ("sites"): the journal DOFs
-//! each one acts on, the offset of its internal coordinates (pad tilts) in `p`,
-//! its evaluation buffers and the Jacobians frozen for modified Newton.
+//! The nonlinear bearings the solver integrates ("sites"): the coordinates
+//! each one acts on (its journal, relative to its housing when the bearing
+//! stands on a pedestal), the offset of its internal coordinates (pad tilts)
+//! in `p`, its evaluation buffers and the Jacobians frozen for modified Newton.
+//!
+//! A site's journal coordinate is `j = Eᵀ u`: a column of `E` is `+1` at the
+//! journal DOF and `−1` at the housing DOF (none for a bearing on rigid
+//! ground). The bearing force `F(j, j̇)` acts on the journal and its reaction
+//! on the housing, `E F`, and its Jacobian enters the rotor as `E K Eᵀ`.
 
 use crate::bearing::{Bearing, BearingEval};
 use crate::fe::{DOF_X, DOF_Y};
 use crate::rotor::Rotor;
 
 use super::simulator::SolverError;
+
+/// One journal coordinate of a site: a journal DOF, less its housing DOF
+/// when the bearing stands on a pedestal (a column of `E`).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(super) struct Coordinate {
+    /// Free DOF of the journal.
+    pub journal: usize,
+    /// Free DOF of the housing, `None` on rigid ground.
+    pub housing: Option<usize>,
+}
+
+impl Coordinate {
+    /// The coordinate in the rotor vector `u`: `u_j − u_h` (`eᵀ u`).
+    #[inline]
+    pub fn of(&self, u: &[f64]) -> f64 {
+        match self.housing {
+            None => u[self.journal],
+            Some(h) => u[self.journal] - u[h],
+        }
+    }
+
+    /// Add a force `f` on the coordinate to the rotor vector `r`: `f` on the
+    /// journal, its reaction `−f` on the housing (`r += e f`).
+    #[inline]
+    pub fn add(&self, r: &mut [f64], f: f64) {
+        r[self.journal] += f;
+        if let Some(h) = self.housing {
+            r[h] -= f;
+        }
+    }
+
+    /// The free DOFs it involves with their signs in `e`.
+    pub fn entries(&self) -> impl Iterator<Item = (usize, f64)> {
+        std::iter::once((self.journal, 1.0)).chain(self.housing.map(|h| (h, -1.0)))
+    }
+}
 
 /// A nonlinear bearing in the time integration or the static solve.
 #[derive(Debug)]
@@ -15,8 +57,8 @@ pub(super) struct Site {
     pub index: usize,
     pub name: String,
     pub bearing: Box<dyn Bearing>,
-    /// Free DOF indices of the journal (`x`, `y`).
-    pub journal: [usize; 2],
+    /// The journal coordinates `x`, `y` (relative to the housing).
+    pub journal: [Coordinate; 2],
     /// Offset of its internal DOFs in `p`.
     pub offset: usize,
     /// Number of internal DOFs (pads).
@@ -45,8 +87,8 @@ pub(super) struct Sites {
     pub n_journal: usize,
     /// Number of internal DOFs (length of `p`).
     pub n_internal: usize,
-    /// Free DOF of each journal coordinate, site by site (`x`, `y`).
-    pub journal_dofs: Vec<usize>,
+    /// Every journal coordinate, site by site (`x`, `y`): the columns of `E`.
+    pub coordinates: Vec<Coordinate>,
     /// Displacement scale of the convergence tests: the smallest bearing
     /// clearance (m), 1 µm without fluid-film bearings.
     pub length_scale: f64,
@@ -67,7 +109,19 @@ impl Sites {
                 rotor.dofs.free(b.node, DOF_X),
                 rotor.dofs.free(b.node, DOF_Y),
             ) {
-                (Some(x), Some(y)) => [x, y],
+                (Some(x), Some(y)) => {
+                    let housing = |k: usize| b.pedestal.and_then(|p| rotor.dofs.pedestal(p, k));
+                    [
+                        Coordinate {
+                            journal: x,
+                            housing: housing(0),
+                        },
+                        Coordinate {
+                            journal: y,
+                            housing: housing(1),
+                        },
+                    ]
+                }
                 _ => {
                     return Err(SolverError::Input(format!(
                         "bearing {} sits on node {} whose x or y is fixed by a support",
@@ -109,7 +163,7 @@ impl Sites {
         Ok(Self {
             n_journal: 2 * list.len(),
             n_internal: offset,
-            journal_dofs: list.iter().flat_map(|s| s.journal).collect(),
+            coordinates: list.iter().flat_map(|s| s.journal).collect(),
             length_scale,
             list,
         })
@@ -134,10 +188,10 @@ impl Sites {
     ) -> Result<f64, SolverError> {
         let mut largest: f64 = 0.0;
         for site in &mut self.list {
-            site.q[0] = u[site.journal[0]];
-            site.q[1] = u[site.journal[1]];
-            site.qd[0] = ud[site.journal[0]];
-            site.qd[1] = ud[site.journal[1]];
+            for (a, c) in site.journal.iter().enumerate() {
+                site.q[a] = c.of(u);
+                site.qd[a] = c.of(ud);
+            }
             let range = site.offset..site.offset + site.internal;
             site.q[2..].copy_from_slice(&p[range.clone()]);
             site.qd[2..].copy_from_slice(&pd[range]);
@@ -148,8 +202,8 @@ impl Sites {
                     time,
                     source,
                 })?;
-            r[site.journal[0]] += site.eval.force[0];
-            r[site.journal[1]] += site.eval.force[1];
+            site.journal[0].add(r, site.eval.force[0]);
+            site.journal[1].add(r, site.eval.force[1]);
             largest = largest
                 .max(site.eval.force[0].abs())
                 .max(site.eval.force[1].abs());

@@ -6,12 +6,13 @@
 //! [`equilibrium`] once per speed.
 
 use crate::bearing::BearingEval;
+use crate::linalg::BandMatrix;
 use crate::rotor::Rotor;
 
 use super::factor::make_factor;
 use super::newton::SchurSolve;
 use super::simulator::{SolverError, SolverOptions, inf_norm};
-use super::sites::Sites;
+use super::sites::{Coordinate, Sites};
 
 /// A static equilibrium (velocities and accelerations zero).
 #[derive(Debug, Clone, PartialEq)]
@@ -188,8 +189,9 @@ fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>
     let mut contacts = Vec::new();
     for site in &sites.list {
         if let Some((_, k)) = site.bearing.resting_contact([0.0, -1.0]) {
-            a.add(site.journal[0], site.journal[0], k);
-            a.add(site.journal[1], site.journal[1], k);
+            for c in &site.journal {
+                add_coupling(&mut a, c, c, k);
+            }
             contacts.push((site, k));
         }
     }
@@ -202,13 +204,14 @@ fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>
     let mut rhs = f_ext.to_vec();
     let mut pushed = false;
     for &(site, k) in &contacts {
-        let [ix, iy] = site.journal;
-        let d = u[ix].hypot(u[iy]);
+        let [cx, cy] = site.journal;
+        let (x, y) = (cx.of(&u), cy.of(&u));
+        let d = x.hypot(y);
         if d > 0.0 {
-            let direction = [u[ix] / d, u[iy] / d];
+            let direction = [x / d, y / d];
             let (gap, _) = site.bearing.resting_contact(direction)?;
-            rhs[ix] += k * gap * direction[0];
-            rhs[iy] += k * gap * direction[1];
+            cx.add(&mut rhs, k * gap * direction[0]);
+            cy.add(&mut rhs, k * gap * direction[1]);
             pushed = true;
         }
     }
@@ -255,7 +258,7 @@ fn newton_static(
         None => {
             let mut p = vec![0.0; sites.n_internal];
             for site in &sites.list {
-                let journal = [u[site.journal[0]], u[site.journal[1]]];
+                let journal = [site.journal[0].of(&u), site.journal[1].of(&u)];
                 let range = site.offset..site.offset + site.internal;
                 site.bearing.guess_internal(journal, speed, &mut p[range]);
             }
@@ -274,17 +277,17 @@ fn newton_static(
             site.jk.copy_from_slice(&site.eval.stiffness);
             site.jc.fill(0.0);
             let n2 = site.eval.n();
-            for (i, &gi) in site.journal.iter().enumerate() {
-                for (j, &gj) in site.journal.iter().enumerate() {
-                    a.add(gi, gj, site.jk[i * n2 + j]);
+            for (i, ci) in site.journal.iter().enumerate() {
+                for (j, cj) in site.journal.iter().enumerate() {
+                    add_coupling(&mut a, ci, cj, site.jk[i * n2 + j]);
                 }
-                a.add(gi, gi, k_rest);
+                a.add(ci.journal, ci.journal, k_rest);
             }
         }
         let factor = make_factor(
             &a,
             rotor,
-            &sites.journal_dofs,
+            &sites.coordinates,
             (0.0, speed),
             None,
             &mut column,
@@ -323,4 +326,14 @@ fn newton_static(
     Err(SolverError::Static(format!(
         "Newton stalled with residual {residual:.3e} of the force scale"
     )))
+}
+
+/// Add `k e_i e_jᵀ` to `a`: a stiffness between journal coordinates `i` and
+/// `j`, which acts between journal and housing DOFs for a bearing on a pedestal.
+fn add_coupling(a: &mut BandMatrix<f64>, i: &Coordinate, j: &Coordinate, k: f64) {
+    for (row, si) in i.entries() {
+        for (col, sj) in j.entries() {
+            a.add(row, col, si * sj * k);
+        }
+    }
 }

@@ -216,6 +216,7 @@ pub(super) fn bearings(
             name: names.claim(ctx, &p, default_name(name, "bearing", i), "bearing")?,
             node,
             kind,
+            pedestal: None,
         });
     }
     for (i, r) in rubs.into_iter().enumerate() {
@@ -245,6 +246,7 @@ pub(super) fn bearings(
             name: names.claim(ctx, &p, default_name(r.name, "rub", i), "rub")?,
             node,
             kind: BearingKind::Rub(RubElement { contact: law }),
+            pedestal: None,
         });
     }
 

@@ -82,6 +82,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         unbalances,
         probes,
         supports,
+        pedestals: Vec::new(),
         gravity,
     })
 }
