@@ -43,6 +43,7 @@ pub mod film;
 pub mod linear;
 pub mod plain;
 pub mod rub;
+pub mod table;
 pub mod tilting_pad;
 
 use nalgebra::{Matrix2, Vector2};
@@ -50,6 +51,7 @@ use nalgebra::{Matrix2, Vector2};
 pub use linear::LinearBearing;
 pub use plain::PlainBearing;
 pub use rub::RubElement;
+pub use table::{CoefficientTable, SealElement, TableBearing};
 pub use tilting_pad::TiltingPadBearing;
 
 /// Position and velocity of a journal centre relative to the bearing centre.
@@ -316,6 +318,10 @@ pub enum BearingKind {
     TiltingPad(TiltingPadBearing),
     /// Rub element (`[[rubs]]`): contact with a stator ring only.
     Rub(RubElement),
+    /// Linear coefficients over speed (`type = "table"`).
+    Table(TableBearing),
+    /// Seal (`[[seals]]`): coefficients over speed, optionally closing on its stator.
+    Seal(SealElement),
 }
 
 impl BearingKind {
@@ -328,7 +334,35 @@ impl BearingKind {
             BearingKind::Plain(b) => Box::new(*b),
             BearingKind::TiltingPad(b) => Box::new(b.clone()),
             BearingKind::Rub(r) => Box::new(*r),
+            BearingKind::Table(t) => Box::new(t.clone()),
+            BearingKind::Seal(s) => Box::new(s.clone()),
         }
+    }
+
+    /// The constant added mass of a table bearing or seal (kg, row-major,
+    /// acting on the journal's acceleration relative to its housing), `None`
+    /// for the others.
+    pub fn added_mass(&self) -> Option<[[f64; 2]; 2]> {
+        match self {
+            BearingKind::Table(t) => Some(t.added_mass),
+            BearingKind::Seal(s) => Some(s.added_mass),
+            _ => None,
+        }
+        .filter(|m| m.iter().flatten().any(|&v| v != 0.0))
+    }
+
+    /// The coefficient table of a table bearing or seal.
+    pub fn coefficient_table(&self) -> Option<&CoefficientTable> {
+        match self {
+            BearingKind::Table(t) => Some(&t.table),
+            BearingKind::Seal(s) => Some(&s.table),
+            _ => None,
+        }
+    }
+
+    /// Whether this is a seal rather than a bearing.
+    pub fn is_seal(&self) -> bool {
+        matches!(self, BearingKind::Seal(_))
     }
 
     /// Whether this is a rub element rather than a bearing.
@@ -346,7 +380,10 @@ impl BearingKind {
     /// For tilting pads the clearance is the pad (machined) clearance.
     pub fn film_geometry(&self) -> Option<FilmGeometry> {
         let (radius, length, clearance, viscosity) = match self {
-            BearingKind::Linear { .. } | BearingKind::Rub(_) => return None,
+            BearingKind::Linear { .. }
+            | BearingKind::Rub(_)
+            | BearingKind::Table(_)
+            | BearingKind::Seal(_) => return None,
             BearingKind::Plain(b) => (b.radius, b.length, b.clearance, b.viscosity),
             BearingKind::TiltingPad(b) => (b.radius, b.length, b.clearance, b.viscosity),
         };
@@ -366,7 +403,10 @@ impl BearingKind {
     /// Set the oil viscosity (Pa·s); `false` (and nothing changed) for a linear bearing.
     pub fn set_viscosity(&mut self, viscosity: f64) -> bool {
         match self {
-            BearingKind::Linear { .. } | BearingKind::Rub(_) => return false,
+            BearingKind::Linear { .. }
+            | BearingKind::Rub(_)
+            | BearingKind::Table(_)
+            | BearingKind::Seal(_) => return false,
             BearingKind::Plain(b) => b.viscosity = viscosity,
             BearingKind::TiltingPad(b) => b.viscosity = viscosity,
         }
@@ -375,13 +415,15 @@ impl BearingKind {
 
     /// Radial clearance (m) the journal moves in: the bushing clearance of a plain
     /// bearing, the assembled clearance `C (1 − preload)` of tilting pads, the
-    /// radial gap of a rub element; `None` for a linear bearing.
+    /// radial gap of a rub element or of a seal that can touch; `None` for a
+    /// linear or table bearing and a seal without a clearance.
     pub fn journal_clearance(&self) -> Option<f64> {
         match self {
-            BearingKind::Linear { .. } => None,
+            BearingKind::Linear { .. } | BearingKind::Table(_) => None,
             BearingKind::Plain(b) => Some(b.clearance),
             BearingKind::TiltingPad(b) => Some(b.assembled_clearance()),
             BearingKind::Rub(r) => Some(r.contact.gap),
+            BearingKind::Seal(s) => s.contact.map(|c| c.gap),
         }
     }
 }

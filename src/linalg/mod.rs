@@ -1,12 +1,14 @@
 //! Self-contained numerical linear algebra for the finite-element solver:
-//! banded LU with partial pivoting ([`band`]) and an Arnoldi eigensolver for a
+//! banded LU with partial pivoting ([`band`]), an Arnoldi eigensolver for a
 //! few largest-modulus eigenvalues of a linear operator ([`arnoldi`]), meant to
-//! be used in shift-invert mode.
+//! be used in shift-invert mode, and monotone cubic interpolation of tables
+//! ([`pchip`]).
 
 use std::fmt;
 
 pub mod arnoldi;
 pub mod band;
+pub mod pchip;
 
 pub use arnoldi::{
     ArnoldiOptions, EigenPair, LinearOperator, RealOperator, largest_eigenpairs,

@@ -54,12 +54,21 @@ pub struct ModelFile {
     /// `[[rubs]]`.
     #[serde(default)]
     pub rubs: Vec<RubEntry>,
+    /// `[[seals]]`.
+    #[serde(default)]
+    pub seals: Vec<SealEntry>,
+    /// `[[point_masses]]`.
+    #[serde(default)]
+    pub point_masses: Vec<PointMassEntry>,
     #[serde(default)]
     pub unbalance: Vec<UnbalanceEntry>,
     #[serde(default)]
     pub probes: Vec<ProbeEntry>,
     #[serde(default)]
     pub supports: Vec<SupportEntry>,
+    /// `[[pedestals]]`: bearing supports in series with bearings.
+    #[serde(default)]
+    pub pedestals: Vec<PedestalEntry>,
     /// `[reduction]`: transients on a reduced rotor.
     #[serde(default)]
     pub reduction: Option<ReductionEntry>,
@@ -142,6 +151,8 @@ pub enum BearingEntry {
         name: Option<String>,
         node: Option<i64>,
         z: Option<f64>,
+        /// The pedestal (`[[pedestals]]` name) its housing stands on; default rigid ground.
+        pedestal: Option<String>,
         /// Stiffness (N/m).
         #[serde(default)]
         kxx: f64,
@@ -166,6 +177,8 @@ pub enum BearingEntry {
         name: Option<String>,
         node: Option<i64>,
         z: Option<f64>,
+        /// The pedestal (`[[pedestals]]` name) its housing stands on; default rigid ground.
+        pedestal: Option<String>,
         /// Journal radius (m).
         radius: f64,
         /// Bearing length (m).
@@ -182,11 +195,41 @@ pub enum BearingEntry {
         /// Coulomb friction coefficient of the contact (–), default 0.2.
         friction_coefficient: Option<f64>,
     },
+    /// Linear coefficients over speed (a vendor's bearing code), PCHIP-interpolated.
+    Table {
+        name: Option<String>,
+        node: Option<i64>,
+        z: Option<f64>,
+        /// The pedestal (`[[pedestals]]` name) its housing stands on; default rigid ground.
+        pedestal: Option<String>,
+        /// Speeds of the table rows (rpm), increasing; with the coefficient
+        /// columns below. Omit for constant coefficients.
+        speeds_rpm: Option<Vec<f64>>,
+        /// Coefficients (N/m, N·s/m): one value, or one per speed.
+        kxx: Option<Coefficient>,
+        kxy: Option<Coefficient>,
+        kyx: Option<Coefficient>,
+        kyy: Option<Coefficient>,
+        cxx: Option<Coefficient>,
+        cxy: Option<Coefficient>,
+        cyx: Option<Coefficient>,
+        cyy: Option<Coefficient>,
+        /// A CSV file (beside the model file) with a `speed_rpm` column and
+        /// any of the coefficient columns, instead of the inline table.
+        table: Option<String>,
+        /// Added mass (kg), constant over speed.
+        mxx: Option<f64>,
+        mxy: Option<f64>,
+        myx: Option<f64>,
+        myy: Option<f64>,
+    },
     /// Tilting-pad journal bearing: short-bearing film on each pad, pads tilt freely.
     TiltingPad {
         name: Option<String>,
         node: Option<i64>,
         z: Option<f64>,
+        /// The pedestal (`[[pedestals]]` name) its housing stands on; default rigid ground.
+        pedestal: Option<String>,
         /// Journal radius (m).
         radius: f64,
         /// Pad axial length (m).
@@ -217,6 +260,74 @@ pub enum BearingEntry {
     },
 }
 
+/// A table coefficient: one value for every speed, or one per speed.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+pub enum Coefficient {
+    /// The same value at every speed.
+    Constant(f64),
+    /// One value per entry of `speeds_rpm`.
+    Column(Vec<f64>),
+}
+
+/// `[[seals]]`: an annular seal, labyrinth or wear ring given by its linear
+/// coefficients over speed, optionally closing on its stator at `clearance`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SealEntry {
+    pub name: Option<String>,
+    pub node: Option<i64>,
+    pub z: Option<f64>,
+    /// The pedestal (`[[pedestals]]` name) the stator stands on; default rigid ground.
+    pub pedestal: Option<String>,
+    /// Speeds of the table rows (rpm), increasing; with the coefficient
+    /// columns below. Omit for constant coefficients.
+    pub speeds_rpm: Option<Vec<f64>>,
+    /// Coefficients (N/m, N·s/m): one value, or one per speed.
+    pub kxx: Option<Coefficient>,
+    pub kxy: Option<Coefficient>,
+    pub kyx: Option<Coefficient>,
+    pub kyy: Option<Coefficient>,
+    pub cxx: Option<Coefficient>,
+    pub cxy: Option<Coefficient>,
+    pub cyx: Option<Coefficient>,
+    pub cyy: Option<Coefficient>,
+    /// A CSV file (beside the model file) with a `speed_rpm` column and
+    /// any of the coefficient columns, instead of the inline table.
+    pub table: Option<String>,
+    /// Added mass (kg), constant over speed.
+    pub mxx: Option<f64>,
+    pub mxy: Option<f64>,
+    pub myx: Option<f64>,
+    pub myy: Option<f64>,
+    /// Radial clearance at which the seal touches its stator (m); default: never.
+    pub clearance: Option<f64>,
+    /// Rotor surface radius at the seal (m); default the shaft's outer radius there.
+    pub radius: Option<f64>,
+    /// Contact stiffness (N/m); default the steel line contact of a 10 mm wide ring.
+    pub contact_stiffness: Option<f64>,
+    /// Contact damping (N·s/m); default 1e-5 s × the contact stiffness.
+    pub contact_damping: Option<f64>,
+    /// Coulomb friction coefficient (–), default 0.2.
+    pub friction_coefficient: Option<f64>,
+}
+
+/// `[[point_masses]]`: a non-rotating lumped mass at a node (coupling hub,
+/// housing, thrust collar): `mass`, or `mx` and `my` (kg).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PointMassEntry {
+    pub name: Option<String>,
+    pub node: Option<i64>,
+    pub z: Option<f64>,
+    /// Mass (kg) in x and y.
+    pub mass: Option<f64>,
+    /// Mass in x (kg), with `my`, instead of `mass`.
+    pub mx: Option<f64>,
+    /// Mass in y (kg).
+    pub my: Option<f64>,
+}
+
 /// `[[rubs]]`: a stator ring (seal, labyrinth, air gap) the rotor may touch.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -224,6 +335,8 @@ pub struct RubEntry {
     pub name: Option<String>,
     pub node: Option<i64>,
     pub z: Option<f64>,
+    /// The pedestal (`[[pedestals]]` name) the stator stands on; default rigid ground.
+    pub pedestal: Option<String>,
     /// Radial clearance between rotor and stator (m).
     pub gap: f64,
     /// Rotor surface radius at the rub (m); default the shaft's outer radius at the node.
@@ -257,6 +370,37 @@ pub struct ProbeEntry {
     pub name: String,
     pub node: Option<i64>,
     pub z: Option<f64>,
+}
+
+/// `[[pedestals]]`: a bearing support (pedestal, bracket, foundation): a
+/// non-rotating lumped mass on a spring–damper to ground or to the pedestal
+/// it stands on. Bearings and rubs stand on it with `pedestal = "<name>"`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PedestalEntry {
+    pub name: String,
+    /// Mass (kg), the same in x and y.
+    pub mass: f64,
+    /// Stiffness to ground or to `on` (N/m).
+    #[serde(default)]
+    pub kxx: f64,
+    #[serde(default)]
+    pub kxy: f64,
+    #[serde(default)]
+    pub kyx: f64,
+    #[serde(default)]
+    pub kyy: f64,
+    /// Damping to ground or to `on` (N·s/m).
+    #[serde(default)]
+    pub cxx: f64,
+    #[serde(default)]
+    pub cxy: f64,
+    #[serde(default)]
+    pub cyx: f64,
+    #[serde(default)]
+    pub cyy: f64,
+    /// The pedestal it stands on (a bracket on a foundation); default ground.
+    pub on: Option<String>,
 }
 
 /// `[[supports]]`: ideal constraints (boundary conditions) at a node.

@@ -106,6 +106,18 @@ pub struct Pedestal {
     pub on: Option<usize>,
 }
 
+/// A non-rotating lumped mass at a node (`[[point_masses]]`): a coupling
+/// hub, a housing carried by the shaft, a collar.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointMass {
+    /// Name (default `point_mass<k>`).
+    pub name: String,
+    /// Node index (0-based).
+    pub node: usize,
+    /// Mass in `x` and in `y` (kg).
+    pub mass: [f64; 2],
+}
+
 /// An unbalance plane: a mass `m` at radius `e` rotating with the shaft.
 #[derive(Debug, Clone, PartialEq)]
 pub struct UnbalancePlane {
@@ -152,7 +164,10 @@ pub struct RotorModel {
     pub elements: Vec<PlacedElement>,
     /// Disks.
     pub disks: Vec<PlacedDisk>,
-    /// Bearings.
+    /// Non-rotating point masses.
+    pub point_masses: Vec<PointMass>,
+    /// Bearings, then rubs, then seals (each a [`BearingKind`] between a
+    /// rotor node and its housing).
     pub bearings: Vec<PlacedBearing>,
     /// Unbalance planes.
     pub unbalances: Vec<UnbalancePlane>,
@@ -171,6 +186,8 @@ pub struct RotorModel {
     /// Whether the file states `max_speed_rpm` (else `max_speed` is
     /// [`DEFAULT_MAX_SPEED_RPM`]).
     pub max_speed_stated: bool,
+    /// Coefficient-table files read, as written and as resolved ([`Self::table_files`]).
+    pub table_files: Vec<(String, std::path::PathBuf)>,
     /// Fixed-interface modes of the reduced rotor transients run on
     /// (`[reduction]`, see [`crate::rotor::Rotor::reduced`]); `None`: the full rotor.
     pub reduced_modes: Option<usize>,
@@ -303,6 +320,13 @@ impl RotorModel {
             .map(|node| if node == usize::MAX { 0 } else { node })
             .enumerate()
             .collect()
+    }
+
+    /// Files the model reads besides its own (coefficient tables), as
+    /// written in it (relative to the model file's folder) with the path
+    /// they were read from.
+    pub fn table_files(&self) -> &[(String, std::path::PathBuf)] {
+        &self.table_files
     }
 
     /// Total rotating mass: shaft plus disks (kg).

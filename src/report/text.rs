@@ -8,7 +8,7 @@ use crate::analysis::operating_point::BearingOperatingPoint;
 use crate::analysis::stability::Stability;
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::analysis::unbalance::{Peak, SeparationMargin, UnbalanceSweep};
-use crate::bearing::BearingKind;
+use crate::bearing::{BearingKind, CoefficientTable};
 use crate::rotor::Rotor;
 use crate::units::RAD_S_TO_RPM;
 
@@ -136,7 +136,70 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
             short(r.contact.damping),
             short(r.contact.friction)
         ),
+        BearingKind::Table(t) => format!(
+            "coefficient table over speed, {}",
+            describe_table(&t.table, t.added_mass)
+        ),
+        BearingKind::Seal(s) => {
+            let contact = match &s.contact {
+                None => "never touches".to_string(),
+                Some(c) => format!(
+                    "touches its stator at a radial clearance of {} µm (contact stiffness {} N/m, friction μ = {})",
+                    short(c.gap * 1e6),
+                    short(c.stiffness),
+                    short(c.friction)
+                ),
+            };
+            format!(
+                "seal, {}; {contact}",
+                describe_table(&s.table, s.added_mass)
+            )
+        }
     }
+}
+
+/// A coefficient table in one line: its speed range and rows, and the
+/// coefficients at both ends (or the constant ones).
+fn describe_table(table: &CoefficientTable, mass: [[f64; 2]; 2]) -> String {
+    let (lo, hi) = table.range();
+    let at = |speed: f64| {
+        let (k, c) = table.at(speed);
+        format!(
+            "K = [[{}, {}], [{}, {}]] N/m, C = [[{}, {}], [{}, {}]] N·s/m",
+            short(k[0][0]),
+            short(k[0][1]),
+            short(k[1][0]),
+            short(k[1][1]),
+            short(c[0][0]),
+            short(c[0][1]),
+            short(c[1][0]),
+            short(c[1][1])
+        )
+    };
+    let rows = table.speeds.len();
+    let mut s = if rows == 1 {
+        format!("constant: {}", at(lo))
+    } else {
+        format!(
+            "{rows} speeds from {} to {} rpm: at {} rpm {}; at {} rpm {}",
+            short(lo * RAD_S_TO_RPM),
+            short(hi * RAD_S_TO_RPM),
+            short(lo * RAD_S_TO_RPM),
+            at(lo),
+            short(hi * RAD_S_TO_RPM),
+            at(hi)
+        )
+    };
+    if mass.iter().flatten().any(|&m| m != 0.0) {
+        s.push_str(&format!(
+            ", added mass [[{}, {}], [{}, {}]] kg",
+            short(mass[0][0]),
+            short(mass[0][1]),
+            short(mass[1][0]),
+            short(mass[1][1])
+        ));
+    }
+    s
 }
 
 /// The table of unbalance response peaks `rotor unbalance` prints: point, peak

@@ -2,7 +2,8 @@
 //! local matrices `M`, `K`, `C`, `G` (`G` per rad/s of spin) over a list of
 //! free DOFs (`None`: fixed by a support, or ground); assembly adds them into
 //! the banded matrices in the order they are listed:
-//! shaft elements, disks, pedestals, linear bearings.
+//! shaft elements, disks, point masses, pedestals, then the bearings in
+//! model order (linear bearings, added masses of table bearings and seals).
 //!
 //! A spring–damper between two points (a bearing between its journal and its
 //! housing, a pedestal and the pedestal it stands on) is one element over the
@@ -132,6 +133,31 @@ pub(super) fn structure(model: &RotorModel, dofs: &DofMap) -> Vec<LinearElement>
         list.push(e);
     }
     list
+}
+
+/// The non-rotating point masses of `model` on their nodes' translations.
+pub(super) fn point_masses(model: &RotorModel, dofs: &DofMap) -> Vec<LinearElement> {
+    model
+        .point_masses
+        .iter()
+        .map(|pm| {
+            let mut e =
+                LinearElement::new(vec![dofs.free(pm.node, DOF_X), dofs.free(pm.node, DOF_Y)]);
+            e.mass = Some(DMatrix::from_fn(2, 2, |a, b| {
+                if a == b { pm.mass[a] } else { 0.0 }
+            }));
+            e
+        })
+        .collect()
+}
+
+/// The added mass `m` (kg, row-major) of a table bearing or seal, acting on
+/// the journal's acceleration relative to its housing: `[[m, −m], [−m, m]]`
+/// between journal and housing.
+pub fn added_mass(dofs: &DofMap, bearing: &PlacedBearing, mass: &[[f64; 2]; 2]) -> LinearElement {
+    let mut e = LinearElement::new(bearing_dofs(dofs, bearing));
+    e.mass = Some(link(mass, bearing.pedestal.is_some()));
+    e
 }
 
 /// The pedestals of `model`: each one's mass on its translations and its

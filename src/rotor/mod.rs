@@ -103,6 +103,7 @@ impl Rotor {
             return Err(AssemblyError::NoFreeDofs(model.name.clone()));
         }
         let mut linear = elements::structure(&model, &dofs);
+        linear.extend(elements::point_masses(&model, &dofs));
         linear.extend(elements::pedestals(&model, &dofs));
         let mut nonlinear_bearings = Vec::new();
         // Every bearing couples its journal to its housing: the band holds
@@ -133,6 +134,9 @@ impl Rotor {
                 nonlinear_bearings.push(BearingSite {
                     name: b.name.clone(),
                 });
+            }
+            if let Some(m) = b.kind.added_mass() {
+                linear.push(elements::added_mass(&dofs, b, &m));
             }
         }
         let bw = linear
@@ -225,10 +229,11 @@ impl Rotor {
     /// A linear copy of this rotor: every nonlinear bearing replaced by the
     /// coefficients given for it (one entry per nonlinear bearing, by model
     /// index), scattered between its journal and housing DOFs
-    /// ([`elements::bearing_link`]), `K' = K + E K_b Eᵀ`, `C' = C + E C_b Eᵀ`. Mass, gyroscopic matrix and
-    /// gravity load are copied, nothing is re-assembled; the copy's model lists
-    /// those bearings as [`BearingKind::Linear`], so it equals the assembly of
-    /// that model.
+    /// ([`elements::bearing_link`]), `K' = K + E K_b Eᵀ`, `C' = C + E C_b Eᵀ`.
+    /// Mass (with the added masses of table bearings and seals), gyroscopic
+    /// matrix and gravity load are copied, nothing is re-assembled; the copy's
+    /// model lists those bearings as [`BearingKind::Linear`], so without added
+    /// masses it equals the assembly of that model.
     pub fn with_bearing_coefficients(
         &self,
         coefficients: &[JournalCoefficients],

@@ -3,35 +3,47 @@
 
 use crate::bearing::contact::ContactLaw;
 use crate::bearing::tilting_pad::Pad;
-use crate::bearing::{BearingKind, PlainBearing, RubElement, TiltingPadBearing};
+use std::path::PathBuf;
+
+use crate::bearing::{
+    BearingKind, PlainBearing, RubElement, SealElement, TableBearing, TiltingPadBearing,
+};
 
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
-use crate::model::file::{BearingEntry, RubEntry};
-use crate::model::{ModelError, PlacedBearing, PlacedElement};
+use crate::model::file::{BearingEntry, RubEntry, SealEntry};
+use crate::model::{ModelError, Pedestal, PlacedBearing, PlacedElement};
+
+use super::pedestals::lookup;
+use super::tables::{TableInput, coefficient_table};
 
 /// Check each bearing: unique name, its node and the parameters of its `type`; film bearings
 /// need a clearance below a tenth of the radius, tilting pads 3–18
 /// non-overlapping pads.
 ///
 /// Rub elements (`[[rubs]]`) follow the bearings in the list, as
-/// [`BearingKind::Rub`], their names unique among the bearings'.
+/// [`BearingKind::Rub`], then seals (`[[seals]]`, [`BearingKind::Seal`]),
+/// their names unique among the bearings'. Also returns the coefficient-table
+/// files read (as written, and resolved).
 pub(super) fn bearings(
     ctx: &Ctx,
     root: &FieldPath,
-    (entries, rubs): (Vec<BearingEntry>, Vec<RubEntry>),
+    (entries, rubs, seals): (Vec<BearingEntry>, Vec<RubEntry>, Vec<SealEntry>),
     node_z: &[f64],
     elements: &[PlacedElement],
-) -> Result<Vec<PlacedBearing>, ModelError> {
+    pedestals: &[Pedestal],
+) -> Result<(Vec<PlacedBearing>, Vec<(String, PathBuf)>), ModelError> {
     let mut bearings = Vec::new();
+    let mut files = Vec::new();
     let mut names = Names::default();
     for (i, b) in entries.into_iter().enumerate() {
         let p = root.key("bearings").index(i);
-        let (name, node, kind) = match b {
+        let (name, node, kind, pedestal) = match b {
             BearingEntry::Linear {
                 name,
                 node,
                 z,
+                pedestal,
                 kxx,
                 kxy,
                 kyx,
@@ -66,12 +78,14 @@ pub(super) fn bearings(
                         stiffness: k,
                         damping: c,
                     },
+                    pedestal,
                 )
             }
             BearingEntry::Plain {
                 name,
                 node,
                 z,
+                pedestal,
                 radius,
                 length,
                 clearance,
@@ -104,12 +118,49 @@ pub(super) fn bearings(
                         ),
                     ));
                 }
-                (name, node, BearingKind::Plain(bearing))
+                (name, node, BearingKind::Plain(bearing), pedestal)
+            }
+            BearingEntry::Table {
+                name,
+                node,
+                z,
+                pedestal,
+                speeds_rpm,
+                kxx,
+                kxy,
+                kyx,
+                kyy,
+                cxx,
+                cxy,
+                cyx,
+                cyy,
+                table,
+                mxx,
+                mxy,
+                myx,
+                myy,
+            } => {
+                let node = ctx.location(&p, node, z, node_z)?;
+                let input = TableInput {
+                    speeds_rpm: &speeds_rpm,
+                    columns: [&kxx, &kxy, &kyx, &kyy, &cxx, &cxy, &cyx, &cyy],
+                    table: &table,
+                    mass: [mxx, mxy, myx, myy],
+                };
+                let (table, added_mass, file) = coefficient_table(ctx, &p, &input)?;
+                files.extend(file);
+                (
+                    name,
+                    node,
+                    BearingKind::Table(TableBearing { table, added_mass }),
+                    pedestal,
+                )
             }
             BearingEntry::TiltingPad {
                 name,
                 node,
                 z,
+                pedestal,
                 radius,
                 length,
                 clearance,
@@ -209,27 +260,28 @@ pub(super) fn bearings(
                     bearing.contact_law(),
                     [contact_stiffness, contact_damping, friction_coefficient],
                 )?;
-                (name, node, BearingKind::TiltingPad(bearing))
+                (name, node, BearingKind::TiltingPad(bearing), pedestal)
             }
+        };
+        let pedestal = match pedestal {
+            None => None,
+            Some(on) => Some(lookup(ctx, &p.key("pedestal"), pedestals, &on)?),
         };
         bearings.push(PlacedBearing {
             name: names.claim(ctx, &p, default_name(name, "bearing", i), "bearing")?,
             node,
             kind,
-            pedestal: None,
+            pedestal,
         });
     }
     for (i, r) in rubs.into_iter().enumerate() {
         let p = root.key("rubs").index(i);
         let node = ctx.location(&p, r.node, r.z, node_z)?;
         let gap = ctx.positive(p.key("gap"), r.gap)?;
-        // The shaft's outer radius at the node: the larger of its elements'.
-        let shaft_radius = elements
-            .iter()
-            .filter(|e| e.node == node || e.node + 1 == node)
-            .map(|e| 0.5 * e.element.section.outer_diameter)
-            .fold(0.0, f64::max);
-        let radius = ctx.positive(p.key("radius"), r.radius.unwrap_or(shaft_radius))?;
+        let radius = ctx.positive(
+            p.key("radius"),
+            r.radius.unwrap_or(shaft_radius_at(elements, node)),
+        )?;
         let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
         let law = contact_law(
             ctx,
@@ -242,15 +294,97 @@ pub(super) fn bearings(
             ],
         )?
         .unwrap_or(default);
+        let pedestal = match &r.pedestal {
+            None => None,
+            Some(on) => Some(lookup(ctx, &p.key("pedestal"), pedestals, on)?),
+        };
         bearings.push(PlacedBearing {
             name: names.claim(ctx, &p, default_name(r.name, "rub", i), "rub")?,
             node,
             kind: BearingKind::Rub(RubElement { contact: law }),
-            pedestal: None,
+            pedestal,
         });
     }
 
-    Ok(bearings)
+    for (i, e) in seals.into_iter().enumerate() {
+        let p = root.key("seals").index(i);
+        let node = ctx.location(&p, e.node, e.z, node_z)?;
+        let input = TableInput {
+            speeds_rpm: &e.speeds_rpm,
+            columns: [
+                &e.kxx, &e.kxy, &e.kyx, &e.kyy, &e.cxx, &e.cxy, &e.cyx, &e.cyy,
+            ],
+            table: &e.table,
+            mass: [e.mxx, e.mxy, e.myx, e.myy],
+        };
+        let (table, added_mass, file) = coefficient_table(ctx, &p, &input)?;
+        files.extend(file);
+        let contact = match e.clearance {
+            None => {
+                for (key, given) in [
+                    ("radius", e.radius.is_some()),
+                    ("contact_stiffness", e.contact_stiffness.is_some()),
+                    ("contact_damping", e.contact_damping.is_some()),
+                    ("friction_coefficient", e.friction_coefficient.is_some()),
+                ] {
+                    if given {
+                        return Err(ctx.err(
+                            p.key(key),
+                            "(given)",
+                            "a contact parameter needs the seal's clearance (the radial gap at which it touches)",
+                        ));
+                    }
+                }
+                None
+            }
+            Some(gap) => {
+                let gap = ctx.positive(p.key("clearance"), gap)?;
+                let radius = ctx.positive(
+                    p.key("radius"),
+                    e.radius.unwrap_or(shaft_radius_at(elements, node)),
+                )?;
+                let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
+                Some(
+                    contact_law(
+                        ctx,
+                        &p,
+                        default,
+                        [
+                            e.contact_stiffness,
+                            e.contact_damping,
+                            e.friction_coefficient,
+                        ],
+                    )?
+                    .unwrap_or(default),
+                )
+            }
+        };
+        let pedestal = match &e.pedestal {
+            None => None,
+            Some(on) => Some(lookup(ctx, &p.key("pedestal"), pedestals, on)?),
+        };
+        bearings.push(PlacedBearing {
+            name: names.claim(ctx, &p, default_name(e.name, "seal", i), "seal")?,
+            node,
+            kind: BearingKind::Seal(SealElement {
+                table,
+                added_mass,
+                contact,
+            }),
+            pedestal,
+        });
+    }
+
+    Ok((bearings, files))
+}
+
+/// The shaft's outer radius at `node`: the larger of its elements'.
+fn shaft_radius_at(elements: &[PlacedElement], node: usize) -> f64 {
+    elements
+        .iter()
+        .filter(|e| e.node == node || e.node + 1 == node)
+        .map(|e| 0.5 * e.element.section.outer_diameter)
+        .fold(0.0, f64::max)
 }
 
 /// Axial width (m) of a rub's contact for its default steel stiffness.

@@ -10,7 +10,8 @@ use crate::model::file::DiskEntry;
 use crate::model::{ModelError, PlacedDisk};
 
 /// Check each disk: unique name, its node, and either `mass`, `polar_inertia`,
-/// `diametral_inertia` (kg, kg·m², all > 0) or `material`, `outer_diameter`,
+/// `diametral_inertia` (kg > 0, kg·m² ≥ 0: zero inertias make a point mass
+/// that spins with the rotor) or `material`, `outer_diameter`,
 /// `inner_diameter`, `width` (m) — not a mix.
 pub(super) fn disks(
     ctx: &Ctx,
@@ -32,17 +33,25 @@ pub(super) fn disks(
             || d.width.is_some();
         let disk = match (by_inertia, by_geometry) {
             (true, false) => {
-                let need = |key: &'static str, v: Option<f64>| match v {
-                    Some(v) => ctx.positive(p.key(key), v),
-                    None => Err(ctx.err(
-                        p.key(key),
-                        "(missing)",
-                        "needed with mass-and-inertia disks",
-                    )),
+                let need = |key: &'static str, v: Option<f64>| {
+                    v.ok_or_else(|| {
+                        ctx.err(
+                            p.key(key),
+                            "(missing)",
+                            "needed with mass-and-inertia disks",
+                        )
+                    })
                 };
-                let mass = need("mass", d.mass)?;
-                let polar_inertia = need("polar_inertia", d.polar_inertia)?;
-                let diametral_inertia = need("diametral_inertia", d.diametral_inertia)?;
+                let mass = ctx.positive(p.key("mass"), need("mass", d.mass)?)?;
+                // Zero inertias make a point mass on the rotor (no gyroscopic effect).
+                let polar_inertia = ctx.non_negative(
+                    p.key("polar_inertia"),
+                    need("polar_inertia", d.polar_inertia)?,
+                )?;
+                let diametral_inertia = ctx.non_negative(
+                    p.key("diametral_inertia"),
+                    need("diametral_inertia", d.diametral_inertia)?,
+                )?;
                 Disk {
                     mass,
                     polar_inertia,

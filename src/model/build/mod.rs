@@ -1,14 +1,17 @@
 //! Validation of a parsed model file into a [`RotorModel`], one section at a
 //! time in file order (so the first error reported is the first in the file's
-//! logical order): name, materials, shaft, disks, bearings, loads (unbalance),
-//! probes, supports, gravity and nominal speed.
+//! logical order): name, materials, shaft, disks, pedestals, bearings, loads
+//! (unbalance), probes, supports, gravity and nominal speed.
 
 mod bearings;
 mod disks;
 mod loads;
 mod materials;
+mod pedestals;
+mod point_masses;
 mod shaft;
 mod supports;
+mod tables;
 
 use super::context::Ctx;
 use super::error::FieldPath;
@@ -23,13 +26,17 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     let shaft = shaft::shaft(ctx, &root, &raw, &materials)?;
     let node_z = shaft.node_z;
     let disks = disks::disks(ctx, &root, raw.disks, &node_z, &materials)?;
-    let bearings = bearings::bearings(
+    let pedestals = pedestals::pedestals(ctx, &root, &raw.pedestals)?;
+    let point_masses = point_masses::point_masses(ctx, &root, raw.point_masses, &node_z)?;
+    let (bearings, table_files) = bearings::bearings(
         ctx,
         &root,
-        (raw.bearings, raw.rubs),
+        (raw.bearings, raw.rubs, raw.seals),
         &node_z,
         &shaft.elements,
+        &pedestals,
     )?;
+    pedestals::check_carried(ctx, &root, &pedestals, &bearings)?;
     let unbalances = loads::unbalances(ctx, &root, raw.unbalance, &node_z)?;
     let probes = loads::probes(ctx, &root, raw.probes, &node_z)?;
     let supports = supports::supports(ctx, &root, raw.supports, &node_z)?;
@@ -78,11 +85,13 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         node_z,
         elements: shaft.elements,
         disks,
+        point_masses,
         bearings,
+        table_files,
         unbalances,
         probes,
         supports,
-        pedestals: Vec::new(),
+        pedestals,
         gravity,
     })
 }
