@@ -74,7 +74,7 @@ fn radius_and_friction(model: &RotorModel, k: usize) -> (f64, f64) {
     match &model.bearings[k].kind {
         BearingKind::Plain(b) => (b.radius, b.contact_law().friction),
         BearingKind::TiltingPad(b) => (b.radius, b.contact_law().friction),
-        BearingKind::Linear { .. } | BearingKind::Rub(_) => panic!("not a fluid-film bearing"),
+        _ => panic!("not a fluid-film bearing"),
     }
 }
 

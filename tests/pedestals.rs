@@ -225,3 +225,187 @@ fn stiff_pedestals_reproduce_the_rigidly_supported_rotor() {
         );
     }
 }
+
+/// `xᵀ A y` for a banded matrix.
+fn quadratic(a: &rotor_bearing::linalg::BandMatrix<f64>, x: &[f64], y: &[f64]) -> f64 {
+    let mut ay = vec![0.0; y.len()];
+    a.mul_vec(y, &mut ay);
+    x.iter().zip(&ay).map(|(p, q)| p * q).sum()
+}
+
+/// The Jeffcott rotor's plain bearings on soft pedestals (5 kg, 2e7 N/m,
+/// 100 N·s/m) at 6000 rpm under gravity and unbalance, 500 Newmark steps of
+/// 0.1 ms from the static equilibrium:
+/// - the film sees the journal relative to its housing: the reported
+///   eccentricity is `|q_journal − q_housing| / C` at every step;
+/// - the reaction acts on the housing: each pedestal's equation of motion
+///   `m q̈ + c q̇ + k q = m g − F` (F the film force on the journal) holds at
+///   every step to 1e-7 of the film force;
+/// - the energy balance closes: the change of kinetic plus elastic energy
+///   less the work of gravity equals the work of unbalance and film forces
+///   less the damper dissipation, Σ Δuᵀ(f̄_u + E F̄_b) − h v̄ᵀ C v̄ (exact for
+///   Newmark's trapezoidal rule), to 1e-6 of the energy exchanged.
+#[test]
+fn the_film_acts_between_journal_and_moving_housing_and_energy_balances() {
+    let model = jeffcott_on_pedestals(5.0, 2e7);
+    let (m_p, k_p, c_p, g) = (5.0, 2e7, 100.0, -9.81);
+    let clearance = 100e-6;
+    let speed = 6000.0 * RPM;
+    let h = 1e-4;
+    let mut sim = Simulator::new(
+        Rotor::new(model).unwrap(),
+        SolverOptions {
+            time_step: h,
+            ..SolverOptions::default()
+        },
+    )
+    .unwrap();
+    sim.set_speed(speed, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    let rotor = sim.rotor();
+    let journal = |b: usize, k: usize| {
+        let node = rotor.model.bearings[b].node;
+        rotor.dofs.free(node, k).unwrap()
+    };
+    let housing = |b: usize, k: usize| {
+        let p = rotor.model.bearings[b].pedestal.unwrap();
+        rotor.dofs.pedestal(p, k).unwrap()
+    };
+    let (jx, hx): (Vec<[usize; 2]>, Vec<[usize; 2]>) = (0..2)
+        .map(|b| {
+            (
+                [journal(b, 0), journal(b, 1)],
+                [housing(b, 0), housing(b, 1)],
+            )
+        })
+        .unzip();
+    let unbalance = &rotor.model.unbalances[0];
+    let unbalance_dofs = [
+        rotor.dofs.free(unbalance.node, 0).unwrap(),
+        rotor.dofs.free(unbalance.node, 1).unwrap(),
+    ];
+    let (me, phase) = (unbalance.magnitude, unbalance.phase);
+    let (mass, stiffness, damping) = (
+        rotor.mass.clone(),
+        rotor.stiffness.clone(),
+        rotor.damping.clone(),
+    );
+    let gravity = rotor.gravity_load.clone();
+    // The forces besides inertia, elasticity and dampers: unbalance and E F_b.
+    let forces = |sim: &mut Simulator| {
+        let out = sim.outputs().unwrap();
+        let mut f = vec![0.0; sim.rotor().dof_count()];
+        let angle = out.spin_angle + phase;
+        f[unbalance_dofs[0]] += me * speed * speed * angle.cos();
+        f[unbalance_dofs[1]] += me * speed * speed * angle.sin();
+        for b in 0..2 {
+            let force = [out.bearings[b].fx, out.bearings[b].fy];
+            for k in 0..2 {
+                f[jx[b][k]] += force[k];
+                f[hx[b][k]] -= force[k];
+            }
+        }
+        (f, out)
+    };
+    let energy = |s: &rotor_bearing::solver::SimState| {
+        0.5 * quadratic(&mass, &s.ud, &s.ud) + 0.5 * quadratic(&stiffness, &s.u, &s.u)
+            - gravity.iter().zip(&s.u).map(|(f, u)| f * u).sum::<f64>()
+    };
+    let mut state = sim.state().clone();
+    let (mut f, _) = forces(&mut sim);
+    let e0 = energy(&state);
+    let (mut work, mut exchanged) = (0.0, 0.0);
+    let mut worst_reaction: f64 = 0.0;
+    for n in 1..=500 {
+        sim.advance_to(n as f64 * h).unwrap();
+        let next = sim.state().clone();
+        let (f1, out) = forces(&mut sim);
+        let v: Vec<f64> = state
+            .ud
+            .iter()
+            .zip(&next.ud)
+            .map(|(a, b)| 0.5 * (a + b))
+            .collect();
+        let du: Vec<f64> = next.u.iter().zip(&state.u).map(|(a, b)| a - b).collect();
+        let external: f64 = du
+            .iter()
+            .zip(f.iter().zip(&f1))
+            .map(|(d, (a, b))| d * 0.5 * (a + b))
+            .sum();
+        let dissipated = h * quadratic(&damping, &v, &v);
+        work += external - dissipated;
+        exchanged += external.abs() + dissipated;
+        for b in 0..2 {
+            let o = &out.bearings[b];
+            let (rx, ry) = o.relative();
+            let from_state = [
+                next.u[jx[b][0]] - next.u[hx[b][0]],
+                next.u[jx[b][1]] - next.u[hx[b][1]],
+            ];
+            assert!((rx - from_state[0]).abs() <= 1e-18 && (ry - from_state[1]).abs() <= 1e-18);
+            let eccentricity = rx.hypot(ry) / clearance;
+            assert!(
+                (o.report.eccentricity - eccentricity).abs() < 1e-12,
+                "step {n}, bearing {b}: eccentricity {} against |q_j − q_h|/C = {eccentricity}",
+                o.report.eccentricity
+            );
+            let film = [o.fx, o.fy];
+            for k in 0..2 {
+                let i = hx[b][k];
+                let weight = if k == 1 { m_p * g } else { 0.0 };
+                let residual =
+                    m_p * next.udd[i] + c_p * next.ud[i] + k_p * next.u[i] - weight + film[k];
+                worst_reaction = worst_reaction.max(residual.abs() / o.fx.hypot(o.fy));
+            }
+        }
+        state = next;
+        f = f1;
+    }
+    assert!(
+        worst_reaction < 1e-7,
+        "pedestal equation of motion off by {worst_reaction:e} of the film force"
+    );
+    let change = energy(&state) - e0;
+    assert!(
+        (change - work).abs() < 1e-6 * exchanged,
+        "energy change {change:e} J against net work {work:e} J (exchanged {exchanged:e} J)"
+    );
+}
+
+/// `rotor operating-point`'s library call on the rigid rotor standing on its
+/// frame under gravity: the frame passes the whole weight (rotor and frame)
+/// to the ground, `K q = (m + m_p) g`, its deflection is that load over its
+/// stiffness, and each bearing carries half the rotor's weight with the
+/// journal displaced relative to the housing by that load over `k_b`.
+#[test]
+fn operating_point_gives_housing_deflection_and_support_load() {
+    use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
+    let (m_p, k_p, k_b, g) = (80.0, 3e7, 1e7, -9.81);
+    let text = rigid_rotor_on_frame(&format!(
+        "[[pedestals]]\nname = \"frame\"\nmass = {m_p}\nkxx = {k_p}\nkyy = {k_p}\n"
+    ))
+    .replace(
+        "name = \"rigid_on_frame\"",
+        "name = \"rigid_on_frame\"\ngravity = [0.0, -9.81, 0.0]",
+    );
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "frame.toml").unwrap()).unwrap();
+    let shaft_mass = 7810.0 * std::f64::consts::PI * 0.1f64.powi(2) / 4.0 * 0.2;
+    let m = 60.0 + shaft_mass;
+    let pedestals = pedestal_operating_points(&rotor, 0.0).unwrap();
+    assert_eq!(pedestals.len(), 1);
+    let weight = (m + m_p) * g;
+    let frame = &pedestals[0];
+    assert!((frame.load[1] / weight - 1.0).abs() < 1e-12, "{frame:?}");
+    assert!(frame.load[0].abs() < 1e-9);
+    assert!((frame.deflection[1] / (weight / k_p) - 1.0).abs() < 1e-12);
+    for b in operating_point(&rotor, 0.0).unwrap() {
+        let h = b.housing.as_ref().unwrap();
+        assert_eq!(h.name, "frame");
+        assert_eq!(h.displacement, frame.deflection);
+        assert!((b.force[1] / (-0.5 * m * g) - 1.0).abs() < 1e-12, "{b:?}");
+        assert!(
+            (b.journal[1] / (0.5 * m * g / k_b) - 1.0).abs() < 1e-12,
+            "{b:?}"
+        );
+    }
+}

@@ -13,9 +13,9 @@
 //! report their load `−K u` at the static deflection and their own K and C.
 
 use crate::bearing::BearingKind;
-use crate::fe::{DOF_X, DOF_Y};
-use crate::rotor::Rotor;
-use crate::solver::{SolverError, SolverOptions, equilibrium};
+use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
+use crate::rotor::{DOF_PER_PEDESTAL, Rotor};
+use crate::solver::{Equilibrium, SolverError, SolverOptions, equilibrium};
 
 use super::linear::{LinearError, static_deflection};
 use super::linearize::bearing_coefficients;
@@ -71,8 +71,11 @@ pub struct BearingOperatingPoint {
     pub bearing: usize,
     /// Bearing name.
     pub name: String,
-    /// Journal position `(x, y)` relative to the bearing centre (m).
+    /// Journal position `(x, y)` relative to the bearing centre (m): to its
+    /// housing, for a bearing on a pedestal.
     pub journal: [f64; 2],
+    /// The housing, for a bearing on a pedestal; `None` on rigid ground.
+    pub housing: Option<Housing>,
     /// Force of the bearing on the journal `(Fx, Fy)` (N).
     pub force: [f64; 2],
     /// Static load `|F|` (N).
@@ -85,6 +88,91 @@ pub struct BearingOperatingPoint {
     pub damping: [[f64; 2]; 2],
 }
 
+/// The housing of a bearing on a pedestal at the operating point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Housing {
+    /// Pedestal index in the model.
+    pub pedestal: usize,
+    /// Pedestal name.
+    pub name: String,
+    /// Displacement `(x, y)` (m), absolute.
+    pub displacement: [f64; 2],
+}
+
+/// One pedestal at the operating point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PedestalOperatingPoint {
+    /// Pedestal index in the model.
+    pub pedestal: usize,
+    /// Pedestal name.
+    pub name: String,
+    /// Static deflection `(x, y)` (m), absolute.
+    pub deflection: [f64; 2],
+    /// Load `(Fx, Fy)` (N) the pedestal puts on its support (ground, or the
+    /// pedestal it stands on) through its spring: `K (q − q_on)`; statically
+    /// its weight plus the bearing loads (and pedestals) it carries.
+    pub load: [f64; 2],
+}
+
+/// The static state at `speed`: the displacement on all DOFs and, for a
+/// rotor on nonlinear bearings, its equilibrium.
+fn static_state(
+    rotor: &Rotor,
+    speed: f64,
+) -> Result<(Vec<f64>, Option<Equilibrium>), OperatingPointError> {
+    if rotor.nonlinear_bearings.is_empty() {
+        Ok((static_deflection(rotor)?, None))
+    } else {
+        let eq = equilibrium(rotor, speed, &SolverOptions::default(), None)
+            .map_err(|source| OperatingPointError::Solver { speed, source })?;
+        Ok((rotor.dofs.expand(&eq.displacement), Some(eq)))
+    }
+}
+
+/// Translation `k` of pedestal `p` in a vector on all DOFs.
+fn pedestal_at(rotor: &Rotor, all: &[f64], p: usize, k: usize) -> f64 {
+    all[rotor.dofs.node_count() * DOF_PER_NODE + p * DOF_PER_PEDESTAL + k]
+}
+
+/// Every pedestal of `rotor` at the static equilibrium under gravity at
+/// `speed` (rad/s): its deflection and the load it passes on.
+pub fn pedestal_operating_points(
+    rotor: &Rotor,
+    speed: f64,
+) -> Result<Vec<PedestalOperatingPoint>, OperatingPointError> {
+    if rotor.model.pedestals.is_empty() {
+        return Ok(Vec::new());
+    }
+    let (all, _) = static_state(rotor, speed)?;
+    let at = |p: usize| {
+        [
+            pedestal_at(rotor, &all, p, 0),
+            pedestal_at(rotor, &all, p, 1),
+        ]
+    };
+    Ok(rotor
+        .model
+        .pedestals
+        .iter()
+        .enumerate()
+        .map(|(p, pedestal)| {
+            let q = at(p);
+            let below = pedestal.on.map_or([0.0; 2], at);
+            let d = [q[0] - below[0], q[1] - below[1]];
+            let k = &pedestal.stiffness;
+            PedestalOperatingPoint {
+                pedestal: p,
+                name: pedestal.name.clone(),
+                deflection: q,
+                load: [
+                    k[0][0] * d[0] + k[0][1] * d[1],
+                    k[1][0] * d[0] + k[1][1] * d[1],
+                ],
+            }
+        })
+        .collect())
+}
+
 /// Every bearing of `rotor` at the static equilibrium under gravity at `speed`
 /// (rad/s). Rub elements are not bearings and are left out (their contact
 /// forces are outputs of the transient simulator and the FMU).
@@ -93,17 +181,23 @@ pub fn operating_point(
     speed: f64,
 ) -> Result<Vec<BearingOperatingPoint>, OperatingPointError> {
     let model = &rotor.model;
-    let (displacement, at) = if rotor.nonlinear_bearings.is_empty() {
-        (static_deflection(rotor)?, None)
-    } else {
-        let eq = equilibrium(rotor, speed, &SolverOptions::default(), None)
-            .map_err(|source| OperatingPointError::Solver { speed, source })?;
-        (rotor.dofs.expand(&eq.displacement), Some(eq))
+    let (displacement, at) = static_state(rotor, speed)?;
+    let housing_of = |b: &crate::model::PlacedBearing| {
+        b.pedestal.map(|p| Housing {
+            pedestal: p,
+            name: model.pedestals[p].name.clone(),
+            displacement: [
+                pedestal_at(rotor, &displacement, p, 0),
+                pedestal_at(rotor, &displacement, p, 1),
+            ],
+        })
     };
-    let journal = |node: usize| {
+    // Relative to the housing.
+    let journal = |b: &crate::model::PlacedBearing| {
+        let h = housing_of(b).map_or([0.0; 2], |h| h.displacement);
         [
-            displacement[node * crate::fe::DOF_PER_NODE + DOF_X],
-            displacement[node * crate::fe::DOF_PER_NODE + DOF_Y],
+            displacement[b.node * DOF_PER_NODE + DOF_X] - h[0],
+            displacement[b.node * DOF_PER_NODE + DOF_Y] - h[1],
         ]
     };
     let mut out = Vec::with_capacity(model.bearings.len());
@@ -116,7 +210,8 @@ pub fn operating_point(
         if b.kind.is_rub() {
             continue;
         }
-        let j = journal(b.node);
+        let j = journal(b);
+        let housing = housing_of(b);
         let point = match &b.kind {
             BearingKind::Linear { stiffness, damping } => {
                 let f = [
@@ -127,6 +222,7 @@ pub fn operating_point(
                     bearing: index,
                     name: b.name.clone(),
                     journal: j,
+                    housing,
                     force: f,
                     load: f[0].hypot(f[1]),
                     film: None,
@@ -173,6 +269,7 @@ pub fn operating_point(
                     bearing: index,
                     name: b.name.clone(),
                     journal: j,
+                    housing,
                     force: [f.x, f.y],
                     load: f.norm(),
                     film: Some(FilmState {

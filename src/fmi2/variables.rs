@@ -56,6 +56,18 @@ pub enum Binding {
     SpinAngle,
     /// Total bearing friction torque (N·m).
     FrictionTorque,
+    /// Journal x of bearing `k` relative to its housing (m).
+    BearingRelativeX(usize),
+    /// Journal y of bearing `k` relative to its housing (m).
+    BearingRelativeY(usize),
+    /// Housing x of bearing `k` (m), absolute.
+    HousingX(usize),
+    /// Housing y of bearing `k` (m), absolute.
+    HousingY(usize),
+    /// Housing velocity x of bearing `k` (m/s), absolute.
+    HousingVx(usize),
+    /// Housing velocity y of bearing `k` (m/s), absolute.
+    HousingVy(usize),
 }
 
 /// FMI base type.
@@ -321,7 +333,7 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         );
     }
     for (k, b) in model.bearings.iter().enumerate() {
-        if b.kind.is_rub() {
+        if b.kind.is_rub() || b.kind.is_seal() {
             continue;
         }
         let node = b.node + 1;
@@ -437,6 +449,9 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
     // Contact outputs come last, so the value references above stay as they were.
     for (k, b) in model.bearings.iter().enumerate() {
         let n = &b.name;
+        if b.kind.is_seal() {
+            continue;
+        }
         if b.kind.is_rub() {
             push(
                 format!("rubs.{n}.contact_force"),
@@ -504,5 +519,124 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         Some(model.reduced_modes.unwrap_or(0) as f64),
         Binding::ReducedModes,
     );
+    // Appended after solver.reduced_modes: seals, then the housings of the
+    // bearings, rubs and seals that stand on pedestals (none in a model
+    // without them, so earlier value references stay).
+    for (k, b) in model.bearings.iter().enumerate() {
+        if !b.kind.is_seal() {
+            continue;
+        }
+        let (n, node) = (&b.name, b.node + 1);
+        let outputs: [OutputSpec; 3] = [
+            (
+                "fx",
+                format!("Force x of seal {n} (node {node}) on the rotor"),
+                Some("N"),
+                None,
+                Binding::BearingFx(k),
+            ),
+            (
+                "fy",
+                format!("Force y of seal {n} (node {node}) on the rotor"),
+                Some("N"),
+                None,
+                Binding::BearingFy(k),
+            ),
+            (
+                "contact_force",
+                format!(
+                    "Normal force of seal {n} touching its stator (0 while clear or without a clearance)"
+                ),
+                Some("N"),
+                None,
+                Binding::BearingContact(k),
+            ),
+        ];
+        for (suffix, description, unit, display, binding) in outputs {
+            push(
+                format!("seals.{n}.{suffix}"),
+                description,
+                Real,
+                Output,
+                Continuous,
+                unit,
+                display,
+                None,
+                binding,
+            );
+        }
+    }
+    for (k, b) in model.bearings.iter().enumerate() {
+        let Some(p) = b.pedestal else { continue };
+        let group = if b.kind.is_rub() {
+            "rubs"
+        } else if b.kind.is_seal() {
+            "seals"
+        } else {
+            "bearings"
+        };
+        let (n, pedestal) = (&b.name, &model.pedestals[p].name);
+        let outputs: [OutputSpec; 6] = [
+            (
+                "x_rel",
+                format!(
+                    "Journal displacement x relative to the housing of {n} (what a proximity probe on the bearing measures)"
+                ),
+                Some("m"),
+                Some("um"),
+                Binding::BearingRelativeX(k),
+            ),
+            (
+                "y_rel",
+                format!("Journal displacement y relative to the housing of {n}"),
+                Some("m"),
+                Some("um"),
+                Binding::BearingRelativeY(k),
+            ),
+            (
+                "housing_x",
+                format!("Absolute displacement x of the housing of {n} (pedestal {pedestal})"),
+                Some("m"),
+                Some("um"),
+                Binding::HousingX(k),
+            ),
+            (
+                "housing_y",
+                format!("Absolute displacement y of the housing of {n} (pedestal {pedestal})"),
+                Some("m"),
+                Some("um"),
+                Binding::HousingY(k),
+            ),
+            (
+                "housing_vx",
+                format!(
+                    "Absolute velocity x of the housing of {n} (what a seismic sensor on pedestal {pedestal} measures)"
+                ),
+                Some("m/s"),
+                Some("mm/s"),
+                Binding::HousingVx(k),
+            ),
+            (
+                "housing_vy",
+                format!("Absolute velocity y of the housing of {n} (pedestal {pedestal})"),
+                Some("m/s"),
+                Some("mm/s"),
+                Binding::HousingVy(k),
+            ),
+        ];
+        for (suffix, description, unit, display, binding) in outputs {
+            push(
+                format!("{group}.{n}.{suffix}"),
+                description,
+                Real,
+                Output,
+                Continuous,
+                unit,
+                display,
+                None,
+                binding,
+            );
+        }
+    }
     out
 }

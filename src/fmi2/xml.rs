@@ -41,6 +41,10 @@ const UNITS: [UnitSpec; 9] = [
     ("kg.m", [1, 1, 0, 0], &[]),
 ];
 
+/// Units declared only when a variable uses one (so that a model without
+/// such variables keeps its description, and GUID, as it was).
+const UNITS_WHEN_USED: [UnitSpec; 1] = [("m/s", [0, 1, -1, 0], &[("mm/s", 1e3)])];
+
 /// The model description of `model` and its GUID.
 pub fn model_description(model: &RotorModel) -> (String, String) {
     let vars = variables(model);
@@ -116,7 +120,10 @@ fn render(model: &RotorModel, vars: &[Variable], guid: &str) -> String {
     emit(Event::Empty(cs));
 
     emit(Event::Start(BytesStart::new("UnitDefinitions")));
-    for (name, exp, displays) in UNITS {
+    let used = UNITS_WHEN_USED
+        .into_iter()
+        .filter(|(name, ..)| vars.iter().any(|v| v.unit == Some(*name)));
+    for (name, exp, displays) in UNITS.into_iter().chain(used) {
         let mut unit = BytesStart::new("Unit");
         unit.push_attribute(("name", name));
         emit(Event::Start(unit));

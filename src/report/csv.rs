@@ -116,7 +116,10 @@ pub fn coefficients(curve: &[DimensionlessPoint]) -> String {
 /// Simulation outputs of `model`: time, speed, spin angle; per bearing the
 /// journal position (m), force (N), eccentricity ratio, friction torque (N·m),
 /// contact normal force (N) and minimum film thickness (m); per probe the
-/// position (m); the total friction torque.
+/// position (m); the total friction torque; then, for every bearing, rub and
+/// seal on a pedestal, the journal position relative to the housing (m, what
+/// a proximity probe on the bearing reads) and the housing's absolute
+/// position (m) and velocity (m/s, what a seismic sensor on it reads).
 pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
     let mut out = String::from("time_s,speed_rpm,spin_angle_rad");
     for b in &model.bearings {
@@ -130,7 +133,19 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
     for p in &model.probes {
         write!(out, ",{0}_x_m,{0}_y_m", p.name).ok();
     }
-    out.push_str(",friction_torque_Nm\n");
+    out.push_str(",friction_torque_Nm");
+    let on_pedestal: Vec<usize> = (0..model.bearings.len())
+        .filter(|&k| model.bearings[k].pedestal.is_some())
+        .collect();
+    for &k in &on_pedestal {
+        let n = &model.bearings[k].name;
+        write!(
+            out,
+            ",{n}_x_rel_m,{n}_y_rel_m,{n}_housing_x_m,{n}_housing_y_m,{n}_housing_vx_m_s,{n}_housing_vy_m_s"
+        )
+        .ok();
+    }
+    out.push('\n');
     for o in records {
         write!(
             out,
@@ -158,7 +173,19 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
         for p in &o.probes {
             write!(out, ",{:e},{:e}", p.x, p.y).ok();
         }
-        writeln!(out, ",{}", o.friction_torque).ok();
+        write!(out, ",{}", o.friction_torque).ok();
+        for &k in &on_pedestal {
+            let b = &o.bearings[k];
+            let (x, y) = b.relative();
+            let h = &b.housing;
+            write!(
+                out,
+                ",{x:e},{y:e},{:e},{:e},{:e},{:e}",
+                h.x, h.y, h.vx, h.vy
+            )
+            .ok();
+        }
+        out.push('\n');
     }
     out
 }

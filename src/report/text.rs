@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use crate::analysis::modal::Mode;
-use crate::analysis::operating_point::BearingOperatingPoint;
+use crate::analysis::operating_point::{BearingOperatingPoint, PedestalOperatingPoint};
 use crate::analysis::stability::Stability;
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::analysis::unbalance::{Peak, SeparationMargin, UnbalanceSweep};
@@ -285,6 +285,16 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
             short(p.journal[1] * 1e6)
         )
         .ok();
+        if let Some(h) = &p.housing {
+            writeln!(
+                s,
+                "  journal relative to its housing on pedestal {}, which is at x = {} µm, y = {} µm",
+                h.name,
+                short(h.displacement[0] * 1e6),
+                short(h.displacement[1] * 1e6)
+            )
+            .ok();
+        }
         if let Some(f) = &p.film {
             writeln!(
                 s,
@@ -324,6 +334,27 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
             )
             .ok();
         }
+    }
+    s
+}
+
+/// The pedestals at the operating point: deflection (µm) and the load each
+/// passes on to its support (N).
+pub fn pedestals(rpm: f64, points: &[PedestalOperatingPoint]) -> String {
+    let mut s = String::new();
+    for p in points {
+        writeln!(
+            s,
+            "pedestal {} at {} rpm: deflection x = {} µm, y = {} µm; load on its support {} N (Fx = {} N, Fy = {} N)",
+            p.name,
+            short(rpm),
+            short(p.deflection[0] * 1e6),
+            short(p.deflection[1] * 1e6),
+            short(p.load[0].hypot(p.load[1])),
+            short(p.load[0]),
+            short(p.load[1])
+        )
+        .ok();
     }
     s
 }

@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use rotor_bearing::analysis::operating_point::operating_point;
+use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::plot::RAD_S_TO_RPM;
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
@@ -22,6 +22,9 @@ pub fn run(
     let points = operating_point(rotor, rpm / RAD_S_TO_RPM)
         .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
     print!("{}", text::operating_point(rpm, &points));
+    let pedestals = pedestal_operating_points(rotor, rpm / RAD_S_TO_RPM)
+        .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
+    print!("{}", text::pedestals(rpm, &pedestals));
     if let Some(path) = csv {
         write_file(&path, &report_csv::operating_point(rpm, &points))?;
     }

@@ -399,6 +399,12 @@ impl Instance {
                     Binding::ProbeY(k) => o.probes[k].y,
                     Binding::SpinAngle => o.spin_angle,
                     Binding::FrictionTorque => o.friction_torque,
+                    Binding::BearingRelativeX(k) => o.bearings[k].relative().0,
+                    Binding::BearingRelativeY(k) => o.bearings[k].relative().1,
+                    Binding::HousingX(k) => o.bearings[k].housing.x,
+                    Binding::HousingY(k) => o.bearings[k].housing.y,
+                    Binding::HousingVx(k) => o.bearings[k].housing.vx,
+                    Binding::HousingVy(k) => o.bearings[k].housing.vy,
                     _ => f64::NAN,
                 }
             }
