@@ -72,6 +72,20 @@ impl CoefficientTable {
         (lo..=hi).contains(&speed)
     }
 
+    /// What a front end says when the table is asked for `speed` (rad/s)
+    /// outside its rows (the end values hold there).
+    pub fn outside_message(&self, speed: f64) -> String {
+        let (lo, hi) = self.range();
+        let rpm = |w: f64| (w * 30.0 / std::f64::consts::PI * 1e3).round() / 1e3;
+        format!(
+            "speed {} rpm is outside its coefficient table ({} to {} rpm): the coefficients are held at the table's {} values",
+            rpm(speed),
+            rpm(lo),
+            rpm(hi),
+            if speed < lo { "first" } else { "last" }
+        )
+    }
+
     /// `K` and `C` at `speed` (rad/s), row-major.
     pub fn at(&self, speed: f64) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
         let v: [f64; 8] = std::array::from_fn(|k| self.interpolants[k].at(speed));

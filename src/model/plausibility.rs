@@ -135,3 +135,40 @@ impl RotorModel {
         warnings
     }
 }
+
+impl RotorModel {
+    /// One warning for each coefficient table (table bearing or seal) that an
+    /// analysis at `speeds` (rad/s) asks for a speed outside its rows, naming
+    /// the farthest such speed and the table's range; its end values hold there.
+    pub fn table_speed_warnings(&self, speeds: &[f64]) -> Vec<ModelWarning> {
+        let mut warnings = Vec::new();
+        for b in &self.bearings {
+            let Some(table) = b.kind.coefficient_table() else {
+                continue;
+            };
+            let (lo, hi) = table.range();
+            let outside = speeds
+                .iter()
+                .copied()
+                .filter(|&w| !table.covers(w))
+                .max_by(|a, b| {
+                    (a - a.clamp(lo, hi))
+                        .abs()
+                        .total_cmp(&(b - b.clamp(lo, hi)).abs())
+                });
+            if let Some(speed) = outside {
+                warnings.push(ModelWarning {
+                    file: self.source.clone(),
+                    field: format!(
+                        "{} {}",
+                        if b.kind.is_seal() { "seal" } else { "bearing" },
+                        b.name
+                    ),
+                    value: (speed * 30.0 / std::f64::consts::PI * 1e3).round() / 1e3,
+                    problem: table.outside_message(speed),
+                });
+            }
+        }
+        warnings
+    }
+}

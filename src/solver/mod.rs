@@ -58,6 +58,7 @@ mod simulator;
 mod sites;
 mod state;
 pub mod statics;
+mod warnings;
 
 pub use run::{SpeedProfile, record};
 pub use simulator::{
@@ -66,3 +67,4 @@ pub use simulator::{
 };
 pub use state::SimState;
 pub use statics::{Equilibrium, equilibrium};
+pub use warnings::SolverWarning;

@@ -215,6 +215,11 @@ impl Simulator {
                 "the speed ramp reaches {end_speed} rad/s at {t_end} s, beyond the model's max_speed_rpm ({max} rad/s)"
             )));
         }
+        // Speeds vary linearly within a call: its ends bound them.
+        let start_speed = self.speed_at(self.state.time);
+        let now = self.state.time;
+        self.warnings.check_tables(&self.rotor, start_speed, now);
+        self.warnings.check_tables(&self.rotor, end_speed, t_end);
         let count = steps as usize;
         let h = span / count as f64;
         let cuts_before = self.stats.step_cuts;

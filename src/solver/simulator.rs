@@ -11,6 +11,7 @@ use super::newton::{CondensedWork, SchurSolve};
 use super::sites::Sites;
 use super::state::SimState;
 use super::statics;
+use super::warnings::{SolverWarning, Warnings};
 
 /// Solver settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -218,6 +219,7 @@ pub struct Simulator {
     pub(super) schur: SchurSolve,
     pub(super) condensed: CondensedWork,
     pub(super) stats: StepStats,
+    pub(super) warnings: Warnings,
 }
 
 impl Simulator {
@@ -276,6 +278,7 @@ impl Simulator {
             schur: SchurSolve::new(n, &sites),
             condensed: CondensedWork::new(sites.n_journal),
             stats: StepStats::default(),
+            warnings: Warnings::new(&rotor),
             rotor,
             options,
             state,
@@ -301,6 +304,12 @@ impl Simulator {
         self.factor = None;
         self.record_factor();
         Ok(())
+    }
+
+    /// The warnings raised since the last call (each element warns once per
+    /// simulator): e.g. a coefficient table asked for a speed outside its rows.
+    pub fn take_warnings(&mut self) -> Vec<SolverWarning> {
+        self.warnings.take()
     }
 
     /// Work counters since creation.
@@ -497,6 +506,8 @@ impl Simulator {
     /// current displacement).
     pub fn settle_static(&mut self) -> Result<(), SolverError> {
         let speed = self.speed_at(self.state.time);
+        self.warnings
+            .check_tables(&self.rotor, speed, self.state.time);
         let mut sites = Sites::new(&self.rotor)?;
         let (u, p) = statics::settle(
             &self.rotor,

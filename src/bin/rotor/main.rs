@@ -333,6 +333,14 @@ fn main() -> ExitCode {
     }
 }
 
+/// Print a warning for each coefficient table an analysis at `speeds`
+/// (rad/s) asks for a speed outside its rows.
+pub(crate) fn warn_table_speeds(model: &RotorModel, speeds: &[f64]) {
+    for w in model.table_speed_warnings(speeds) {
+        eprintln!("warning: {w}");
+    }
+}
+
 /// Read a model file and print its plausibility warnings on stderr.
 fn read_model(path: &Path) -> Result<RotorModel, String> {
     let model = RotorModel::from_file(path).map_err(|e| e.to_string())?;

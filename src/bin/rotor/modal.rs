@@ -24,6 +24,7 @@ pub struct ModeFiles {
 /// the mode shapes.
 pub fn modes(rotor: &Rotor, rpm: f64, count: usize, files: ModeFiles) -> Result<(), String> {
     let speed = rpm / RAD_S_TO_RPM;
+    crate::warn_table_speeds(&rotor.model, &[speed]);
     let options = ModalOptions {
         modes: count,
         ..ModalOptions::default()
@@ -93,6 +94,7 @@ pub fn campbell_diagram(
         ..ModalOptions::default()
     };
     let speeds = speed_grid(rotor, max_rpm / RAD_S_TO_RPM, steps);
+    crate::warn_table_speeds(model, &speeds);
     println!(
         "speed grid of {}: {:.2} to {:.2} rpm in {steps} steps (top speed: {origin}{})",
         model.name,

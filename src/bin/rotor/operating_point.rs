@@ -19,6 +19,7 @@ pub fn run(
     if !rpm.is_finite() {
         return Err(format!("--rpm must be finite, got {rpm}"));
     }
+    crate::warn_table_speeds(&rotor.model, &[rpm / RAD_S_TO_RPM]);
     let points = operating_point(rotor, rpm / RAD_S_TO_RPM)
         .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
     print!("{}", text::operating_point(rpm, &points));

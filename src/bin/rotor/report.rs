@@ -45,6 +45,7 @@ pub fn run(rotor: &Rotor, rpm: f64, out: PathBuf) -> Result<(), String> {
         return Err(format!("--rpm must be a positive speed, got {rpm}"));
     }
     let speed = rpm / RAD_S_TO_RPM;
+    crate::warn_table_speeds(&rotor.model, &[0.0, 2.0 * speed]);
     let name = rotor.model.name.clone();
     let dir = std::env::temp_dir().join(format!("rotor-report-{}", std::process::id()));
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;

@@ -94,14 +94,17 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
     let started = std::time::Instant::now();
     let mut shown = 0;
     let terminal = std::io::IsTerminal::is_terminal(&std::io::stderr());
-    let records = record(&mut sim, profile, duration, output_step, |f| {
+    let result = record(&mut sim, profile, duration, output_step, |f| {
         let pct = (f * 100.0) as usize;
         if terminal && pct >= shown + 5 {
             shown = pct - pct % 5;
             eprint!("\rsimulating {}: {shown:3}%", model.name);
         }
-    })
-    .map_err(|e| format!("{}: {e}", model.name))?;
+    });
+    for w in sim.take_warnings() {
+        eprintln!("warning: {}: {w}", model.source);
+    }
+    let records = result.map_err(|e| format!("{}: {e}", model.name))?;
     eprintln!(
         "{}simulated {} s of {} in {:.4} s wall-clock ({:?})",
         if terminal { "\r" } else { "" },

@@ -28,6 +28,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         ));
     }
     let speed = req.rpm / RAD_S_TO_RPM;
+    crate::warn_table_speeds(&rotor.model, &[speed]);
     let q_max = match req.q_max {
         Some(q) => q,
         None => default_cross_coupling_max(rotor, speed).map_err(|e| e.to_string())?,

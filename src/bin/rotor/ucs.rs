@@ -39,6 +39,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     let speeds: Vec<f64> = (1..=req.speeds)
         .map(|k| req.max_rpm / RAD_S_TO_RPM * k as f64 / req.speeds as f64)
         .collect();
+    crate::warn_table_speeds(&rotor.model, &speeds);
     let map = critical_speed_map(rotor, &stiffness, req.criticals, &speeds)
         .map_err(|e| format!("{}: {e}", rotor.model.name))?;
     print!(

@@ -75,6 +75,7 @@ pub fn unbalance(rotor: &Rotor, req: Request) -> Result<(), String> {
     if !rotor.nonlinear_bearings.is_empty() && speeds[0] == 0.0 {
         speeds.remove(0);
     }
+    crate::warn_table_speeds(&rotor.model, &speeds);
     let points = response_points(rotor);
     let result = sweep(rotor, &speeds, &points).map_err(|e| e.to_string())?;
     let mut rows = Vec::new();

@@ -306,6 +306,10 @@ impl Instance {
             .and_then(|()| self.sim.set_state(state))
             .and_then(|()| self.sim.settle_static());
         self.outputs = None;
+        for w in self.sim.take_warnings() {
+            self.messages
+                .push((Status::Warning, category(Status::Warning), w.to_string()));
+        }
         result.map_err(|e| {
             self.report(
                 Status::Error,
@@ -594,6 +598,10 @@ impl Instance {
         self.outputs = None;
         let before = self.sim.stats();
         let result = self.sim.advance_to(current + step);
+        for w in self.sim.take_warnings() {
+            self.messages
+                .push((Status::Warning, category(Status::Warning), w.to_string()));
+        }
         if self.step_statistics {
             let after = self.sim.stats();
             self.messages.push((
