@@ -4,8 +4,9 @@ use std::path::Path;
 
 use crate::write_file;
 
-/// Writes modelDescription.xml, resources/model.toml and
-/// documentation/index.html for `model` into `dir`; prints the model name and GUID.
+/// Writes modelDescription.xml, resources/model.toml (with the coefficient
+/// tables it reads, at the same relative paths) and documentation/index.html
+/// for `model` into `dir`; prints the model name and GUID.
 pub fn stage(model: &Path, dir: &Path) -> Result<(), String> {
     let m = crate::read_model(model)?;
     let text = std::fs::read_to_string(model).map_err(|e| format!("{}: {e}", model.display()))?;
@@ -16,6 +17,25 @@ pub fn stage(model: &Path, dir: &Path) -> Result<(), String> {
     }
     write_file(&dir.join("modelDescription.xml"), &xml)?;
     write_file(&dir.join("resources/model.toml"), &text)?;
+    // Coefficient tables travel with the model, at the path it names them by.
+    for (written, path) in m.table_files() {
+        let relative = Path::new(written);
+        if relative.is_absolute()
+            || relative
+                .components()
+                .any(|c| !matches!(c, std::path::Component::Normal(_)))
+        {
+            return Err(format!(
+                "{}: table = {written:?}: an FMU carries its tables in resources/, so give the table file as a path beside or below the model file (no absolute path, no ..)",
+                model.display()
+            ));
+        }
+        let target = dir.join("resources").join(relative);
+        if let Some(parent) = target.parent() {
+            std::fs::create_dir_all(parent).map_err(|e| format!("{}: {e}", parent.display()))?;
+        }
+        std::fs::copy(path, &target).map_err(|e| format!("{}: {e}", path.display()))?;
+    }
     write_file(
         &dir.join("documentation/index.html"),
         &rotor_bearing::fmi2::docs::index_html(&m),
