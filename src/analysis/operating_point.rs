@@ -174,8 +174,8 @@ pub fn pedestal_operating_points(
 }
 
 /// Every bearing of `rotor` at the static equilibrium under gravity at `speed`
-/// (rad/s). Rub elements are not bearings and are left out (their contact
-/// forces are outputs of the transient simulator and the FMU).
+/// (rad/s). Rub elements and seals are not bearings and are left out (their
+/// contact forces are outputs of the transient simulator and the FMU).
 pub fn operating_point(
     rotor: &Rotor,
     speed: f64,
@@ -207,7 +207,7 @@ pub fn operating_point(
         .map(|eq| bearing_coefficients(eq, speed))
         .unwrap_or_default();
     for (index, b) in model.bearings.iter().enumerate() {
-        if b.kind.is_rub() {
+        if b.kind.is_rub() || b.kind.is_seal() {
             continue;
         }
         let j = journal(b);

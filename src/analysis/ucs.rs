@@ -2,7 +2,9 @@
 //! rotor against an isotropic support stiffness, with the bearings' own
 //! stiffness over a speed range to read the map with.
 //!
-//! Every bearing is replaced by an isotropic spring `k` (N/m) without damping.
+//! Every bearing is replaced by an isotropic spring `k` (N/m) without damping,
+//! in series with the bearing's pedestal where it stands on one (so the map
+//! holds the real supports); rubs and seals are left out.
 //! At a synchronous critical speed the whirl frequency equals the spin `Ω`:
 //! with `λ = iΩ` the quadratic eigenproblem `(λ²M + λΩG + K) x = 0` becomes
 //! `K x = Ω² (M − iG) x`, a generalized problem with `K` symmetric and
@@ -43,9 +45,13 @@ pub enum UcsError {
 }
 
 /// The rotor with every bearing replaced by an isotropic spring of `stiffness`
-/// (N/m) and no damping.
+/// (N/m) and no damping, in series with its pedestal where it stands on one;
+/// rubs and seals are left out (they support nothing).
 pub fn with_isotropic_supports(rotor: &Rotor, stiffness: f64) -> Result<Rotor, UcsError> {
     let mut model = rotor.model.clone();
+    model
+        .bearings
+        .retain(|b| !(b.kind.is_rub() || b.kind.is_seal()));
     for b in &mut model.bearings {
         b.kind = BearingKind::Linear {
             stiffness: [[stiffness, 0.0], [0.0, stiffness]],
@@ -166,6 +172,7 @@ pub fn critical_speed_map(
         .model
         .bearings
         .iter()
+        .filter(|b| !(b.kind.is_rub() || b.kind.is_seal()))
         .map(|b| BearingStiffness {
             name: b.name.clone(),
             points: Vec::with_capacity(speeds.len()),

@@ -15,7 +15,10 @@ pub mod speed_table;
 
 pub use error::ModelError;
 use error::Seg;
-pub use plausibility::{CLEARANCE_RATIO_RANGE, ModelWarning, RADIUS_TOLERANCE, VISCOSITY_RANGE};
+pub use plausibility::{
+    CLEARANCE_RATIO_RANGE, ModelWarning, PEDESTAL_MASS_RATIO, PEDESTAL_STIFFNESS_RANGE,
+    RADIUS_TOLERANCE, VISCOSITY_RANGE,
+};
 
 use std::path::Path;
 

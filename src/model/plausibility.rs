@@ -17,6 +17,16 @@ pub const CLEARANCE_RATIO_RANGE: (f64, f64) = (1e-4, 1e-2);
 /// radius at its node.
 pub const RADIUS_TOLERANCE: f64 = 0.01;
 
+/// Plausible direct stiffness of a bearing support (N/m): below, a soft mount
+/// of a small machine given in N/mm by mistake is likelier than a real
+/// structure; above, a support stiffer than solid steel under a bearing
+/// (a rigid support needs no pedestal).
+pub const PEDESTAL_STIFFNESS_RANGE: (f64, f64) = (1e3, 1e13);
+
+/// Largest plausible ratio of a pedestal's mass to the rotor's mass: a
+/// foundation heavier than that acts as ground (or a mass given in g).
+pub const PEDESTAL_MASS_RATIO: f64 = 100.0;
+
 /// A value that passed validation but is probably a unit or typing slip.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ModelWarning {
@@ -128,6 +138,39 @@ impl RotorModel {
                     format!(
                         "radial clearance / radius = {ratio:.3e}, outside the plausible {lo:e} to {hi:e} \
                          (clearance is the radial clearance, in metres)"
+                    ),
+                );
+            }
+        }
+        let rotor_mass = self.total_mass();
+        for (i, p) in self.pedestals.iter().enumerate() {
+            let mut warn = |key: &str, value: f64, problem: String| {
+                warnings.push(ModelWarning {
+                    file: self.source.clone(),
+                    field: format!("pedestals[{i}].{key}"),
+                    value,
+                    problem,
+                })
+            };
+            let (lo, hi) = PEDESTAL_STIFFNESS_RANGE;
+            for (key, k) in [("kxx", p.stiffness[0][0]), ("kyy", p.stiffness[1][1])] {
+                if !(lo..=hi).contains(&k) {
+                    warn(
+                        key,
+                        k,
+                        format!(
+                            "support stiffness outside the plausible {lo:e} to {hi:e} N/m (N/mm instead of N/m?)"
+                        ),
+                    );
+                }
+            }
+            if p.mass > PEDESTAL_MASS_RATIO * rotor_mass {
+                warn(
+                    "mass",
+                    p.mass,
+                    format!(
+                        "more than {PEDESTAL_MASS_RATIO} times the rotating mass ({} kg): such a foundation acts as ground (or the mass is in g?)",
+                        (rotor_mass * 10.0).round() / 10.0
                     ),
                 );
             }

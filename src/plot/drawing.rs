@@ -48,8 +48,9 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
     let length = (z1 - z0).max(1e-9);
     let scale = radial_exaggeration(model);
     let r_max = 0.5 * largest_diameter(model) * scale;
-    // Room for labels: 0.9 r_max above and below the rotor.
-    let half = 1.9 * r_max.max(0.02 * length);
+    // Room for labels: 0.9 r_max above and below the rotor, and for the
+    // pedestals below.
+    let half = 1.9 * r_max.max(0.02 * length) + 0.3 * r_max * depth(model) as f64;
     let margin = 0.1 * length;
     let plot_w = f64::from(WIDTH - 120);
     let height = ((2.0 * half) / (length + 2.0 * margin) * plot_w) as u32 + 140;
@@ -142,25 +143,31 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
     };
     let red = RGBColor(190, 30, 30);
     let purple = RGBColor(120, 40, 150);
+    let teal = RGBColor(0, 120, 130);
     for b in &model.bearings {
         let z = model.node_z[b.node];
-        if b.kind.is_rub() {
+        if b.kind.is_rub() || b.kind.is_seal() {
             // A stator ring: bars above and below the rotor at the node.
+            let (color, what) = if b.kind.is_seal() {
+                (teal, "seal")
+            } else {
+                (purple, "rub")
+            };
             let r = radius_at(b.node) + 0.12 * r_max;
             for side in [1.0, -1.0] {
                 chart
                     .draw_series(LineSeries::new(
                         [(z, side * r), (z, side * (r + 0.2 * r_max))],
-                        purple.stroke_width(5),
+                        color.stroke_width(5),
                     ))
                     .map_err(|e| failed(path, e))?;
             }
             chart
                 .draw_series([EmptyElement::at((z, r + 0.2 * r_max))
                     + Text::new(
-                        format!("rub {}", b.name),
+                        format!("{what} {}", b.name),
                         (-20, -20),
-                        ("sans-serif", 15).into_font().color(&purple),
+                        ("sans-serif", 15).into_font().color(&color),
                     )])
                 .map_err(|e| failed(path, e))?;
             continue;
@@ -174,6 +181,107 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
                     (-30, 14),
                     ("sans-serif", 15).into_font().color(&red),
                 )])
+            .map_err(|e| failed(path, e))?;
+    }
+    // Pedestals: each one a bar under the bearings it carries, hung on a
+    // spring from them and standing on a spring to ground or to the pedestal
+    // below (drawn lower still).
+    let levels = pedestal_levels(model);
+    let bearing_y = |node: usize| -radius_at(node) - 0.25 * r_max;
+    let step = 0.3 * r_max;
+    let lowest = model
+        .bearings
+        .iter()
+        .map(|b| bearing_y(b.node))
+        .fold(0.0, f64::min);
+    let bar: Vec<(f64, f64, f64)> = levels
+        .iter()
+        .enumerate()
+        .map(|(p, level)| {
+            let (lo, hi) = bar_span(model, p);
+            (lo, hi, lowest - step * (*level as f64 + 1.0))
+        })
+        .collect();
+    let brown = RGBColor(130, 80, 30);
+    let spring = |from: (f64, f64), to_y: f64| -> Vec<(f64, f64)> {
+        // A zigzag from `from` down to `to_y`.
+        let (z, y0) = from;
+        let w = 0.006 * length;
+        let mut points = vec![(z, y0)];
+        for k in 1..8 {
+            let y = y0 + (to_y - y0) * k as f64 / 8.0;
+            points.push((z + if k % 2 == 0 { -w } else { w }, y));
+        }
+        points.push((z, to_y));
+        points
+    };
+    for (p, pedestal) in model.pedestals.iter().enumerate() {
+        let (lo, hi, y) = bar[p];
+        let pad = 0.01 * length;
+        for b in model.bearings.iter().filter(|b| b.pedestal == Some(p)) {
+            let z = model.node_z[b.node];
+            let top = bearing_y(b.node) - 0.05 * r_max;
+            chart
+                .draw_series(LineSeries::new(spring((z, top), y), brown.stroke_width(2)))
+                .map_err(|e| failed(path, e))?;
+        }
+        chart
+            .draw_series([Rectangle::new(
+                [(lo - pad, y - 0.04 * r_max), (hi + pad, y)],
+                brown.filled(),
+            )])
+            .map_err(|e| failed(path, e))?;
+        chart
+            .draw_series([EmptyElement::at((hi + pad, y))
+                + Text::new(
+                    format!("pedestal {}", pedestal.name),
+                    (6, -6),
+                    ("sans-serif", 14).into_font().color(&brown),
+                )])
+            .map_err(|e| failed(path, e))?;
+        let mid = 0.5 * (lo + hi);
+        let below = match pedestal.on {
+            Some(q) => bar[q].2,
+            None => y - 0.7 * step,
+        };
+        chart
+            .draw_series(LineSeries::new(
+                spring((mid, y - 0.04 * r_max), below),
+                brown.stroke_width(2),
+            ))
+            .map_err(|e| failed(path, e))?;
+        if pedestal.on.is_none() {
+            // Ground: a hatched line.
+            let w = 0.02 * length;
+            chart
+                .draw_series(LineSeries::new(
+                    [(mid - w, below), (mid + w, below)],
+                    BLACK.stroke_width(2),
+                ))
+                .map_err(|e| failed(path, e))?;
+            for k in 0..5 {
+                let z = mid - w + 2.0 * w * k as f64 / 4.0;
+                chart
+                    .draw_series(LineSeries::new(
+                        [(z, below), (z - 0.4 * w, below - 0.1 * r_max)],
+                        BLACK.stroke_width(1),
+                    ))
+                    .map_err(|e| failed(path, e))?;
+            }
+        }
+    }
+    for pm in &model.point_masses {
+        let z = model.node_z[pm.node];
+        let r = 0.35 * radius_at(pm.node).max(0.05 * r_max);
+        chart
+            .draw_series([Rectangle::new(
+                [(z - 0.3 * r, -r), (z + 0.3 * r, r)],
+                BLACK.filled(),
+            )])
+            .map_err(|e| failed(path, e))?;
+        chart
+            .draw_series([EmptyElement::at((z, r))
+                + Text::new(format!("mass {}", pm.name), (4, -18), ("sans-serif", 14))])
             .map_err(|e| failed(path, e))?;
     }
     let green = RGBColor(20, 130, 60);
@@ -201,7 +309,7 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
             .draw_series([Cross::new((z, 0.0), 8, BLACK.stroke_width(3))])
             .map_err(|e| failed(path, e))?;
     }
-    let y_nodes = -1.6 * r_max.max(0.02 * length);
+    let y_nodes = -1.6 * r_max.max(0.02 * length) - 0.3 * r_max * depth(model) as f64;
     for (k, z) in model.node_z.iter().enumerate() {
         chart
             .draw_series([EmptyElement::at((*z, y_nodes))
@@ -211,4 +319,51 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
     }
     root.present().map_err(|e| failed(path, e))?;
     Ok(())
+}
+
+/// The drawing level of each pedestal: 0 for one that carries only
+/// bearings, one more than the highest of the pedestals standing on it.
+fn pedestal_levels(model: &RotorModel) -> Vec<usize> {
+    fn level(model: &RotorModel, p: usize) -> usize {
+        (0..model.pedestals.len())
+            .filter(|&q| model.pedestals[q].on == Some(p))
+            .map(|q| level(model, q) + 1)
+            .max()
+            .unwrap_or(0)
+    }
+    (0..model.pedestals.len())
+        .map(|p| level(model, p))
+        .collect()
+}
+
+/// Levels of pedestals drawn under the rotor (0 without pedestals).
+fn depth(model: &RotorModel) -> usize {
+    pedestal_levels(model)
+        .iter()
+        .map(|l| l + 2)
+        .max()
+        .unwrap_or(0)
+}
+
+/// The axial span (m) of the bearings standing directly on pedestal `p`
+/// (its own position when it carries only other pedestals: theirs).
+fn bar_span(model: &RotorModel, p: usize) -> (f64, f64) {
+    let zs: Vec<f64> = model
+        .bearings
+        .iter()
+        .filter(|b| b.pedestal == Some(p))
+        .map(|b| model.node_z[b.node])
+        .chain(
+            (0..model.pedestals.len())
+                .filter(|&q| model.pedestals[q].on == Some(p))
+                .flat_map(|q| {
+                    let (a, b) = bar_span(model, q);
+                    [a, b]
+                }),
+        )
+        .collect();
+    zs.iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), z| {
+            (a.min(*z), b.max(*z))
+        })
 }

@@ -42,13 +42,55 @@ pub fn model_summary(rotor: &Rotor) -> String {
         )
         .ok();
     }
-    for b in &m.bearings {
+    for pm in &m.point_masses {
         writeln!(
             s,
-            "  bearing {} at node {}: {}",
+            "  point mass {} at node {}: mx = {} kg, my = {} kg (not rotating)",
+            pm.name,
+            pm.node + 1,
+            short(pm.mass[0]),
+            short(pm.mass[1])
+        )
+        .ok();
+    }
+    for b in &m.bearings {
+        let what = if b.kind.is_seal() { "seal" } else { "bearing" };
+        let on = match b.pedestal {
+            Some(p) => format!(" on pedestal {}", m.pedestals[p].name),
+            None => String::new(),
+        };
+        writeln!(
+            s,
+            "  {what} {} at node {}{on}: {}",
             b.name,
             b.node + 1,
             describe_bearing(&b.kind)
+        )
+        .ok();
+    }
+    for p in &m.pedestals {
+        let on = match p.on {
+            Some(q) => format!("pedestal {}", m.pedestals[q].name),
+            None => "ground".to_string(),
+        };
+        let carried: Vec<&str> = m
+            .bearings
+            .iter()
+            .filter(|b| b.pedestal.is_some_and(|q| m.pedestals[q].name == p.name))
+            .map(|b| b.name.as_str())
+            .collect();
+        writeln!(
+            s,
+            "  pedestal {}: m = {} kg on {on}, K = {} N/m, C = {} N·s/m, carrying {}",
+            p.name,
+            short(p.mass),
+            matrix(&p.stiffness),
+            matrix(&p.damping),
+            if carried.is_empty() {
+                "other pedestals".to_string()
+            } else {
+                carried.join(", ")
+            }
         )
         .ok();
     }
