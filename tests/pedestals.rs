@@ -409,3 +409,144 @@ fn operating_point_gives_housing_deflection_and_support_load() {
         );
     }
 }
+
+/// A reduced rotor keeps the pedestals as physical coordinates: its static
+/// equilibrium on the pedestals and journals is the full model's to 1e-9,
+/// and with every interior mode kept its transient is the full one's.
+#[test]
+fn a_reduced_rotor_keeps_the_pedestals_physical() {
+    let model = jeffcott_on_pedestals(5.0, 2e7);
+    let full = Rotor::new(model.clone()).unwrap();
+    let interior = full.dof_count();
+    let run = |rotor: Rotor| {
+        let mut sim = Simulator::new(rotor, SolverOptions::default()).unwrap();
+        sim.set_speed(6000.0 * RPM, 0.0).unwrap();
+        sim.settle_static().unwrap();
+        let mut rows = vec![sim.outputs().unwrap()];
+        for k in 1..=100 {
+            sim.advance_to(k as f64 * 5e-4).unwrap();
+            rows.push(sim.outputs().unwrap());
+        }
+        rows
+    };
+    let reference = run(full.clone_model().unwrap());
+    for (modes, tol) in [(10, None), (interior, Some(1e-7))] {
+        let reduced = full.reduced(modes).unwrap();
+        let r = reduced.reduction.as_ref().unwrap();
+        assert_eq!(
+            r.physical,
+            2 * 4 + 4 + 2 * 2,
+            "three kept nodes and two pedestals"
+        );
+        let got = run(reduced);
+        let scale = reference
+            .iter()
+            .flat_map(|o| o.bearings.iter().map(|b| b.x.hypot(b.y)))
+            .fold(0.0, f64::max);
+        // The start: static equilibrium.
+        for (a, b) in reference[0].bearings.iter().zip(&got[0].bearings) {
+            assert!(
+                (a.housing.y - b.housing.y).abs() < 1e-9 * scale,
+                "{a:?} {b:?}"
+            );
+            assert!((a.y - b.y).abs() < 1e-9 * scale, "{a:?} {b:?}");
+        }
+        if let Some(tol) = tol {
+            for (a, b) in reference.iter().zip(&got) {
+                for (p, q) in a.bearings.iter().zip(&b.bearings) {
+                    let d = (p.x - q.x).hypot(p.y - q.y)
+                        + (p.housing.x - q.housing.x).hypot(p.housing.y - q.housing.y);
+                    assert!(d < tol * scale, "t = {}: {d:e} of {scale:e}", a.time);
+                }
+            }
+        }
+    }
+}
+
+fn hydro_unit_brackets() -> RotorModel {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/models/hydro_unit_brackets.toml"
+    );
+    RotorModel::from_file(std::path::Path::new(path)).unwrap()
+}
+
+/// The lowest forward lateral mode (Hz) of `model` at `rpm`, overdamped
+/// pad roots left out.
+fn first_forward_hz(model: RotorModel, rpm: f64) -> f64 {
+    use rotor_bearing::analysis::modal::Whirl;
+    let rotor = Rotor::new(model).unwrap();
+    let speed = rpm * RPM;
+    let linear = rotor_bearing::analysis::linearize::linearized(&rotor, speed, speed).unwrap();
+    let found = modes(
+        &linear,
+        speed,
+        &ModalOptions {
+            modes: 12,
+            target_frequency: 0.0,
+        },
+    )
+    .unwrap();
+    found
+        .iter()
+        .filter(|m| m.whirl == Whirl::Forward && m.damping_ratio < 0.5)
+        .map(|m| m.damped_frequency / std::f64::consts::TAU)
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The shipped hydro unit on brackets (docs/model_file.md and the README
+/// quote these numbers): its brackets bring the first forward lateral mode at
+/// 300 rpm from 36.7 Hz on rigid ground (7.3× running speed, as the user's
+/// rigid model found) down to 13.4 Hz (2.7×, above the 600 rpm runaway
+/// speed's 10 Hz), and at 300 rpm with its G 6.3 unbalance the journals orbit
+/// 50–55 µm peak to peak relative to the upper and lower guide bearings,
+/// in the 50–150 µm units of this kind show.
+#[test]
+fn the_hydro_unit_on_brackets_has_the_critical_speeds_and_orbits_of_its_kind() {
+    let mut rigid = hydro_unit_brackets();
+    rigid.pedestals.clear();
+    for b in &mut rigid.bearings {
+        b.pedestal = None;
+    }
+    let on_brackets = first_forward_hz(hydro_unit_brackets(), 300.0);
+    let on_ground = first_forward_hz(rigid, 300.0);
+    assert!(
+        (on_ground - 36.7).abs() < 0.05,
+        "rigid ground: {on_ground} Hz"
+    );
+    assert!(
+        (on_brackets - 13.4).abs() < 0.05,
+        "on brackets: {on_brackets} Hz"
+    );
+    let mut sim = Simulator::new(
+        Rotor::new(hydro_unit_brackets()).unwrap(),
+        SolverOptions {
+            time_step: 2e-3,
+            unbalance_ramp_time: 1.0,
+            ..SolverOptions::default()
+        },
+    )
+    .unwrap();
+    sim.set_speed(300.0 * RPM, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    let mut peak = [0.0_f64; 3];
+    for k in 1..=5000 {
+        sim.advance_to(k as f64 * 2e-3).unwrap();
+        if k > 2500 {
+            let out = sim.outputs().unwrap();
+            for (p, b) in peak.iter_mut().zip(&out.bearings) {
+                let (x, y) = b.relative();
+                *p = p.max(2.0 * x.hypot(y));
+            }
+        }
+    }
+    let um = peak.map(|p| p * 1e6);
+    assert!(
+        (50.0..56.0).contains(&um[0]) && (50.0..56.0).contains(&um[1]),
+        "{um:?} µm pk-pk"
+    );
+    assert!(
+        um[2] < 10.0,
+        "the turbine guide bearing carries little: {um:?}"
+    );
+}

@@ -45,7 +45,7 @@ pub enum UnbalanceError {
 /// A node whose response is reported: every probe, then every bearing journal.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ResponsePoint {
-    /// `probe NAME` or `bearing NAME`.
+    /// `probe NAME`, `bearing NAME` (rubs too) or `seal NAME`.
     pub label: String,
     /// Node index (0-based).
     pub node: usize,
@@ -59,7 +59,11 @@ pub fn response_points(rotor: &Rotor) -> Vec<ResponsePoint> {
         node: p.node,
     });
     let bearings = m.bearings.iter().map(|b| ResponsePoint {
-        label: format!("bearing {}", b.name),
+        label: format!(
+            "{} {}",
+            if b.kind.is_seal() { "seal" } else { "bearing" },
+            b.name
+        ),
         node: b.node,
     });
     probes.chain(bearings).collect()
