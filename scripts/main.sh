@@ -36,6 +36,18 @@ $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --out
 # The same run on the Craig–Bampton reduced rotor (34 coordinates for 80 DOFs).
 $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --output-step 5e-3 --ramp-time 2 \
   --reduced-modes 10 --csv out/hydro_unit_reduced.csv
+# The whole machine: a 300 rpm Francis unit on its bearing brackets with a runner
+# seal (docs/machine.md): Campbell diagram, unbalance response, operating point
+# and a 10 s transient at 300 rpm.
+$rotor info models/hydro_unit_brackets.toml > out/hydro_unit_brackets_info.txt
+$rotor draw models/hydro_unit_brackets.toml --png out/hydro_unit_brackets.png
+$rotor campbell models/hydro_unit_brackets.toml --steps 40 --modes 8 --csv out/hydro_unit_brackets_campbell.csv \
+  --png out/hydro_unit_brackets_campbell.png
+$rotor unbalance models/hydro_unit_brackets.toml --min-rpm 30 --max-rpm 600 --points 120 \
+  --csv out/hydro_unit_brackets_unbalance.csv --png out/hydro_unit_brackets_unbalance.png
+$rotor operating-point models/hydro_unit_brackets.toml --rpm 300 > out/hydro_unit_brackets_operating_point.txt
+$rotor simulate models/hydro_unit_brackets.toml --rpm 300 --duration 10 --step 2e-3 --output-step 2e-3 --ramp-time 1 \
+  --csv out/hydro_unit_brackets.csv --plots out/hydro_unit_brackets > out/hydro_unit_brackets_windows.txt
 # The FMU: build, pack, validate with FMPy, and simulate it with FMPy.
 bash fmu_pack.sh
 .venv/bin/python scripts/fmpy_demo.py out/RotorBearing.fmu out/fmpy_hydro_unit
@@ -50,4 +62,4 @@ bash fmu_pack.sh --model models/classic_disk_rotor_damped.toml
 .venv/bin/python system/couple.py all 2>&1 | grep '→'
 .venv/bin/python system/sweep.py --fmu out/jeffcott.fmu --rpm 4000:16000:13 \
   --param "bearings.left.viscosity,bearings.right.viscosity=0.01,0.02,0.04" --duration 0.6 --out out/sweep_jeffcott
-echo "main: results in out/ (static_deflection.csv, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, unbalance_response.csv/png, jeffcott_report.html, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*)"
+echo "main: results in out/ (hydro_unit_brackets*, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, unbalance_response.csv/png, jeffcott_report.html, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*)"

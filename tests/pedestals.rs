@@ -499,8 +499,10 @@ fn first_forward_hz(model: RotorModel, rpm: f64) -> f64 {
 /// 300 rpm from 36.7 Hz on rigid ground (7.3× running speed, as the user's
 /// rigid model found) down to 13.4 Hz (2.7×, above the 600 rpm runaway
 /// speed's 10 Hz), and at 300 rpm with its G 6.3 unbalance the journals orbit
-/// 50–55 µm peak to peak relative to the upper and lower guide bearings,
-/// in the 50–150 µm units of this kind show.
+/// 50–56 µm peak to peak relative to the upper and lower guide bearings, in
+/// the 50–150 µm units of this kind show (45–50 µm on rigid ground: the
+/// unpreloaded films are soft at this light load), while the upper and lower
+/// brackets move 40–50 and 20–30 µm.
 #[test]
 fn the_hydro_unit_on_brackets_has_the_critical_speeds_and_orbits_of_its_kind() {
     let mut rigid = hydro_unit_brackets();
@@ -509,7 +511,7 @@ fn the_hydro_unit_on_brackets_has_the_critical_speeds_and_orbits_of_its_kind() {
         b.pedestal = None;
     }
     let on_brackets = first_forward_hz(hydro_unit_brackets(), 300.0);
-    let on_ground = first_forward_hz(rigid, 300.0);
+    let on_ground = first_forward_hz(rigid.clone(), 300.0);
     assert!(
         (on_ground - 36.7).abs() < 0.05,
         "rigid ground: {on_ground} Hz"
@@ -518,35 +520,50 @@ fn the_hydro_unit_on_brackets_has_the_critical_speeds_and_orbits_of_its_kind() {
         (on_brackets - 13.4).abs() < 0.05,
         "on brackets: {on_brackets} Hz"
     );
-    let mut sim = Simulator::new(
-        Rotor::new(hydro_unit_brackets()).unwrap(),
-        SolverOptions {
-            time_step: 2e-3,
-            unbalance_ramp_time: 1.0,
-            ..SolverOptions::default()
-        },
-    )
-    .unwrap();
-    sim.set_speed(300.0 * RPM, 0.0).unwrap();
-    sim.settle_static().unwrap();
-    let mut peak = [0.0_f64; 3];
-    for k in 1..=5000 {
-        sim.advance_to(k as f64 * 2e-3).unwrap();
-        if k > 2500 {
-            let out = sim.outputs().unwrap();
-            for (p, b) in peak.iter_mut().zip(&out.bearings) {
-                let (x, y) = b.relative();
-                *p = p.max(2.0 * x.hypot(y));
+    // Peak-to-peak orbits (µm) over the last 5 of 10 s at 300 rpm: journals
+    // relative to their housings, and the housings.
+    let orbits = |model: RotorModel| {
+        let mut sim = Simulator::new(
+            Rotor::new(model).unwrap(),
+            SolverOptions {
+                time_step: 2e-3,
+                unbalance_ramp_time: 1.0,
+                ..SolverOptions::default()
+            },
+        )
+        .unwrap();
+        sim.set_speed(300.0 * RPM, 0.0).unwrap();
+        sim.settle_static().unwrap();
+        let (mut relative, mut housing) = ([0.0_f64; 3], [0.0_f64; 3]);
+        for k in 1..=5000 {
+            sim.advance_to(k as f64 * 2e-3).unwrap();
+            if k > 2500 {
+                let out = sim.outputs().unwrap();
+                for (j, b) in out.bearings.iter().take(3).enumerate() {
+                    let (x, y) = b.relative();
+                    relative[j] = relative[j].max(2e6 * x.hypot(y));
+                    housing[j] = housing[j].max(2e6 * b.housing.x.hypot(b.housing.y));
+                }
             }
         }
-    }
-    let um = peak.map(|p| p * 1e6);
+        (relative, housing)
+    };
+    let (relative, housing) = orbits(hydro_unit_brackets());
     assert!(
-        (50.0..56.0).contains(&um[0]) && (50.0..56.0).contains(&um[1]),
-        "{um:?} µm pk-pk"
+        (50.0..56.0).contains(&relative[0]) && (50.0..56.0).contains(&relative[1]),
+        "{relative:?} µm pk-pk"
     );
     assert!(
-        um[2] < 10.0,
-        "the turbine guide bearing carries little: {um:?}"
+        relative[2] < 10.0,
+        "the turbine guide bearing carries little: {relative:?}"
+    );
+    assert!(
+        (40.0..50.0).contains(&housing[0]) && (20.0..30.0).contains(&housing[1]),
+        "brackets {housing:?} µm pk-pk"
+    );
+    let (rigid_relative, _) = orbits(rigid);
+    assert!(
+        (45.0..50.0).contains(&rigid_relative[0]) && (45.0..50.0).contains(&rigid_relative[1]),
+        "rigid ground: {rigid_relative:?} µm pk-pk"
     );
 }
