@@ -389,3 +389,92 @@ fn a_speed_outside_the_table_warns_once() {
     assert_eq!(lines.len(), 1, "{ramp}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A rigid rotor (one stiff element, end rotations held) on two linear
+/// bearings `k_b = 1e7` N/m, with a seal of direct stiffness `s` at each end:
+/// its translations have the net stiffness `k_b + s` in the bounce mode.
+fn rigid_rotor_with_seals(s: f64) -> String {
+    format!(
+        r#"
+name = "seal_divergence"
+speed_rpm = 3000
+[[materials]]
+name = "steel"
+youngs_modulus = 211e9
+poisson_ratio = 0.3
+density = 7810.0
+[[shaft]]
+length = 0.2
+outer_diameter = 0.1
+material = "steel"
+elements = 1
+[[bearings]]
+name = "left"
+type = "linear"
+node = 1
+kxx = 1e7
+kyy = 1e7
+[[bearings]]
+name = "right"
+type = "linear"
+node = 2
+kxx = 1e7
+kyy = 1e7
+[[seals]]
+name = "left_seal"
+node = 1
+kxx = {s:e}
+kyy = {s:e}
+[[seals]]
+name = "right_seal"
+node = 2
+kxx = {s:e}
+kyy = {s:e}
+[[supports]]
+node = 1
+fix = ["rx", "ry"]
+[[supports]]
+node = 2
+fix = ["rx", "ry"]
+"#
+    )
+}
+
+/// Seals of negative stiffness stronger than the bearings make the machine
+/// statically unstable: the static solve (and every command and the FMU that
+/// start from it) stops with an error naming the seals and the net stiffness
+/// `k_b + s` (−5e6 N/m here), instead of returning an equilibrium it cannot
+/// hold; weaker seals (net 5e6 N/m) are accepted.
+#[test]
+fn negative_seal_stiffness_beyond_the_bearings_is_a_static_instability() {
+    use rotor_bearing::solver::{SolverOptions, equilibrium};
+    let speed = 3000.0 * RPM;
+    let unstable = rotor(&rigid_rotor_with_seals(-1.5e7));
+    let err = equilibrium(&unstable, speed, &SolverOptions::default(), None)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("statically unstable: the net stiffness is -5000000 N/m")
+            && err.contains("left_seal (-15000000 N/m), right_seal (-15000000 N/m)"),
+        "{err}"
+    );
+    let mut sim = Simulator::new(unstable, SolverOptions::default()).unwrap();
+    sim.set_speed(speed, 0.0).unwrap();
+    assert!(sim.settle_static().is_err());
+    let stable = rotor(&rigid_rotor_with_seals(-0.5e7));
+    equilibrium(&stable, speed, &SolverOptions::default(), None).unwrap();
+    // The CLI says so and fails.
+    let dir = std::env::temp_dir().join(format!("rotor_divergence_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("m.toml");
+    std::fs::write(&path, rigid_rotor_with_seals(-1.5e7)).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["static", "--rpm", "3000"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("statically unstable"), "{stderr}");
+    std::fs::remove_dir_all(&dir).ok();
+}

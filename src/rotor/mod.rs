@@ -53,6 +53,9 @@ pub struct Rotor {
     /// `Some` for a [reduced](Rotor::reduced) rotor: matrices, load and
     /// coordinates are then those of the reduced system.
     pub reduction: Option<Reduction>,
+    /// Linear elements of negative direct stiffness with their most negative
+    /// direct entry (N/m): the statics check such a machine can hold itself.
+    pub negative_stiffness: Vec<(String, f64)>,
 }
 
 /// Linear stiffness and damping of one bearing on its journal `(x, y)`.
@@ -106,6 +109,7 @@ impl Rotor {
         linear.extend(elements::point_masses(&model, &dofs));
         linear.extend(elements::pedestals(&model, &dofs));
         let mut nonlinear_bearings = Vec::new();
+        let mut negative_stiffness = Vec::new();
         // Every bearing couples its journal to its housing: the band holds
         // the nonlinear ones' Jacobians too (statics, linearization).
         let mut spread = 0;
@@ -129,6 +133,9 @@ impl Rotor {
                     [coeff.damping[(0, 0)], coeff.damping[(0, 1)]],
                     [coeff.damping[(1, 0)], coeff.damping[(1, 1)]],
                 ];
+                if k[0][0].min(k[1][1]) < 0.0 {
+                    negative_stiffness.push((b.name.clone(), k[0][0].min(k[1][1])));
+                }
                 linear.push(elements::bearing_link(&dofs, b, &k, &c));
             } else {
                 nonlinear_bearings.push(BearingSite {
@@ -180,6 +187,7 @@ impl Rotor {
             nonlinear_bearings,
             gravity_load,
             reduction: None,
+            negative_stiffness,
         })
     }
 
@@ -294,6 +302,7 @@ impl Rotor {
             nonlinear_bearings: Vec::new(),
             gravity_load: self.gravity_load.clone(),
             reduction: None,
+            negative_stiffness: self.negative_stiffness.clone(),
         })
     }
 

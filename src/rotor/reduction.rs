@@ -232,6 +232,7 @@ impl Rotor {
             damping: project(&self.damping),
             gyroscopic: project(&self.gyroscopic),
             nonlinear_bearings: self.nonlinear_bearings.clone(),
+            negative_stiffness: self.negative_stiffness.clone(),
             gravity_load: gravity.as_slice().to_vec(),
             reduction: Some(Reduction {
                 kept_nodes,

@@ -57,6 +57,7 @@ pub mod run;
 mod simulator;
 mod sites;
 mod state;
+mod static_stability;
 pub mod statics;
 mod warnings;
 

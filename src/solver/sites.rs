@@ -10,6 +10,7 @@
 
 use crate::bearing::{Bearing, BearingEval};
 use crate::fe::{DOF_X, DOF_Y};
+use crate::linalg::BandMatrix;
 use crate::rotor::Rotor;
 
 use super::simulator::SolverError;
@@ -47,6 +48,16 @@ impl Coordinate {
     /// The free DOFs it involves with their signs in `e`.
     pub fn entries(&self) -> impl Iterator<Item = (usize, f64)> {
         std::iter::once((self.journal, 1.0)).chain(self.housing.map(|h| (h, -1.0)))
+    }
+}
+
+/// Add `k e_i e_jᵀ` to `a`: a stiffness between journal coordinates `i` and
+/// `j`, which acts between journal and housing DOFs for a bearing on a pedestal.
+pub(super) fn add_coupling(a: &mut BandMatrix<f64>, i: &Coordinate, j: &Coordinate, k: f64) {
+    for (row, si) in i.entries() {
+        for (col, sj) in j.entries() {
+            a.add(row, col, si * sj * k);
+        }
     }
 }
 

@@ -6,13 +6,13 @@
 //! [`equilibrium`] once per speed.
 
 use crate::bearing::BearingEval;
-use crate::linalg::BandMatrix;
 use crate::rotor::Rotor;
 
 use super::factor::make_factor;
 use super::newton::SchurSolve;
 use super::simulator::{SolverError, SolverOptions, inf_norm};
-use super::sites::{Coordinate, Sites};
+use super::sites::{Sites, add_coupling};
+use super::static_stability;
 
 /// A static equilibrium (velocities and accelerations zero).
 #[derive(Debug, Clone, PartialEq)]
@@ -142,6 +142,14 @@ impl StaticWork {
 /// so a converged equilibrium does not depend on `k_r`.
 const JOURNAL_REST: f64 = 1e-9;
 
+/// The journal regularization `k_r` of the static Jacobian ([`JOURNAL_REST`]).
+fn journal_rest(rotor: &Rotor) -> f64 {
+    JOURNAL_REST
+        * (0..rotor.dof_count())
+            .map(|i| rotor.stiffness.get(i, i).abs())
+            .fold(0.0, f64::max)
+}
+
 /// Newton with backtracking from `u0` (and `p0`, or the bearings' guess of the
 /// pad tilts at the journal positions of `u0`); returns the displacement and
 /// tilts. `time` (s) only labels bearing errors.
@@ -149,7 +157,8 @@ const JOURNAL_REST: f64 = 1e-9;
 /// At standstill a fluid film carries nothing and the journals rest on their
 /// bushings or pads: Newton then starts from [`resting_start`]; at any other
 /// speed it falls back to that start when the given one fails (a film too weak
-/// to lift the journal off).
+/// to lift the journal off). An equilibrium the machine cannot hold (negative
+/// net stiffness, [`static_stability`]) is an error naming the elements.
 pub(super) fn settle(
     rotor: &Rotor,
     sites: &mut Sites,
@@ -165,18 +174,21 @@ pub(super) fn settle(
         vec![0.0; rotor.dof_count()]
     };
     // The resting start costs a banded factorization: build it only when used.
-    if speed == 0.0 {
-        if let Some(u) = resting_start(rotor, sites, &f_ext) {
-            return newton_static(rotor, sites, speed, options, time, u, None);
-        }
-    }
-    match newton_static(rotor, sites, speed, options, time, u0, p0) {
-        Err(e) => match resting_start(rotor, sites, &f_ext) {
-            Some(u) => newton_static(rotor, sites, speed, options, time, u, None),
-            None => Err(e),
+    let outcome = match (speed == 0.0)
+        .then(|| resting_start(rotor, sites, &f_ext))
+        .flatten()
+    {
+        Some(u) => newton_static(rotor, sites, speed, options, time, u, None),
+        None => match newton_static(rotor, sites, speed, options, time, u0, p0) {
+            Err(e) => match resting_start(rotor, sites, &f_ext) {
+                Some(u) => newton_static(rotor, sites, speed, options, time, u, None),
+                None => Err(e),
+            },
+            outcome => outcome,
         },
-        outcome => outcome,
-    }
+    }?;
+    static_stability::check(rotor, sites, speed, journal_rest(rotor))?;
+    Ok(outcome)
 }
 
 /// The rotor resting on its fluid-film bearings, as a start for Newton: each
@@ -234,10 +246,7 @@ fn newton_static(
 ) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
     let n = rotor.dof_count();
     let tol = options.tolerance;
-    let k_rest = JOURNAL_REST
-        * (0..n)
-            .map(|i| rotor.stiffness.get(i, i).abs())
-            .fold(0.0, f64::max);
+    let k_rest = journal_rest(rotor);
     let mut work = StaticWork {
         f_ext: if options.gravity {
             rotor.gravity_load.clone()
@@ -326,14 +335,4 @@ fn newton_static(
     Err(SolverError::Static(format!(
         "Newton stalled with residual {residual:.3e} of the force scale"
     )))
-}
-
-/// Add `k e_i e_jᵀ` to `a`: a stiffness between journal coordinates `i` and
-/// `j`, which acts between journal and housing DOFs for a bearing on a pedestal.
-fn add_coupling(a: &mut BandMatrix<f64>, i: &Coordinate, j: &Coordinate, k: f64) {
-    for (row, si) in i.entries() {
-        for (col, sj) in j.entries() {
-            a.add(row, col, si * sj * k);
-        }
-    }
 }

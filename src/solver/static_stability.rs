@@ -1,0 +1,122 @@
+//! Is a static equilibrium stable? With elements of negative direct stiffness
+//! (a seal or table bearing with negative `kxx`, magnetic pull) the static
+//! solve can converge to an equilibrium the machine cannot hold: the tangent
+//! stiffness `K_t = K + E K_c Eᵀ` (bearings condensed statically) then has a
+//! real eigenvalue `λ ≤ 0` — a mode along which the net stiffness is
+//! negative, so the rotor diverges (buckles sideways) from rest. The check
+//! finds the eigenvalues of `K_t` nearest zero by shift-invert Arnoldi on
+//! `K_t⁻¹` (a few banded solves) and refuses the equilibrium with the net
+//! stiffness `λ`, where its mode is largest and the elements of negative
+//! stiffness that cause it. It runs only when some element has a negative
+//! direct stiffness, so every other model is untouched.
+
+use crate::linalg::{ArnoldiOptions, largest_eigenpairs_real};
+use crate::rotor::{Dof, Rotor};
+
+use super::condense::condense_internal;
+use super::simulator::SolverError;
+use super::sites::{Sites, add_coupling};
+
+/// The elements of negative direct stiffness at the equilibrium just solved
+/// (sites evaluated there) with their most negative direct entry (N/m),
+/// bearings in model order.
+fn negative_elements(rotor: &Rotor, sites: &Sites) -> Vec<(String, f64)> {
+    let mut out: Vec<(String, f64)> = rotor.negative_stiffness.clone();
+    for site in &sites.list {
+        let k = site.eval.k(0, 0).min(site.eval.k(1, 1));
+        if k < 0.0 {
+            out.push((site.name.clone(), k));
+        }
+    }
+    out
+}
+
+/// Refuse the equilibrium of `sites` (evaluated at it) at `speed` (rad/s) if
+/// it is statically unstable; `k_rest` is the statics' journal regularization.
+pub(super) fn check(
+    rotor: &Rotor,
+    sites: &mut Sites,
+    speed: f64,
+    k_rest: f64,
+) -> Result<(), SolverError> {
+    let culprits = negative_elements(rotor, sites);
+    if culprits.is_empty() {
+        return Ok(());
+    }
+    let n = rotor.dof_count();
+    let mut a = rotor.stiffness.clone();
+    for site in &mut sites.list {
+        let Some((kc, _)) = condense_internal(
+            &site.eval,
+            0.0,
+            &mut site.kpp,
+            &mut site.kpp_piv,
+            &mut site.kpp_x,
+        ) else {
+            continue;
+        };
+        for (i, ci) in site.journal.iter().enumerate() {
+            for (j, cj) in site.journal.iter().enumerate() {
+                add_coupling(&mut a, ci, cj, kc[2 * i + j]);
+            }
+            a.add(ci.journal, ci.journal, k_rest);
+        }
+    }
+    let scale = (0..n).map(|i| a.get(i, i).abs()).fold(0.0, f64::max);
+    let names = culprits
+        .iter()
+        .map(|(name, k)| format!("{name} ({} N/m)", short(*k)))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let rpm = speed * 30.0 / std::f64::consts::PI;
+    let Ok(lu) = a.lu() else {
+        return Err(SolverError::Static(format!(
+            "at {} rpm the machine has no net static stiffness (singular): the negative stiffness of {names} cancels what holds it",
+            short(rpm)
+        )));
+    };
+    let mut apply = |x: &[f64], y: &mut [f64]| {
+        y.copy_from_slice(x);
+        lu.solve_in_place(y);
+        Ok(())
+    };
+    let nev = n.min(6);
+    let options = ArnoldiOptions {
+        tol: 1e-9,
+        ..ArnoldiOptions::default()
+    };
+    let pairs =
+        largest_eigenpairs_real(n, nev, &mut apply, &options).map_err(SolverError::Linalg)?;
+    let unstable = pairs
+        .iter()
+        .filter(|p| p.value.im.abs() <= 1e-9 * p.value.norm() && p.value.re < 0.0)
+        .map(|p| (1.0 / p.value.re, &p.vector))
+        .filter(|(lambda, _)| *lambda < -1e-9 * scale)
+        .min_by(|a, b| a.0.total_cmp(&b.0));
+    let Some((lambda, vector)) = unstable else {
+        return Ok(());
+    };
+    let at = (0..n)
+        .filter(|&i| rotor.dofs.is_displacement(i))
+        .max_by(|&i, &j| vector[i].norm().total_cmp(&vector[j].norm()));
+    let place = match at.map(|i| rotor.dofs.kind(i)) {
+        Some(Dof::Node { node, k }) => format!(" at node {} ({})", node + 1, ["x", "y"][k]),
+        Some(Dof::Pedestal { pedestal, k }) => format!(
+            " at pedestal {} ({})",
+            rotor.model.pedestals[pedestal].name,
+            ["x", "y"][k]
+        ),
+        _ => String::new(),
+    };
+    Err(SolverError::Static(format!(
+        "the equilibrium at {} rpm is statically unstable: the net stiffness is {} N/m in the mode largest{place}; the negative stiffness of {names} exceeds what the shaft, bearings and supports hold",
+        short(rpm),
+        short(lambda)
+    )))
+}
+
+/// A number to six significant digits.
+fn short(x: f64) -> String {
+    let v: f64 = format!("{x:.5e}").parse().unwrap_or(x);
+    format!("{v}")
+}
