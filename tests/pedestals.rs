@@ -567,3 +567,33 @@ fn the_hydro_unit_on_brackets_has_the_critical_speeds_and_orbits_of_its_kind() {
         "rigid ground: {rigid_relative:?} µm pk-pk"
     );
 }
+
+/// The critical speed map keeps each bearing's pedestal in series with the
+/// swept support stiffness: with 1e15 N/m pedestals it is the map of the
+/// rigidly supported rotor (1e-6), with 2e7 N/m pedestals every critical at
+/// the stiff end of the map falls, and at a support stiffness far below the
+/// pedestals' the map is unchanged (the softer spring governs).
+#[test]
+fn the_critical_speed_map_holds_the_pedestals_in_series() {
+    use rotor_bearing::analysis::ucs::{critical_speed_map, stiffness_grid};
+    let grid = stiffness_grid(1e4, 1e10, 7).unwrap();
+    let map = |model: RotorModel| {
+        critical_speed_map(&Rotor::new(model).unwrap(), &grid, 2, &[3000.0 * RPM])
+            .unwrap()
+            .speeds
+    };
+    let rigid = map(jeffcott());
+    let stiff = map(jeffcott_on_pedestals(5.0, 1e15));
+    let soft = map(jeffcott_on_pedestals(5.0, 2e7));
+    for (r, s) in rigid.iter().flatten().zip(stiff.iter().flatten()) {
+        assert!((r - s).abs() < 1e-6 * r, "{r} against {s}");
+    }
+    assert!(
+        soft[6].iter().zip(&rigid[6]).all(|(s, r)| s < &(0.9 * r)),
+        "{soft:?} {rigid:?}"
+    );
+    assert!(
+        (soft[0][0] / rigid[0][0] - 1.0).abs() < 1e-3,
+        "{soft:?} {rigid:?}"
+    );
+}

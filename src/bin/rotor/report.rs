@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
-use rotor_bearing::analysis::operating_point::operating_point;
+use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::analysis::stability::{default_cross_coupling_max, mid_span_node, stability};
 use rotor_bearing::analysis::ucs::{critical_speed_map, stiffness_grid};
 use rotor_bearing::analysis::unbalance::{
@@ -63,10 +63,11 @@ pub fn run(rotor: &Rotor, rpm: f64, out: PathBuf) -> Result<(), String> {
     ));
 
     let points = operating_point(rotor, speed).map_err(|e| err(&e))?;
+    let pedestals = pedestal_operating_points(rotor, speed).map_err(|e| err(&e))?;
     sections.push(section(
         "operating-point",
         &format!("Operating point at {rpm} rpm"),
-        text::operating_point(rpm, &points),
+        text::operating_point(rpm, &points) + &text::pedestals(rpm, &pedestals),
         Vec::new(),
     ));
 
