@@ -478,3 +478,43 @@ fn negative_seal_stiffness_beyond_the_bearings_is_a_static_instability() {
     assert!(stderr.contains("statically unstable"), "{stderr}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The Campbell diagram takes a seal's cross-coupling at every speed: its log
+/// decrements are those of the seal-free rotor with the same cross-coupled
+/// stiffness added at the seal's node (1e-9), and they fall below the
+/// seal-free rotor's.
+#[test]
+fn campbell_log_decrements_include_the_seal() {
+    use rotor_bearing::analysis::campbell::campbell;
+    use rotor_bearing::analysis::stability::with_cross_coupling;
+    let q = 3e4;
+    let sealed = rotor(&with_seal(q));
+    let plain = rotor(&classic_damped());
+    let options = ModalOptions {
+        modes: 6,
+        target_frequency: 0.0,
+    };
+    let speeds = [1000.0 * RPM, 2500.0 * RPM, 4000.0 * RPM];
+    let diagram = campbell(&sealed, &speeds, &options).unwrap();
+    let free = campbell(&plain, &speeds, &options).unwrap();
+    for ((point, free), &speed) in diagram.iter().zip(&free).zip(&speeds) {
+        let coupled =
+            with_cross_coupling(&linearized(&plain, speed, speed).unwrap(), 3, q).unwrap();
+        let want = modes(&coupled, speed, &options).unwrap();
+        for (m, w) in point.modes.iter().zip(&want) {
+            assert!(
+                (m.log_decrement - w.log_decrement).abs() < 1e-9 * w.log_decrement.abs().max(1.0),
+                "{m:?} against {w:?}"
+            );
+        }
+        let least = |ms: &[rotor_bearing::analysis::campbell::ModeSummary]| {
+            ms.iter()
+                .map(|m| m.log_decrement)
+                .fold(f64::INFINITY, f64::min)
+        };
+        assert!(
+            least(&point.modes) < least(&free.modes),
+            "the seal destabilizes"
+        );
+    }
+}
