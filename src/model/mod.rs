@@ -109,6 +109,10 @@ pub struct Pedestal {
     pub on: Option<usize>,
 }
 
+/// A file a model reads besides its own: the path as written in the model
+/// (relative to the model file's folder, or absolute) and the path read.
+pub type TableFile = (String, std::path::PathBuf);
+
 /// A non-rotating lumped mass at a node (`[[point_masses]]`): a coupling
 /// hub, a housing carried by the shaft, a collar.
 #[derive(Debug, Clone, PartialEq)]
@@ -190,7 +194,7 @@ pub struct RotorModel {
     /// [`DEFAULT_MAX_SPEED_RPM`]).
     pub max_speed_stated: bool,
     /// Coefficient-table files read, as written and as resolved ([`Self::table_files`]).
-    pub table_files: Vec<(String, std::path::PathBuf)>,
+    pub table_files: Vec<TableFile>,
     /// Fixed-interface modes of the reduced rotor transients run on
     /// (`[reduction]`, see [`crate::rotor::Rotor::reduced`]); `None`: the full rotor.
     pub reduced_modes: Option<usize>,
@@ -328,7 +332,7 @@ impl RotorModel {
     /// Files the model reads besides its own (coefficient tables), as
     /// written in it (relative to the model file's folder) with the path
     /// they were read from.
-    pub fn table_files(&self) -> &[(String, std::path::PathBuf)] {
+    pub fn table_files(&self) -> &[TableFile] {
         &self.table_files
     }
 

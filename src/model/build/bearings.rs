@@ -3,8 +3,6 @@
 
 use crate::bearing::contact::ContactLaw;
 use crate::bearing::tilting_pad::Pad;
-use std::path::PathBuf;
-
 use crate::bearing::{
     BearingKind, PlainBearing, RubElement, SealElement, TableBearing, TiltingPadBearing,
 };
@@ -12,7 +10,7 @@ use crate::bearing::{
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{BearingEntry, RubEntry, SealEntry};
-use crate::model::{ModelError, Pedestal, PlacedBearing, PlacedElement};
+use crate::model::{ModelError, Pedestal, PlacedBearing, PlacedElement, TableFile};
 
 use super::pedestals::lookup;
 use super::tables::{TableInput, coefficient_table};
@@ -32,7 +30,7 @@ pub(super) fn bearings(
     node_z: &[f64],
     elements: &[PlacedElement],
     pedestals: &[Pedestal],
-) -> Result<(Vec<PlacedBearing>, Vec<(String, PathBuf)>), ModelError> {
+) -> Result<(Vec<PlacedBearing>, Vec<TableFile>), ModelError> {
     let mut bearings = Vec::new();
     let mut files = Vec::new();
     let mut names = Names::default();
@@ -147,12 +145,15 @@ pub(super) fn bearings(
                     table: &table,
                     mass: [mxx, mxy, myx, myy],
                 };
-                let (table, added_mass, file) = coefficient_table(ctx, &p, &input)?;
-                files.extend(file);
+                let read = coefficient_table(ctx, &p, &input)?;
+                files.extend(read.file);
                 (
                     name,
                     node,
-                    BearingKind::Table(TableBearing { table, added_mass }),
+                    BearingKind::Table(TableBearing {
+                        table: read.table,
+                        added_mass: read.added_mass,
+                    }),
                     pedestal,
                 )
             }
@@ -317,8 +318,8 @@ pub(super) fn bearings(
             table: &e.table,
             mass: [e.mxx, e.mxy, e.myx, e.myy],
         };
-        let (table, added_mass, file) = coefficient_table(ctx, &p, &input)?;
-        files.extend(file);
+        let read = coefficient_table(ctx, &p, &input)?;
+        files.extend(read.file);
         let contact = match e.clearance {
             None => {
                 for (key, given) in [
@@ -367,8 +368,8 @@ pub(super) fn bearings(
             name: names.claim(ctx, &p, default_name(e.name, "seal", i), "seal")?,
             node,
             kind: BearingKind::Seal(SealElement {
-                table,
-                added_mass,
+                table: read.table,
+                added_mass: read.added_mass,
                 contact,
             }),
             pedestal,

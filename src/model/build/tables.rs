@@ -10,10 +10,10 @@ use std::path::{Path, PathBuf};
 
 use crate::bearing::table::{COLUMNS, CoefficientTable};
 use crate::linalg::pchip::PchipError;
-use crate::model::ModelError;
 use crate::model::context::Ctx;
 use crate::model::error::FieldPath;
 use crate::model::file::Coefficient;
+use crate::model::{ModelError, TableFile};
 
 /// The table keys of one entry as written.
 pub(super) struct TableInput<'a> {
@@ -25,13 +25,21 @@ pub(super) struct TableInput<'a> {
     pub mass: [Option<f64>; 4],
 }
 
-/// The validated table of entry `p`, the added mass, and the file it was read
-/// from (as written and resolved), if any.
+/// A validated table entry.
+pub(super) struct TableRead {
+    pub table: CoefficientTable,
+    /// Added mass (kg, row-major).
+    pub added_mass: [[f64; 2]; 2],
+    /// The file it was read from, if any.
+    pub file: Option<TableFile>,
+}
+
+/// The validated table of entry `p`, its added mass and its file.
 pub(super) fn coefficient_table(
     ctx: &Ctx,
     p: &FieldPath,
     input: &TableInput,
-) -> Result<(CoefficientTable, [[f64; 2]; 2], Option<(String, PathBuf)>), ModelError> {
+) -> Result<TableRead, ModelError> {
     let given = input.columns.iter().any(|c| c.is_some()) || input.speeds_rpm.is_some();
     let (table, file) = match (input.table, given) {
         (Some(_), true) => {
@@ -53,7 +61,11 @@ pub(super) fn coefficient_table(
         [f("mxx", mxx)?, f("mxy", mxy)?],
         [f("myx", myx)?, f("myy", myy)?],
     ];
-    Ok((table, mass, file))
+    Ok(TableRead {
+        table,
+        added_mass: mass,
+        file,
+    })
 }
 
 /// A table file's path: as written if absolute, else beside the model file.
