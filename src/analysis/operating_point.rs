@@ -207,7 +207,7 @@ pub fn operating_point(
         .map(|eq| bearing_coefficients(eq, speed))
         .unwrap_or_default();
     for (index, b) in model.bearings.iter().enumerate() {
-        if b.kind.is_rub() || b.kind.is_seal() {
+        if !b.kind.is_bearing() {
             continue;
         }
         let j = journal(b);

@@ -4,7 +4,8 @@
 //!
 //! Every bearing is replaced by an isotropic spring `k` (N/m) without damping,
 //! in series with the bearing's pedestal where it stands on one (so the map
-//! holds the real supports); rubs and seals are left out.
+//! holds the real supports); a magnetic pull keeps its negative stiffness;
+//! rubs and seals are left out.
 //! At a synchronous critical speed the whirl frequency equals the spin `Ω`:
 //! with `λ = iΩ` the quadratic eigenproblem `(λ²M + λΩG + K) x = 0` becomes
 //! `K x = Ω² (M − iG) x`, a generalized problem with `K` symmetric and
@@ -46,15 +47,21 @@ pub enum UcsError {
 
 /// The rotor with every bearing replaced by an isotropic spring of `stiffness`
 /// (N/m) and no damping, in series with its pedestal where it stands on one;
-/// rubs and seals are left out (they support nothing).
+/// a magnetic pull becomes its negative stiffness at the centred rotor,
+/// `−k s²` (it acts on the rotor whatever holds it); rubs and seals are left
+/// out (they support nothing).
 pub fn with_isotropic_supports(rotor: &Rotor, stiffness: f64) -> Result<Rotor, UcsError> {
     let mut model = rotor.model.clone();
     model
         .bearings
-        .retain(|b| !(b.kind.is_rub() || b.kind.is_seal()));
+        .retain(|b| b.kind.is_bearing() || b.kind.is_magnetic_pull());
     for b in &mut model.bearings {
+        let k = match &b.kind {
+            BearingKind::MagneticPull(m) => -m.stiffness * m.excitation * m.excitation,
+            _ => stiffness,
+        };
         b.kind = BearingKind::Linear {
-            stiffness: [[stiffness, 0.0], [0.0, stiffness]],
+            stiffness: [[k, 0.0], [0.0, k]],
             damping: [[0.0; 2]; 2],
         };
     }
@@ -172,7 +179,7 @@ pub fn critical_speed_map(
         .model
         .bearings
         .iter()
-        .filter(|b| !(b.kind.is_rub() || b.kind.is_seal()))
+        .filter(|b| b.kind.is_bearing())
         .map(|b| BearingStiffness {
             name: b.name.clone(),
             points: Vec::with_capacity(speeds.len()),

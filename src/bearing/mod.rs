@@ -41,6 +41,7 @@ pub mod contact;
 pub mod equilibrium;
 pub mod film;
 pub mod linear;
+pub mod magnetic_pull;
 pub mod plain;
 pub mod rub;
 pub mod table;
@@ -49,6 +50,7 @@ pub mod tilting_pad;
 use nalgebra::{Matrix2, Vector2};
 
 pub use linear::LinearBearing;
+pub use magnetic_pull::MagneticPull;
 pub use plain::PlainBearing;
 pub use rub::RubElement;
 pub use table::{CoefficientTable, SealElement, TableBearing};
@@ -322,6 +324,8 @@ pub enum BearingKind {
     Table(TableBearing),
     /// Seal (`[[seals]]`): coefficients over speed, optionally closing on its stator.
     Seal(SealElement),
+    /// Unbalanced magnetic pull (`[[magnetic_pull]]`) with the stator contact.
+    MagneticPull(MagneticPull),
 }
 
 impl BearingKind {
@@ -336,6 +340,38 @@ impl BearingKind {
             BearingKind::Rub(r) => Box::new(*r),
             BearingKind::Table(t) => Box::new(t.clone()),
             BearingKind::Seal(s) => Box::new(s.clone()),
+            BearingKind::MagneticPull(m) => Box::new(*m),
+        }
+    }
+
+    /// Whether this is a magnetic pull rather than a bearing.
+    pub fn is_magnetic_pull(&self) -> bool {
+        matches!(self, BearingKind::MagneticPull(_))
+    }
+
+    /// Whether it supports the rotor (a bearing), rather than a rub, seal or
+    /// magnetic pull acting on it.
+    pub fn is_bearing(&self) -> bool {
+        !(self.is_rub() || self.is_seal() || self.is_magnetic_pull())
+    }
+
+    /// The field excitation (0–1) of a magnetic pull, `None` for the others.
+    pub fn excitation(&self) -> Option<f64> {
+        match self {
+            BearingKind::MagneticPull(m) => Some(m.excitation),
+            _ => None,
+        }
+    }
+
+    /// Set the field excitation of a magnetic pull; `false` (nothing changed)
+    /// for the others.
+    pub fn set_excitation(&mut self, excitation: f64) -> bool {
+        match self {
+            BearingKind::MagneticPull(m) => {
+                m.excitation = excitation;
+                true
+            }
+            _ => false,
         }
     }
 
@@ -383,7 +419,8 @@ impl BearingKind {
             BearingKind::Linear { .. }
             | BearingKind::Rub(_)
             | BearingKind::Table(_)
-            | BearingKind::Seal(_) => return None,
+            | BearingKind::Seal(_)
+            | BearingKind::MagneticPull(_) => return None,
             BearingKind::Plain(b) => (b.radius, b.length, b.clearance, b.viscosity),
             BearingKind::TiltingPad(b) => (b.radius, b.length, b.clearance, b.viscosity),
         };
@@ -406,7 +443,8 @@ impl BearingKind {
             BearingKind::Linear { .. }
             | BearingKind::Rub(_)
             | BearingKind::Table(_)
-            | BearingKind::Seal(_) => return false,
+            | BearingKind::Seal(_)
+            | BearingKind::MagneticPull(_) => return false,
             BearingKind::Plain(b) => b.viscosity = viscosity,
             BearingKind::TiltingPad(b) => b.viscosity = viscosity,
         }
@@ -424,6 +462,7 @@ impl BearingKind {
             BearingKind::TiltingPad(b) => Some(b.assembled_clearance()),
             BearingKind::Rub(r) => Some(r.contact.gap),
             BearingKind::Seal(s) => s.contact.map(|c| c.gap),
+            BearingKind::MagneticPull(m) => Some(m.gap),
         }
     }
 }

@@ -36,8 +36,8 @@ pub struct Snapshot {
 pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
 /// Format version of the byte image (1 was the unversioned `RBFMU01` image;
 /// 3 added the step and speed of the factorization in hand, 4 the reduced
-/// rotor's mode count).
-pub const VERSION: u64 = 4;
+/// rotor's mode count, 5 the load inputs of forces and ports).
+pub const VERSION: u64 = 5;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -156,7 +156,7 @@ const SCALARS: [Scalar; 14] = [
 ];
 
 /// The vector fields, in image order.
-const VECTORS: [Vector; 10] = [
+const VECTORS: [Vector; 12] = [
     ("u", |s| &s.sim.u, |s| &mut s.sim.u),
     ("ud", |s| &s.sim.ud, |s| &mut s.sim.ud),
     ("udd", |s| &s.sim.udd, |s| &mut s.sim.udd),
@@ -175,6 +175,12 @@ const VECTORS: [Vector; 10] = [
         |s| &mut s.sim.unbalance_phase,
     ),
     ("viscosity", |s| &s.viscosity, |s| &mut s.viscosity),
+    ("loads", |s| &s.sim.loads, |s| &mut s.sim.loads),
+    (
+        "load_rates",
+        |s| &s.sim.load_rates,
+        |s| &mut s.sim.load_rates,
+    ),
 ];
 
 /// Store a real field (any f64 is in its domain; the simulator checks values).
@@ -343,6 +349,8 @@ mod tests {
                 unbalance: v(2, 10.0),
                 unbalance_rate: v(2, 11.0),
                 unbalance_phase: v(2, 12.0),
+                loads: v(3, 14.0),
+                load_rates: v(3, 15.0),
                 factor_step: 1e-3,
                 factor_speed: 13.0,
             },

@@ -333,7 +333,7 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         );
     }
     for (k, b) in model.bearings.iter().enumerate() {
-        if b.kind.is_rub() || b.kind.is_seal() {
+        if !b.kind.is_bearing() {
             continue;
         }
         let node = b.node + 1;
@@ -449,7 +449,7 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
     // Contact outputs come last, so the value references above stay as they were.
     for (k, b) in model.bearings.iter().enumerate() {
         let n = &b.name;
-        if b.kind.is_seal() {
+        if b.kind.is_seal() || b.kind.is_magnetic_pull() {
             continue;
         }
         if b.kind.is_rub() {

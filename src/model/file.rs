@@ -60,6 +60,15 @@ pub struct ModelFile {
     /// `[[point_masses]]`.
     #[serde(default)]
     pub point_masses: Vec<PointMassEntry>,
+    /// `[[magnetic_pull]]`.
+    #[serde(default)]
+    pub magnetic_pull: Vec<MagneticPullEntry>,
+    /// `[[forces]]`.
+    #[serde(default)]
+    pub forces: Vec<ForceEntry>,
+    /// `[[ports]]`.
+    #[serde(default)]
+    pub ports: Vec<PortEntry>,
     #[serde(default)]
     pub unbalance: Vec<UnbalanceEntry>,
     #[serde(default)]
@@ -312,6 +321,36 @@ pub struct SealEntry {
     pub friction_coefficient: Option<f64>,
 }
 
+/// `[[magnetic_pull]]`: the unbalanced magnetic pull of a generator rotor in
+/// its stator, given by its pull stiffness or by the data it follows from.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MagneticPullEntry {
+    pub name: Option<String>,
+    pub node: Option<i64>,
+    pub z: Option<f64>,
+    /// The pedestal (`[[pedestals]]` name) the stator stands on; default rigid ground.
+    pub pedestal: Option<String>,
+    /// Radial air gap (m).
+    pub gap: f64,
+    /// Pull stiffness at nominal excitation (N/m), or give the three below.
+    pub stiffness: Option<f64>,
+    /// Rotor (air-gap) radius (m).
+    pub rotor_radius: Option<f64>,
+    /// Core length (m).
+    pub core_length: Option<f64>,
+    /// Mean air-gap flux density at nominal excitation (T).
+    pub flux_density: Option<f64>,
+    /// Field excitation, 1 = nominal (the pull goes with its square); default 1.
+    pub excitation: Option<f64>,
+    /// Stator contact stiffness (N/m); default the steel line contact over the core length.
+    pub contact_stiffness: Option<f64>,
+    /// Stator contact damping (N·s/m); default 1e-5 s × the contact stiffness.
+    pub contact_damping: Option<f64>,
+    /// Coulomb friction coefficient of the stator contact (–), default 0.2.
+    pub friction_coefficient: Option<f64>,
+}
+
 /// `[[point_masses]]`: a non-rotating lumped mass at a node (coupling hub,
 /// housing, thrust collar): `mass`, or `mx` and `my` (kg).
 #[derive(Debug, Deserialize)]
@@ -361,6 +400,43 @@ pub struct UnbalanceEntry {
     /// Angular position at spin angle zero, from +x toward +y (degrees).
     #[serde(default)]
     pub phase_deg: f64,
+}
+
+/// `[[forces]]`: an external force at a node, static (`fx`, `fy`) or
+/// harmonic (`magnitude`, `phase_deg`, `ratio` to the running speed or
+/// `frequency_hz`, `direction`).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ForceEntry {
+    pub name: Option<String>,
+    pub node: Option<i64>,
+    pub z: Option<f64>,
+    /// Static force (N).
+    pub fx: Option<f64>,
+    pub fy: Option<f64>,
+    /// Harmonic force amplitude (N).
+    pub magnitude: Option<f64>,
+    /// Its phase (°) at time 0 and spin angle 0.
+    pub phase_deg: Option<f64>,
+    /// Its frequency as a multiple of the running speed (e.g. 0.3 for a
+    /// vortex rope, the blade number for blade passing) …
+    pub ratio: Option<f64>,
+    /// … or a fixed frequency (Hz).
+    pub frequency_hz: Option<f64>,
+    /// `"forward"` (rotating with the spin), `"backward"` or `"fixed"`
+    /// (a line of action at `angle_deg`).
+    pub direction: Option<String>,
+    /// Direction of a fixed force's line of action (°, from +x toward +y).
+    pub angle_deg: Option<f64>,
+}
+
+/// `[[ports]]`: a node where another FMU pushes on the rotor.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PortEntry {
+    pub name: String,
+    pub node: Option<i64>,
+    pub z: Option<f64>,
 }
 
 /// `[[probes]]`: a named node whose displacements are reported.

@@ -138,6 +138,75 @@ pub struct UnbalancePlane {
     pub phase: f64,
 }
 
+/// How a harmonic force's frequency is set.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum HarmonicFrequency {
+    /// A multiple of the running speed: the force's angle is the ratio times
+    /// the spin angle (so it follows a run-up).
+    Ratio(f64),
+    /// A fixed frequency (rad/s).
+    Fixed(f64),
+}
+
+/// How a harmonic force acts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum HarmonicDirection {
+    /// Rotating in the spin direction: `A (cos θ, sin θ)`.
+    Forward,
+    /// Rotating against it: `A (cos θ, −sin θ)`.
+    Backward,
+    /// Along a fixed line at this angle (rad, from +x toward +y): `A cos θ (cos α, sin α)`.
+    Fixed(f64),
+}
+
+/// What an external force is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ForceKind {
+    /// A constant force `(fx, fy)` (N), e.g. a hydraulic radial thrust.
+    Static([f64; 2]),
+    /// A harmonic force of amplitude `magnitude` (N) and angle
+    /// `θ = phase + ratio × spin angle` or `phase + ω t`.
+    Harmonic {
+        magnitude: f64,
+        /// Phase at time 0 and spin angle 0 (rad).
+        phase: f64,
+        frequency: HarmonicFrequency,
+        direction: HarmonicDirection,
+    },
+}
+
+/// An external force at a node (`[[forces]]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExternalForce {
+    /// Name (default `force<k>`).
+    pub name: String,
+    /// Node index (0-based).
+    pub node: usize,
+    /// Static or harmonic.
+    pub kind: ForceKind,
+}
+
+/// A node where another model pushes on the rotor (`[[ports]]`): FMU inputs
+/// `ports.<p>.fx`, `fy`, outputs its motion.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Port {
+    /// Name, unique among the ports.
+    pub name: String,
+    /// Node index (0-based).
+    pub node: usize,
+}
+
+/// One input channel of the loads: a component of a static force, a
+/// harmonic force's amplitude or a port force component (N), in the order
+/// of [`RotorModel::load_inputs`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadInput {
+    /// Its name in the FMU: `forces.<f>.fx`, `forces.<f>.magnitude`, `ports.<p>.fy`.
+    pub name: String,
+    /// Value at the start (the model file's; 0 for ports).
+    pub start: f64,
+}
+
 /// A named node whose displacements are reported.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Probe {
@@ -180,6 +249,10 @@ pub struct RotorModel {
     pub unbalances: Vec<UnbalancePlane>,
     /// Probes.
     pub probes: Vec<Probe>,
+    /// External static and harmonic forces.
+    pub forces: Vec<ExternalForce>,
+    /// Force ports.
+    pub ports: Vec<Port>,
     /// Ideal supports.
     pub supports: Vec<Support>,
     /// Bearing supports (pedestals, brackets, foundations) in series with bearings.
@@ -334,6 +407,37 @@ impl RotorModel {
     /// they were read from.
     pub fn table_files(&self) -> &[TableFile] {
         &self.table_files
+    }
+
+    /// The load input channels, forces then ports: two per static force
+    /// (`fx`, `fy`), one per harmonic force (`magnitude`), two per port.
+    pub fn load_inputs(&self) -> Vec<LoadInput> {
+        let mut out = Vec::new();
+        for f in &self.forces {
+            match f.kind {
+                ForceKind::Static([fx, fy]) => {
+                    for (axis, start) in [("fx", fx), ("fy", fy)] {
+                        out.push(LoadInput {
+                            name: format!("forces.{}.{axis}", f.name),
+                            start,
+                        });
+                    }
+                }
+                ForceKind::Harmonic { magnitude, .. } => out.push(LoadInput {
+                    name: format!("forces.{}.magnitude", f.name),
+                    start: magnitude,
+                }),
+            }
+        }
+        for p in &self.ports {
+            for axis in ["fx", "fy"] {
+                out.push(LoadInput {
+                    name: format!("ports.{}.{axis}", p.name),
+                    start: 0.0,
+                });
+            }
+        }
+        out
     }
 
     /// Total rotating mass: shaft plus disks (kg).

@@ -146,10 +146,12 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
     let teal = RGBColor(0, 120, 130);
     for b in &model.bearings {
         let z = model.node_z[b.node];
-        if b.kind.is_rub() || b.kind.is_seal() {
+        if !b.kind.is_bearing() {
             // A stator ring: bars above and below the rotor at the node.
             let (color, what) = if b.kind.is_seal() {
                 (teal, "seal")
+            } else if b.kind.is_magnetic_pull() {
+                (RGBColor(200, 120, 0), "magnetic pull")
             } else {
                 (purple, "rub")
             };

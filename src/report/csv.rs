@@ -525,6 +525,7 @@ mod tests {
             spin_angle: 12.5,
             bearings: vec![bearing; model.bearings.len()],
             probes: vec![ProbeOutput { x: 7e-6, y: 8e-6 }; model.probes.len()],
+            ports: Vec::new(),
             friction_torque: 1.0,
         };
         let text = simulation(&model, &[record.clone(), record]);

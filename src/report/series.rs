@@ -88,6 +88,7 @@ mod tests {
             } else {
                 Vec::new()
             },
+            ports: Vec::new(),
             friction_torque: 0.0,
         }
     }

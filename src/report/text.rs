@@ -54,7 +54,12 @@ pub fn model_summary(rotor: &Rotor) -> String {
         .ok();
     }
     for b in &m.bearings {
-        let what = if b.kind.is_seal() { "seal" } else { "bearing" };
+        let what = match &b.kind {
+            k if k.is_seal() => "seal",
+            k if k.is_rub() => "rub",
+            k if k.is_magnetic_pull() => "magnetic pull",
+            _ => "bearing",
+        };
         let on = match b.pedestal {
             Some(p) => format!(" on pedestal {}", m.pedestals[p].name),
             None => String::new(),
@@ -197,6 +202,13 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
                 describe_table(&s.table, s.added_mass)
             )
         }
+        BearingKind::MagneticPull(m) => format!(
+            "unbalanced magnetic pull, k = {} N/m at nominal field (excitation {}), radial air gap {} mm, law k e/(1 − ε²)^1.5; stator contact stiffness {} N/m",
+            short(m.stiffness),
+            short(m.excitation),
+            short(m.gap * 1e3),
+            short(m.contact.stiffness)
+        ),
     }
 }
 

@@ -15,6 +15,7 @@ use crate::model::RotorModel;
 
 mod dofs;
 pub mod elements;
+mod loads;
 mod reduction;
 
 pub use crate::model::DEFAULT_REDUCED_MODES;

@@ -92,7 +92,8 @@ impl Reduction {
 
 impl Rotor {
     /// Nodes a reduced rotor keeps physical: every bearing kept out of the
-    /// matrices (nonlinear bearings, rubs), every probe and unbalance plane.
+    /// matrices (nonlinear bearings, rubs, seals, magnetic pulls), every
+    /// probe, unbalance plane, external force and port.
     /// (Linear bearings stay in the matrices; their journals are read
     /// through the basis.)
     pub fn kept_nodes(&self) -> Vec<usize> {
@@ -105,6 +106,8 @@ impl Rotor {
             .map(|b| b.node)
             .chain(m.probes.iter().map(|p| p.node))
             .chain(m.unbalances.iter().map(|u| u.node))
+            .chain(m.forces.iter().map(|f| f.node))
+            .chain(m.ports.iter().map(|p| p.node))
             .collect();
         nodes.sort_unstable();
         nodes.dedup();

@@ -63,8 +63,8 @@ mod warnings;
 
 pub use run::{SpeedProfile, record};
 pub use simulator::{
-    BearingOutput, HousingOutput, Outputs, ProbeOutput, Simulator, SolverError, SolverOptions,
-    StepStats,
+    BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput, Simulator, SolverError,
+    SolverOptions, StepStats,
 };
 pub use state::SimState;
 pub use statics::{Equilibrium, equilibrium};

@@ -44,11 +44,13 @@ pub(super) struct NewmarkWork {
     pub f_ext: Vec<f64>,
     /// Pad residuals `Q_p` (N·m per m of pad coordinate).
     pub rp: Vec<f64>,
+    /// The load inputs at the step's time (N).
+    pub load_values: Vec<f64>,
 }
 
 impl NewmarkWork {
-    /// Buffers for `n` rotor DOFs and `n_internal` pad DOFs.
-    pub fn new(n: usize, n_internal: usize) -> Self {
+    /// Buffers for `n` rotor DOFs, `n_internal` pad DOFs and `n_loads` load inputs.
+    pub fn new(n: usize, n_internal: usize, n_loads: usize) -> Self {
         let rotor = || vec![0.0; n];
         let pads = || vec![0.0; n_internal];
         Self {
@@ -65,6 +67,7 @@ impl NewmarkWork {
             dp: pads(),
             f_ext: rotor(),
             rp: pads(),
+            load_values: vec![0.0; n_loads],
         }
     }
 }
@@ -152,7 +155,9 @@ impl Simulator {
 
     /// External force at time `t` (s) and spin angle `spin_angle` (rad) into
     /// `newmark.f_ext`: gravity plus, per plane, the unbalance
-    /// `m e (Ω² cos φ + Ω̇ sin φ, Ω² sin φ − Ω̇ cos φ)` times the ramp `1 − e^{−t/τ}`.
+    /// `m e (Ω² cos φ + Ω̇ sin φ, Ω² sin φ − Ω̇ cos φ)` times the ramp `1 − e^{−t/τ}`,
+    /// plus the external static, harmonic and port forces of the load inputs
+    /// ([`Rotor::add_loads_at`](crate::rotor::Rotor::add_loads_at)).
     pub(super) fn external_force(&mut self, t: f64, spin_angle: f64) {
         let w = &mut self.newmark;
         w.f_ext.fill(0.0);
@@ -179,6 +184,17 @@ impl Simulator {
             if let Some(i) = self.rotor.dofs.free(plane.node, DOF_Y) {
                 w.f_ext[i] += fy;
             }
+        }
+        if !self.state.loads.is_empty() {
+            for (v, (l, r)) in w
+                .load_values
+                .iter_mut()
+                .zip(self.state.loads.iter().zip(&self.state.load_rates))
+            {
+                *v = l + r * since;
+            }
+            self.rotor
+                .add_loads_at(&w.load_values, t, spin_angle, &mut w.f_ext);
         }
     }
 

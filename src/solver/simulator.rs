@@ -162,6 +162,19 @@ pub struct ProbeOutput {
     pub y: f64,
 }
 
+/// Motion of one force port (`[[ports]]`) and the force applied there.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PortOutput {
+    /// Displacement (m).
+    pub x: f64,
+    /// Displacement (m).
+    pub y: f64,
+    /// Velocity (m/s).
+    pub vx: f64,
+    /// Velocity (m/s).
+    pub vy: f64,
+}
+
 /// Everything a front end reports at the current time.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outputs {
@@ -175,6 +188,8 @@ pub struct Outputs {
     pub bearings: Vec<BearingOutput>,
     /// One entry per probe, in model order.
     pub probes: Vec<ProbeOutput>,
+    /// One entry per force port, in model order.
+    pub ports: Vec<PortOutput>,
     /// Sum of the bearings' friction torques (N·m).
     pub friction_torque: f64,
 }
@@ -259,6 +274,8 @@ impl Simulator {
             unbalance: rotor.model.unbalances.iter().map(|u| u.magnitude).collect(),
             unbalance_rate: vec![0.0; rotor.model.unbalances.len()],
             unbalance_phase: rotor.model.unbalances.iter().map(|u| u.phase).collect(),
+            loads: rotor.model.load_inputs().iter().map(|l| l.start).collect(),
+            load_rates: vec![0.0; rotor.model.load_inputs().len()],
             factor_step: 0.0,
             factor_speed: 0.0,
         };
@@ -274,7 +291,7 @@ impl Simulator {
             output_q: vec![0.0; widest],
             output_qd: vec![0.0; widest],
             refactor_journal_limit: 8,
-            newmark: NewmarkWork::new(n, n_internal),
+            newmark: NewmarkWork::new(n, n_internal, rotor.model.load_inputs().len()),
             schur: SchurSolve::new(n, &sites),
             condensed: CondensedWork::new(sites.n_journal),
             stats: StepStats::default(),
@@ -337,6 +354,8 @@ impl Simulator {
             || state.unbalance.len() != s.unbalance.len()
             || state.unbalance_rate.len() != s.unbalance_rate.len()
             || state.unbalance_phase.len() != s.unbalance_phase.len()
+            || state.loads.len() != s.loads.len()
+            || state.load_rates.len() != s.load_rates.len()
         {
             return Err(SolverError::Input(
                 "state does not belong to this rotor (sizes differ)".into(),
@@ -412,6 +431,9 @@ impl Simulator {
         for (u, r) in s.unbalance.iter_mut().zip(&s.unbalance_rate) {
             *u = (*u + r * dt).max(0.0);
         }
+        for (l, r) in s.loads.iter_mut().zip(&s.load_rates) {
+            *l += r * dt;
+        }
         s.speed_time = s.time;
     }
 
@@ -468,17 +490,46 @@ impl Simulator {
                 "viscosity {viscosity} Pa·s must be finite and positive"
             )));
         }
+        self.change_bearing(
+            index,
+            |kind| kind.set_viscosity(viscosity),
+            "is not a fluid-film bearing: it has no oil viscosity",
+        )
+    }
+
+    /// Set the field excitation (0 off, 1 nominal; the pull goes with its
+    /// square) of the magnetic pull `index` (model order of bearings, rubs,
+    /// seals and pulls).
+    pub fn set_excitation(&mut self, index: usize, excitation: f64) -> Result<(), SolverError> {
+        if !(excitation.is_finite() && excitation >= 0.0) {
+            return Err(SolverError::Input(format!(
+                "field excitation {excitation} must be finite and not negative"
+            )));
+        }
+        self.change_bearing(
+            index,
+            |kind| kind.set_excitation(excitation),
+            "is not a magnetic pull: it has no field excitation",
+        )
+    }
+
+    /// Change a parameter of model bearing `index` with `set` (false: the
+    /// kind has no such parameter, `not_it` says why) and rebuild its force
+    /// models.
+    fn change_bearing(
+        &mut self,
+        index: usize,
+        set: impl FnOnce(&mut crate::bearing::BearingKind) -> bool,
+        not_it: &str,
+    ) -> Result<(), SolverError> {
         let placed = self
             .rotor
             .model
             .bearings
             .get_mut(index)
             .ok_or_else(|| SolverError::Input(format!("no bearing {index}")))?;
-        if !placed.kind.set_viscosity(viscosity) {
-            return Err(SolverError::Input(format!(
-                "bearing {} is linear: it has no oil viscosity",
-                placed.name
-            )));
+        if !set(&mut placed.kind) {
+            return Err(SolverError::Input(format!("{} {not_it}", placed.name)));
         }
         let (output, site) = &mut self.output_bearings[index];
         *output = placed.kind.build();
@@ -486,6 +537,33 @@ impl Simulator {
             self.sites.list[*k].bearing = placed.kind.build();
         }
         Ok(())
+    }
+
+    /// Set load input `input` (N; the order of
+    /// [`RotorModel::load_inputs`](crate::model::RotorModel::load_inputs)) now
+    /// and its rate of change (N/s) from now on.
+    pub fn set_load(&mut self, input: usize, value: f64, rate: f64) -> Result<(), SolverError> {
+        if !(value.is_finite() && rate.is_finite()) {
+            return Err(SolverError::Input(format!(
+                "load {value} N and its rate {rate} N/s must be finite"
+            )));
+        }
+        let count = self.state.loads.len();
+        if input >= count {
+            return Err(SolverError::Input(format!(
+                "no load input {input} (the model has {count})"
+            )));
+        }
+        self.rebase_inputs();
+        self.state.loads[input] = value;
+        self.state.load_rates[input] = rate;
+        Ok(())
+    }
+
+    /// Load input `input` (N) at time `t` (s).
+    pub fn load_at(&self, input: usize, t: f64) -> f64 {
+        let s = &self.state;
+        s.loads[input] + s.load_rates[input] * (t - s.speed_time)
     }
 
     /// Set the angular position (rad) of plane `plane` at spin angle zero.
@@ -509,14 +587,19 @@ impl Simulator {
         self.warnings
             .check_tables(&self.rotor, speed, self.state.time);
         let mut sites = Sites::new(&self.rotor)?;
+        let t = self.state.time;
+        let loads: Vec<f64> = (0..self.state.loads.len())
+            .map(|k| self.load_at(k, t))
+            .collect();
+        let f_ext = statics::static_load(&self.rotor, &self.options, &loads);
         let (u, p) = statics::settle(
             &self.rotor,
             &mut sites,
             speed,
             &self.options,
-            self.state.time,
-            self.state.u.clone(),
-            None,
+            t,
+            (self.state.u.clone(), None),
+            &f_ext,
         )?;
         self.state.u = u;
         self.state.p = p;
@@ -627,12 +710,28 @@ impl Simulator {
                 y: self.rotor.node_value(p.node, DOF_Y, &self.state.u),
             })
             .collect();
+        let ports = self
+            .rotor
+            .model
+            .ports
+            .iter()
+            .map(|p| {
+                let at = |k: usize, v: &[f64]| self.rotor.node_value(p.node, k, v);
+                PortOutput {
+                    x: at(DOF_X, &self.state.u),
+                    y: at(DOF_Y, &self.state.u),
+                    vx: at(DOF_X, &self.state.ud),
+                    vy: at(DOF_Y, &self.state.ud),
+                }
+            })
+            .collect();
         Ok(Outputs {
             time: t,
             speed,
             spin_angle: self.state.spin_angle,
             bearings,
             probes,
+            ports,
             friction_torque,
         })
     }

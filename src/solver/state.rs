@@ -34,6 +34,12 @@ pub struct SimState {
     pub unbalance_rate: Vec<f64>,
     /// Angular position of each unbalance plane at spin angle 0 (rad).
     pub unbalance_phase: Vec<f64>,
+    /// Each load input (static force components, harmonic force amplitudes,
+    /// port forces; N) at `speed_time`, in the order of
+    /// [`RotorModel::load_inputs`](crate::model::RotorModel::load_inputs).
+    pub loads: Vec<f64>,
+    /// Rate of change of each load input (N/s).
+    pub load_rates: Vec<f64>,
     /// Step size the factorization in hand was made for (s); 0 for none.
     pub factor_step: f64,
     /// Spin speed the factorization in hand was made at (rad/s).
@@ -53,7 +59,7 @@ impl SimState {
             ("factor_step", self.factor_step),
             ("factor_speed", self.factor_speed),
         ];
-        let vectors: [(&str, &[f64]); 9] = [
+        let vectors: [(&str, &[f64]); 11] = [
             ("u", &self.u),
             ("ud", &self.ud),
             ("udd", &self.udd),
@@ -63,6 +69,8 @@ impl SimState {
             ("unbalance", &self.unbalance),
             ("unbalance_rate", &self.unbalance_rate),
             ("unbalance_phase", &self.unbalance_phase),
+            ("loads", &self.loads),
+            ("load_rates", &self.load_rates),
         ];
         let bad = scalars
             .iter()

@@ -70,7 +70,9 @@ pub fn equilibrium(
             "start equilibrium does not belong to this rotor (sizes differ)".into(),
         ));
     }
-    let (displacement, tilts) = settle(rotor, &mut sites, speed, options, 0.0, u0, p0)?;
+    let loads: Vec<f64> = rotor.model.load_inputs().iter().map(|l| l.start).collect();
+    let f_ext = static_load(rotor, options, &loads);
+    let (displacement, tilts) = settle(rotor, &mut sites, speed, options, 0.0, (u0, p0), &f_ext)?;
     let bearings = sites
         .list
         .into_iter()
@@ -142,6 +144,18 @@ impl StaticWork {
 /// so a converged equilibrium does not depend on `k_r`.
 const JOURNAL_REST: f64 = 1e-9;
 
+/// The static load: gravity (when `options.gravity`) and the static and port
+/// forces of the load inputs `loads`.
+pub(super) fn static_load(rotor: &Rotor, options: &SolverOptions, loads: &[f64]) -> Vec<f64> {
+    let mut f = if options.gravity {
+        rotor.gravity_load.clone()
+    } else {
+        vec![0.0; rotor.dof_count()]
+    };
+    rotor.add_static_loads(loads, &mut f);
+    f
+}
+
 /// The journal regularization `k_r` of the static Jacobian ([`JOURNAL_REST`]).
 fn journal_rest(rotor: &Rotor) -> f64 {
     JOURNAL_REST
@@ -165,23 +179,18 @@ pub(super) fn settle(
     speed: f64,
     options: &SolverOptions,
     time: f64,
-    u0: Vec<f64>,
-    p0: Option<Vec<f64>>,
+    (u0, p0): (Vec<f64>, Option<Vec<f64>>),
+    f_ext: &[f64],
 ) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
-    let f_ext = if options.gravity {
-        rotor.gravity_load.clone()
-    } else {
-        vec![0.0; rotor.dof_count()]
-    };
     // The resting start costs a banded factorization: build it only when used.
     let outcome = match (speed == 0.0)
-        .then(|| resting_start(rotor, sites, &f_ext))
+        .then(|| resting_start(rotor, sites, f_ext))
         .flatten()
     {
-        Some(u) => newton_static(rotor, sites, speed, options, time, u, None),
-        None => match newton_static(rotor, sites, speed, options, time, u0, p0) {
-            Err(e) => match resting_start(rotor, sites, &f_ext) {
-                Some(u) => newton_static(rotor, sites, speed, options, time, u, None),
+        Some(u) => newton_static(rotor, sites, speed, options, time, (u, None), f_ext),
+        None => match newton_static(rotor, sites, speed, options, time, (u0, p0), f_ext) {
+            Err(e) => match resting_start(rotor, sites, f_ext) {
+                Some(u) => newton_static(rotor, sites, speed, options, time, (u, None), f_ext),
                 None => Err(e),
             },
             outcome => outcome,
@@ -241,18 +250,14 @@ fn newton_static(
     speed: f64,
     options: &SolverOptions,
     time: f64,
-    u0: Vec<f64>,
-    p0: Option<Vec<f64>>,
+    (u0, p0): (Vec<f64>, Option<Vec<f64>>),
+    f_ext: &[f64],
 ) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
     let n = rotor.dof_count();
     let tol = options.tolerance;
     let k_rest = journal_rest(rotor);
     let mut work = StaticWork {
-        f_ext: if options.gravity {
-            rotor.gravity_load.clone()
-        } else {
-            vec![0.0; n]
-        },
+        f_ext: f_ext.to_vec(),
         r: vec![0.0; n],
         rp: vec![0.0; sites.n_internal],
         ku: vec![0.0; n],

@@ -212,6 +212,8 @@ impl Instance {
         state.unbalance.clone_from(&old.unbalance);
         state.unbalance_rate.clone_from(&old.unbalance_rate);
         state.unbalance_phase.clone_from(&old.unbalance_phase);
+        state.loads.clone_from(&old.loads);
+        state.load_rates.clone_from(&old.load_rates);
         sim.set_state(state)?;
         let model = model_viscosity(&self.model);
         for (k, (&mu, &given)) in self.viscosity.iter().zip(&model).enumerate() {

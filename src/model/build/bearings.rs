@@ -3,13 +3,11 @@
 
 use crate::bearing::contact::ContactLaw;
 use crate::bearing::tilting_pad::Pad;
-use crate::bearing::{
-    BearingKind, PlainBearing, RubElement, SealElement, TableBearing, TiltingPadBearing,
-};
+use crate::bearing::{BearingKind, PlainBearing, TableBearing, TiltingPadBearing};
 
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
-use crate::model::file::{BearingEntry, RubEntry, SealEntry};
+use crate::model::file::{BearingEntry, MagneticPullEntry, RubEntry, SealEntry};
 use crate::model::{ModelError, Pedestal, PlacedBearing, PlacedElement, TableFile};
 
 use super::pedestals::lookup;
@@ -26,7 +24,12 @@ use super::tables::{TableInput, coefficient_table};
 pub(super) fn bearings(
     ctx: &Ctx,
     root: &FieldPath,
-    (entries, rubs, seals): (Vec<BearingEntry>, Vec<RubEntry>, Vec<SealEntry>),
+    (entries, rubs, seals, pulls): (
+        Vec<BearingEntry>,
+        Vec<RubEntry>,
+        Vec<SealEntry>,
+        Vec<MagneticPullEntry>,
+    ),
     node_z: &[f64],
     elements: &[PlacedElement],
     pedestals: &[Pedestal],
@@ -275,112 +278,20 @@ pub(super) fn bearings(
             pedestal,
         });
     }
-    for (i, r) in rubs.into_iter().enumerate() {
-        let p = root.key("rubs").index(i);
-        let node = ctx.location(&p, r.node, r.z, node_z)?;
-        let gap = ctx.positive(p.key("gap"), r.gap)?;
-        let radius = ctx.positive(
-            p.key("radius"),
-            r.radius.unwrap_or(shaft_radius_at(elements, node)),
-        )?;
-        let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
-        let law = contact_law(
-            ctx,
-            &p,
-            default,
-            [
-                r.contact_stiffness,
-                r.contact_damping,
-                r.friction_coefficient,
-            ],
-        )?
-        .unwrap_or(default);
-        let pedestal = match &r.pedestal {
-            None => None,
-            Some(on) => Some(lookup(ctx, &p.key("pedestal"), pedestals, on)?),
-        };
-        bearings.push(PlacedBearing {
-            name: names.claim(ctx, &p, default_name(r.name, "rub", i), "rub")?,
-            node,
-            kind: BearingKind::Rub(RubElement { contact: law }),
-            pedestal,
-        });
-    }
-
-    for (i, e) in seals.into_iter().enumerate() {
-        let p = root.key("seals").index(i);
-        let node = ctx.location(&p, e.node, e.z, node_z)?;
-        let input = TableInput {
-            speeds_rpm: &e.speeds_rpm,
-            columns: [
-                &e.kxx, &e.kxy, &e.kyx, &e.kyy, &e.cxx, &e.cxy, &e.cyx, &e.cyy,
-            ],
-            table: &e.table,
-            mass: [e.mxx, e.mxy, e.myx, e.myy],
-        };
-        let read = coefficient_table(ctx, &p, &input)?;
-        files.extend(read.file);
-        let contact = match e.clearance {
-            None => {
-                for (key, given) in [
-                    ("radius", e.radius.is_some()),
-                    ("contact_stiffness", e.contact_stiffness.is_some()),
-                    ("contact_damping", e.contact_damping.is_some()),
-                    ("friction_coefficient", e.friction_coefficient.is_some()),
-                ] {
-                    if given {
-                        return Err(ctx.err(
-                            p.key(key),
-                            "(given)",
-                            "a contact parameter needs the seal's clearance (the radial gap at which it touches)",
-                        ));
-                    }
-                }
-                None
-            }
-            Some(gap) => {
-                let gap = ctx.positive(p.key("clearance"), gap)?;
-                let radius = ctx.positive(
-                    p.key("radius"),
-                    e.radius.unwrap_or(shaft_radius_at(elements, node)),
-                )?;
-                let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
-                Some(
-                    contact_law(
-                        ctx,
-                        &p,
-                        default,
-                        [
-                            e.contact_stiffness,
-                            e.contact_damping,
-                            e.friction_coefficient,
-                        ],
-                    )?
-                    .unwrap_or(default),
-                )
-            }
-        };
-        let pedestal = match &e.pedestal {
-            None => None,
-            Some(on) => Some(lookup(ctx, &p.key("pedestal"), pedestals, on)?),
-        };
-        bearings.push(PlacedBearing {
-            name: names.claim(ctx, &p, default_name(e.name, "seal", i), "seal")?,
-            node,
-            kind: BearingKind::Seal(SealElement {
-                table: read.table,
-                added_mass: read.added_mass,
-                contact,
-            }),
-            pedestal,
-        });
-    }
-
+    bearings.extend(super::stators::stators(
+        ctx,
+        root,
+        (rubs, seals, pulls),
+        node_z,
+        elements,
+        pedestals,
+        (&mut names, &mut files),
+    )?);
     Ok((bearings, files))
 }
 
 /// The shaft's outer radius at `node`: the larger of its elements'.
-fn shaft_radius_at(elements: &[PlacedElement], node: usize) -> f64 {
+pub(super) fn shaft_radius_at(elements: &[PlacedElement], node: usize) -> f64 {
     elements
         .iter()
         .filter(|e| e.node == node || e.node + 1 == node)
@@ -389,13 +300,13 @@ fn shaft_radius_at(elements: &[PlacedElement], node: usize) -> f64 {
 }
 
 /// Axial width (m) of a rub's contact for its default steel stiffness.
-const RUB_WIDTH: f64 = 0.01;
+pub(super) const RUB_WIDTH: f64 = 0.01;
 
 /// The contact law of a fluid-film bearing: `default` (the steel law of its
 /// geometry) with the model file's `contact_stiffness` (N/m, > 0),
 /// `contact_damping` (N·s/m, ≥ 0) and `friction_coefficient` (≥ 0) where given;
 /// `None` when none is given.
-fn contact_law(
+pub(super) fn contact_law(
     ctx: &Ctx,
     p: &FieldPath,
     default: ContactLaw,

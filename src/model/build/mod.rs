@@ -10,6 +10,7 @@ mod materials;
 mod pedestals;
 mod point_masses;
 mod shaft;
+mod stators;
 mod supports;
 mod tables;
 
@@ -31,7 +32,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     let (bearings, table_files) = bearings::bearings(
         ctx,
         &root,
-        (raw.bearings, raw.rubs, raw.seals),
+        (raw.bearings, raw.rubs, raw.seals, raw.magnetic_pull),
         &node_z,
         &shaft.elements,
         &pedestals,
@@ -39,6 +40,8 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     pedestals::check_carried(ctx, &root, &pedestals, &bearings)?;
     let unbalances = loads::unbalances(ctx, &root, raw.unbalance, &node_z)?;
     let probes = loads::probes(ctx, &root, raw.probes, &node_z)?;
+    let forces = loads::forces(ctx, &root, raw.forces, &node_z)?;
+    let ports = loads::ports(ctx, &root, raw.ports, &node_z)?;
     let supports = supports::supports(ctx, &root, raw.supports, &node_z)?;
     let gravity = loads::gravity(ctx, &root, raw.gravity)?;
     // Nominal speed: rpm → rad/s.
@@ -90,6 +93,8 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         table_files,
         unbalances,
         probes,
+        forces,
+        ports,
         supports,
         pedestals,
         gravity,
