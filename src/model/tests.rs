@@ -752,3 +752,99 @@ fn reduction_section_sets_the_mode_count() {
     let e = err_of("\n[reduction]\nnodes = 4\n");
     assert!(e.contains("nodes"), "{e}");
 }
+
+/// `[[magnetic_pull]]`, `[[forces]]` and `[[ports]]`: every bad entry names
+/// the file, line, field and value.
+#[test]
+fn pull_force_and_port_errors_name_file_line_and_field() {
+    let cases: Vec<(&str, &str, &str)> = vec![
+        (
+            "\n[[magnetic_pull]]\nnode = 4\ngap = -0.01\nstiffness = 1e8\n",
+            "gap = -0.01",
+            "magnetic_pull[0].gap = -0.01: must be a finite number greater than zero",
+        ),
+        (
+            "\n[[magnetic_pull]]\nnode = 4\ngap = 0.01\n",
+            "gap = 0.01",
+            "magnetic_pull[0] = stiffness / rotor_radius, core_length, flux_density: give either stiffness",
+        ),
+        (
+            "\n[[magnetic_pull]]\nnode = 4\ngap = 0.01\nstiffness = 1e8\nrotor_radius = 1.0\n",
+            "gap = 0.01",
+            "give either stiffness, or all of rotor_radius",
+        ),
+        (
+            "\n[[magnetic_pull]]\nnode = 4\ngap = 0.01\nstiffness = nan\n",
+            "stiffness = nan",
+            "magnetic_pull[0].stiffness = NaN: must be a finite number greater than zero",
+        ),
+        (
+            "\n[[magnetic_pull]]\nnode = 4\ngap = 0.01\nstiffness = 1e8\nexcitation = 3.0\n",
+            "excitation = 3.0",
+            "magnetic_pull[0].excitation = 3: must lie in [0, 2]",
+        ),
+        (
+            "\n[[magnetic_pull]]\nnode = 9\ngap = 0.01\nstiffness = 1e8\n",
+            "node = 9",
+            "magnetic_pull[0].node = 9: must be a node number from 1 to 7",
+        ),
+        (
+            "\n[[forces]]\nnode = 4\n",
+            "node = 4",
+            "forces[0] = (no force): give fx and/or fy",
+        ),
+        (
+            "\n[[forces]]\nnode = 4\nfx = 1.0\nmagnitude = 2.0\n",
+            "magnitude = 2.0",
+            "forces[0].magnitude = (given): a force is static (fx, fy) or harmonic",
+        ),
+        (
+            "\n[[forces]]\nnode = 4\nmagnitude = 2.0\n",
+            "magnitude = 2.0",
+            "forces[0] = ratio / frequency_hz: a harmonic force needs either ratio",
+        ),
+        (
+            "\n[[forces]]\nnode = 4\nmagnitude = 2.0\nratio = 0.3\ndirection = \"sideways\"\n",
+            "direction = \"sideways\"",
+            "forces[0].direction = \"sideways\": must be \"forward\", \"backward\" or \"fixed\"",
+        ),
+        (
+            "\n[[forces]]\nnode = 4\nmagnitude = -2.0\nratio = 0.3\n",
+            "magnitude = -2.0",
+            "forces[0].magnitude = -2: must be a finite number not less than zero",
+        ),
+        (
+            "\n[[forces]]\nnode = 4\nfy = inf\n",
+            "fy = inf",
+            "forces[0].fy = inf: must be a finite number",
+        ),
+        (
+            "\n[[forces]]\nnode = 4\nmagnitude = 2.0\nratio = 0.3\nangle_deg = 30.0\n",
+            "angle_deg = 30.0",
+            "forces[0].angle_deg = 30: only a fixed-direction force",
+        ),
+        (
+            "\n[[ports]]\nname = \"amb\"\nnode = 0\n",
+            "node = 0",
+            "ports[0].node = 0: must be a node number from 1 to 7",
+        ),
+        (
+            "\n[[ports]]\nname = \"amb\"\nnode = 2\n[[ports]]\nname = \"amb\"\nnode = 3\n",
+            "name = \"amb\"",
+            "ports[1].name = amb: duplicate port name",
+        ),
+    ];
+    for (extra, needle, want) in cases {
+        let e = err_of(extra);
+        assert!(e.contains(want), "{extra}\ngave: {e}\nwant: {want}");
+        let nth = usize::from(want.contains("duplicate"));
+        let line = line_in(extra, needle, nth);
+        // Errors of a whole entry name the entry's line instead.
+        if !e.contains("[0] = ") {
+            assert!(
+                e.starts_with(&format!("m.toml:{line}: ")),
+                "{e} (line {line})"
+            );
+        }
+    }
+}

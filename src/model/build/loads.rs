@@ -121,7 +121,7 @@ pub(super) fn forces(
                 ),
                 _ => {
                     return Err(ctx.err(
-                        p.key("ratio"),
+                        p.clone(),
                         "ratio / frequency_hz",
                         "a harmonic force needs either ratio (to the running speed) or frequency_hz",
                     ));
