@@ -3,6 +3,8 @@
 use std::path::PathBuf;
 use std::process::{Command, Stdio};
 
+use rotor_bearing::model::RotorModel;
+
 fn rotor() -> Command {
     Command::new(env!("CARGO_BIN_EXE_rotor"))
 }
@@ -110,16 +112,17 @@ fn static_and_info_run_on_every_shipped_model() {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models");
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
+        // Fluid-film bearings need speed to carry load: the model's nominal
+        // speed, else 3000 rpm.
+        let nominal =
+            RotorModel::from_file(&path).unwrap().nominal_speed * 30.0 / std::f64::consts::PI;
+        let rpm = if nominal > 0.0 { nominal } else { 3000.0 }.to_string();
+        let speed = ["--rpm", rpm.as_str()];
         for cmd in ["info", "static", "modes"] {
-            // Fluid-film bearings need speed to carry load.
             let out = rotor()
                 .arg(cmd)
                 .arg(&path)
-                .args(if cmd == "info" {
-                    &[][..]
-                } else {
-                    &["--rpm", "3000"][..]
-                })
+                .args(if cmd == "info" { &[][..] } else { &speed[..] })
                 .output()
                 .unwrap();
             let stderr = String::from_utf8_lossy(&out.stderr);

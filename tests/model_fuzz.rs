@@ -25,8 +25,6 @@ const POSITIVE: &[&str] = &[
     "shear_modulus",
     "density",
     "mass",
-    "polar_inertia",
-    "diametral_inertia",
     "width",
     "radius",
     "clearance",
@@ -35,6 +33,9 @@ const POSITIVE: &[&str] = &[
     "elements",
     "pads",
 ];
+
+/// Keys whose value must not be negative (zero disk inertias make a point mass).
+const NON_NEGATIVE: &[&str] = &["polar_inertia", "diametral_inertia"];
 
 /// Replacement values: nonsense, edge cases and wrong types.
 const VALUES: &[&str] = &[
@@ -89,6 +90,9 @@ impl Mutation {
                     Some(x) if !x.is_finite() => Some(format!("{key} = {value} is not finite")),
                     Some(x) if x <= 0.0 && POSITIVE.contains(&key.as_str()) => {
                         Some(format!("{key} = {value} must be positive"))
+                    }
+                    Some(x) if x < 0.0 && NON_NEGATIVE.contains(&key.as_str()) => {
+                        Some(format!("{key} = {value} must not be negative"))
                     }
                     _ => None,
                 }

@@ -35,6 +35,16 @@ use crate::linalg::pchip::{Pchip, PchipError};
 /// Names of the eight coefficient columns, in table order.
 pub const COLUMNS: [&str; 8] = ["kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy"];
 
+/// Why a coefficient table cannot be interpolated: the column and the reason.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("column {column}: {source}")]
+pub struct TableError {
+    /// Name of the column (one of [`COLUMNS`]).
+    pub column: &'static str,
+    /// What is wrong with it.
+    pub source: PchipError,
+}
+
 /// Stiffness (N/m) and damping (N·s/m) over speed (rad/s).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CoefficientTable {
@@ -48,11 +58,16 @@ pub struct CoefficientTable {
 impl CoefficientTable {
     /// A table of `columns` (in the order of [`COLUMNS`]) at `speeds`; the
     /// error names the column.
-    pub fn new(speeds: Vec<f64>, columns: [Vec<f64>; 8]) -> Result<Self, (String, PchipError)> {
+    pub fn new(speeds: Vec<f64>, columns: [Vec<f64>; 8]) -> Result<Self, TableError> {
         let interpolants = columns
             .iter()
             .zip(COLUMNS)
-            .map(|(c, name)| Pchip::new(&speeds, c).map_err(|e| (name.to_string(), e)))
+            .map(|(c, name)| {
+                Pchip::new(&speeds, c).map_err(|source| TableError {
+                    column: name,
+                    source,
+                })
+            })
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Self {
             speeds,

@@ -449,3 +449,5 @@ impl RotorModel {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_machine;

@@ -9,7 +9,6 @@
 use std::path::{Path, PathBuf};
 
 use crate::bearing::table::{COLUMNS, CoefficientTable};
-use crate::linalg::pchip::PchipError;
 use crate::model::context::Ctx;
 use crate::model::error::FieldPath;
 use crate::model::file::Coefficient;
@@ -137,7 +136,7 @@ fn inline(ctx: &Ctx, p: &FieldPath, input: &TableInput) -> Result<CoefficientTab
         .map(|&s| s * std::f64::consts::PI / 30.0)
         .collect();
     CoefficientTable::new(speeds, columns)
-        .map_err(|(column, e)| ctx.err(p.key(&column), "(table)", &e.to_string()))
+        .map_err(|e| ctx.err(p.key(e.column), "(table)", &e.source.to_string()))
 }
 
 /// A CSV table: a header naming `speed_rpm` and any of the coefficient
@@ -254,7 +253,6 @@ fn from_csv(path: &Path) -> Result<CoefficientTable, ModelError> {
         .iter()
         .map(|&s| s * std::f64::consts::PI / 30.0)
         .collect();
-    CoefficientTable::new(speeds, columns).map_err(|(column, e): (String, PchipError)| {
-        invalid(header_line, &column, "(table)", e.to_string())
-    })
+    CoefficientTable::new(speeds, columns)
+        .map_err(|e| invalid(header_line, e.column, "(table)", e.source.to_string()))
 }
