@@ -107,6 +107,7 @@ fn jeffcott_run_up_past_twice_critical_locks_to_natural_frequency() {
         pinned.supports.push(rotor_bearing::model::Support {
             node,
             fixed: [true, true, false, false],
+            twist: false,
         });
     }
     let speed = 15_000.0 * RPM;

@@ -12,5 +12,6 @@ pub mod operating_point;
 pub mod shapes;
 pub mod spectrum;
 pub mod stability;
+pub mod torsion;
 pub mod ucs;
 pub mod unbalance;

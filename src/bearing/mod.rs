@@ -45,6 +45,7 @@ pub mod magnetic_pull;
 pub mod plain;
 pub mod rub;
 pub mod table;
+pub mod thrust;
 pub mod tilting_pad;
 
 use nalgebra::{Matrix2, Vector2};

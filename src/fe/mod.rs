@@ -33,6 +33,7 @@
 pub mod disk;
 pub mod section;
 pub mod shaft;
+pub mod torsion;
 
 /// Degrees of freedom per node.
 pub const DOF_PER_NODE: usize = 4;

@@ -69,6 +69,18 @@ pub struct ModelFile {
     /// `[[ports]]`.
     #[serde(default)]
     pub ports: Vec<PortEntry>,
+    /// `[[couplings]]`: flexible couplings in the torsional chain.
+    #[serde(default)]
+    pub couplings: Vec<CouplingEntry>,
+    /// `[[torques]]`: nodes where the plant applies torque (torque-driven FMU).
+    #[serde(default)]
+    pub torques: Vec<TorqueEntry>,
+    /// `[[thrust_bearings]]`.
+    #[serde(default)]
+    pub thrust_bearings: Vec<ThrustBearingEntry>,
+    /// `[torsion]`: how the shaft is driven.
+    #[serde(default)]
+    pub torsion: Option<TorsionEntry>,
     #[serde(default)]
     pub unbalance: Vec<UnbalanceEntry>,
     #[serde(default)]
@@ -437,6 +449,68 @@ pub struct PortEntry {
     pub name: String,
     pub node: Option<i64>,
     pub z: Option<f64>,
+}
+
+/// `[[couplings]]`: a flexible coupling: the shaft element from `node` to the
+/// next node takes its torsional stiffness and damping instead of its own.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CouplingEntry {
+    pub name: Option<String>,
+    /// The element's left node (numbered from 1); the coupling joins it to the next.
+    pub node: Option<i64>,
+    pub z: Option<f64>,
+    /// Torsional stiffness (N·m/rad).
+    pub torsional_stiffness: f64,
+    /// Torsional damping (N·m·s/rad), default 0.
+    pub torsional_damping: Option<f64>,
+}
+
+/// `[[torques]]`: a node where a drive or load torque acts (the FMU's torque
+/// inputs in torque mode).
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TorqueEntry {
+    pub name: String,
+    pub node: Option<i64>,
+    pub z: Option<f64>,
+}
+
+/// `[[thrust_bearings]]`: the axial bearing carrying the rotor's weight or
+/// thrust: its friction torque.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ThrustBearingEntry {
+    pub name: Option<String>,
+    pub node: Option<i64>,
+    pub z: Option<f64>,
+    /// Axial load (N); default the rotor's weight along the shaft axis.
+    pub load: Option<f64>,
+    /// Inner and outer radius of the pad ring (m).
+    pub inner_radius: f64,
+    pub outer_radius: f64,
+    /// Fraction of the ring the pads cover (–), default 0.8.
+    pub pad_coverage: Option<f64>,
+    /// Oil film thickness at running speed (m).
+    pub film_thickness: f64,
+    /// Oil dynamic viscosity (Pa·s).
+    pub viscosity: f64,
+    /// Boundary friction coefficient at standstill (–), default 0.15.
+    pub friction_coefficient: Option<f64>,
+    /// Speed (rpm) by which the film has lifted the pads (boundary friction
+    /// fades as exp(−n / lift_off_rpm)); default 5 rpm.
+    pub lift_off_rpm: Option<f64>,
+    /// A high-pressure oil lift: no boundary friction at standstill.
+    pub oil_lift: Option<bool>,
+}
+
+/// `[torsion]`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TorsionEntry {
+    /// `"speed"` (the shaft follows a prescribed speed, default) or
+    /// `"torque"` (torques at the `[[torques]]` nodes drive it).
+    pub drive: Option<String>,
 }
 
 /// `[[probes]]`: a named node whose displacements are reported.

@@ -197,14 +197,58 @@ pub struct Port {
 }
 
 /// One input channel of the loads: a component of a static force, a
-/// harmonic force's amplitude or a port force component (N), in the order
-/// of [`RotorModel::load_inputs`].
+/// harmonic force's amplitude or a port force component (N), or a torque
+/// (N·m, torque mode), in the order of [`RotorModel::load_inputs`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct LoadInput {
     /// Its name in the FMU: `forces.<f>.fx`, `forces.<f>.magnitude`, `ports.<p>.fy`.
     pub name: String,
     /// Value at the start (the model file's; 0 for ports).
     pub start: f64,
+}
+
+/// How the shaft is driven (`[torsion] drive`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Drive {
+    /// The shaft follows a prescribed speed (the `shaft.speed` input).
+    #[default]
+    Speed,
+    /// Torques at the `[[torques]]` nodes drive the shaft's twist.
+    Torque,
+}
+
+/// A flexible coupling: shaft element `element` (index into
+/// [`RotorModel::elements`]) takes its torsional stiffness and damping.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Coupling {
+    /// Name (default `coupling<k>`).
+    pub name: String,
+    /// The element it replaces in the torsional chain.
+    pub element: usize,
+    /// Torsional stiffness (N·m/rad).
+    pub stiffness: f64,
+    /// Torsional damping (N·m·s/rad).
+    pub damping: f64,
+}
+
+/// A node where a drive or load torque acts (`[[torques]]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TorqueNode {
+    /// Name, unique among the torques.
+    pub name: String,
+    /// Node index (0-based).
+    pub node: usize,
+}
+
+/// A thrust bearing at a node (`[[thrust_bearings]]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlacedThrustBearing {
+    /// Name (default `thrust<k>`).
+    pub name: String,
+    /// Node index (0-based).
+    pub node: usize,
+    /// Its friction model.
+    pub bearing: crate::bearing::thrust::ThrustBearing,
 }
 
 /// A named node whose displacements are reported.
@@ -223,6 +267,8 @@ pub struct Support {
     pub node: usize,
     /// Which of `(x, y, θx, θy)` are fixed.
     pub fixed: [bool; 4],
+    /// Whether the twist about `z` is fixed (`"rz"`: torsional analyses only).
+    pub twist: bool,
 }
 
 /// A validated rotor model, SI units.
@@ -253,6 +299,14 @@ pub struct RotorModel {
     pub forces: Vec<ExternalForce>,
     /// Force ports.
     pub ports: Vec<Port>,
+    /// Flexible couplings of the torsional chain.
+    pub couplings: Vec<Coupling>,
+    /// Torque nodes.
+    pub torques: Vec<TorqueNode>,
+    /// Thrust bearings.
+    pub thrust_bearings: Vec<PlacedThrustBearing>,
+    /// How the shaft is driven.
+    pub drive: Drive,
     /// Ideal supports.
     pub supports: Vec<Support>,
     /// Bearing supports (pedestals, brackets, foundations) in series with bearings.
@@ -409,8 +463,9 @@ impl RotorModel {
         &self.table_files
     }
 
-    /// The load input channels, forces then ports: two per static force
-    /// (`fx`, `fy`), one per harmonic force (`magnitude`), two per port.
+    /// The load input channels, forces, ports then torques: two per static
+    /// force (`fx`, `fy`), one per harmonic force (`magnitude`), two per
+    /// port, one per torque node (`torques.<t>`, N·m).
     pub fn load_inputs(&self) -> Vec<LoadInput> {
         let mut out = Vec::new();
         for f in &self.forces {
@@ -437,7 +492,18 @@ impl RotorModel {
                 });
             }
         }
+        for t in &self.torques {
+            out.push(LoadInput {
+                name: format!("torques.{}", t.name),
+                start: 0.0,
+            });
+        }
         out
+    }
+
+    /// Index of the first torque channel in [`Self::load_inputs`].
+    pub fn first_torque_input(&self) -> usize {
+        self.load_inputs().len() - self.torques.len()
     }
 
     /// Total rotating mass: shaft plus disks (kg).

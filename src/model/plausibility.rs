@@ -142,6 +142,16 @@ impl RotorModel {
                 );
             }
         }
+        for (i, t) in self.thrust_bearings.iter().enumerate() {
+            if t.bearing.load == 0.0 {
+                warnings.push(ModelWarning {
+                    file: self.source.clone(),
+                    field: format!("thrust_bearings[{i}].load"),
+                    value: 0.0,
+                    problem: "the thrust bearing carries no axial load (the rotor's weight has no axial part: gravity is not along z): give the load it carries".into(),
+                });
+            }
+        }
         let rotor_mass = self.total_mass();
         for (i, p) in self.pedestals.iter().enumerate() {
             let mut warn = |key: &str, value: f64, problem: String| {

@@ -17,6 +17,7 @@ mod dofs;
 pub mod elements;
 mod loads;
 mod reduction;
+pub mod torsion;
 
 pub use crate::model::DEFAULT_REDUCED_MODES;
 pub use dofs::{DOF_PER_PEDESTAL, Dof, DofMap};

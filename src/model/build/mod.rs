@@ -13,6 +13,7 @@ mod shaft;
 mod stators;
 mod supports;
 mod tables;
+mod torsion;
 
 use super::context::Ctx;
 use super::error::FieldPath;
@@ -42,8 +43,18 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     let probes = loads::probes(ctx, &root, raw.probes, &node_z)?;
     let forces = loads::forces(ctx, &root, raw.forces, &node_z)?;
     let ports = loads::ports(ctx, &root, raw.ports, &node_z)?;
+    let couplings = torsion::couplings(ctx, &root, raw.couplings, &node_z, &shaft.elements)?;
+    let torques = torsion::torques(ctx, &root, raw.torques, &node_z)?;
+    let drive = torsion::drive(ctx, &root, raw.torsion, &torques)?;
     let supports = supports::supports(ctx, &root, raw.supports, &node_z)?;
     let gravity = loads::gravity(ctx, &root, raw.gravity)?;
+    let weight = {
+        let mass: f64 = shaft.elements.iter().map(|e| e.element.mass()).sum::<f64>()
+            + disks.iter().map(|d| d.disk.mass).sum::<f64>();
+        mass * gravity[2].abs()
+    };
+    let thrust_bearings =
+        torsion::thrust_bearings(ctx, &root, raw.thrust_bearings, &node_z, weight)?;
     // Nominal speed: rpm → rad/s.
     let nominal_speed = ctx.finite(root.key("speed_rpm"), raw.speed_rpm.unwrap_or(0.0))?
         * std::f64::consts::PI
@@ -95,6 +106,10 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         probes,
         forces,
         ports,
+        couplings,
+        torques,
+        thrust_bearings,
+        drive,
         supports,
         pedestals,
         gravity,

@@ -6,7 +6,8 @@ use crate::model::file::SupportEntry;
 use crate::model::{ModelError, Support};
 
 /// Check each support: node and the DOF names in `fix` (`x`, `y`, `rx`, `ry`,
-/// `pinned` = x, y; `clamped` = all four).
+/// `pinned` = x, y; `clamped` = all four; `rz`, the twist, for the torsional
+/// analyses).
 pub(super) fn supports(
     ctx: &Ctx,
     root: &FieldPath,
@@ -18,8 +19,13 @@ pub(super) fn supports(
         let p = root.key("supports").index(i);
         let node = ctx.location(&p, s.node, s.z, node_z)?;
         let mut fixed = [false; 4];
+        let mut twist = false;
         for (j, dof) in s.fix.iter().enumerate() {
             let set: &[usize] = match dof.as_str() {
+                "rz" => {
+                    twist = true;
+                    &[]
+                }
                 "x" => &[0],
                 "y" => &[1],
                 "rx" => &[2],
@@ -30,7 +36,7 @@ pub(super) fn supports(
                     return Err(ctx.err(
                         p.key("fix").index(j),
                         format!("{dof:?}"),
-                        "must be one of \"x\", \"y\", \"rx\", \"ry\", \"pinned\", \"clamped\"",
+                        "must be one of \"x\", \"y\", \"rx\", \"ry\", \"rz\", \"pinned\", \"clamped\"",
                     ));
                 }
             };
@@ -38,7 +44,7 @@ pub(super) fn supports(
                 fixed[k] = true;
             }
         }
-        supports.push(Support { node, fixed });
+        supports.push(Support { node, fixed, twist });
     }
 
     Ok(supports)

@@ -1,0 +1,151 @@
+//! The torsional chain's parts: `[[couplings]]` (flexible couplings),
+//! `[[torques]]` (where the plant applies torque), `[[thrust_bearings]]`
+//! (their friction torque) and `[torsion] drive`.
+
+use crate::bearing::thrust::ThrustBearing;
+use crate::model::context::{Ctx, Names, default_name};
+use crate::model::error::FieldPath;
+use crate::model::file::{CouplingEntry, ThrustBearingEntry, TorqueEntry, TorsionEntry};
+use crate::model::{Coupling, Drive, ModelError, PlacedElement, PlacedThrustBearing, TorqueNode};
+
+/// Check each coupling: its node starts a shaft element (one coupling per
+/// element), stiffness > 0, damping ≥ 0.
+pub(super) fn couplings(
+    ctx: &Ctx,
+    root: &FieldPath,
+    entries: Vec<CouplingEntry>,
+    node_z: &[f64],
+    elements: &[PlacedElement],
+) -> Result<Vec<Coupling>, ModelError> {
+    let mut out: Vec<Coupling> = Vec::new();
+    let mut names = Names::default();
+    for (i, e) in entries.into_iter().enumerate() {
+        let p = root.key("couplings").index(i);
+        let node = ctx.location(&p, e.node, e.z, node_z)?;
+        let Some(element) = elements.iter().position(|el| el.node == node) else {
+            return Err(ctx.err(
+                p.key("node"),
+                node + 1,
+                "no shaft element starts at this node (a coupling joins a node to the next)",
+            ));
+        };
+        if out.iter().any(|c| c.element == element) {
+            return Err(ctx.err(
+                p.key("node"),
+                node + 1,
+                "a coupling is already at this element",
+            ));
+        }
+        out.push(Coupling {
+            name: names.claim(ctx, &p, default_name(e.name, "coupling", i), "coupling")?,
+            element,
+            stiffness: ctx.positive(p.key("torsional_stiffness"), e.torsional_stiffness)?,
+            damping: ctx.non_negative(
+                p.key("torsional_damping"),
+                e.torsional_damping.unwrap_or(0.0),
+            )?,
+        });
+    }
+    Ok(out)
+}
+
+/// Check each torque node: unique name and node.
+pub(super) fn torques(
+    ctx: &Ctx,
+    root: &FieldPath,
+    entries: Vec<TorqueEntry>,
+    node_z: &[f64],
+) -> Result<Vec<TorqueNode>, ModelError> {
+    let mut out = Vec::new();
+    let mut names = Names::default();
+    for (i, e) in entries.into_iter().enumerate() {
+        let p = root.key("torques").index(i);
+        let name = names.claim(ctx, &p, e.name, "torque")?;
+        out.push(TorqueNode {
+            name,
+            node: ctx.location(&p, e.node, e.z, node_z)?,
+        });
+    }
+    Ok(out)
+}
+
+/// Check each thrust bearing; the load defaults to the weight along the
+/// shaft axis, `weight` (N; 0 on a horizontal rotor, which the plausibility
+/// warnings point out).
+pub(super) fn thrust_bearings(
+    ctx: &Ctx,
+    root: &FieldPath,
+    entries: Vec<ThrustBearingEntry>,
+    node_z: &[f64],
+    weight: f64,
+) -> Result<Vec<PlacedThrustBearing>, ModelError> {
+    let mut out = Vec::new();
+    let mut names = Names::default();
+    for (i, e) in entries.into_iter().enumerate() {
+        let p = root.key("thrust_bearings").index(i);
+        let node = ctx.location(&p, e.node, e.z, node_z)?;
+        // Without a load the bearing carries the weight along the axis (none
+        // on a horizontal rotor: a plausibility warning says so).
+        let load = match e.load {
+            Some(w) => ctx.non_negative(p.key("load"), w)?,
+            None => weight,
+        };
+        let inner = ctx.non_negative(p.key("inner_radius"), e.inner_radius)?;
+        let outer = ctx.positive(p.key("outer_radius"), e.outer_radius)?;
+        if outer <= inner {
+            return Err(ctx.err(
+                p.key("outer_radius"),
+                outer,
+                &format!("must exceed inner_radius = {inner}"),
+            ));
+        }
+        let coverage = e.pad_coverage.unwrap_or(0.8);
+        if !(coverage > 0.0 && coverage <= 1.0) {
+            return Err(ctx.err(p.key("pad_coverage"), coverage, "must lie in (0, 1]"));
+        }
+        let lift_rpm = ctx.positive(p.key("lift_off_rpm"), e.lift_off_rpm.unwrap_or(5.0))?;
+        out.push(PlacedThrustBearing {
+            name: names.claim(ctx, &p, default_name(e.name, "thrust", i), "thrust bearing")?,
+            node,
+            bearing: ThrustBearing {
+                load,
+                inner_radius: inner,
+                outer_radius: outer,
+                coverage,
+                film_thickness: ctx.positive(p.key("film_thickness"), e.film_thickness)?,
+                viscosity: ctx.positive(p.key("viscosity"), e.viscosity)?,
+                boundary_friction: ctx.non_negative(
+                    p.key("friction_coefficient"),
+                    e.friction_coefficient.unwrap_or(0.15),
+                )?,
+                lift_off_speed: lift_rpm * std::f64::consts::PI / 30.0,
+                oil_lift: e.oil_lift.unwrap_or(false),
+            },
+        });
+    }
+    Ok(out)
+}
+
+/// The drive: `"speed"` (default) or `"torque"`, which needs `[[torques]]`.
+pub(super) fn drive(
+    ctx: &Ctx,
+    root: &FieldPath,
+    entry: Option<TorsionEntry>,
+    torques: &[TorqueNode],
+) -> Result<Drive, ModelError> {
+    let given = entry.and_then(|e| e.drive);
+    match given.as_deref().unwrap_or("speed") {
+        "speed" => Ok(Drive::Speed),
+        "torque" if torques.is_empty() => Err(ctx.err(
+            root.key("torsion").key("drive"),
+            "\"torque\"",
+            "a torque-driven shaft needs [[torques]] nodes to apply the torques at",
+        )),
+        "torque" => Ok(Drive::Torque),
+        other => Err(ctx.err(
+            root.key("torsion").key("drive"),
+            format!("{other:?}"),
+            "must be \"speed\" or \"torque\"",
+        )),
+    }
+}
