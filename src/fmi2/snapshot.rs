@@ -63,7 +63,7 @@ fn phase_index(phase: Phase) -> f64 {
 }
 
 /// The scalar fields, in image order.
-const SCALARS: [Scalar; 14] = [
+const SCALARS: [Scalar; 15] = [
     ("time", |s| s.sim.time, |s, v| put(&mut s.sim.time, v)),
     (
         "spin_angle",
@@ -153,10 +153,18 @@ const SCALARS: [Scalar; 14] = [
             v.is_finite()
         },
     ),
+    (
+        "stuck",
+        |s| s.sim.stuck,
+        |s, v| {
+            s.sim.stuck = v;
+            v == 0.0 || v == 1.0
+        },
+    ),
 ];
 
 /// The vector fields, in image order.
-const VECTORS: [Vector; 12] = [
+const VECTORS: [Vector; 16] = [
     ("u", |s| &s.sim.u, |s| &mut s.sim.u),
     ("ud", |s| &s.sim.ud, |s| &mut s.sim.ud),
     ("udd", |s| &s.sim.udd, |s| &mut s.sim.udd),
@@ -180,6 +188,22 @@ const VECTORS: [Vector; 12] = [
         "load_rates",
         |s| &s.sim.load_rates,
         |s| &mut s.sim.load_rates,
+    ),
+    ("twist", |s| &s.sim.twist, |s| &mut s.sim.twist),
+    (
+        "twist_rate",
+        |s| &s.sim.twist_rate,
+        |s| &mut s.sim.twist_rate,
+    ),
+    (
+        "twist_accel",
+        |s| &s.sim.twist_accel,
+        |s| &mut s.sim.twist_accel,
+    ),
+    (
+        "twist_torque",
+        |s| &s.sim.twist_torque,
+        |s| &mut s.sim.twist_torque,
     ),
 ];
 
@@ -351,6 +375,11 @@ mod tests {
                 unbalance_phase: v(2, 12.0),
                 loads: v(3, 14.0),
                 load_rates: v(3, 15.0),
+                twist: v(4, 16.0),
+                twist_rate: v(4, 17.0),
+                twist_accel: v(4, 18.0),
+                twist_torque: v(4, 19.0),
+                stuck: 1.0,
                 factor_step: 1e-3,
                 factor_speed: 13.0,
             },

@@ -59,6 +59,7 @@ mod sites;
 mod state;
 mod static_stability;
 pub mod statics;
+mod torsion;
 mod warnings;
 
 pub use run::{SpeedProfile, record};

@@ -46,6 +46,10 @@ pub(super) struct NewmarkWork {
     pub rp: Vec<f64>,
     /// The load inputs at the step's time (N).
     pub load_values: Vec<f64>,
+    /// A torque-driven shaft's angle (rad), speed (rad/s) and acceleration
+    /// (rad/s²) at each unbalance plane's node at the step's end; empty when
+    /// the shaft follows the prescribed speed.
+    pub plane_motion: Vec<[f64; 3]>,
 }
 
 impl NewmarkWork {
@@ -68,6 +72,7 @@ impl NewmarkWork {
             f_ext: rotor(),
             rp: pads(),
             load_values: vec![0.0; n_loads],
+            plane_motion: Vec::new(),
         }
     }
 }
@@ -175,7 +180,13 @@ impl Simulator {
         for (k, plane) in self.rotor.model.unbalances.iter().enumerate() {
             let me =
                 (self.state.unbalance[k] + self.state.unbalance_rate[k] * since).max(0.0) * ramp;
-            let (s, c) = (spin_angle + self.state.unbalance_phase[k]).sin_cos();
+            // A torque-driven shaft: the plane's node turns with its own
+            // angle, speed and acceleration.
+            let (angle, speed, rate) = match w.plane_motion.get(k) {
+                Some(&[a, w, r]) => (a, w, r),
+                None => (spin_angle, speed, rate),
+            };
+            let (s, c) = (angle + self.state.unbalance_phase[k]).sin_cos();
             let fx = me * (speed * speed * c + rate * s);
             let fy = me * (speed * speed * s - rate * c);
             if let Some(i) = self.rotor.dofs.free(plane.node, DOF_X) {
@@ -280,7 +291,9 @@ impl Simulator {
     /// One Newmark step of size `h`. `Ok(None)`: converged, state advanced;
     /// `Ok(Some(residual))`: Newton failed, state untouched. A bearing error
     /// (journal beyond the clearance) at an iterate counts as a failure of the
-    /// step, so a smaller step is tried before giving up.
+    /// step, so a smaller step is tried before giving up. A torque-driven
+    /// shaft steps its twist and its lateral motion together
+    /// ([`Simulator::try_coupled_step`]).
     fn try_step(&mut self, h: f64) -> Result<Option<f64>, SolverError> {
         // Sub-steps of communication intervals differ from the factored step by
         // the round-off of the time grid (1e-11 relative at t = 20 s): take the
@@ -290,6 +303,19 @@ impl Simulator {
             Some(f) if (f.step - h).abs() <= 1e-9 * h => f.step,
             _ => h,
         };
+        if self.torsion.is_some() {
+            return self.try_coupled_step(h);
+        }
+        let outcome = self.solve_lateral_step(h)?;
+        if outcome.is_none() {
+            self.commit_lateral_step(h);
+        }
+        Ok(outcome)
+    }
+
+    /// The lateral Newmark step of size `h` from the current state at the
+    /// current speed profile, into `newmark` (the state is not touched).
+    pub(super) fn solve_lateral_step(&mut self, h: f64) -> Result<Option<f64>, SolverError> {
         let t1 = self.state.time + h;
         let speed0 = self.speed_at(self.state.time);
         let speed1 = self.speed_at(t1);
@@ -328,20 +354,25 @@ impl Simulator {
         };
         self.factor = factor;
         self.record_factor();
-        let outcome = outcome?;
-        if outcome.is_none() {
-            let (s, w) = (&mut self.state, &mut self.newmark);
-            std::mem::swap(&mut s.u, &mut w.u);
-            std::mem::swap(&mut s.ud, &mut w.ud);
-            std::mem::swap(&mut s.udd, &mut w.udd);
-            std::mem::swap(&mut s.p, &mut w.p);
-            std::mem::swap(&mut s.pd, &mut w.pd);
-            std::mem::swap(&mut s.pdd, &mut w.pdd);
-            s.time = t1;
-            s.spin_angle = spin1;
-            self.stats.steps += 1;
-        }
-        Ok(outcome)
+        outcome
+    }
+
+    /// Take the solved lateral step of size `h` from `newmark` into the state.
+    pub(super) fn commit_lateral_step(&mut self, h: f64) {
+        let t1 = self.state.time + h;
+        let speed0 = self.speed_at(self.state.time);
+        let speed1 = self.speed_at(t1);
+        let spin1 = self.state.spin_angle + 0.5 * (speed0 + speed1) * h;
+        let (s, w) = (&mut self.state, &mut self.newmark);
+        std::mem::swap(&mut s.u, &mut w.u);
+        std::mem::swap(&mut s.ud, &mut w.ud);
+        std::mem::swap(&mut s.udd, &mut w.udd);
+        std::mem::swap(&mut s.p, &mut w.p);
+        std::mem::swap(&mut s.pd, &mut w.pd);
+        std::mem::swap(&mut s.pdd, &mut w.pdd);
+        s.time = t1;
+        s.spin_angle = spin1;
+        self.stats.steps += 1;
     }
 }
 

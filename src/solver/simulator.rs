@@ -11,7 +11,9 @@ use super::newton::{CondensedWork, SchurSolve};
 use super::sites::Sites;
 use super::state::SimState;
 use super::statics;
+use super::torsion::Torsion;
 use super::warnings::{SolverWarning, Warnings};
+use crate::model::Drive;
 
 /// Solver settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -235,6 +237,8 @@ pub struct Simulator {
     pub(super) condensed: CondensedWork,
     pub(super) stats: StepStats,
     pub(super) warnings: Warnings,
+    /// The twist of a torque-driven shaft; `None` when the speed is prescribed.
+    pub(super) torsion: Option<Torsion>,
 }
 
 impl Simulator {
@@ -259,7 +263,16 @@ impl Simulator {
             })
             .collect();
         let n_internal = sites.n_internal;
-        let state = SimState {
+        let torsion = (rotor.model.drive == Drive::Torque).then(|| {
+            let nodes: Vec<usize> = sites
+                .list
+                .iter()
+                .map(|s| rotor.model.bearings[s.index].node)
+                .collect();
+            let sizes: Vec<usize> = sites.list.iter().map(|s| s.eval.n()).collect();
+            Torsion::new(&rotor, &nodes, &sizes)
+        });
+        let mut state = SimState {
             time: 0.0,
             u: vec![0.0; n],
             ud: vec![0.0; n],
@@ -276,9 +289,27 @@ impl Simulator {
             unbalance_phase: rotor.model.unbalances.iter().map(|u| u.phase).collect(),
             loads: rotor.model.load_inputs().iter().map(|l| l.start).collect(),
             load_rates: vec![0.0; rotor.model.load_inputs().len()],
+            twist: Vec::new(),
+            twist_rate: Vec::new(),
+            twist_accel: Vec::new(),
+            twist_torque: Vec::new(),
+            stuck: 0.0,
             factor_step: 0.0,
             factor_speed: 0.0,
         };
+        if let Some(t) = &torsion {
+            let n = t.chain.dof_count();
+            for v in [
+                &mut state.twist,
+                &mut state.twist_rate,
+                &mut state.twist_accel,
+                &mut state.twist_torque,
+            ] {
+                *v = vec![0.0; n];
+            }
+            // At rest, held by static friction until the drive breaks it away.
+            state.stuck = 1.0;
+        }
         let output_evals: Vec<BearingEval> = output_bearings
             .iter()
             .map(|(b, _)| BearingEval::new(2 + b.internal_dofs()))
@@ -296,6 +327,7 @@ impl Simulator {
             condensed: CondensedWork::new(sites.n_journal),
             stats: StepStats::default(),
             warnings: Warnings::new(&rotor),
+            torsion,
             rotor,
             options,
             state,
@@ -356,6 +388,10 @@ impl Simulator {
             || state.unbalance_phase.len() != s.unbalance_phase.len()
             || state.loads.len() != s.loads.len()
             || state.load_rates.len() != s.load_rates.len()
+            || state.twist.len() != s.twist.len()
+            || state.twist_rate.len() != s.twist_rate.len()
+            || state.twist_accel.len() != s.twist_accel.len()
+            || state.twist_torque.len() != s.twist_torque.len()
         {
             return Err(SolverError::Input(
                 "state does not belong to this rotor (sizes differ)".into(),
@@ -424,7 +460,7 @@ impl Simulator {
     }
 
     /// Re-base the linearly extrapolated inputs to the current time.
-    fn rebase_inputs(&mut self) {
+    pub(super) fn rebase_inputs(&mut self) {
         let s = &mut self.state;
         let dt = s.time - s.speed_time;
         s.speed += s.speed_rate * dt;
@@ -449,6 +485,17 @@ impl Simulator {
             return Err(SolverError::Input(format!(
                 "speed {speed} rad/s exceeds the model's max_speed_rpm ({max} rad/s)"
             )));
+        }
+        if self.torsion.is_some() {
+            // A torque-driven shaft: the speed is its initial condition.
+            if rate != 0.0 || self.state.time != 0.0 {
+                return Err(SolverError::Input(format!(
+                    "the shaft of {} is torque-driven: its speed comes from the torque inputs; a speed (without rate) can only be its initial condition at time 0",
+                    self.rotor.model.name
+                )));
+            }
+            self.state.twist_rate.fill(speed);
+            self.state.stuck = if speed == 0.0 { 1.0 } else { 0.0 };
         }
         self.rebase_inputs();
         self.state.speed = speed;

@@ -40,6 +40,18 @@ pub struct SimState {
     pub loads: Vec<f64>,
     /// Rate of change of each load input (N/s).
     pub load_rates: Vec<f64>,
+    /// A torque-driven shaft's twist angle of each free twist DOF (rad,
+    /// absolute rotation about +z); empty when the speed is prescribed.
+    pub twist: Vec<f64>,
+    /// Its rate (rad/s).
+    pub twist_rate: Vec<f64>,
+    /// Its acceleration (rad/s²).
+    pub twist_accel: Vec<f64>,
+    /// The coupling torques on the twist at this time (N·m): friction and
+    /// unbalance reactions, the next step's first estimate.
+    pub twist_torque: Vec<f64>,
+    /// 1 while static friction holds the torque-driven shaft at rest, else 0.
+    pub stuck: f64,
     /// Step size the factorization in hand was made for (s); 0 for none.
     pub factor_step: f64,
     /// Spin speed the factorization in hand was made at (rad/s).
@@ -58,8 +70,9 @@ impl SimState {
             ("speed_time", self.speed_time),
             ("factor_step", self.factor_step),
             ("factor_speed", self.factor_speed),
+            ("stuck", self.stuck),
         ];
-        let vectors: [(&str, &[f64]); 11] = [
+        let vectors: [(&str, &[f64]); 15] = [
             ("u", &self.u),
             ("ud", &self.ud),
             ("udd", &self.udd),
@@ -71,6 +84,10 @@ impl SimState {
             ("unbalance_phase", &self.unbalance_phase),
             ("loads", &self.loads),
             ("load_rates", &self.load_rates),
+            ("twist", &self.twist),
+            ("twist_rate", &self.twist_rate),
+            ("twist_accel", &self.twist_accel),
+            ("twist_torque", &self.twist_torque),
         ];
         let bad = scalars
             .iter()

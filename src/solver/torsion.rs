@@ -1,0 +1,444 @@
+//! A torque-driven shaft (`[torsion] drive = "torque"`): the twist of every
+//! node is a state, driven by the torques at the `[[torques]]` nodes, and the
+//! lateral motion and the twist are stepped together.
+//!
+//! Torsional equations: `M_t φ̈ + C_t φ̇ + K_t φ = T_in(t) + T_c`, Newmark
+//! average acceleration like the lateral ones, with the coupling torques
+//! `T_c` on the shaft at each node:
+//! - the friction torque of every bearing, rub, seal and pull there,
+//!   `−T_f` (film shear and contact friction, [`Bearing::report`]), and of
+//!   every thrust bearing, `−T(φ̇)` ([`ThrustBearing`], implicit in the
+//!   torsional Newton with its derivative);
+//! - the reaction of each unbalance `m e` at angle `φ`: the torque the shaft
+//!   spends carrying the unbalance mass along the node's lateral
+//!   acceleration, `−m e (ÿ cos φ − ẍ sin φ)` (the lateral unbalance force
+//!   uses the node's own `φ`, `φ̇`, `φ̈`, so the pair exchanges energy
+//!   exactly).
+//!
+//! The lateral step runs at the shaft's mean speed `Ω = Σ J_i φ̇_i / Σ J_i`
+//! (gyroscopic moments and films; the node speeds differ from it only by the
+//! torsional vibration), linear within the step as Newmark's velocity is.
+//! Within each step the two are iterated (block Gauss–Seidel) until the
+//! coupling torques agree to the solver tolerance, so the coupled step
+//! solves the coupled equations.
+//!
+//! At rest the shaft sticks: while the net input torque is within the
+//! breakaway torque (the thrust bearings' `μ_b W R_m` plus the journals'
+//! contact friction at standstill, `μ N R`) every node stays at exactly zero
+//! speed; past it the shaft breaks away, and a mean speed that reaches zero
+//! with the input torque within the breakaway torque sticks again. (A stuck
+//! shaft holds its twist: the static wind-up under the drive is not
+//! modelled.)
+//!
+//! [`Bearing::report`]: crate::bearing::Bearing::report
+//! [`ThrustBearing`]: crate::bearing::thrust::ThrustBearing
+
+use crate::bearing::BearingEval;
+use crate::bearing::thrust::ThrustBearing;
+use crate::fe::{DOF_X, DOF_Y};
+use crate::linalg::BandMatrix;
+use crate::rotor::Rotor;
+use crate::rotor::torsion::TorsionalRotor;
+
+use super::simulator::{Simulator, SolverError};
+use super::state::SimState;
+
+/// Coupled iterations allowed per step before it is cut.
+const MAX_COUPLING_ITERATIONS: usize = 50;
+
+/// Newton iterations allowed for the torsional step (thrust friction).
+const MAX_TORSION_ITERATIONS: usize = 50;
+
+/// The torsional chain and its buffers (nothing allocated per step).
+#[derive(Debug)]
+pub(super) struct Torsion {
+    pub chain: TorsionalRotor,
+    /// The load channel of each torque input, with its node's twist DOF.
+    inputs: Vec<(usize, Option<usize>)>,
+    /// Twist DOF of each unbalance plane's node.
+    planes: Vec<Option<usize>>,
+    /// Twist DOF of each site's journal node.
+    site_dofs: Vec<Option<usize>>,
+    /// Thrust bearings at twist DOFs.
+    thrust: Vec<(Option<usize>, ThrustBearing)>,
+    /// Newmark matrix `K + a1 C + a0 M` plus the thrust Jacobian.
+    a: BandMatrix<f64>,
+    /// Iterate: twist, rate, acceleration at the step's end.
+    pub theta: Vec<f64>,
+    pub omega: Vec<f64>,
+    pub alpha: Vec<f64>,
+    /// Coupling torques at the step's end (N·m): the estimate the torsional
+    /// step used, and the one the lateral step gives back.
+    coupling: Vec<f64>,
+    fresh: Vec<f64>,
+    /// Work vectors.
+    rhs: Vec<f64>,
+    scratch: Vec<f64>,
+    /// The torque inputs at the step's end (N·m).
+    input_values: Vec<f64>,
+    /// Evaluation buffers of the sites, for their friction torques.
+    eval: Vec<BearingEval>,
+}
+
+impl Torsion {
+    /// The torque-driven chain of `rotor` with `site_nodes` (each nonlinear
+    /// site's node) and `site_sizes` (their coordinate counts).
+    pub fn new(rotor: &Rotor, site_nodes: &[usize], site_sizes: &[usize]) -> Self {
+        let model = &rotor.model;
+        let chain = TorsionalRotor::new(model);
+        let n = chain.dof_count();
+        let first = model.first_torque_input();
+        let inputs = model
+            .torques
+            .iter()
+            .enumerate()
+            .map(|(k, t)| (first + k, chain.dofs[t.node]))
+            .collect();
+        let planes = model
+            .unbalances
+            .iter()
+            .map(|u| chain.dofs[u.node])
+            .collect();
+        let site_dofs = site_nodes.iter().map(|&node| chain.dofs[node]).collect();
+        let thrust = model
+            .thrust_bearings
+            .iter()
+            .map(|t| (chain.dofs[t.node], t.bearing))
+            .collect();
+        Self {
+            a: chain.stiffness.zeroed_like(),
+            inputs,
+            planes,
+            site_dofs,
+            thrust,
+            theta: vec![0.0; n],
+            omega: vec![0.0; n],
+            alpha: vec![0.0; n],
+            coupling: vec![0.0; n],
+            fresh: vec![0.0; n],
+            rhs: vec![0.0; n],
+            scratch: vec![0.0; n],
+            input_values: vec![0.0; model.torques.len()],
+            eval: site_sizes.iter().map(|&m| BearingEval::new(m)).collect(),
+            chain,
+        }
+    }
+
+    /// Inertia-weighted mean of `v` over the free twist DOFs.
+    pub fn mean(&self, v: &[f64]) -> f64 {
+        let j = &self.chain.inertia;
+        v.iter().zip(j).map(|(a, b)| a * b).sum::<f64>() / self.chain.total_inertia()
+    }
+
+    /// The breakaway torque at rest: the thrust bearings' boundary friction
+    /// plus `at_rest`, the contact friction the sites report at standstill.
+    fn breakaway(&self, at_rest: f64) -> f64 {
+        self.thrust
+            .iter()
+            .map(|(_, t)| t.breakaway_torque())
+            .sum::<f64>()
+            + at_rest
+    }
+}
+
+impl Simulator {
+    /// The net input torque (N·m) of the `[[torques]]` at time `t`.
+    fn input_torque(&self, t: f64) -> f64 {
+        let Some(tors) = &self.torsion else {
+            return 0.0;
+        };
+        tors.inputs.iter().map(|&(k, _)| self.load_at(k, t)).sum()
+    }
+
+    /// Friction torques of the sites at the lateral iterate (`newmark.u`,
+    /// `ud`, `p`, `pd`, or the state with `at_state`) at spin `speed`, added
+    /// (as torques on the shaft, `−T_f`) into `torsion.fresh` when `add`;
+    /// returns the sum of their magnitudes (at rest: their breakaway torque).
+    fn site_friction(&mut self, speed: f64, at_state: bool, add: bool) -> Result<f64, SolverError> {
+        let Some(tors) = self.torsion.as_mut() else {
+            return Ok(0.0);
+        };
+        let (u, ud, p, pd) = if at_state {
+            (&self.state.u, &self.state.ud, &self.state.p, &self.state.pd)
+        } else {
+            (
+                &self.newmark.u,
+                &self.newmark.ud,
+                &self.newmark.p,
+                &self.newmark.pd,
+            )
+        };
+        let mut total = 0.0;
+        for (k, site) in self.sites.list.iter_mut().enumerate() {
+            for (a, c) in site.journal.iter().enumerate() {
+                site.q[a] = c.of(u);
+                site.qd[a] = c.of(ud);
+            }
+            let range = site.offset..site.offset + site.internal;
+            site.q[2..].copy_from_slice(&p[range.clone()]);
+            site.qd[2..].copy_from_slice(&pd[range]);
+            let eval = &mut tors.eval[k];
+            site.bearing
+                .evaluate(&site.q, &site.qd, speed, eval)
+                .map_err(|source| SolverError::Bearing {
+                    name: site.name.clone(),
+                    time: self.state.time,
+                    source,
+                })?;
+            let torque = site
+                .bearing
+                .report(&site.q, &site.qd, speed, eval)
+                .friction_torque;
+            total += torque.abs();
+            if let (true, Some(i)) = (add, tors.site_dofs[k]) {
+                tors.fresh[i] -= torque;
+            }
+        }
+        Ok(total)
+    }
+
+    /// The unbalance reaction torques `−m e (ÿ cos φ − ẍ sin φ)` at the step's
+    /// end (lateral accelerations from `newmark.udd`), added into
+    /// `torsion.fresh`.
+    fn unbalance_reaction(&mut self, t: f64) {
+        let Some(tors) = self.torsion.as_mut() else {
+            return;
+        };
+        let s = &self.state;
+        let ramp = if self.options.unbalance_ramp_time > 0.0 {
+            1.0 - (-t / self.options.unbalance_ramp_time).exp()
+        } else {
+            1.0
+        };
+        for (k, plane) in self.rotor.model.unbalances.iter().enumerate() {
+            let Some(i) = tors.planes[k] else { continue };
+            let me = (s.unbalance[k] + s.unbalance_rate[k] * (t - s.speed_time)).max(0.0) * ramp;
+            let phi = tors.theta[i] + s.unbalance_phase[k];
+            let ax = self.rotor.node_value(plane.node, DOF_X, &self.newmark.udd);
+            let ay = self.rotor.node_value(plane.node, DOF_Y, &self.newmark.udd);
+            tors.fresh[i] -= me * (ay * phi.cos() - ax * phi.sin());
+        }
+    }
+
+    /// The torsional Newmark step of size `h` with the coupling torques in
+    /// `torsion.coupling` and the inputs at `t1`, into `torsion.theta`,
+    /// `omega`, `alpha`.
+    fn torsional_step(&mut self, h: f64, t1: f64) -> Result<(), SolverError> {
+        let Some(mut tors) = self.torsion.take() else {
+            return Ok(());
+        };
+        for (v, &(k, _)) in tors.input_values.iter_mut().zip(&tors.inputs) {
+            *v = self.load_at(k, t1);
+        }
+        let outcome = torsional_newton(&mut tors, &self.state, h);
+        self.torsion = Some(tors);
+        outcome
+    }
+
+    /// Point the lateral step at the speed profile of the torsional iterate:
+    /// the mean speed from the state's to the iterate's, and each unbalance
+    /// plane's node angle, speed and acceleration at the step's end.
+    fn drive_lateral(&mut self, h: f64) {
+        let Some(tors) = &self.torsion else { return };
+        let w0 = tors.mean(&self.state.twist_rate);
+        let w1 = tors.mean(&tors.omega);
+        let s = &mut self.state;
+        s.speed = w0;
+        s.speed_rate = (w1 - w0) / h;
+        s.speed_time = s.time;
+        let motion = &mut self.newmark.plane_motion;
+        motion.clear();
+        for dof in &tors.planes {
+            motion.push(match *dof {
+                Some(i) => [tors.theta[i], tors.omega[i], tors.alpha[i]],
+                None => [0.0; 3],
+            });
+        }
+    }
+
+    /// One coupled step of a torque-driven shaft (see the module docs).
+    pub(super) fn try_coupled_step(&mut self, h: f64) -> Result<Option<f64>, SolverError> {
+        let t1 = self.state.time + h;
+        // Re-base every input to the step's start: the lateral speed profile
+        // is then set from the twist.
+        self.rebase_inputs();
+        let drive = self.input_torque(t1);
+        if self.state.stuck != 0.0 {
+            let at_rest = self.site_friction(0.0, true, false)?;
+            let capacity = self.torsion.as_ref().map_or(0.0, |t| t.breakaway(at_rest));
+            if drive.abs() <= capacity {
+                return self.hold_at_rest(h);
+            }
+            self.state.stuck = 0.0;
+            self.breakaway_acceleration(drive, capacity)?;
+        }
+        if let Some(t) = self.torsion.as_mut() {
+            t.coupling.copy_from_slice(&self.state.twist_torque);
+        }
+        let mut last = f64::INFINITY;
+        for _ in 0..MAX_COUPLING_ITERATIONS {
+            self.torsional_step(h, t1)?;
+            self.drive_lateral(h);
+            if let Some(residual) = self.solve_lateral_step(h)? {
+                return Ok(Some(residual));
+            }
+            let speed1 = self.speed_at(t1);
+            if let Some(t) = self.torsion.as_mut() {
+                t.fresh.fill(0.0);
+            }
+            self.site_friction(speed1, false, true)?;
+            self.unbalance_reaction(t1);
+            let Some(tors) = self.torsion.as_mut() else {
+                break;
+            };
+            let size = tors
+                .fresh
+                .iter()
+                .chain(tors.coupling.iter())
+                .fold(0.0_f64, |m, v| m.max(v.abs()))
+                .max(drive.abs())
+                .max(f64::MIN_POSITIVE);
+            let change = tors
+                .fresh
+                .iter()
+                .zip(&tors.coupling)
+                .fold(0.0_f64, |m, (a, b)| m.max((a - b).abs()));
+            std::mem::swap(&mut tors.coupling, &mut tors.fresh);
+            if change <= self.options.tolerance * size {
+                let at_rest = self.site_friction(0.0, false, false)?;
+                self.commit_coupled_step(h, drive, at_rest);
+                return Ok(None);
+            }
+            last = change / size;
+        }
+        Ok(Some(last))
+    }
+
+    /// Take the converged coupled step: twist, coupling torques, lateral
+    /// state; a mean speed that reaches or crosses zero with the input torque
+    /// within the breakaway torque (`at_rest`: the sites' part) sticks.
+    fn commit_coupled_step(&mut self, h: f64, drive: f64, at_rest: f64) {
+        let w0 = self.speed_at(self.state.time);
+        self.commit_lateral_step(h);
+        let Some(tors) = self.torsion.as_mut() else {
+            return;
+        };
+        let capacity = tors.breakaway(at_rest);
+        let s = &mut self.state;
+        s.twist.copy_from_slice(&tors.theta);
+        s.twist_rate.copy_from_slice(&tors.omega);
+        s.twist_accel.copy_from_slice(&tors.alpha);
+        s.twist_torque.copy_from_slice(&tors.coupling);
+        let w1 = tors.mean(&tors.omega);
+        if (w1 == 0.0 || w0 * w1 < 0.0) && drive.abs() <= capacity {
+            s.stuck = 1.0;
+            s.twist_rate.fill(0.0);
+            s.twist_accel.fill(0.0);
+        }
+        s.speed = if s.stuck != 0.0 { 0.0 } else { w1 };
+        s.speed_rate = 0.0;
+        s.speed_time = s.time;
+    }
+
+    /// At breakaway the shaft accelerates at once: the twist accelerations
+    /// that balance the inputs at the step's start against the friction at
+    /// the onset of sliding (the breakaway torque `capacity`, opposing the
+    /// net input `drive`), shared over the nodes by their inertia (the shaft
+    /// starts as a rigid body), so Newmark's first step does not lag.
+    fn breakaway_acceleration(&mut self, drive: f64, capacity: f64) -> Result<(), SolverError> {
+        let Some(tors) = &self.torsion else {
+            return Ok(());
+        };
+        let net = drive - capacity.min(drive.abs()) * drive.signum();
+        let alpha = net / tors.chain.total_inertia();
+        self.state.twist_accel.fill(alpha);
+        Ok(())
+    }
+
+    /// A step of the shaft held at rest by static friction: no twist motion,
+    /// the lateral step at zero speed.
+    fn hold_at_rest(&mut self, h: f64) -> Result<Option<f64>, SolverError> {
+        let s = &mut self.state;
+        s.speed = 0.0;
+        s.speed_rate = 0.0;
+        s.speed_time = s.time;
+        if let Some(tors) = self.torsion.as_mut() {
+            tors.theta.copy_from_slice(&s.twist);
+            tors.omega.fill(0.0);
+            tors.alpha.fill(0.0);
+        }
+        self.drive_lateral(h);
+        let outcome = self.solve_lateral_step(h)?;
+        if outcome.is_none() {
+            self.commit_lateral_step(h);
+        }
+        Ok(outcome)
+    }
+}
+
+/// Newton on the torsional Newmark step from state `s` (step `h`):
+/// `M α + C ω + K θ = T_in + T_c − T_thrust(ω)` with the Newmark rates of `θ`.
+fn torsional_newton(tors: &mut Torsion, s: &SimState, h: f64) -> Result<(), SolverError> {
+    let (a0, a1, a2) = (4.0 / (h * h), 2.0 / h, 4.0 / h);
+    let n = tors.chain.dof_count();
+    let rates = |tors: &mut Torsion| {
+        for i in 0..n {
+            let d = tors.theta[i] - s.twist[i];
+            tors.omega[i] = a1 * d - s.twist_rate[i];
+            tors.alpha[i] = a0 * d - a2 * s.twist_rate[i] - s.twist_accel[i];
+        }
+    };
+    // Predictor.
+    for i in 0..n {
+        tors.theta[i] = s.twist[i] + h * s.twist_rate[i] + 0.5 * h * h * s.twist_accel[i];
+    }
+    for _ in 0..MAX_TORSION_ITERATIONS {
+        rates(tors);
+        // Residual r = T_in + T_c − T_thrust − M α − C ω − K θ.
+        tors.rhs.copy_from_slice(&tors.coupling);
+        for (&(_, dof), t) in tors.inputs.iter().zip(&tors.input_values) {
+            if let Some(i) = dof {
+                tors.rhs[i] += t;
+            }
+        }
+        tors.a.assign(&tors.chain.stiffness);
+        tors.a.scale_add(a1, &tors.chain.damping);
+        tors.a.scale_add(a0, &tors.chain.mass);
+        for (dof, t) in &tors.thrust {
+            if let Some(i) = *dof {
+                let (torque, slope) = t.friction_torque(tors.omega[i]);
+                tors.rhs[i] -= torque;
+                tors.a.add(i, i, a1 * slope);
+            }
+        }
+        for (m, x) in [
+            (&tors.chain.mass, &tors.alpha),
+            (&tors.chain.damping, &tors.omega),
+            (&tors.chain.stiffness, &tors.theta),
+        ] {
+            m.mul_vec(x, &mut tors.scratch);
+            for (r, v) in tors.rhs.iter_mut().zip(&tors.scratch) {
+                *r -= v;
+            }
+        }
+        let scale = tors
+            .theta
+            .iter()
+            .fold(0.0_f64, |m, v| m.max(v.abs()))
+            .max(1.0);
+        let lu = tors.a.lu()?;
+        lu.solve_in_place(&mut tors.rhs);
+        let mut step: f64 = 0.0;
+        for (t, d) in tors.theta.iter_mut().zip(&tors.rhs) {
+            *t += d;
+            step = step.max(d.abs());
+        }
+        if step <= 1e-14 * scale {
+            rates(tors);
+            return Ok(());
+        }
+    }
+    Err(SolverError::Input(
+        "the torsional step did not converge (thrust bearing friction)".into(),
+    ))
+}
