@@ -145,7 +145,7 @@ fn torque_driven_classic(stiff: bool) -> String {
 }
 
 /// The same machine run torque-driven (a 20 N·m drive at one end, a −5 N·m
-/// load at the other, 1.5 s from rest) and speed-driven with the torque run's mean speed
+/// load at the other, ramped in over 50 ms, 1.5 s from rest) and speed-driven with the torque run's mean speed
 /// history given step by step (speed and rate, as a master's input
 /// derivatives give it): on a torsionally rigid shaft the disk orbits agree
 /// to 1e-9 of their size. Without unbalance (nothing else takes energy from
@@ -166,8 +166,10 @@ fn a_torque_driven_rigid_shaft_reproduces_the_speed_driven_run() {
     let run = |unbalance: f64, follow: bool| {
         let mut torque = Simulator::new(Rotor::new(model.clone()).unwrap(), options).unwrap();
         torque.set_unbalance(0, unbalance).unwrap();
-        torque.set_load(first, 20.0, 0.0).unwrap();
-        torque.set_load(first + 1, -5.0, 0.0).unwrap();
+        // Torques ramped in over 50 ms (a sudden torque would ring the
+        // shaft's torsional modes), then held.
+        torque.set_load(first, 0.0, 400.0).unwrap();
+        torque.set_load(first + 1, 0.0, -100.0).unwrap();
         let mut speed_model = model.clone();
         speed_model.drive = rotor_bearing::model::Drive::Speed;
         let mut speed = Simulator::new(Rotor::new(speed_model).unwrap(), options).unwrap();
@@ -177,6 +179,10 @@ fn a_torque_driven_rigid_shaft_reproduces_the_speed_driven_run() {
         let mut at_half = 0.0;
         for n in 1..=15000 {
             let t = n as f64 * h;
+            if n == 501 {
+                torque.set_load(first, 20.0, 0.0).unwrap();
+                torque.set_load(first + 1, -5.0, 0.0).unwrap();
+            }
             torque.advance_to(t).unwrap();
             let a = torque.outputs().unwrap();
             if n == 5000 {
@@ -195,7 +201,11 @@ fn a_torque_driven_rigid_shaft_reproduces_the_speed_driven_run() {
         (at_half, w_prev, worst, size)
     };
     let (half, end, _, _) = run(0.0, false);
-    for (got, want) in [(half, 15.0 / inertia * 0.5), (end, 15.0 / inertia * 1.5)] {
+    // ∫ T dt = 15 N·m × (t − 25 ms) past the ramp.
+    for (got, want) in [
+        (half, 15.0 / inertia * 0.475),
+        (end, 15.0 / inertia * 1.475),
+    ] {
         assert!(
             (got / want - 1.0).abs() < 1e-9,
             "{got} against {want} rad/s"
@@ -206,4 +216,144 @@ fn a_torque_driven_rigid_shaft_reproduces_the_speed_driven_run() {
         size > 0.0 && worst < 1e-9 * size,
         "orbits differ by {worst:e} m of {size:e} m"
     );
+}
+
+/// `xᵀ A y` for a banded matrix.
+fn quadratic(a: &rotor_bearing::linalg::BandMatrix<f64>, x: &[f64], y: &[f64]) -> f64 {
+    let mut ay = vec![0.0; y.len()];
+    a.mul_vec(y, &mut ay);
+    x.iter().zip(&ay).map(|(p, q)| p * q).sum()
+}
+
+/// The torque-driven classic rotor with its flexible shaft, unbalance,
+/// damped bearings and a damped coupling, driven by 20 N·m against −5 N·m:
+/// the work of the input torques, `Σ ∫ T φ̇ dt`, equals the change of the
+/// whole machine's energy — lateral kinetic and elastic, torsional kinetic
+/// and elastic, and the unbalance mass's cross term `−m e φ̇ (ẋ sin φ −
+/// ẏ cos φ)` — plus what the bearing and coupling dampers dissipate, to
+/// 1e-6 of the work.
+#[test]
+fn the_input_torques_work_balances_the_energy() {
+    let text = torque_driven_classic(false)
+        + "[[couplings]]\nnode = 3\ntorsional_stiffness = 5e4\ntorsional_damping = 2.0\n";
+    let model = RotorModel::from_toml(&text, "torque.toml").unwrap();
+    let chain = rotor_bearing::rotor::torsion::TorsionalRotor::new(&model);
+    let r = Rotor::new(model.clone()).unwrap();
+    let (mass, stiffness, damping) = (r.mass.clone(), r.stiffness.clone(), r.damping.clone());
+    let disk = [r.dofs.free(3, 0).unwrap(), r.dofs.free(3, 1).unwrap()];
+    let (me, phase) = (model.unbalances[0].magnitude, model.unbalances[0].phase);
+    let h = 1e-4;
+    let mut sim = Simulator::new(
+        r,
+        SolverOptions {
+            time_step: h,
+            gravity: false,
+            ..SolverOptions::default()
+        },
+    )
+    .unwrap();
+    let first = model.first_torque_input();
+    sim.set_load(first, 20.0, 0.0).unwrap();
+    sim.set_load(first + 1, -5.0, 0.0).unwrap();
+    let energy = |s: &rotor_bearing::solver::SimState| {
+        let phi = s.twist[3] + phase;
+        let cross = -me * s.twist_rate[3] * (s.ud[disk[0]] * phi.sin() - s.ud[disk[1]] * phi.cos());
+        0.5 * quadratic(&mass, &s.ud, &s.ud)
+            + 0.5 * quadratic(&stiffness, &s.u, &s.u)
+            + 0.5 * quadratic(&chain.mass, &s.twist_rate, &s.twist_rate)
+            + 0.5 * quadratic(&chain.stiffness, &s.twist, &s.twist)
+            + cross
+    };
+    let mut state = sim.state().clone();
+    let e0 = energy(&state);
+    let (mut work, mut dissipated) = (0.0, 0.0);
+    for n in 1..=10000 {
+        sim.advance_to(n as f64 * h).unwrap();
+        let next = sim.state().clone();
+        work += 20.0 * (next.twist[0] - state.twist[0]) - 5.0 * (next.twist[6] - state.twist[6]);
+        let v: Vec<f64> = state
+            .ud
+            .iter()
+            .zip(&next.ud)
+            .map(|(a, b)| 0.5 * (a + b))
+            .collect();
+        let w: Vec<f64> = state
+            .twist_rate
+            .iter()
+            .zip(&next.twist_rate)
+            .map(|(a, b)| 0.5 * (a + b))
+            .collect();
+        dissipated += h * (quadratic(&damping, &v, &v) + quadratic(&chain.damping, &w, &w));
+        state = next;
+    }
+    let change = energy(&state) - e0;
+    assert!(
+        (work - change - dissipated).abs() < 1e-6 * work,
+        "input work {work:e} J against energy change {change:e} J plus dissipation {dissipated:e} J"
+    );
+}
+
+/// The hydro unit on its brackets, torque-driven: a turbine torque at the
+/// runner, a generator torque at the generator, a thrust bearing carrying
+/// the rotor's weight (R 0.6–1.0 m, μ_b 0.15).
+fn torque_driven_hydro(oil_lift: bool) -> RotorModel {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/models/hydro_unit_brackets.toml"
+    );
+    let text = std::fs::read_to_string(path).unwrap()
+        + &format!(
+            "\n[torsion]\ndrive = \"torque\"\n[[torques]]\nname = \"turbine\"\nnode = 11\n[[torques]]\nname = \"generator\"\nnode = 3\n\
+             [[thrust_bearings]]\nname = \"thrust\"\nnode = 2\ninner_radius = 0.6\nouter_radius = 1.0\nfilm_thickness = 60e-6\nviscosity = 0.03\noil_lift = {oil_lift}\n"
+        );
+    RotorModel::from_toml(&text, "hydro_torque.toml").unwrap()
+}
+
+/// Breakaway: the turbine torque ramps from 0 to 3e5 N·m over 2 s; the
+/// shaft stays at exactly zero speed while the torque is within the thrust
+/// bearing's `μ_b W R_m` (the guide bearings of a vertical shaft carry no
+/// load at rest, so they add nothing), then runs up; with an oil lift it
+/// breaks away at once. The thrust bearing's load is the rotor's weight.
+#[test]
+fn a_vertical_unit_breaks_away_at_the_thrust_bearings_friction() {
+    for oil_lift in [false, true] {
+        let model = torque_driven_hydro(oil_lift);
+        let weight = model.total_mass() * 9.81;
+        let thrust = &model.thrust_bearings[0].bearing;
+        assert!((thrust.load / weight - 1.0).abs() < 1e-12);
+        let breakaway = if oil_lift { 0.0 } else { 0.15 * weight * 0.8 };
+        assert!((thrust.breakaway_torque() - breakaway).abs() < 1e-6 * weight);
+        let turbine = model.first_torque_input();
+        let h = 2e-3;
+        let mut sim = Simulator::new(
+            Rotor::new(model).unwrap(),
+            SolverOptions {
+                time_step: h,
+                ..SolverOptions::default()
+            },
+        )
+        .unwrap();
+        sim.settle_static().unwrap();
+        let rate = 1.5e5; // N·m/s
+        sim.set_load(turbine, 0.0, rate).unwrap();
+        let mut first_motion = None;
+        for n in 1..=1000 {
+            let t = n as f64 * h;
+            sim.advance_to(t).unwrap();
+            let out = sim.outputs().unwrap();
+            match first_motion {
+                None if out.speed != 0.0 => first_motion = Some(t),
+                None => assert_eq!(out.speed, 0.0),
+                Some(_) => assert!(out.speed > 0.0, "t = {t}: {} rad/s", out.speed),
+            }
+        }
+        let started = first_motion.expect("the unit breaks away");
+        // The first step whose end torque exceeds the breakaway torque.
+        let want = ((breakaway / rate / h).floor() + 1.0) * h;
+        assert!(
+            (started - want).abs() < 1e-9,
+            "oil lift {oil_lift}: moved at {started} s, torque reached μ W R_m at {} s",
+            breakaway / rate
+        );
+    }
 }

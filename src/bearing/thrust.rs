@@ -12,8 +12,11 @@
 //!   fading as `exp(−|ω|/ω_l)` with the lift-off speed `ω_l`; none with an
 //!   oil lift (high-pressure oil injected at standstill).
 //!
-//! `T(ω) = sign(ω) [T_film(|ω|) + μ_b W R_m exp(−|ω|/ω_l)]`, opposing the
-//! spin; at `ω = 0` the bearing holds up to `μ_b W R_m`.
+//! `T(ω) = T_film(ω) + μ_b W R_m φ(ω) exp(−|ω|/ω_l)`, opposing the spin,
+//! with the sign of sliding regularized as the contact law's,
+//! `φ(ω) = ω/√(ω² + ω_ε²)` (`ω_ε = 10⁻³ ω_l`), so the torque and its
+//! derivative are continuous for Newton; at rest the solver's static
+//! friction holds the shaft up to `μ_b W R_m` exactly.
 //!
 //! ```
 //! use rotor_bearing::bearing::thrust::ThrustBearing;
@@ -27,6 +30,10 @@
 //! let (t, _) = thrust.friction_torque(31.4);
 //! assert!(t > 0.0); // opposes forward spin
 //! ```
+
+/// The speed regularizing the sign of the boundary friction, as a fraction
+/// of the lift-off speed.
+pub const SIGN_SMOOTHING: f64 = 1e-3;
 
 /// A thrust bearing's friction model (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -76,15 +83,16 @@ impl ThrustBearing {
     /// `dT/dω`; `T(0) = 0` (at rest the bearing holds up to
     /// [`Self::breakaway_torque`] instead).
     pub fn friction_torque(&self, speed: f64) -> (f64, f64) {
-        let a = speed.abs();
         let b = self.breakaway_torque();
-        let fade = (-a / self.lift_off_speed).exp();
         let c = self.film_coefficient();
-        if speed == 0.0 {
-            return (0.0, c);
-        }
-        let t = speed.signum() * (c * a + b * fade);
-        let dt = c - b * fade / self.lift_off_speed;
+        let wl = self.lift_off_speed;
+        let eps = SIGN_SMOOTHING * wl;
+        let root = (speed * speed + eps * eps).sqrt();
+        let phi = speed / root;
+        let dphi = eps * eps / (root * root * root);
+        let fade = (-speed.abs() / wl).exp();
+        let t = c * speed + b * phi * fade;
+        let dt = c + b * fade * (dphi - phi.abs() / wl);
         (t, dt)
     }
 

@@ -51,8 +51,10 @@
 mod condense;
 mod dense;
 mod factor;
+mod inputs;
 mod newmark;
 mod newton;
+mod outputs;
 pub mod run;
 mod simulator;
 mod sites;
@@ -62,11 +64,9 @@ pub mod statics;
 mod torsion;
 mod warnings;
 
+pub use outputs::{BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput};
 pub use run::{SpeedProfile, record};
-pub use simulator::{
-    BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput, Simulator, SolverError,
-    SolverOptions, StepStats,
-};
+pub use simulator::{Simulator, SolverError, SolverOptions, StepStats};
 pub use state::SimState;
 pub use statics::{Equilibrium, equilibrium};
 pub use warnings::SolverWarning;

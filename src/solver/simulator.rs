@@ -1,7 +1,6 @@
 //! The time-domain simulator (see the module docs of [`crate::solver`]).
 
-use crate::bearing::{Bearing, BearingError, BearingEval, BearingReport};
-use crate::fe::{DOF_X, DOF_Y};
+use crate::bearing::{Bearing, BearingError, BearingEval};
 use crate::linalg::LinalgError;
 use crate::rotor::Rotor;
 
@@ -115,87 +114,6 @@ pub enum SolverError {
     Budget(String),
 }
 
-/// Absolute motion of a bearing's housing (zero on rigid ground): what a
-/// seismic sensor on the bracket or pedestal measures.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct HousingOutput {
-    /// Displacement (m).
-    pub x: f64,
-    /// Displacement (m).
-    pub y: f64,
-    /// Velocity (m/s).
-    pub vx: f64,
-    /// Velocity (m/s).
-    pub vy: f64,
-}
-
-/// Outputs of one bearing.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct BearingOutput {
-    /// Journal displacement (m), absolute; relative to the housing (what a
-    /// proximity probe on the bearing measures) it is `x − housing.x`.
-    pub x: f64,
-    /// Journal displacement (m), absolute.
-    pub y: f64,
-    /// Force of the bearing on the journal (N).
-    pub fx: f64,
-    /// Force of the bearing on the journal (N).
-    pub fy: f64,
-    /// Film reports (eccentricity, friction…), from the journal's motion
-    /// relative to its housing.
-    pub report: BearingReport,
-    /// The housing's absolute motion (zero on rigid ground).
-    pub housing: HousingOutput,
-}
-
-impl BearingOutput {
-    /// Journal displacement relative to the housing, `(x, y)` (m).
-    pub fn relative(&self) -> (f64, f64) {
-        (self.x - self.housing.x, self.y - self.housing.y)
-    }
-}
-
-/// Displacements of one probe.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct ProbeOutput {
-    /// Displacement (m).
-    pub x: f64,
-    /// Displacement (m).
-    pub y: f64,
-}
-
-/// Motion of one force port (`[[ports]]`) and the force applied there.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct PortOutput {
-    /// Displacement (m).
-    pub x: f64,
-    /// Displacement (m).
-    pub y: f64,
-    /// Velocity (m/s).
-    pub vx: f64,
-    /// Velocity (m/s).
-    pub vy: f64,
-}
-
-/// Everything a front end reports at the current time.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Outputs {
-    /// Time (s).
-    pub time: f64,
-    /// Spin speed (rad/s).
-    pub speed: f64,
-    /// Spin angle (rad).
-    pub spin_angle: f64,
-    /// One entry per model bearing, in model order.
-    pub bearings: Vec<BearingOutput>,
-    /// One entry per probe, in model order.
-    pub probes: Vec<ProbeOutput>,
-    /// One entry per force port, in model order.
-    pub ports: Vec<PortOutput>,
-    /// Sum of the bearings' friction torques (N·m).
-    pub friction_torque: f64,
-}
-
 /// Newmark/Newton–Raphson simulator of a rotor on nonlinear bearings.
 ///
 /// ```
@@ -222,13 +140,13 @@ pub struct Simulator {
     pub(super) state: SimState,
     pub(super) sites: Sites,
     /// All model bearings (for outputs), with the site index of nonlinear ones.
-    output_bearings: Vec<(Box<dyn Bearing>, Option<usize>)>,
+    pub(super) output_bearings: Vec<(Box<dyn Bearing>, Option<usize>)>,
     pub(super) factor: Option<Factor>,
     pub(super) factor_work: FactorWork,
     /// Evaluation buffers of every model bearing for [`Simulator::outputs`].
-    output_evals: Vec<BearingEval>,
-    output_q: Vec<f64>,
-    output_qd: Vec<f64>,
+    pub(super) output_evals: Vec<BearingEval>,
+    pub(super) output_q: Vec<f64>,
+    pub(super) output_qd: Vec<f64>,
     /// Up to this many journal DOFs a speed change is refactored exactly (see
     /// [`Simulator::prepare_factor`]).
     pub(super) refactor_journal_limit: usize,
@@ -473,157 +391,6 @@ impl Simulator {
         s.speed_time = s.time;
     }
 
-    /// Set the spin speed (rad/s) now and its rate of change (rad/s²) from now on.
-    pub fn set_speed(&mut self, speed: f64, rate: f64) -> Result<(), SolverError> {
-        if !speed.is_finite() || !rate.is_finite() {
-            return Err(SolverError::Input(format!(
-                "speed {speed} rad/s and its rate {rate} rad/s² must be finite"
-            )));
-        }
-        let max = self.rotor.model.max_speed;
-        if speed.abs() > max {
-            return Err(SolverError::Input(format!(
-                "speed {speed} rad/s exceeds the model's max_speed_rpm ({max} rad/s)"
-            )));
-        }
-        if self.torsion.is_some() {
-            // A torque-driven shaft: the speed is its initial condition.
-            if rate != 0.0 || self.state.time != 0.0 {
-                return Err(SolverError::Input(format!(
-                    "the shaft of {} is torque-driven: its speed comes from the torque inputs; a speed (without rate) can only be its initial condition at time 0",
-                    self.rotor.model.name
-                )));
-            }
-            self.state.twist_rate.fill(speed);
-            self.state.stuck = if speed == 0.0 { 1.0 } else { 0.0 };
-        }
-        self.rebase_inputs();
-        self.state.speed = speed;
-        self.state.speed_rate = rate;
-        Ok(())
-    }
-
-    /// Set the unbalance (kg·m) of plane `plane` (model order), constant from now on.
-    pub fn set_unbalance(&mut self, plane: usize, magnitude: f64) -> Result<(), SolverError> {
-        self.set_unbalance_ramp(plane, magnitude, 0.0)
-    }
-
-    /// Set the unbalance (kg·m) of plane `plane` now and its rate of change (kg·m/s).
-    pub fn set_unbalance_ramp(
-        &mut self,
-        plane: usize,
-        magnitude: f64,
-        rate: f64,
-    ) -> Result<(), SolverError> {
-        if !(magnitude.is_finite() && magnitude >= 0.0 && rate.is_finite()) {
-            return Err(SolverError::Input(format!(
-                "unbalance {magnitude} kg·m must be finite and not negative, its rate {rate} kg·m/s finite"
-            )));
-        }
-        self.rebase_inputs();
-        *plane_slot(&mut self.state.unbalance, plane)? = magnitude;
-        *plane_slot(&mut self.state.unbalance_rate, plane)? = rate;
-        Ok(())
-    }
-
-    /// Change the oil viscosity (Pa·s) of fluid-film bearing `index` (model order).
-    pub fn set_bearing_viscosity(
-        &mut self,
-        index: usize,
-        viscosity: f64,
-    ) -> Result<(), SolverError> {
-        if !(viscosity.is_finite() && viscosity > 0.0) {
-            return Err(SolverError::Input(format!(
-                "viscosity {viscosity} Pa·s must be finite and positive"
-            )));
-        }
-        self.change_bearing(
-            index,
-            |kind| kind.set_viscosity(viscosity),
-            "is not a fluid-film bearing: it has no oil viscosity",
-        )
-    }
-
-    /// Set the field excitation (0 off, 1 nominal; the pull goes with its
-    /// square) of the magnetic pull `index` (model order of bearings, rubs,
-    /// seals and pulls).
-    pub fn set_excitation(&mut self, index: usize, excitation: f64) -> Result<(), SolverError> {
-        if !(excitation.is_finite() && excitation >= 0.0) {
-            return Err(SolverError::Input(format!(
-                "field excitation {excitation} must be finite and not negative"
-            )));
-        }
-        self.change_bearing(
-            index,
-            |kind| kind.set_excitation(excitation),
-            "is not a magnetic pull: it has no field excitation",
-        )
-    }
-
-    /// Change a parameter of model bearing `index` with `set` (false: the
-    /// kind has no such parameter, `not_it` says why) and rebuild its force
-    /// models.
-    fn change_bearing(
-        &mut self,
-        index: usize,
-        set: impl FnOnce(&mut crate::bearing::BearingKind) -> bool,
-        not_it: &str,
-    ) -> Result<(), SolverError> {
-        let placed = self
-            .rotor
-            .model
-            .bearings
-            .get_mut(index)
-            .ok_or_else(|| SolverError::Input(format!("no bearing {index}")))?;
-        if !set(&mut placed.kind) {
-            return Err(SolverError::Input(format!("{} {not_it}", placed.name)));
-        }
-        let (output, site) = &mut self.output_bearings[index];
-        *output = placed.kind.build();
-        if let Some(k) = site {
-            self.sites.list[*k].bearing = placed.kind.build();
-        }
-        Ok(())
-    }
-
-    /// Set load input `input` (N; the order of
-    /// [`RotorModel::load_inputs`](crate::model::RotorModel::load_inputs)) now
-    /// and its rate of change (N/s) from now on.
-    pub fn set_load(&mut self, input: usize, value: f64, rate: f64) -> Result<(), SolverError> {
-        if !(value.is_finite() && rate.is_finite()) {
-            return Err(SolverError::Input(format!(
-                "load {value} N and its rate {rate} N/s must be finite"
-            )));
-        }
-        let count = self.state.loads.len();
-        if input >= count {
-            return Err(SolverError::Input(format!(
-                "no load input {input} (the model has {count})"
-            )));
-        }
-        self.rebase_inputs();
-        self.state.loads[input] = value;
-        self.state.load_rates[input] = rate;
-        Ok(())
-    }
-
-    /// Load input `input` (N) at time `t` (s).
-    pub fn load_at(&self, input: usize, t: f64) -> f64 {
-        let s = &self.state;
-        s.loads[input] + s.load_rates[input] * (t - s.speed_time)
-    }
-
-    /// Set the angular position (rad) of plane `plane` at spin angle zero.
-    pub fn set_unbalance_phase(&mut self, plane: usize, phase: f64) -> Result<(), SolverError> {
-        if !phase.is_finite() {
-            return Err(SolverError::Input(format!(
-                "unbalance phase {phase} must be finite"
-            )));
-        }
-        *plane_slot(&mut self.state.unbalance_phase, plane)? = phase;
-        Ok(())
-    }
-
     /// Put the rotor in static equilibrium under gravity at the current speed
     /// (velocities and accelerations zero, nonlinear bearings included), by
     /// Newton with backtracking on the full static Jacobian
@@ -687,110 +454,6 @@ impl Simulator {
         self.state.udd = acc;
         Ok(())
     }
-
-    /// Outputs at the current state.
-    pub fn outputs(&mut self) -> Result<Outputs, SolverError> {
-        let t = self.state.time;
-        let speed = self.speed_at(t);
-        let mut bearings = Vec::with_capacity(self.output_bearings.len());
-        let mut friction_torque = 0.0;
-        for (k, (bearing, site)) in self.output_bearings.iter().enumerate() {
-            let placed = &self.rotor.model.bearings[k];
-            let node = placed.node;
-            let at = |dof: usize, v: &[f64]| self.rotor.node_value(node, dof, v);
-            let (x, y) = (at(DOF_X, &self.state.u), at(DOF_Y, &self.state.u));
-            let (vx, vy) = (at(DOF_X, &self.state.ud), at(DOF_Y, &self.state.ud));
-            let housing = match placed.pedestal {
-                None => HousingOutput::default(),
-                Some(p) => {
-                    let at = |k: usize, v: &[f64]| self.rotor.pedestal_value(p, k, v);
-                    HousingOutput {
-                        x: at(0, &self.state.u),
-                        y: at(1, &self.state.u),
-                        vx: at(0, &self.state.ud),
-                        vy: at(1, &self.state.ud),
-                    }
-                }
-            };
-            let internal = bearing.internal_dofs();
-            let eval = &mut self.output_evals[k];
-            let (q, qd) = (
-                &mut self.output_q[..2 + internal],
-                &mut self.output_qd[..2 + internal],
-            );
-            (q[0], q[1], qd[0], qd[1]) = (
-                x - housing.x,
-                y - housing.y,
-                vx - housing.vx,
-                vy - housing.vy,
-            );
-            if let Some(si) = site {
-                let s = &self.sites.list[*si];
-                q[2..].copy_from_slice(&self.state.p[s.offset..s.offset + internal]);
-                qd[2..].copy_from_slice(&self.state.pd[s.offset..s.offset + internal]);
-            }
-            bearing
-                .evaluate(q, qd, speed, eval)
-                .map_err(|source| SolverError::Bearing {
-                    name: self.rotor.model.bearings[k].name.clone(),
-                    time: t,
-                    source,
-                })?;
-            let report = bearing.report(q, qd, speed, eval);
-            friction_torque += report.friction_torque;
-            bearings.push(BearingOutput {
-                x,
-                y,
-                fx: eval.force[0],
-                fy: eval.force[1],
-                report,
-                housing,
-            });
-        }
-        let probes = self
-            .rotor
-            .model
-            .probes
-            .iter()
-            .map(|p| ProbeOutput {
-                x: self.rotor.node_value(p.node, DOF_X, &self.state.u),
-                y: self.rotor.node_value(p.node, DOF_Y, &self.state.u),
-            })
-            .collect();
-        let ports = self
-            .rotor
-            .model
-            .ports
-            .iter()
-            .map(|p| {
-                let at = |k: usize, v: &[f64]| self.rotor.node_value(p.node, k, v);
-                PortOutput {
-                    x: at(DOF_X, &self.state.u),
-                    y: at(DOF_Y, &self.state.u),
-                    vx: at(DOF_X, &self.state.ud),
-                    vy: at(DOF_Y, &self.state.ud),
-                }
-            })
-            .collect();
-        Ok(Outputs {
-            time: t,
-            speed,
-            spin_angle: self.state.spin_angle,
-            bearings,
-            probes,
-            ports,
-            friction_torque,
-        })
-    }
-}
-
-fn plane_slot(values: &mut [f64], plane: usize) -> Result<&mut f64, SolverError> {
-    let count = values.len();
-    values.get_mut(plane).ok_or_else(|| {
-        SolverError::Input(format!(
-            "no unbalance plane {plane} (the model has {count})"
-        ))
-    })
 }
 
 /// Largest absolute entry of `v` (0 when empty).

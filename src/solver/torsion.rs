@@ -12,8 +12,9 @@
 //! - the reaction of each unbalance `m e` at angle `φ`: the torque the shaft
 //!   spends carrying the unbalance mass along the node's lateral
 //!   acceleration, `−m e (ÿ cos φ − ẍ sin φ)` (the lateral unbalance force
-//!   uses the node's own `φ`, `φ̇`, `φ̈`, so the pair exchanges energy
-//!   exactly).
+//!   uses the node's own `φ` and `φ̇` at the step's end and its `φ̈` over the
+//!   step, as a prescribed speed profile gives it, so the pair exchanges
+//!   energy and a torsionally rigid shaft repeats the speed-driven run).
 //!
 //! The lateral step runs at the shaft's mean speed `Ω = Σ J_i φ̇_i / Σ J_i`
 //! (gyroscopic moments and films; the node speeds differ from it only by the
@@ -36,7 +37,7 @@
 use crate::bearing::BearingEval;
 use crate::bearing::thrust::ThrustBearing;
 use crate::fe::{DOF_X, DOF_Y};
-use crate::linalg::BandMatrix;
+use crate::linalg::{BandLu, BandMatrix};
 use crate::rotor::Rotor;
 use crate::rotor::torsion::TorsionalRotor;
 
@@ -61,8 +62,10 @@ pub(super) struct Torsion {
     site_dofs: Vec<Option<usize>>,
     /// Thrust bearings at twist DOFs.
     thrust: Vec<(Option<usize>, ThrustBearing)>,
-    /// Newmark matrix `K + a1 C + a0 M` plus the thrust Jacobian.
+    /// Newmark matrix `K + a1 C + a0 M` plus the thrust Jacobian, and its
+    /// factors (storage reused).
     a: BandMatrix<f64>,
+    lu: BandLu<f64>,
     /// Iterate: twist, rate, acceleration at the step's end.
     pub theta: Vec<f64>,
     pub omega: Vec<f64>,
@@ -105,8 +108,13 @@ impl Torsion {
             .iter()
             .map(|t| (chain.dofs[t.node], t.bearing))
             .collect();
+        let mut a = chain.stiffness.zeroed_like();
+        for i in 0..n {
+            a.set(i, i, 1.0);
+        }
         Self {
-            a: chain.stiffness.zeroed_like(),
+            lu: a.lu().expect("the identity factors"),
+            a,
             inputs,
             planes,
             site_dofs,
@@ -142,6 +150,45 @@ impl Torsion {
 }
 
 impl Simulator {
+    /// The torque (N·m) in the shaft element from `node` to the next, the
+    /// twist of the far end over the near one times its torsional stiffness
+    /// plus damping (a coupling's where one is); `None` when the speed is
+    /// prescribed or no element starts there.
+    pub fn section_torque(&self, node: usize) -> Option<f64> {
+        let tors = self.torsion.as_ref()?;
+        let (i, j) = (
+            tors.chain.dofs[node]?,
+            tors.chain.dofs.get(node + 1).copied()??,
+        );
+        let s = &self.state;
+        let k = -tors.chain.stiffness.get(i, j);
+        let c = -tors.chain.damping.get(i, j);
+        Some(k * (s.twist[j] - s.twist[i]) + c * (s.twist_rate[j] - s.twist_rate[i]))
+    }
+
+    /// The speed (rad/s) and angle (rad) of `node` (0-based): its twist of a
+    /// torque-driven shaft, else the prescribed speed and spin angle.
+    pub fn node_rotation(&self, node: usize) -> (f64, f64) {
+        let s = &self.state;
+        match self.torsion.as_ref().and_then(|t| t.chain.dofs[node]) {
+            Some(i) => (s.twist_rate[i], s.twist[i]),
+            None if self.torsion.is_some() => (0.0, 0.0),
+            None => (self.speed_at(s.time), s.spin_angle),
+        }
+    }
+
+    /// The friction torque (N·m, opposing the spin) of thrust bearing `k`
+    /// (model order) at its node's speed; at standstill its breakaway
+    /// torque, as the journals' contact friction reports `μ N R` there.
+    pub fn thrust_friction(&self, k: usize) -> f64 {
+        let t = &self.rotor.model.thrust_bearings[k];
+        let (speed, _) = self.node_rotation(t.node);
+        if speed == 0.0 {
+            return t.bearing.breakaway_torque();
+        }
+        t.bearing.friction_torque(speed).0
+    }
+
     /// The net input torque (N·m) of the `[[torques]]` at time `t`.
     fn input_torque(&self, t: f64) -> f64 {
         let Some(tors) = &self.torsion else {
@@ -237,7 +284,8 @@ impl Simulator {
 
     /// Point the lateral step at the speed profile of the torsional iterate:
     /// the mean speed from the state's to the iterate's, and each unbalance
-    /// plane's node angle, speed and acceleration at the step's end.
+    /// plane's node angle and speed at the step's end and acceleration over
+    /// the step.
     fn drive_lateral(&mut self, h: f64) {
         let Some(tors) = &self.torsion else { return };
         let w0 = tors.mean(&self.state.twist_rate);
@@ -246,11 +294,17 @@ impl Simulator {
         s.speed = w0;
         s.speed_rate = (w1 - w0) / h;
         s.speed_time = s.time;
+        // The unbalance takes the node's acceleration over the step, as a
+        // prescribed speed profile does (its rate, linear within the step).
         let motion = &mut self.newmark.plane_motion;
         motion.clear();
         for dof in &tors.planes {
             motion.push(match *dof {
-                Some(i) => [tors.theta[i], tors.omega[i], tors.alpha[i]],
+                Some(i) => [
+                    tors.theta[i],
+                    tors.omega[i],
+                    (tors.omega[i] - s.twist_rate[i]) / h,
+                ],
                 None => [0.0; 3],
             });
         }
@@ -270,7 +324,7 @@ impl Simulator {
                 return self.hold_at_rest(h);
             }
             self.state.stuck = 0.0;
-            self.breakaway_acceleration(drive, capacity)?;
+            self.breakaway_acceleration(drive)?;
         }
         if let Some(t) = self.torsion.as_mut() {
             t.coupling.copy_from_slice(&self.state.twist_torque);
@@ -335,24 +389,59 @@ impl Simulator {
             s.twist_rate.fill(0.0);
             s.twist_accel.fill(0.0);
         }
-        s.speed = if s.stuck != 0.0 { 0.0 } else { w1 };
-        s.speed_rate = 0.0;
-        s.speed_time = s.time;
+        // The speed profile stays the step's (from its start, where every
+        // input was re-based); a stuck shaft is at rest.
+        if s.stuck != 0.0 {
+            s.speed = 0.0;
+            s.speed_rate = 0.0;
+        }
     }
 
     /// At breakaway the shaft accelerates at once: the twist accelerations
-    /// that balance the inputs at the step's start against the friction at
-    /// the onset of sliding (the breakaway torque `capacity`, opposing the
-    /// net input `drive`), shared over the nodes by their inertia (the shaft
-    /// starts as a rigid body), so Newmark's first step does not lag.
-    fn breakaway_acceleration(&mut self, drive: f64, capacity: f64) -> Result<(), SolverError> {
-        let Some(tors) = &self.torsion else {
+    /// consistent with the inputs at the step's start and the friction at
+    /// the onset of sliding (each bearing's breakaway torque, opposing the
+    /// net input `drive`), `M_t φ̈ = T_in − T_f − K_t φ − C_t φ̇`, so that
+    /// Newmark's first step neither lags nor breaks the energy balance.
+    fn breakaway_acceleration(&mut self, drive: f64) -> Result<(), SolverError> {
+        if let Some(t) = self.torsion.as_mut() {
+            t.fresh.fill(0.0);
+        }
+        // The sites' contact friction at rest, as if sliding forward.
+        self.site_friction(0.0, true, true)?;
+        let t0 = self.state.time;
+        let Some(mut tors) = self.torsion.take() else {
             return Ok(());
         };
-        let net = drive - capacity.min(drive.abs()) * drive.signum();
-        let alpha = net / tors.chain.total_inertia();
-        self.state.twist_accel.fill(alpha);
-        Ok(())
+        let sign = drive.signum();
+        let s = &self.state;
+        for (r, f) in tors.rhs.iter_mut().zip(&tors.fresh) {
+            *r = sign * f;
+        }
+        for &(k, dof) in &tors.inputs {
+            if let Some(i) = dof {
+                tors.rhs[i] += self.load_at(k, t0);
+            }
+        }
+        for (dof, t) in &tors.thrust {
+            if let Some(i) = *dof {
+                tors.rhs[i] -= sign * t.breakaway_torque();
+            }
+        }
+        for (m, x) in [
+            (&tors.chain.stiffness, &s.twist),
+            (&tors.chain.damping, &s.twist_rate),
+        ] {
+            m.mul_vec(x, &mut tors.scratch);
+            for (r, v) in tors.rhs.iter_mut().zip(&tors.scratch) {
+                *r -= v;
+            }
+        }
+        let outcome = tors.chain.mass.lu().map(|lu| {
+            lu.solve_in_place(&mut tors.rhs);
+            self.state.twist_accel.copy_from_slice(&tors.rhs);
+        });
+        self.torsion = Some(tors);
+        Ok(outcome?)
     }
 
     /// A step of the shaft held at rest by static friction: no twist motion,
@@ -377,68 +466,96 @@ impl Simulator {
 }
 
 /// Newton on the torsional Newmark step from state `s` (step `h`):
-/// `M α + C ω + K θ = T_in + T_c − T_thrust(ω)` with the Newmark rates of `θ`.
+/// `M α + C ω + K θ = T_in + T_c − T_thrust(ω)` with the Newmark rates of
+/// `θ`, with backtracking on the residual (the thrust friction turns over
+/// sharply near rest).
 fn torsional_newton(tors: &mut Torsion, s: &SimState, h: f64) -> Result<(), SolverError> {
     let (a0, a1, a2) = (4.0 / (h * h), 2.0 / h, 4.0 / h);
     let n = tors.chain.dof_count();
-    let rates = |tors: &mut Torsion| {
-        for i in 0..n {
-            let d = tors.theta[i] - s.twist[i];
-            tors.omega[i] = a1 * d - s.twist_rate[i];
-            tors.alpha[i] = a0 * d - a2 * s.twist_rate[i] - s.twist_accel[i];
-        }
-    };
     // Predictor.
     for i in 0..n {
         tors.theta[i] = s.twist[i] + h * s.twist_rate[i] + 0.5 * h * h * s.twist_accel[i];
     }
+    let mut residual = torsional_residual(tors, s, (a0, a1, a2), true);
     for _ in 0..MAX_TORSION_ITERATIONS {
-        rates(tors);
-        // Residual r = T_in + T_c − T_thrust − M α − C ω − K θ.
-        tors.rhs.copy_from_slice(&tors.coupling);
-        for (&(_, dof), t) in tors.inputs.iter().zip(&tors.input_values) {
-            if let Some(i) = dof {
-                tors.rhs[i] += t;
-            }
-        }
-        tors.a.assign(&tors.chain.stiffness);
-        tors.a.scale_add(a1, &tors.chain.damping);
-        tors.a.scale_add(a0, &tors.chain.mass);
-        for (dof, t) in &tors.thrust {
-            if let Some(i) = *dof {
-                let (torque, slope) = t.friction_torque(tors.omega[i]);
-                tors.rhs[i] -= torque;
-                tors.a.add(i, i, a1 * slope);
-            }
-        }
-        for (m, x) in [
-            (&tors.chain.mass, &tors.alpha),
-            (&tors.chain.damping, &tors.omega),
-            (&tors.chain.stiffness, &tors.theta),
-        ] {
-            m.mul_vec(x, &mut tors.scratch);
-            for (r, v) in tors.rhs.iter_mut().zip(&tors.scratch) {
-                *r -= v;
-            }
-        }
+        tors.a.lu_into(&mut tors.lu)?;
+        tors.scratch.copy_from_slice(&tors.rhs);
+        tors.lu.solve_in_place(&mut tors.scratch);
+        let step = tors.scratch.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         let scale = tors
             .theta
             .iter()
             .fold(0.0_f64, |m, v| m.max(v.abs()))
             .max(1.0);
-        let lu = tors.a.lu()?;
-        lu.solve_in_place(&mut tors.rhs);
-        let mut step: f64 = 0.0;
-        for (t, d) in tors.theta.iter_mut().zip(&tors.rhs) {
-            *t += d;
-            step = step.max(d.abs());
+        // The Newton direction, then backtracking along it.
+        tors.fresh.copy_from_slice(&tors.scratch);
+        let mut t = 1.0;
+        loop {
+            for (theta, d) in tors.theta.iter_mut().zip(&tors.fresh) {
+                *theta += t * d;
+            }
+            let trial = torsional_residual(tors, s, (a0, a1, a2), true);
+            if trial <= residual || t < 1e-8 {
+                residual = trial;
+                break;
+            }
+            for (theta, d) in tors.theta.iter_mut().zip(&tors.fresh) {
+                *theta -= t * d;
+            }
+            t *= 0.5;
         }
-        if step <= 1e-14 * scale {
-            rates(tors);
+        if step <= 1e-14 * scale || residual == 0.0 {
             return Ok(());
         }
     }
     Err(SolverError::Input(
         "the torsional step did not converge (thrust bearing friction)".into(),
     ))
+}
+
+/// The torsional residual `T_in + T_c − T_thrust − M α − C ω − K θ` at
+/// `torsion.theta` into `torsion.rhs` (rates updated), and with `jacobian`
+/// its Jacobian into `torsion.a`; returns its largest entry.
+fn torsional_residual(
+    tors: &mut Torsion,
+    s: &SimState,
+    (a0, a1, a2): (f64, f64, f64),
+    jacobian: bool,
+) -> f64 {
+    for i in 0..tors.theta.len() {
+        let d = tors.theta[i] - s.twist[i];
+        tors.omega[i] = a1 * d - s.twist_rate[i];
+        tors.alpha[i] = a0 * d - a2 * s.twist_rate[i] - s.twist_accel[i];
+    }
+    tors.rhs.copy_from_slice(&tors.coupling);
+    for (&(_, dof), t) in tors.inputs.iter().zip(&tors.input_values) {
+        if let Some(i) = dof {
+            tors.rhs[i] += t;
+        }
+    }
+    if jacobian {
+        tors.a.assign(&tors.chain.stiffness);
+        tors.a.scale_add(a1, &tors.chain.damping);
+        tors.a.scale_add(a0, &tors.chain.mass);
+    }
+    for (dof, t) in &tors.thrust {
+        if let Some(i) = *dof {
+            let (torque, slope) = t.friction_torque(tors.omega[i]);
+            tors.rhs[i] -= torque;
+            if jacobian {
+                tors.a.add(i, i, a1 * slope);
+            }
+        }
+    }
+    for (m, x) in [
+        (&tors.chain.mass, &tors.alpha),
+        (&tors.chain.damping, &tors.omega),
+        (&tors.chain.stiffness, &tors.theta),
+    ] {
+        m.mul_vec(x, &mut tors.scratch);
+        for (r, v) in tors.rhs.iter_mut().zip(&tors.scratch) {
+            *r -= v;
+        }
+    }
+    tors.rhs.iter().fold(0.0_f64, |m, v| m.max(v.abs()))
 }

@@ -1,0 +1,189 @@
+//! What the simulator reports at the current time: per bearing the journal,
+//! its force and film report and its housing's motion, per probe and port
+//! the node's motion, the spin, and the friction torque (`Simulator::outputs`).
+
+use crate::bearing::BearingReport;
+use crate::fe::{DOF_X, DOF_Y};
+
+use super::simulator::{Simulator, SolverError};
+
+/// Absolute motion of a bearing's housing (zero on rigid ground): what a
+/// seismic sensor on the bracket or pedestal measures.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct HousingOutput {
+    /// Displacement (m).
+    pub x: f64,
+    /// Displacement (m).
+    pub y: f64,
+    /// Velocity (m/s).
+    pub vx: f64,
+    /// Velocity (m/s).
+    pub vy: f64,
+}
+
+/// Outputs of one bearing.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BearingOutput {
+    /// Journal displacement (m), absolute; relative to the housing (what a
+    /// proximity probe on the bearing measures) it is `x − housing.x`.
+    pub x: f64,
+    /// Journal displacement (m), absolute.
+    pub y: f64,
+    /// Force of the bearing on the journal (N).
+    pub fx: f64,
+    /// Force of the bearing on the journal (N).
+    pub fy: f64,
+    /// Film reports (eccentricity, friction…), from the journal's motion
+    /// relative to its housing.
+    pub report: BearingReport,
+    /// The housing's absolute motion (zero on rigid ground).
+    pub housing: HousingOutput,
+}
+
+impl BearingOutput {
+    /// Journal displacement relative to the housing, `(x, y)` (m).
+    pub fn relative(&self) -> (f64, f64) {
+        (self.x - self.housing.x, self.y - self.housing.y)
+    }
+}
+
+/// Displacements of one probe.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ProbeOutput {
+    /// Displacement (m).
+    pub x: f64,
+    /// Displacement (m).
+    pub y: f64,
+}
+
+/// Motion of one force port (`[[ports]]`) and the force applied there.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PortOutput {
+    /// Displacement (m).
+    pub x: f64,
+    /// Displacement (m).
+    pub y: f64,
+    /// Velocity (m/s).
+    pub vx: f64,
+    /// Velocity (m/s).
+    pub vy: f64,
+}
+
+/// Everything a front end reports at the current time.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outputs {
+    /// Time (s).
+    pub time: f64,
+    /// Spin speed (rad/s).
+    pub speed: f64,
+    /// Spin angle (rad).
+    pub spin_angle: f64,
+    /// One entry per model bearing, in model order.
+    pub bearings: Vec<BearingOutput>,
+    /// One entry per probe, in model order.
+    pub probes: Vec<ProbeOutput>,
+    /// One entry per force port, in model order.
+    pub ports: Vec<PortOutput>,
+    /// Sum of the bearings' friction torques (N·m).
+    pub friction_torque: f64,
+}
+
+impl Simulator {
+    /// Outputs at the current state.
+    pub fn outputs(&mut self) -> Result<Outputs, SolverError> {
+        let t = self.state.time;
+        let speed = self.speed_at(t);
+        let mut bearings = Vec::with_capacity(self.output_bearings.len());
+        let mut friction_torque = 0.0;
+        for (k, (bearing, site)) in self.output_bearings.iter().enumerate() {
+            let placed = &self.rotor.model.bearings[k];
+            let node = placed.node;
+            let at = |dof: usize, v: &[f64]| self.rotor.node_value(node, dof, v);
+            let (x, y) = (at(DOF_X, &self.state.u), at(DOF_Y, &self.state.u));
+            let (vx, vy) = (at(DOF_X, &self.state.ud), at(DOF_Y, &self.state.ud));
+            let housing = match placed.pedestal {
+                None => HousingOutput::default(),
+                Some(p) => {
+                    let at = |k: usize, v: &[f64]| self.rotor.pedestal_value(p, k, v);
+                    HousingOutput {
+                        x: at(0, &self.state.u),
+                        y: at(1, &self.state.u),
+                        vx: at(0, &self.state.ud),
+                        vy: at(1, &self.state.ud),
+                    }
+                }
+            };
+            let internal = bearing.internal_dofs();
+            let eval = &mut self.output_evals[k];
+            let (q, qd) = (
+                &mut self.output_q[..2 + internal],
+                &mut self.output_qd[..2 + internal],
+            );
+            (q[0], q[1], qd[0], qd[1]) = (
+                x - housing.x,
+                y - housing.y,
+                vx - housing.vx,
+                vy - housing.vy,
+            );
+            if let Some(si) = site {
+                let s = &self.sites.list[*si];
+                q[2..].copy_from_slice(&self.state.p[s.offset..s.offset + internal]);
+                qd[2..].copy_from_slice(&self.state.pd[s.offset..s.offset + internal]);
+            }
+            bearing
+                .evaluate(q, qd, speed, eval)
+                .map_err(|source| SolverError::Bearing {
+                    name: self.rotor.model.bearings[k].name.clone(),
+                    time: t,
+                    source,
+                })?;
+            let report = bearing.report(q, qd, speed, eval);
+            friction_torque += report.friction_torque;
+            bearings.push(BearingOutput {
+                x,
+                y,
+                fx: eval.force[0],
+                fy: eval.force[1],
+                report,
+                housing,
+            });
+        }
+        let probes = self
+            .rotor
+            .model
+            .probes
+            .iter()
+            .map(|p| ProbeOutput {
+                x: self.rotor.node_value(p.node, DOF_X, &self.state.u),
+                y: self.rotor.node_value(p.node, DOF_Y, &self.state.u),
+            })
+            .collect();
+        for k in 0..self.rotor.model.thrust_bearings.len() {
+            friction_torque += self.thrust_friction(k);
+        }
+        let ports = self
+            .rotor
+            .model
+            .ports
+            .iter()
+            .map(|p| {
+                let at = |k: usize, v: &[f64]| self.rotor.node_value(p.node, k, v);
+                PortOutput {
+                    x: at(DOF_X, &self.state.u),
+                    y: at(DOF_Y, &self.state.u),
+                    vx: at(DOF_X, &self.state.ud),
+                    vy: at(DOF_Y, &self.state.ud),
+                }
+            })
+            .collect();
+        Ok(Outputs {
+            time: t,
+            speed,
+            spin_angle: self.state.spin_angle,
+            bearings,
+            probes,
+            ports,
+            friction_torque,
+        })
+    }
+}
