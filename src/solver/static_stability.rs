@@ -4,8 +4,9 @@
 //! stiffness `K_t = K + E K_c Eᵀ` (bearings condensed statically) then has a
 //! real eigenvalue `λ ≤ 0` — a mode along which the net stiffness is
 //! negative, so the rotor diverges (buckles sideways) from rest. The check
-//! finds the eigenvalues of `K_t` nearest zero by shift-invert Arnoldi on
-//! `K_t⁻¹` (a few banded solves) and refuses the equilibrium with the net
+//! finds the eigenvalues of `K_t` nearest zero and nearest minus the
+//! culprits' stiffness by shift-invert Arnoldi (a few banded solves each)
+//! and refuses the equilibrium with the net
 //! stiffness `λ`, where its mode is largest and the elements of negative
 //! stiffness that cause it. It runs only when some element has a negative
 //! direct stiffness, so every other model is untouched.
@@ -21,10 +22,16 @@ use super::sites::{Sites, add_coupling};
 /// (sites evaluated there) with their most negative direct entry (N/m),
 /// bearings in model order.
 fn negative_elements(rotor: &Rotor, sites: &Sites) -> Vec<(String, f64)> {
+    // Below round-off of the rotor's own stiffness a negative entry is no
+    // element's doing (an unloaded film's zero).
+    let floor = -1e-9
+        * (0..rotor.dof_count())
+            .map(|i| rotor.stiffness.get(i, i).abs())
+            .fold(0.0, f64::max);
     let mut out: Vec<(String, f64)> = rotor.negative_stiffness.clone();
     for site in &sites.list {
         let k = site.eval.k(0, 0).min(site.eval.k(1, 1));
-        if k < 0.0 {
+        if k < floor {
             out.push((site.name.clone(), k));
         }
     }
@@ -69,33 +76,49 @@ pub(super) fn check(
         .collect::<Vec<_>>()
         .join(", ");
     let rpm = speed * 30.0 / std::f64::consts::PI;
-    let Ok(lu) = a.lu() else {
-        return Err(SolverError::Static(format!(
-            "at {} rpm the machine has no net static stiffness (singular): the negative stiffness of {names} cancels what holds it",
-            short(rpm)
-        )));
-    };
-    let mut apply = |x: &[f64], y: &mut [f64]| {
-        y.copy_from_slice(x);
-        lu.solve_in_place(y);
-        Ok(())
-    };
-    let nev = n.min(6);
-    let options = ArnoldiOptions {
-        tol: 1e-9,
-        ..ArnoldiOptions::default()
-    };
-    let pairs =
-        largest_eigenpairs_real(n, nev, &mut apply, &options).map_err(SolverError::Linalg)?;
-    let unstable = pairs
-        .iter()
-        .filter(|p| p.value.im.abs() <= 1e-9 * p.value.norm() && p.value.re < 0.0)
-        .map(|p| (1.0 / p.value.re, &p.vector))
-        .filter(|(lambda, _)| *lambda < -1e-9 * scale)
-        .min_by(|a, b| a.0.total_cmp(&b.0));
+    // The eigenvalues nearest zero (a barely negative net stiffness) and
+    // nearest the culprits' own stiffness (a strongly negative one, beyond
+    // the small positive ones of loosely held journals).
+    let strongest = culprits.iter().map(|(_, k)| k.abs()).sum::<f64>();
+    let mut unstable: Option<(f64, Vec<nalgebra::Complex<f64>>)> = None;
+    for shift in [0.0, -strongest] {
+        let mut shifted = a.clone();
+        for i in 0..n {
+            shifted.add(i, i, -shift);
+        }
+        let Ok(lu) = shifted.lu() else {
+            if shift == 0.0 {
+                return Err(SolverError::Static(format!(
+                    "at {} rpm the machine has no net static stiffness (singular): the negative stiffness of {names} cancels what holds it",
+                    short(rpm)
+                )));
+            }
+            continue;
+        };
+        let mut apply = |x: &[f64], y: &mut [f64]| {
+            y.copy_from_slice(x);
+            lu.solve_in_place(y);
+            Ok(())
+        };
+        let nev = n.min(8);
+        let options = ArnoldiOptions {
+            tol: 1e-9,
+            ..ArnoldiOptions::default()
+        };
+        let pairs =
+            largest_eigenpairs_real(n, nev, &mut apply, &options).map_err(SolverError::Linalg)?;
+        for p in &pairs {
+            let lambda = 1.0 / p.value.re + shift;
+            let real = p.value.im.abs() <= 1e-9 * p.value.norm();
+            if real && lambda < -1e-9 * scale && unstable.as_ref().is_none_or(|u| lambda < u.0) {
+                unstable = Some((lambda, p.vector.clone()));
+            }
+        }
+    }
     let Some((lambda, vector)) = unstable else {
         return Ok(());
     };
+    let vector = &vector;
     let at = (0..n)
         .filter(|&i| rotor.dofs.is_displacement(i))
         .max_by(|&i, &j| vector[i].norm().total_cmp(&vector[j].norm()));
