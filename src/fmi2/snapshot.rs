@@ -12,6 +12,7 @@
 //! truncated or altered buffer is refused with a message, never a panic.
 
 use crate::solver::SimState;
+use crate::units::Short;
 
 use super::instance::Params;
 use super::states::Phase;
@@ -295,7 +296,7 @@ impl Snapshot {
         for (name, _, set) in SCALARS {
             let v = r.f64()?;
             if !set(&mut snap, v) {
-                return Err(format!("corrupt state ({name} = {v})"));
+                return Err(format!("corrupt state ({name} = {})", Short(v)));
             }
         }
         snap.fits(current)?;

@@ -7,6 +7,7 @@ use std::collections::HashSet;
 use super::ModelError;
 use super::error::FieldPath;
 use super::source_map::line_of_field;
+use crate::units::Short;
 
 /// The model text and its name, for error messages.
 pub(crate) struct Ctx<'a> {
@@ -38,7 +39,7 @@ impl Ctx<'_> {
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(self.err(path, v, "must be a finite number"))
+            Err(self.err(path, Short(v), "must be a finite number"))
         }
     }
 
@@ -47,7 +48,7 @@ impl Ctx<'_> {
         if v.is_finite() && v > 0.0 {
             Ok(v)
         } else {
-            Err(self.err(path, v, "must be a finite number greater than zero"))
+            Err(self.err(path, Short(v), "must be a finite number greater than zero"))
         }
     }
 
@@ -56,7 +57,7 @@ impl Ctx<'_> {
         if v.is_finite() && v >= 0.0 {
             Ok(v)
         } else {
-            Err(self.err(path, v, "must be a finite number not less than zero"))
+            Err(self.err(path, Short(v), "must be a finite number not less than zero"))
         }
     }
 

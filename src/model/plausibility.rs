@@ -5,6 +5,7 @@
 use std::fmt;
 
 use super::RotorModel;
+use crate::units::Short;
 
 /// Plausible dynamic viscosity of a lubricant (Pa·s): water (≈ 1e-3) to heavy
 /// oils at low temperature.
@@ -35,7 +36,10 @@ impl fmt::Display for ModelWarning {
         write!(
             f,
             "{}: {} = {}: {}",
-            self.file, self.field, self.value, self.problem
+            self.file,
+            self.field,
+            Short(self.value),
+            self.problem
         )
     }
 }

@@ -492,8 +492,10 @@ fn viscosity_in_centistokes_is_warned_with_file_field_value_and_range() {
         );
         let text = w[0].to_string();
         assert!(
-            text.starts_with(&format!("m.toml: bearings[0].viscosity = {mu}: "))
-                && text.contains("1e-4 to 1 Pa·s"),
+            text.starts_with(&format!(
+                "m.toml: bearings[0].viscosity = {}: ",
+                crate::units::Short(mu)
+            )) && text.contains("1e-4 to 1 Pa·s"),
             "{text}"
         );
     }

@@ -5,6 +5,7 @@ use super::super::snapshot::Snapshot;
 use super::super::states::Call;
 use super::super::variables::VISCOSITY_RANGE;
 use super::{Instance, Status};
+use crate::units::Short;
 
 impl Instance {
     /// The state `fmi2GetFMUstate` would save now.
@@ -45,8 +46,9 @@ impl Instance {
             return self.report(
                 Status::Error,
                 format!(
-                    "{}: viscosity {mu} Pa·s of bearing {} in the state is outside [{lo}, {hi}] Pa·s",
+                    "{}: viscosity {} Pa·s of bearing {} in the state is outside [{lo}, {hi}] Pa·s",
                     call.name(),
+                    Short(*mu),
                     self.model.bearings[k].name
                 ),
             );

@@ -31,6 +31,7 @@
 use crate::model::RotorModel;
 use crate::rotor::Rotor;
 use crate::solver::{Outputs, Simulator, SolverError, SolverOptions};
+use crate::units::Short;
 
 use super::snapshot::fingerprint;
 use super::states::Call;
@@ -275,7 +276,14 @@ impl Instance {
             return s;
         }
         if !start.is_finite() || stop.is_some_and(|t| !(t.is_finite() && t >= start)) {
-            return self.report(Status::Error, format!("fmi2SetupExperiment: start time {start} and stop time {stop:?} must be finite, stop ≥ start"));
+            let stop = stop.map_or("none".to_string(), |t| Short(t).to_string());
+            return self.report(
+                Status::Error,
+                format!(
+                    "fmi2SetupExperiment: start time {} and stop time {stop} must be finite, stop ≥ start",
+                    Short(start)
+                ),
+            );
         }
         self.start_time = start;
         self.stop_time = stop;
@@ -408,7 +416,7 @@ impl Instance {
         } else {
             Err(self.report(
                 Status::Error,
-                format!("{call}: {} is not finite ({value})", v.name),
+                format!("{call}: {} is not finite ({})", v.name, Short(value)),
             ))
         }
     }
@@ -445,13 +453,13 @@ impl Instance {
         if !value.is_finite() {
             return self.report(
                 Status::Error,
-                format!("{call}: {} = {value} is not finite", v.name),
+                format!("{call}: {} = {} is not finite", v.name, Short(value)),
             );
         }
         let bad = |this: &mut Self, why: &str| {
             this.report(
                 Status::Error,
-                format!("{call}: {} = {value}: {why}", v.name),
+                format!("{call}: {} = {}: {why}", v.name, Short(value)),
             )
         };
         if let Some(min) = v.min.filter(|&m| value < m) {
@@ -524,7 +532,11 @@ impl Instance {
         if !value.is_finite() {
             return self.report(
                 Status::Error,
-                format!("{call}: derivative of {} = {value} is not finite", v.name),
+                format!(
+                    "{call}: derivative of {} = {} is not finite",
+                    v.name,
+                    Short(value)
+                ),
             );
         }
         let s = self.sim.state();
@@ -559,21 +571,41 @@ impl Instance {
         }
         let call = Call::DoStep.name();
         let now = self.sim.time();
+        let (t, h) = (Short(current), Short(step));
+        if !(step.is_finite() && step > 0.0) {
+            return self.report(
+                Status::Error,
+                format!("{call}: communication step {h} s must be positive"),
+            );
+        }
         if self.sim.align_time(current).is_err() {
             return self.report(
                 Status::Error,
                 format!(
-                    "{call}: communication point {current} s differs from the FMU time {now} s"
+                    "{call}: communication point {t} s differs from the FMU time {} s",
+                    Short(now)
                 ),
             );
         }
-        if !(step.is_finite() && step > 0.0) {
+        let end = current + step;
+        // The step the integrator would take: what t + h adds to t in floating point.
+        let advance = end - current;
+        if advance < SolverOptions::MIN_SPAN * (1.0 - 1e-6) {
+            let why = if advance == 0.0 {
+                format!(
+                    "does not advance the time {t} s at all (below its floating-point resolution)"
+                )
+            } else {
+                format!(
+                    "is shorter than the {} s the integrator resolves (round-off in the Newmark accelerations grows as 1/h²)",
+                    Short(SolverOptions::MIN_SPAN)
+                )
+            };
             return self.report(
                 Status::Error,
-                format!("{call}: communication step {step} s must be positive"),
+                format!("{call}: the communication step {h} s from {t} s {why}"),
             );
         }
-        let end = current + step;
         if let Some(stop) = self
             .stop_time
             .filter(|&t| end > t + STOP_SLACK * t.abs().max(1.0))
@@ -581,7 +613,9 @@ impl Instance {
             return self.report(
                 Status::Error,
                 format!(
-                    "{call}: the step from {current} s by {step} s ends at {end} s, past the stop time {stop} s of fmi2SetupExperiment"
+                    "{call}: the step from {t} s by {h} s ends at {} s, past the stop time {} s of fmi2SetupExperiment",
+                    Short(end),
+                    Short(stop)
                 ),
             );
         }
@@ -594,7 +628,7 @@ impl Instance {
                 Status::Ok,
                 category(Status::Ok),
                 format!(
-                    "{call} from {current} s by {step} s: {} internal steps, {} Newton iterations, {} step cuts ({} Jacobian refreshes, {} factorizations)",
+                    "{call} from {t} s by {h} s: {} internal steps, {} Newton iterations, {} step cuts ({} Jacobian refreshes, {} factorizations)",
                     after.steps - before.steps,
                     after.iterations - before.iterations,
                     after.step_cuts - before.step_cuts,
@@ -613,7 +647,10 @@ impl Instance {
                 let reached = self.sim.time();
                 self.report(
                     Status::Discard,
-                    format!("{call} from {current} s by {step} s discarded at {reached} s: {e}. Roll back with fmi2SetFMUstate or reset."),
+                    format!(
+                        "{call} from {t} s by {h} s discarded at {} s: {e}. Roll back with fmi2SetFMUstate or reset.",
+                        Short(reached)
+                    ),
                 )
             }
         }
