@@ -110,6 +110,33 @@ impl Rotor {
         nodes
     }
 
+    /// Coordinates of the rotor [`Rotor::for_transients`] builds from this
+    /// one's model with `modes` fixed-interface modes, without building it:
+    /// every free DOF for 0 (the full rotor), else the free DOFs of the kept
+    /// nodes plus `min(modes, interior DOFs)`; `None` when the model has no
+    /// node to keep. Two counts build the same rotor exactly when both or
+    /// neither are 0 and their coordinates agree (999 and 1000 modes on a rotor
+    /// with fewer interior DOFs are both all of them).
+    pub fn transient_coordinates(&self, modes: usize) -> Option<usize> {
+        let kept = self.kept_nodes();
+        let (free, physical) = match &self.reduction {
+            Some(r) => (r.full_map.free_count(), r.physical),
+            None => {
+                let at_kept = |&node: &usize| {
+                    (0..DOF_PER_NODE)
+                        .filter(|&k| self.dofs.free(node, k).is_some())
+                        .count()
+                };
+                (self.dof_count(), kept.iter().map(at_kept).sum())
+            }
+        };
+        match modes {
+            0 => Some(free),
+            _ if kept.is_empty() => None,
+            _ => Some(physical + modes.min(free - physical)),
+        }
+    }
+
     /// This rotor reduced to its [kept nodes](Rotor::kept_nodes) and `modes`
     /// fixed-interface modes (clamped to the interior DOF count), for the
     /// transient [`Simulator`](crate::solver::Simulator).
