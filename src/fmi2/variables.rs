@@ -122,8 +122,12 @@ pub struct Variable {
     pub max: Option<f64>,
 }
 
-/// Allowed oil viscosities (Pa·s): positive, from a gas film to a heavy grease.
-pub const VISCOSITY_RANGE: (f64, f64) = (1e-6, 1e3);
+/// Allowed oil viscosities (Pa·s): positive, from a gas film to a heavy grease
+/// (the model file's range, [`crate::model::limits::VISCOSITY`]).
+pub const VISCOSITY_RANGE: (f64, f64) = (
+    crate::model::limits::VISCOSITY.min,
+    crate::model::limits::VISCOSITY.max,
+);
 
 /// The declared `[min, max]` of a settable variable: the solver's option
 /// ranges, the model's largest speed, physical signs. The FMU checks every set

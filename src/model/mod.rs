@@ -9,6 +9,7 @@ mod build;
 mod context;
 mod error;
 pub mod file;
+pub mod limits;
 mod plausibility;
 mod source_map;
 pub mod speed_table;

@@ -38,9 +38,10 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     let nominal_speed = ctx.finite(root.key("speed_rpm"), raw.speed_rpm.unwrap_or(0.0))?
         * std::f64::consts::PI
         / 30.0;
-    let max_speed = ctx.positive(
+    let max_speed = ctx.within(
         root.key("max_speed_rpm"),
         raw.max_speed_rpm.unwrap_or(super::DEFAULT_MAX_SPEED_RPM),
+        &super::limits::MAX_SPEED_RPM,
     )? * std::f64::consts::PI
         / 30.0;
     if nominal_speed.abs() > max_speed {
