@@ -6,7 +6,7 @@
 //! (packing) and inside the FMU (from the model file in `resources/`), so the
 //! two can never drift apart; a GUID hashed from the description ties them.
 
-use crate::model::RotorModel;
+use crate::model::{DEFAULT_REDUCED_MODES, RotorModel};
 use crate::solver::SolverOptions;
 
 /// What a variable reads or writes in the simulator.
@@ -505,7 +505,7 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         Fixed,
         None,
         None,
-        Some(model.reduced_modes.unwrap_or(0) as f64),
+        Some(crate::rotor::Rotor::transient_modes(model).unwrap_or(DEFAULT_REDUCED_MODES) as f64),
         Binding::ReducedModes,
     );
     out

@@ -584,11 +584,11 @@ fn stated_maximum_speed_is_told_from_the_default() {
 #[test]
 fn reduction_section_sets_the_mode_count() {
     let m = RotorModel::from_toml(BASE, "m.toml").unwrap();
-    assert_eq!(m.reduced_modes, None);
+    assert_eq!(m.reduction, None);
     let m = RotorModel::from_toml(&format!("{BASE}\n[reduction]\n"), "m.toml").unwrap();
-    assert_eq!(m.reduced_modes, Some(DEFAULT_REDUCED_MODES));
+    assert_eq!(m.reduction, Some(ReductionRequest::FromSpeedRange));
     let m = RotorModel::from_toml(&format!("{BASE}\n[reduction]\nmodes = 4\n"), "m.toml").unwrap();
-    assert_eq!(m.reduced_modes, Some(4));
+    assert_eq!(m.reduction, Some(ReductionRequest::Modes(4)));
     for bad in ["0", "-3", "1001"] {
         let e = err_of(&format!("\n[reduction]\nmodes = {bad}\n"));
         assert!(e.contains("reduction.modes") && e.contains(bad), "{e}");

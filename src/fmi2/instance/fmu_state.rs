@@ -6,6 +6,7 @@ use super::super::states::Call;
 use super::super::variables::VISCOSITY_RANGE;
 use super::{Instance, Status, category, model_viscosity};
 use crate::solver::Simulator;
+use crate::solver::reduction_check::ValidityWatch;
 use crate::units::Short;
 
 impl Instance {
@@ -95,11 +96,12 @@ impl Instance {
         };
         match result {
             Ok(Some(sim)) => {
+                self.watch = ValidityWatch::new(sim.rotor());
                 self.sim = sim;
                 let line = self.sim.rotor().coordinates();
                 self.messages.push((Status::Ok, category(Status::Ok), line));
             }
-            Ok(None) => {}
+            Ok(None) => self.watch.reset(),
             Err(e) => return self.report(Status::Error, format!("{}: {e}", call.name())),
         }
         self.params = snap.params;

@@ -28,8 +28,9 @@
 //! assert_eq!(fmu.get(speed, Kind::Real), Ok(100.0));
 //! ```
 
-use crate::model::RotorModel;
+use crate::model::{DEFAULT_REDUCED_MODES, RotorModel};
 use crate::rotor::Rotor;
+use crate::solver::reduction_check::ValidityWatch;
 use crate::solver::{Outputs, Simulator, SolverError, SolverOptions};
 use crate::units::Short;
 
@@ -43,6 +44,7 @@ use super::variables::{
 use super::xml::model_description;
 
 mod fmu_state;
+mod step;
 
 /// FMI status codes (the subset an instance returns).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -106,7 +108,7 @@ impl Params {
             max_iterations: DEFAULT_MAX_ITERATIONS as i32,
             ramp_time: 0.0,
             gravity: true,
-            reduced_modes: model.reduced_modes.unwrap_or(0) as i32,
+            reduced_modes: Rotor::transient_modes(model).unwrap_or(DEFAULT_REDUCED_MODES) as i32,
         }
     }
 }
@@ -128,6 +130,8 @@ pub struct Instance {
     outputs: Option<Outputs>,
     messages: Vec<LogMessage>,
     step_statistics: bool,
+    /// Whether the reduced rotor runs inside its validated range.
+    watch: ValidityWatch,
 }
 
 fn category(status: Status) -> &'static str {
@@ -169,7 +173,9 @@ impl Instance {
         let sim = Self::fresh_simulator(&model, params.reduced_modes)?;
         let mut messages: Vec<LogMessage> = messages;
         messages.push((Status::Ok, category(Status::Ok), sim.rotor().coordinates()));
+        let watch = ValidityWatch::new(sim.rotor());
         Ok(Self {
+            watch,
             name: name.to_string(),
             model,
             fingerprint: fingerprint(&guid),
@@ -220,6 +226,7 @@ impl Instance {
                 sim.set_bearing_viscosity(k, mu)?;
             }
         }
+        self.watch = ValidityWatch::new(sim.rotor());
         self.sim = sim;
         self.params.reduced_modes = modes;
         let line = self.sim.rotor().coordinates();
@@ -564,104 +571,6 @@ impl Instance {
         }
     }
 
-    /// fmi2DoStep.
-    pub fn do_step(&mut self, current: f64, step: f64) -> Status {
-        if let Err(s) = self.check(Call::DoStep) {
-            return s;
-        }
-        let call = Call::DoStep.name();
-        let now = self.sim.time();
-        let (t, h) = (Short(current), Short(step));
-        if !(step.is_finite() && step > 0.0) {
-            return self.report(
-                Status::Error,
-                format!("{call}: communication step {h} s must be positive"),
-            );
-        }
-        if self.sim.align_time(current).is_err() {
-            return self.report(
-                Status::Error,
-                format!(
-                    "{call}: communication point {t} s differs from the FMU time {} s",
-                    Short(now)
-                ),
-            );
-        }
-        let end = current + step;
-        // The step the integrator would take: what t + h adds to t in floating point.
-        let advance = end - current;
-        if advance < SolverOptions::MIN_SPAN * (1.0 - 1e-6) {
-            let why = if advance == 0.0 {
-                format!(
-                    "does not advance the time {t} s at all (below its floating-point resolution)"
-                )
-            } else {
-                format!(
-                    "is shorter than the {} s the integrator resolves (round-off in the Newmark accelerations grows as 1/h²)",
-                    Short(SolverOptions::MIN_SPAN)
-                )
-            };
-            return self.report(
-                Status::Error,
-                format!("{call}: the communication step {h} s from {t} s {why}"),
-            );
-        }
-        if let Some(stop) = self
-            .stop_time
-            .filter(|&t| end > t + STOP_SLACK * t.abs().max(1.0))
-        {
-            return self.report(
-                Status::Error,
-                format!(
-                    "{call}: the step from {t} s by {h} s ends at {} s, past the stop time {} s of fmi2SetupExperiment",
-                    Short(end),
-                    Short(stop)
-                ),
-            );
-        }
-        self.outputs = None;
-        let before = self.sim.stats();
-        let result = self.sim.advance_to(current + step);
-        if self.step_statistics {
-            let after = self.sim.stats();
-            self.messages.push((
-                Status::Ok,
-                category(Status::Ok),
-                format!(
-                    "{call} from {t} s by {h} s: {} internal steps, {} Newton iterations, {} step cuts ({} Jacobian refreshes, {} factorizations)",
-                    after.steps - before.steps,
-                    after.iterations - before.iterations,
-                    after.step_cuts - before.step_cuts,
-                    after.refreshes - before.refreshes,
-                    after.factorizations - before.factorizations,
-                ),
-            ));
-        }
-        match result {
-            Ok(()) => match self.current_outputs() {
-                Ok(_) => Status::Ok,
-                Err(s) => s,
-            },
-            Err(e) => {
-                self.phase = Phase::StepFailed;
-                let reached = self.sim.time();
-                self.report(
-                    Status::Discard,
-                    format!(
-                        "{call} from {t} s by {h} s discarded at {} s: {e}. Roll back with fmi2SetFMUstate or reset.",
-                        Short(reached)
-                    ),
-                )
-            }
-        }
-    }
-
-    /// fmi2GetRealStatus(fmi2LastSuccessfulTime).
-    pub fn last_successful_time(&mut self) -> Result<f64, Status> {
-        self.check(Call::GetRealStatus)?;
-        Ok(self.sim.time())
-    }
-
     /// fmi2Terminate.
     pub fn terminate(&mut self) -> Status {
         if let Err(s) = self.check(Call::Terminate) {
@@ -679,6 +588,7 @@ impl Instance {
         let params = Params::start(&self.model);
         match Self::fresh_simulator(&self.model, params.reduced_modes) {
             Ok(sim) => {
+                self.watch = ValidityWatch::new(sim.rotor());
                 self.sim = sim;
                 self.params = params;
                 self.viscosity = model_viscosity(&self.model);

@@ -51,11 +51,13 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
             "must not exceed max_speed_rpm",
         ));
     }
-    let reduced_modes = match raw.reduction {
+    let reduction = match raw.reduction {
         None => None,
         Some(r) => Some(match r.modes {
-            None => super::DEFAULT_REDUCED_MODES,
-            Some(m) if (1..=super::MAX_REDUCED_MODES as i64).contains(&m) => m as usize,
+            None => super::ReductionRequest::FromSpeedRange,
+            Some(m) if (1..=super::MAX_REDUCED_MODES as i64).contains(&m) => {
+                super::ReductionRequest::Modes(m as usize)
+            }
             Some(m) => {
                 return Err(ctx.err(
                     root.key("reduction").key("modes"),
@@ -69,7 +71,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         }),
     };
     Ok(RotorModel {
-        reduced_modes,
+        reduction,
         nominal_speed,
         max_speed,
         max_speed_stated: raw.max_speed_rpm.is_some(),
