@@ -354,3 +354,137 @@ pub fn excursion_report(full: &Rotor, reduced: &Rotor, speed: f64, excursion: Ex
         error_estimate(full, reduced, speed, w)
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::RotorModel;
+
+    /// The Jeffcott rotor reduced to 4 modes (kept: nodes 1, 5, 9).
+    fn reduced() -> Rotor {
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/jeffcott.toml");
+        let model = RotorModel::from_file(std::path::Path::new(path)).unwrap();
+        Rotor::new(model).unwrap().reduced(4).unwrap()
+    }
+
+    /// A state whose kept translations move as `x + i y = Σ a_k e^{i ω_k t}`
+    /// (plus an elliptic part `b cos ωt` in x only for the first term).
+    fn state(rotor: &Rotor, t: f64, parts: &[(f64, f64)], ellipse: f64) -> SimState {
+        let n = rotor.dof_count();
+        let mut s = SimState {
+            time: t,
+            u: vec![1e-4; n],
+            ud: vec![0.0; n],
+            udd: vec![0.0; n],
+            p: vec![],
+            pd: vec![],
+            pdd: vec![],
+            spin_angle: 0.0,
+            speed: 0.0,
+            speed_rate: 0.0,
+            speed_time: 0.0,
+            unbalance: vec![],
+            unbalance_rate: vec![],
+            unbalance_phase: vec![],
+            factor_step: 0.0,
+            factor_speed: 0.0,
+        };
+        for &node in &rotor.reduction.as_ref().unwrap().kept_nodes {
+            let (ix, iy) = (
+                rotor.dofs.free(node, DOF_X).unwrap(),
+                rotor.dofs.free(node, DOF_Y).unwrap(),
+            );
+            for (k, &(a, w)) in parts.iter().enumerate() {
+                let (sn, cs) = (w * t).sin_cos();
+                let bx = if k == 0 { ellipse } else { 0.0 };
+                s.ud[ix] += -(a + bx) * w * sn;
+                s.ud[iy] += a * w * cs;
+                s.udd[ix] += -(a + bx) * w * w * cs;
+                s.udd[iy] += -a * w * w * sn;
+            }
+        }
+        s
+    }
+
+    /// Harmonic motion at ω reads ω: a circular orbit at once, an elliptic
+    /// one over the window (to the sampling's quadrature error); a mixture
+    /// reads `√(Σ a²ω⁴ / Σ a²ω²)`; the window is two revolutions.
+    #[test]
+    fn the_motion_frequency_of_known_motions() {
+        let rotor = reduced();
+        let speed = 300.0;
+        let dt = 1e-4;
+        for (parts, ellipse, expected, tol) in [
+            (vec![(1e-5, 300.0)], 0.0, 300.0, 1e-12),
+            (vec![(1e-5, 150.0)], 0.5e-5, 150.0, 2e-3),
+            // The cross terms of a mixture average out over the window only
+            // to about 1/(Δω T) = 1.4 % of themselves.
+            (vec![(1e-5, 300.0), (2e-6, 2000.0)], 0.0, f64::NAN, 1e-2),
+        ] {
+            let mut m = MotionFrequency::new(&rotor);
+            let window = 2.0 * std::f64::consts::TAU / speed;
+            let mut k = 0;
+            while (k as f64) * dt < window * 0.99 {
+                m.push(&state(&rotor, k as f64 * dt, &parts, ellipse), speed);
+                assert_eq!(m.frequency(), None, "no estimate before the window is full");
+                k += 1;
+            }
+            for _ in 0..400 {
+                m.push(&state(&rotor, k as f64 * dt, &parts, ellipse), speed);
+                k += 1;
+            }
+            let expected = if expected.is_nan() {
+                let (num, den) = parts.iter().fold((0.0, 0.0), |(n, d), &(a, w)| {
+                    (n + a * a * w.powi(4), d + a * a * w * w)
+                });
+                (num / den).sqrt()
+            } else {
+                expected
+            };
+            let got = m.frequency().unwrap();
+            assert!(
+                (got - expected).abs() <= tol * expected,
+                "{parts:?}: {got} against {expected}"
+            );
+        }
+        // The full rotor has nothing to watch.
+        let full = Rotor::new(reduced().model.clone()).unwrap();
+        let mut m = MotionFrequency::new(&full);
+        m.push(&state(&rotor, 0.0, &[(1e-5, 1.0)], 0.0), 1.0);
+        assert_eq!(m.frequency(), None);
+    }
+
+    /// The watch reports the speed leaving the validated range once, stays
+    /// quiet while it is outside, and is re-armed below half the limit.
+    #[test]
+    fn the_watch_reports_each_excursion_once() {
+        let rotor = reduced();
+        let limit = rotor.reduction.as_ref().unwrap().validated_frequency();
+        let mut watch = ValidityWatch::new(&rotor);
+        assert_eq!(watch.limit(), limit);
+        let at = |t: f64, w: f64| state(&rotor, t, &[(1e-6, w)], 0.0);
+        let mut t = 0.0;
+        let mut step = |watch: &mut ValidityWatch, speed: f64| {
+            t += 1e-4;
+            watch.check(speed, &at(t, speed))
+        };
+        assert_eq!(step(&mut watch, 0.9 * limit), None);
+        assert_eq!(
+            step(&mut watch, 1.1 * limit),
+            Some(Excursion::Speed(1.1 * limit))
+        );
+        assert_eq!(step(&mut watch, 2.0 * limit), None);
+        assert_eq!(step(&mut watch, 0.6 * limit), None);
+        assert_eq!(step(&mut watch, 1.2 * limit), None);
+        assert_eq!(step(&mut watch, 0.4 * limit), None);
+        assert_eq!(
+            step(&mut watch, 1.3 * limit),
+            Some(Excursion::Speed(1.3 * limit))
+        );
+        watch.reset();
+        assert_eq!(
+            step(&mut watch, 1.3 * limit),
+            Some(Excursion::Speed(1.3 * limit))
+        );
+    }
+}
