@@ -62,7 +62,7 @@ fn orbit_error(full: &[Vec<(f64, f64)>], reduced: &[Vec<(f64, f64)>]) -> f64 {
 
 /// The shipped models with a transient that shows their orbit: time step (s)
 /// and duration (s), at the nominal speed from the static equilibrium.
-/// The README's table: orbit errors with 1, 4, 10 and 20 modes.
+/// The table of docs/solver.md: orbit errors with 1, 4, 10 and 20 modes.
 const SHIPPED: [(&str, f64, f64, [f64; 4]); 6] = [
     (
         "classic_disk_rotor",
@@ -96,7 +96,7 @@ const SHIPPED: [(&str, f64, f64, [f64; 4]); 6] = [
 /// probes, from the static equilibrium on) converge to the full model's as
 /// modes are added, and are within 1 % with 10 modes, whose validated range
 /// (a tenth of the highest kept mode) holds the nominal speed.
-/// Each error is the README's, as printed there to two digits (the last,
+/// Each error is docs/solver.md's, as printed there to two digits (the last,
 /// round-off-sized entry of the vertical rotor only in order of magnitude).
 #[test]
 fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
@@ -151,7 +151,7 @@ fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
             };
             assert!(
                 printed_alike,
-                "{name}: {e:.2e} against the README's {r:.1e}"
+                "{name}: {e:.2e} against docs/solver.md's {r:.1e}"
             );
         }
     }
@@ -233,9 +233,9 @@ fn shipped() -> Vec<String> {
 /// within 1 % while the excitation stays below a tenth of the highest kept
 /// mode ([`VALIDITY_FACTOR`]), at the running speed itself and at any
 /// frequency while spinning at the nominal speed; beyond, the error grows to
-/// over 50 % at half the highest mode, where the README's old rule (modes
+/// over 50 % at half the highest mode, where the old rule of docs/solver.md (modes
 /// above the excitation) still called the rotor valid. Prints the table of
-/// the worst errors the README gives.
+/// the worst errors docs/solver.md gives.
 #[test]
 fn the_validity_rule_is_the_measured_one() {
     let ratios = [0.02, 0.05, 0.1, 0.2, 0.3, 0.5];
