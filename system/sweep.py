@@ -88,7 +88,8 @@ class PointFailure(RuntimeError):
 
 
 def local_fmu(payload, root=None):
-    """The folder holding the shipped FMU unpacked, once per host and content.
+    """The folder holding the shipped FMU unpacked, once per host and content
+    (the bytes checked against their SHA-256 first, once per process).
 
     Each process unpacks into a private temporary folder beside the final one
     (`root`, default the system temporary directory) and renames it into place
@@ -101,12 +102,12 @@ def local_fmu(payload, root=None):
     name, digest, data = payload
     if digest in _UNPACKED and os.path.isfile(os.path.join(_UNPACKED[digest], "modelDescription.xml")):
         return _UNPACKED[digest]
+    if hashlib.sha256(data).hexdigest() != digest:
+        raise InfrastructureError(f"{name}: the shipped bytes do not match their SHA-256 {digest[:16]}")
     root = root or tempfile.gettempdir()
     folder = os.path.join(root, f"rotor_sweep_{digest[:16]}")
     marker = os.path.join(folder, ".complete")
     if not os.path.isfile(marker):
-        if hashlib.sha256(data).hexdigest() != digest:
-            raise InfrastructureError(f"{name}: the shipped bytes do not match their SHA-256 {digest[:16]}")
         private = tempfile.mkdtemp(prefix=f"rotor_sweep_{digest[:16]}.", dir=root)
         try:
             with zipfile.ZipFile(io.BytesIO(data)) as z:
