@@ -100,17 +100,7 @@ const SHIPPED: [(&str, f64, f64, [f64; 4]); 6] = [
 /// round-off-sized entry of the vertical rotor only in order of magnitude).
 #[test]
 fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
-    let shipped: Vec<String> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/models"))
-        .unwrap()
-        .map(|e| {
-            e.unwrap()
-                .path()
-                .file_stem()
-                .unwrap()
-                .to_string_lossy()
-                .into_owned()
-        })
-        .collect();
+    let shipped = shipped();
     assert_eq!(
         shipped.len(),
         SHIPPED.len(),
