@@ -11,14 +11,17 @@
 # modelDescription.xml, resources/model.toml and documentation/index.html from
 # the model (one source: the variable table in src/fmi2/variables.rs), checks
 # that every binary exports the 34 fmi2 functions of a co-simulation FMU and
-# that the DLL imports system DLLs only, zips the FMU, then validates it with
-# FMPy and fails on any problem.
+# that the DLL imports system DLLs only (scripts/fmu_binary_check.sh), zips the
+# FMU, then validates it with FMPy and fails on any problem.
 set -euo pipefail
 cd "$(dirname "$0")"
 model=models/hydro_unit.toml
 out=""
 platforms=linux64,win64
 while [ $# -gt 0 ]; do
+  case "$1" in
+    --model|--out|--platforms) [ $# -ge 2 ] || { echo "fmu_pack.sh: $1 needs a value" >&2; exit 2; } ;;
+  esac
   case "$1" in
     --model) model="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
@@ -64,37 +67,10 @@ if [ -n "$win64" ]; then
   dll="${WIN64_TARGET_DIR:-target/win64}/$WIN64_TARGET/release/rotor_bearing.dll"
 fi
 
-# The functions of an FMI 2.0 co-simulation FMU (fmi2Functions.h: 25 common, 9
-# co-simulation).
-required="fmi2GetTypesPlatform fmi2GetVersion fmi2SetDebugLogging fmi2Instantiate fmi2FreeInstance
-fmi2SetupExperiment fmi2EnterInitializationMode fmi2ExitInitializationMode fmi2Terminate fmi2Reset
-fmi2GetReal fmi2GetInteger fmi2GetBoolean fmi2GetString fmi2SetReal fmi2SetInteger fmi2SetBoolean
-fmi2SetString fmi2GetFMUstate fmi2SetFMUstate fmi2FreeFMUstate fmi2SerializedFMUstateSize
-fmi2SerializeFMUstate fmi2DeSerializeFMUstate fmi2GetDirectionalDerivative
-fmi2SetRealInputDerivatives fmi2GetRealOutputDerivatives fmi2DoStep fmi2CancelStep fmi2GetStatus
-fmi2GetRealStatus fmi2GetIntegerStatus fmi2GetBooleanStatus fmi2GetStringStatus"
-# check_exports FILE EXPORTED_NAMES: every required function is exported.
-check_exports() {
-  local missing
-  missing=$(comm -23 <(tr ' ' '\n' <<< "$required" | sort) <(sort -u <<< "$2") | tr '\n' ' ')
-  [ -z "$missing" ] || { echo "fmu_pack.sh: $1 does not export $missing" >&2; exit 1; }
-}
-# DLLs every Windows 10 or later has (Rust's std needs Windows 10): anything
-# else, such as MinGW's libgcc_s_seh-1.dll or libwinpthread-1.dll, would not
-# be found on a user's machine.
-system_dlls="kernel32.dll ntdll.dll msvcrt.dll userenv.dll ws2_32.dll advapi32.dll bcrypt.dll
-bcryptprimitives.dll api-ms-win-core-synch-l1-2-0.dll"
-if [ -n "$linux64" ]; then
-  check_exports "$so" "$(nm -D --defined-only "$so" | awk '$2 == "T" && $3 ~ /^fmi2/ { print $3 }')"
-fi
-if [ -n "$win64" ]; then
-  pe=$(x86_64-w64-mingw32-objdump -p "$dll")
-  check_exports "$dll" "$(awk '/^\[Ordinal\/Name Pointer\] Table/ { t = 1; next } t && NF == 0 { t = 0 }
-    t && $NF ~ /^fmi2/ { print $NF }' <<< "$pe")"
-  imports=$(awk '/DLL Name:/ { print $3 }' <<< "$pe" | sort -fu | tr '\n' ' ')
-  foreign=$(for d in $imports; do grep -qixF "$d" <(tr ' ' '\n' <<< "$system_dlls") || echo "$d"; done | tr '\n' ' ')
-  [ -z "$foreign" ] || { echo "fmu_pack.sh: $dll imports non-system DLLs: $foreign" >&2; exit 1; }
-fi
+# Exports and (for the DLL) imports of each binary (scripts/fmu_binary_check.sh).
+checked=()
+if [ -n "$linux64" ]; then checked+=("$(bash scripts/fmu_binary_check.sh "$so")"); fi
+if [ -n "$win64" ]; then checked+=("$(bash scripts/fmu_binary_check.sh "$dll")"); fi
 
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
@@ -136,4 +112,5 @@ if [ -n "$linux64" ] && [ -n "$win64" ]; then
 else
   packed="${linux64:+linux64}${win64:+win64} only (--platforms $platforms)"
 fi
-echo "packed $out ($name, GUID $guid) for $packed: 34 fmi2 functions exported${win64:+, the DLL imports system DLLs only (${imports% })}, FMPy validation passed"
+echo "packed $out ($name, GUID $guid) for $packed, FMPy validation passed"
+printf '  %s\n' "${checked[@]}"

@@ -36,12 +36,15 @@ export WIN64_TARGET WIN64_RUSTC WIN64_CARGO WIN64_CC WIN64_CACHE WIN64_SYSROOT W
 # CARGO_ENCODED_RUSTFLAGS (with --target these flags reach no build script or
 # proc macro), bindgen (fmi-sys) gets the MinGW headers, and the build goes to
 # its own target directory so that the two compilers never share artifacts.
+# The release profile's line tables (debug = 1, for profiling on Linux) are left
+# out: Windows debuggers do not read DWARF, and they would double the DLL.
 win64_cargo() {
   local gcc_include
   gcc_include=$(dirname "$("$WIN64_CC" -print-libgcc-file-name)")/include
   env -u RUSTFLAGS \
     RUSTC="$WIN64_RUSTC" RUSTDOC=/usr/bin/rustdoc \
     CARGO_ENCODED_RUSTFLAGS="--sysroot=$WIN64_SYSROOT" \
+    CARGO_PROFILE_RELEASE_DEBUG=0 \
     CARGO_TARGET_X86_64_PC_WINDOWS_GNU_LINKER="$WIN64_CC" \
     CC_x86_64_pc_windows_gnu="$WIN64_CC" \
     AR_x86_64_pc_windows_gnu=x86_64-w64-mingw32-ar \
