@@ -16,7 +16,7 @@ failure) is a row with its message. The onset of whirl of each parameter set is
 located by bisection between the grid speeds where the classification changes,
 so the stability map gives thresholds, not grid points.
 
-Definitions (README, "System level"):
+Definitions (docs/system.md):
 - analysed record: the outputs from `settle_fraction · duration` to the end;
   it must hold at least MIN_REVOLUTIONS revolutions;
 - sub-synchronous share: the fraction of the spectral energy (Hann window, mean

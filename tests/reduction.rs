@@ -61,7 +61,7 @@ fn orbit_error(full: &[Vec<(f64, f64)>], reduced: &[Vec<(f64, f64)>]) -> f64 {
 
 /// The shipped models with a transient that shows their orbit: time step (s)
 /// and duration (s), at the nominal speed from the static equilibrium.
-/// The README's table: orbit errors with 1, 4, 10 and 20 modes.
+/// The table of docs/solver.md: orbit errors with 1, 4, 10 and 20 modes.
 const SHIPPED: [(&str, f64, f64, [f64; 4]); 6] = [
     (
         "classic_disk_rotor",
@@ -95,7 +95,7 @@ const SHIPPED: [(&str, f64, f64, [f64; 4]); 6] = [
 /// below the highest kept fixed-interface mode, the orbits (journals and
 /// probes, from the static equilibrium on) converge to the full model's as
 /// modes are added, and are within 1 % with the documented default count.
-/// Each error is the README's, as printed there to two digits (the last,
+/// Each error is docs/solver.md's, as printed there to two digits (the last,
 /// round-off-sized entry of the vertical rotor only in order of magnitude).
 #[test]
 fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
@@ -150,7 +150,7 @@ fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
             };
             assert!(
                 printed_alike,
-                "{name}: {e:.2e} against the README's {r:.1e}"
+                "{name}: {e:.2e} against docs/solver.md's {r:.1e}"
             );
         }
     }
