@@ -54,9 +54,10 @@ if [ ${#need[@]} -gt 0 ]; then
     candidate=$(apt-cache policy rustc-web | awk '/Candidate:/ { print $2 }')
     if [ -z "$candidate" ] || [ "$candidate" = "(none)" ] \
       || ! dpkg --compare-versions "$(upstream "$candidate")" ge "$rust_version"; then
-      echo "setup: Debian's rustc-web candidate is ${candidate:-none}, older than the crate's" \
-        "rust-version $rust_version (Cargo.toml): enable the bookworm-security suite in the apt" \
-        "sources, or build the FMU for linux64 only (fmu_pack.sh --platforms linux64)" >&2
+      echo "setup: apt's candidate for rustc-web is ${candidate:-none}, older than the crate's" \
+        "rust-version $rust_version (Cargo.toml), so the win64 binary cannot be built: Debian" \
+        "carries a current Rust in bookworm-security (is that suite in the apt sources?)." \
+        "Without it, pack the FMU for linux64 only (fmu_pack.sh --platforms linux64)." >&2
       exit 1
     fi
     echo "setup: Debian Rust for the win64 build: rustc-web $candidate (rust-version $rust_version)"
