@@ -16,7 +16,8 @@
 #   WIN64_CACHE     ${ROTOR_BEARING_CACHE:-${XDG_CACHE_HOME:-~/.cache}/rotor_bearing}
 #   WIN64_SYSROOT   $WIN64_CACHE/win64-std/<release>-<commit> (empty without rustc)
 #   WINEPREFIX      $WIN64_CACHE/wine (the Wine tests' prefix, made by setup.sh)
-# and defines win64_cargo (Debian's cargo with the cross environment set).
+# and defines win64_cargo (Debian's cargo with the cross environment set; its
+# target folder is ${WIN64_TARGET_DIR:-target/win64}).
 
 WIN64_TARGET=x86_64-pc-windows-gnu
 WIN64_RUSTC=/usr/bin/rustc

@@ -160,10 +160,13 @@ def main(root):
             if not os.path.exists(fmu):
                 sys.exit(f"{fmu} missing: run fmu_pack.sh (scripts/test.sh packs every model)")
             names = zipfile.ZipFile(fmu).namelist()
-            missing = [b for b in ("binaries/linux64/RotorBearing.so", "binaries/win64/RotorBearing.dll")
-                       if b not in names]
+            binaries = {"binaries/linux64/RotorBearing.so", "binaries/win64/RotorBearing.dll"}
+            missing = sorted(binaries - set(names))
             if missing:
                 sys.exit(f"{fmu} lacks {', '.join(missing)}: pack it for both platforms (fmu_pack.sh default)")
+            extra = sorted(n for n in names if n.startswith("binaries/") and n not in binaries)
+            if extra:  # such as the test's bcryptprimitives.dll stand-in
+                failures.append(f"{fmu} carries more than its two binaries: {', '.join(extra)}")
             d = os.path.join(tmp, "fmu", stem)
             zipfile.ZipFile(fmu).extractall(d)
             shutil.copy(bcrypt, os.path.join(d, "binaries", "win64"))
