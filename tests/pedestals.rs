@@ -438,6 +438,11 @@ fn a_reduced_rotor_keeps_the_pedestals_physical() {
             2 * 4 + 4 + 2 * 2,
             "three kept nodes and two pedestals"
         );
+        let line = r.describe();
+        assert!(
+            line.contains("16 physical at nodes 1, 5, 9 and 2 pedestals + "),
+            "{line}"
+        );
         let got = run(reduced);
         let scale = reference
             .iter()

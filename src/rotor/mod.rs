@@ -22,7 +22,7 @@ pub mod torsion;
 pub use crate::model::DEFAULT_REDUCED_MODES;
 pub use dofs::{DOF_PER_PEDESTAL, Dof, DofMap};
 pub use elements::LinearElement;
-pub use reduction::Reduction;
+pub use reduction::{Reduction, VALIDITY_FACTOR};
 
 /// A bearing that is not linear and is therefore kept out of the matrices (the
 /// solver builds its force model from the model's bearing of the same index).

@@ -3,19 +3,23 @@
 //! parameters (viscosity, field excitation).
 
 use super::simulator::{Simulator, SolverError};
+use crate::units::Short;
 
 impl Simulator {
     /// Set the spin speed (rad/s) now and its rate of change (rad/s²) from now on.
     pub fn set_speed(&mut self, speed: f64, rate: f64) -> Result<(), SolverError> {
         if !speed.is_finite() || !rate.is_finite() {
             return Err(SolverError::Input(format!(
-                "speed {speed} rad/s and its rate {rate} rad/s² must be finite"
+                "speed {} rad/s and its rate {} rad/s² must be finite",
+                Short(speed),
+                Short(rate)
             )));
         }
         let max = self.rotor.model.max_speed;
         if speed.abs() > max {
             return Err(SolverError::Input(format!(
-                "speed {speed} rad/s exceeds the model's max_speed_rpm ({max} rad/s)"
+                "speed {} rad/s exceeds the model's max_speed_rpm ({max} rad/s)",
+                Short(speed)
             )));
         }
         if self.torsion.is_some() {
@@ -49,7 +53,9 @@ impl Simulator {
     ) -> Result<(), SolverError> {
         if !(magnitude.is_finite() && magnitude >= 0.0 && rate.is_finite()) {
             return Err(SolverError::Input(format!(
-                "unbalance {magnitude} kg·m must be finite and not negative, its rate {rate} kg·m/s finite"
+                "unbalance {} kg·m must be finite and not negative, its rate {} kg·m/s finite",
+                Short(magnitude),
+                Short(rate)
             )));
         }
         self.rebase_inputs();
@@ -66,7 +72,8 @@ impl Simulator {
     ) -> Result<(), SolverError> {
         if !(viscosity.is_finite() && viscosity > 0.0) {
             return Err(SolverError::Input(format!(
-                "viscosity {viscosity} Pa·s must be finite and positive"
+                "viscosity {} Pa·s must be finite and positive",
+                Short(viscosity)
             )));
         }
         self.change_bearing(
@@ -82,7 +89,8 @@ impl Simulator {
     pub fn set_excitation(&mut self, index: usize, excitation: f64) -> Result<(), SolverError> {
         if !(excitation.is_finite() && excitation >= 0.0) {
             return Err(SolverError::Input(format!(
-                "field excitation {excitation} must be finite and not negative"
+                "field excitation {} must be finite and not negative",
+                Short(excitation)
             )));
         }
         self.change_bearing(
@@ -124,7 +132,9 @@ impl Simulator {
     pub fn set_load(&mut self, input: usize, value: f64, rate: f64) -> Result<(), SolverError> {
         if !(value.is_finite() && rate.is_finite()) {
             return Err(SolverError::Input(format!(
-                "load {value} N and its rate {rate} N/s must be finite"
+                "load {} N and its rate {} N/s must be finite",
+                Short(value),
+                Short(rate)
             )));
         }
         let count = self.state.loads.len();
@@ -149,7 +159,8 @@ impl Simulator {
     pub fn set_unbalance_phase(&mut self, plane: usize, phase: f64) -> Result<(), SolverError> {
         if !phase.is_finite() {
             return Err(SolverError::Input(format!(
-                "unbalance phase {phase} must be finite"
+                "unbalance phase {} must be finite",
+                Short(phase)
             )));
         }
         *plane_slot(&mut self.state.unbalance_phase, plane)? = phase;

@@ -55,6 +55,7 @@ mod inputs;
 mod newmark;
 mod newton;
 mod outputs;
+pub mod reduction_check;
 pub mod run;
 mod simulator;
 mod sites;

@@ -7,6 +7,7 @@ use super::materials::Materials;
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::DiskEntry;
+use crate::model::limits::{DIAMETER, INERTIA, LENGTH, MASS};
 use crate::model::{ModelError, PlacedDisk};
 
 /// Check each disk: unique name, its node, and either `mass`, `polar_inertia`,
@@ -42,16 +43,19 @@ pub(super) fn disks(
                         )
                     })
                 };
-                let mass = ctx.positive(p.key("mass"), need("mass", d.mass)?)?;
-                // Zero inertias make a point mass on the rotor (no gyroscopic effect).
-                let polar_inertia = ctx.non_negative(
-                    p.key("polar_inertia"),
-                    need("polar_inertia", d.polar_inertia)?,
-                )?;
-                let diametral_inertia = ctx.non_negative(
-                    p.key("diametral_inertia"),
-                    need("diametral_inertia", d.diametral_inertia)?,
-                )?;
+                let mass = ctx.within(p.key("mass"), need("mass", d.mass)?, &MASS)?;
+                // Zero inertias make a point mass on the rotor (no gyroscopic
+                // effect); others lie in the physical range.
+                let inertia = |key: &'static str, v: Option<f64>| {
+                    let v = ctx.non_negative(p.key(key), need(key, v)?)?;
+                    if v == 0.0 {
+                        Ok(0.0)
+                    } else {
+                        ctx.within(p.key(key), v, &INERTIA)
+                    }
+                };
+                let polar_inertia = inertia("polar_inertia", d.polar_inertia)?;
+                let diametral_inertia = inertia("diametral_inertia", d.diametral_inertia)?;
                 Disk {
                     mass,
                     polar_inertia,
@@ -70,7 +74,7 @@ pub(super) fn disks(
                     }
                 };
                 let outer = match d.outer_diameter {
-                    Some(v) => ctx.positive(p.key("outer_diameter"), v)?,
+                    Some(v) => ctx.within(p.key("outer_diameter"), v, &DIAMETER)?,
                     None => {
                         return Err(ctx.err(
                             p.key("outer_diameter"),
@@ -89,7 +93,7 @@ pub(super) fn disks(
                     ));
                 }
                 let width = match d.width {
-                    Some(v) => ctx.positive(p.key("width"), v)?,
+                    Some(v) => ctx.within(p.key("width"), v, &LENGTH)?,
                     None => {
                         return Err(ctx.err(
                             p.key("width"),

@@ -5,6 +5,7 @@
 use crate::model::context::{Ctx, Names};
 use crate::model::error::FieldPath;
 use crate::model::file::PedestalEntry;
+use crate::model::limits::{DAMPING, STIFFNESS, SUPPORT_MASS};
 use crate::model::{ModelError, Pedestal, PlacedBearing};
 
 /// Check each pedestal: unique name, positive mass, positive direct
@@ -20,18 +21,31 @@ pub(super) fn pedestals(
     for (i, e) in entries.iter().enumerate() {
         let p = root.key("pedestals").index(i);
         let name = names.claim(ctx, &p, e.name.clone(), "pedestal")?;
-        let f = |key: &str, v: f64| ctx.finite(p.key(key), v);
+        let k = |key: &str, v: f64| ctx.within(p.key(key), v, &STIFFNESS);
+        let c = |key: &str, v: f64| ctx.within(p.key(key), v, &DAMPING);
         let stiffness = [
-            [ctx.positive(p.key("kxx"), e.kxx)?, f("kxy", e.kxy)?],
-            [f("kyx", e.kyx)?, ctx.positive(p.key("kyy"), e.kyy)?],
+            [
+                ctx.positive(p.key("kxx"), k("kxx", e.kxx)?)?,
+                k("kxy", e.kxy)?,
+            ],
+            [
+                k("kyx", e.kyx)?,
+                ctx.positive(p.key("kyy"), k("kyy", e.kyy)?)?,
+            ],
         ];
         let damping = [
-            [ctx.non_negative(p.key("cxx"), e.cxx)?, f("cxy", e.cxy)?],
-            [f("cyx", e.cyx)?, ctx.non_negative(p.key("cyy"), e.cyy)?],
+            [
+                ctx.non_negative(p.key("cxx"), c("cxx", e.cxx)?)?,
+                c("cxy", e.cxy)?,
+            ],
+            [
+                c("cyx", e.cyx)?,
+                ctx.non_negative(p.key("cyy"), c("cyy", e.cyy)?)?,
+            ],
         ];
         list.push(Pedestal {
             name,
-            mass: ctx.positive(p.key("mass"), e.mass)?,
+            mass: ctx.within(p.key("mass"), e.mass, &SUPPORT_MASS)?,
             stiffness,
             damping,
             on: None,

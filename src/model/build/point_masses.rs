@@ -4,6 +4,7 @@
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::PointMassEntry;
+use crate::model::limits::SUPPORT_MASS;
 use crate::model::{ModelError, PointMass};
 
 /// Check each point mass: unique name, node, and either `mass` or both `mx`
@@ -21,12 +22,12 @@ pub(super) fn point_masses(
         let node = ctx.location(&p, e.node, e.z, node_z)?;
         let mass = match (e.mass, e.mx, e.my) {
             (Some(m), None, None) => {
-                let m = ctx.positive(p.key("mass"), m)?;
+                let m = ctx.within(p.key("mass"), m, &SUPPORT_MASS)?;
                 [m, m]
             }
             (None, Some(mx), Some(my)) => [
-                ctx.positive(p.key("mx"), mx)?,
-                ctx.positive(p.key("my"), my)?,
+                ctx.within(p.key("mx"), mx, &SUPPORT_MASS)?,
+                ctx.within(p.key("my"), my, &SUPPORT_MASS)?,
             ],
             _ => {
                 return Err(ctx.err(

@@ -16,6 +16,7 @@ use crate::model::{ModelError, Pedestal, PlacedBearing, PlacedElement, TableFile
 use super::bearings::{RUB_WIDTH, contact_law, shaft_radius_at};
 use super::pedestals::lookup;
 use super::tables::{TableInput, coefficient_table};
+use crate::model::limits::{CLEARANCE, FLUX_DENSITY, LENGTH, PULL_STIFFNESS, RADIUS};
 
 /// Largest field excitation of a magnetic pull (2: twice the nominal flux,
 /// beyond any over-excitation a generator survives).
@@ -36,10 +37,11 @@ pub(super) fn stators(
     for (i, r) in rubs.into_iter().enumerate() {
         let p = root.key("rubs").index(i);
         let node = ctx.location(&p, r.node, r.z, node_z)?;
-        let gap = ctx.positive(p.key("gap"), r.gap)?;
-        let radius = ctx.positive(
+        let gap = ctx.within(p.key("gap"), r.gap, &CLEARANCE)?;
+        let radius = ctx.within(
             p.key("radius"),
             r.radius.unwrap_or(shaft_radius_at(elements, node)),
+            &RADIUS,
         )?;
         let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
         let law = contact_law(
@@ -97,10 +99,11 @@ pub(super) fn stators(
                 None
             }
             Some(gap) => {
-                let gap = ctx.positive(p.key("clearance"), gap)?;
-                let radius = ctx.positive(
+                let gap = ctx.within(p.key("clearance"), gap, &CLEARANCE)?;
+                let radius = ctx.within(
                     p.key("radius"),
                     e.radius.unwrap_or(shaft_radius_at(elements, node)),
+                    &RADIUS,
                 )?;
                 let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
                 Some(
@@ -137,13 +140,13 @@ pub(super) fn stators(
     for (i, e) in pulls.into_iter().enumerate() {
         let p = root.key("magnetic_pull").index(i);
         let node = ctx.location(&p, e.node, e.z, node_z)?;
-        let gap = ctx.positive(p.key("gap"), e.gap)?;
+        let gap = ctx.within(p.key("gap"), e.gap, &CLEARANCE)?;
         let stiffness = match (e.stiffness, e.rotor_radius, e.core_length, e.flux_density) {
-            (Some(k), None, None, None) => ctx.positive(p.key("stiffness"), k)?,
+            (Some(k), None, None, None) => ctx.within(p.key("stiffness"), k, &PULL_STIFFNESS)?,
             (None, Some(r), Some(l), Some(b)) => pull_stiffness(
-                ctx.positive(p.key("rotor_radius"), r)?,
-                ctx.positive(p.key("core_length"), l)?,
-                ctx.positive(p.key("flux_density"), b)?,
+                ctx.within(p.key("rotor_radius"), r, &RADIUS)?,
+                ctx.within(p.key("core_length"), l, &LENGTH)?,
+                ctx.within(p.key("flux_density"), b, &FLUX_DENSITY)?,
                 gap,
             ),
             _ => {

@@ -6,6 +6,7 @@ use crate::bearing::thrust::ThrustBearing;
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{CouplingEntry, ThrustBearingEntry, TorqueEntry, TorsionEntry};
+use crate::model::limits::TORSIONAL_STIFFNESS;
 use crate::model::{Coupling, Drive, ModelError, PlacedElement, PlacedThrustBearing, TorqueNode};
 
 /// Check each coupling: its node starts a shaft element (one coupling per
@@ -39,7 +40,11 @@ pub(super) fn couplings(
         out.push(Coupling {
             name: names.claim(ctx, &p, default_name(e.name, "coupling", i), "coupling")?,
             element,
-            stiffness: ctx.positive(p.key("torsional_stiffness"), e.torsional_stiffness)?,
+            stiffness: ctx.within(
+                p.key("torsional_stiffness"),
+                e.torsional_stiffness,
+                &TORSIONAL_STIFFNESS,
+            )?,
             damping: ctx.non_negative(
                 p.key("torsional_damping"),
                 e.torsional_damping.unwrap_or(0.0),
