@@ -210,6 +210,13 @@ impl ContactLaw {
         self.stiffness * integral
     }
 
+    /// Power (W) the contact friction dissipates: `μ N |v_s|`, the Coulomb
+    /// force at the sliding velocity of the rotating surface over the stator
+    /// (spin `Ω R` plus the whirl's tangential velocity); zero while apart.
+    pub fn friction_power(&self, contact: &ContactReport) -> f64 {
+        self.friction * contact.normal_force * contact.sliding_velocity.abs()
+    }
+
     /// Contact force on the journal with `K = −∂F/∂p`, `C = −∂F/∂ṗ`, at position
     /// `position` (m) and velocity `velocity` (m/s) relative to the stator
     /// centre and spin `speed` (rad/s): contact with the circle of radius `gap`.
@@ -475,6 +482,33 @@ mod tests {
         let (_, fast) = l.evaluate(p, Vector2::new(1e-2, 0.0), 0.0);
         let (_, still) = l.evaluate(p, Vector2::zeros(), 0.0);
         assert!(fast.normal_force > still.normal_force);
+    }
+
+    /// The friction power is what the friction force and torque take out of
+    /// the whirl and the spin: `μ N |v_s| = −F_t (ṗ·t) + T_f Ω` (the sign's
+    /// regularization aside: 1e-6 at `|v_s| ≫ v_ε`), with the whirl against
+    /// or along the spin.
+    #[test]
+    fn friction_power_is_the_work_rate_of_the_friction_force_and_torque() {
+        let l = law();
+        let angle = 1.1;
+        let p = at(angle, l.gap + 2e-6);
+        let n = at(angle, 1.0);
+        let t = Vector2::new(-n.y, n.x);
+        for (speed, whirl) in [(300.0, 4.0), (300.0, -25.0), (-150.0, 2.0)] {
+            let (f, rep) = l.evaluate(p, t * whirl, speed);
+            let sliding = whirl + speed * l.radius;
+            assert!((rep.sliding_velocity - sliding).abs() < 1e-12);
+            let power = l.friction_power(&rep);
+            assert!((power - l.friction * rep.normal_force * sliding.abs()).abs() <= 1e-12 * power);
+            let phi = sliding / (sliding * sliding + l.slip_velocity.powi(2)).sqrt();
+            let torque = l.friction * rep.normal_force * l.radius * phi;
+            let friction_force = f.force.dot(&t);
+            let taken = -friction_force * whirl + torque * speed;
+            assert!((taken - power).abs() < 1e-6 * power, "{taken} {power}");
+        }
+        let (_, apart) = l.evaluate(at(angle, 0.5 * l.gap), t, 300.0);
+        assert_eq!(l.friction_power(&apart), 0.0);
     }
 
     #[test]

@@ -135,7 +135,7 @@ impl Bearing for MagneticPull {
         BearingReport {
             eccentricity: q[0].hypot(q[1]) / self.gap,
             friction_torque,
-            power_loss: friction_torque * speed,
+            power_loss: self.contact.friction_power(&contact),
             contact_force: contact.normal_force,
             ..BearingReport::default()
         }

@@ -110,7 +110,8 @@ pub struct BearingReport {
     /// Friction torque on the journal, opposing the spin (N·m): film shear plus
     /// contact friction `μ N R` (at standstill the breakaway torque).
     pub friction_torque: f64,
-    /// Power dissipated in the film and the contact friction (W).
+    /// Power dissipated (W): the film's shear torque times the speed plus the
+    /// contact friction's `μ N |v_s|` at the sliding velocity (spin and whirl).
     pub power_loss: f64,
     /// Normal force of the journal's metal-to-metal contact (N); zero while
     /// the journal floats. For tilting pads the magnitude of the resultant over the pads.
@@ -436,6 +437,17 @@ impl BearingKind {
     /// Oil dynamic viscosity (Pa·s) of a fluid-film bearing, `None` for a linear one.
     pub fn viscosity(&self) -> Option<f64> {
         self.film_geometry().map(|g| g.viscosity)
+    }
+
+    /// The one value a master may tune on this bearing: the oil viscosity
+    /// (Pa·s) of a fluid-film bearing, the field excitation of a magnetic pull.
+    pub fn tuned(&self) -> Option<f64> {
+        self.viscosity().or_else(|| self.excitation())
+    }
+
+    /// Set the [`Self::tuned`] value; `false` (nothing changed) where there is none.
+    pub fn set_tuned(&mut self, value: f64) -> bool {
+        self.set_viscosity(value) || self.set_excitation(value)
     }
 
     /// Set the oil viscosity (Pa·s); `false` (and nothing changed) for a linear bearing.

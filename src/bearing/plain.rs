@@ -266,14 +266,13 @@ impl PlainBearing {
         let eccentricity = state.position.norm() / self.clearance;
         let law = self.contact_law();
         let (_, contact) = law.evaluate(state.position, state.velocity, speed);
-        let friction_torque = self.film().friction_torque(state, speed, None)
-            + contact_friction_torque(&law, &contact, speed);
+        let film_torque = self.film().friction_torque(state, speed, None);
         BearingReport {
             eccentricity,
             attitude_angle: attitude_angle(&state.position, force),
             min_film_thickness: (self.clearance * (1.0 - eccentricity)).max(0.0),
-            friction_torque,
-            power_loss: friction_torque * speed,
+            friction_torque: film_torque + contact_friction_torque(&law, &contact, speed),
+            power_loss: film_torque * speed + law.friction_power(&contact),
             contact_force: contact.normal_force,
         }
     }

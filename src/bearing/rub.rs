@@ -66,7 +66,7 @@ impl Bearing for RubElement {
         BearingReport {
             eccentricity: q[0].hypot(q[1]) / self.contact.gap,
             friction_torque,
-            power_loss: friction_torque * speed,
+            power_loss: self.contact.friction_power(&contact),
             contact_force: contact.normal_force,
             ..BearingReport::default()
         }

@@ -204,7 +204,7 @@ impl Bearing for SealElement {
         BearingReport {
             eccentricity: q[0].hypot(q[1]) / law.gap,
             friction_torque,
-            power_loss: friction_torque * speed,
+            power_loss: law.friction_power(&contact),
             contact_force: contact.normal_force,
             ..BearingReport::default()
         }

@@ -342,13 +342,15 @@ impl Bearing for TiltingPadBearing {
         let film = self.film();
         let law = self.contact_law();
         let mut friction_torque = 0.0;
+        let mut power_loss = 0.0;
         let mut min_film = f64::INFINITY;
         let mut contact_resultant = Vector2::zeros();
         for (k, pad) in self.pads.iter().enumerate() {
             let (_, _, state) = self.pad_state(k, q, qdot);
-            friction_torque += film.friction_torque(&state, speed, Some(&pad.window));
+            let film_torque = film.friction_torque(&state, speed, Some(&pad.window));
             let (contact, report) = self.pad_contact(&law, k, &state, speed);
-            friction_torque += contact_friction_torque(&law, &report, speed);
+            friction_torque += film_torque + contact_friction_torque(&law, &report, speed);
+            power_loss += film_torque * speed + law.friction_power(&report);
             contact_resultant += contact.force;
             min_film = min_film.min(self.pad_min_film_thickness(k, q));
         }
@@ -359,7 +361,7 @@ impl Bearing for TiltingPadBearing {
             attitude_angle: attitude_angle(&position, &force),
             min_film_thickness: min_film.max(0.0),
             friction_torque,
-            power_loss: friction_torque * speed,
+            power_loss,
             contact_force: contact_resultant.norm(),
         }
     }

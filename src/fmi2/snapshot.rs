@@ -25,9 +25,9 @@ pub struct Snapshot {
     pub(super) sim: SimState,
     /// The solver parameters.
     pub(super) params: Params,
-    /// The (possibly tuned) viscosity of each model bearing (Pa·s; 0 where the
-    /// bearing has none).
-    pub(super) viscosity: Vec<f64>,
+    /// The (possibly tuned) viscosity (Pa·s) or field excitation of each model
+    /// bearing (0 where the bearing has none).
+    pub(super) tuned: Vec<f64>,
     /// The state-machine phase.
     pub(super) phase: Phase,
     /// The model fingerprint ([`fingerprint`] of the GUID).
@@ -66,7 +66,7 @@ fn phase_index(phase: Phase) -> f64 {
 }
 
 /// The scalar fields, in image order.
-const SCALARS: [Scalar; 15] = [
+const SCALARS: [Scalar; 16] = [
     ("time", |s| s.sim.time, |s, v| put(&mut s.sim.time, v)),
     (
         "spin_angle",
@@ -130,6 +130,11 @@ const SCALARS: [Scalar; 15] = [
         },
     ),
     (
+        "initial_speed",
+        |s| s.params.initial_speed,
+        |s, v| put(&mut s.params.initial_speed, v),
+    ),
+    (
         "phase",
         |s| phase_index(s.phase),
         |s, v| match Phase::ALL.get(v as usize) {
@@ -185,7 +190,7 @@ const VECTORS: [Vector; 16] = [
         |s| &s.sim.unbalance_phase,
         |s| &mut s.sim.unbalance_phase,
     ),
-    ("viscosity", |s| &s.viscosity, |s| &mut s.viscosity),
+    ("tuned", |s| &s.tuned, |s| &mut s.tuned),
     ("loads", |s| &s.sim.loads, |s| &mut s.sim.loads),
     (
         "load_rates",
@@ -416,8 +421,9 @@ mod tests {
                 ramp_time: 0.5,
                 gravity: false,
                 reduced_modes: 6,
+                initial_speed: 21.0,
             },
-            viscosity: v(2, 0.03),
+            tuned: v(2, 0.03),
             phase: Phase::StepFailed,
             fingerprint: fingerprint("{guid}"),
         }

@@ -43,7 +43,10 @@ const UNITS: [UnitSpec; 9] = [
 
 /// Units declared only when a variable uses one (so that a model without
 /// such variables keeps its description, and GUID, as it was).
-const UNITS_WHEN_USED: [UnitSpec; 1] = [("m/s", [0, 1, -1, 0], &[("mm/s", 1e3)])];
+const UNITS_WHEN_USED: [UnitSpec; 2] = [
+    ("m/s", [0, 1, -1, 0], &[("mm/s", 1e3)]),
+    ("W", [1, 2, -3, 0], &[("kW", 1e-3)]),
+];
 
 /// The model description of `model` and its GUID.
 pub fn model_description(model: &RotorModel) -> (String, String) {

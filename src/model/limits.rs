@@ -114,6 +114,10 @@ pub const CONTACT_STIFFNESS: Limit = Limit {
     why: "a steel line contact is about 1e9–1e11 N/m",
 };
 
+/// Largest field excitation of a magnetic pull (2: twice the nominal flux,
+/// beyond any over-excitation a generator survives), also the FMU's bound.
+pub const MAX_EXCITATION: f64 = 2.0;
+
 /// Oil viscosity of fluid-film bearings (Pa·s), also the FMU's declared range.
 pub const VISCOSITY: Limit = Limit {
     min: 1e-6,

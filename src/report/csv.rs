@@ -526,7 +526,11 @@ mod tests {
             bearings: vec![bearing; model.bearings.len()],
             probes: vec![ProbeOutput { x: 7e-6, y: 8e-6 }; model.probes.len()],
             ports: Vec::new(),
+            thrust_bearings: Vec::new(),
+            torques: Vec::new(),
+            shaft_torques: Vec::new(),
             friction_torque: 1.0,
+            power_loss: 0.0,
         };
         let text = simulation(&model, &[record.clone(), record]);
         let header = text.lines().next().unwrap();

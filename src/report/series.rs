@@ -89,7 +89,11 @@ mod tests {
                 Vec::new()
             },
             ports: Vec::new(),
+            thrust_bearings: Vec::new(),
+            torques: Vec::new(),
+            shaft_torques: Vec::new(),
             friction_torque: 0.0,
+            power_loss: 0.0,
         }
     }
 

@@ -24,6 +24,9 @@ pub struct TorsionalRotor {
     /// Lumped polar inertia of each free DOF (row sums of `mass`, kg·m²): the
     /// weights of the shaft's mean speed.
     pub inertia: Vec<f64>,
+    /// Torsional stiffness (N·m/rad) and damping (N·m·s/rad) of each shaft
+    /// element, from node `k` to `k + 1` (a coupling's where one is).
+    pub elements: Vec<(f64, f64)>,
 }
 
 impl TorsionalRotor {
@@ -56,14 +59,18 @@ impl TorsionalRotor {
                 }
             }
         };
+        let mut elements = Vec::with_capacity(model.elements.len());
         for (k, placed) in model.elements.iter().enumerate() {
             let (m, mut kt) = torsion_matrices(&placed.element);
             let pair = [placed.node, placed.node + 1];
+            let mut c_element = 0.0;
             if let Some(c) = model.couplings.iter().find(|c| c.element == k) {
                 kt = [[c.stiffness, -c.stiffness], [-c.stiffness, c.stiffness]];
                 let ct = [[c.damping, -c.damping], [-c.damping, c.damping]];
                 scatter(&mut damping, pair, ct);
+                c_element = c.damping;
             }
+            elements.push((kt[0][0], c_element));
             scatter(&mut mass, pair, m);
             scatter(&mut stiffness, pair, kt);
         }
@@ -85,6 +92,7 @@ impl TorsionalRotor {
             damping,
             dofs,
             inertia,
+            elements,
         }
     }
 

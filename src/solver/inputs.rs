@@ -100,6 +100,22 @@ impl Simulator {
         )
     }
 
+    /// Set the tuned value ([`BearingKind::tuned`](crate::bearing::BearingKind::tuned))
+    /// of model bearing `index`: its viscosity or its field excitation.
+    pub fn set_bearing_tuned(&mut self, index: usize, value: f64) -> Result<(), SolverError> {
+        let pull = self
+            .rotor
+            .model
+            .bearings
+            .get(index)
+            .is_some_and(|b| b.kind.excitation().is_some());
+        if pull {
+            self.set_excitation(index, value)
+        } else {
+            self.set_bearing_viscosity(index, value)
+        }
+    }
+
     /// Change a parameter of model bearing `index` with `set` (false: the
     /// kind has no such parameter, `not_it` says why) and rebuild its force
     /// models.

@@ -65,7 +65,9 @@ pub mod statics;
 mod torsion;
 mod warnings;
 
-pub use outputs::{BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput};
+pub use outputs::{
+    BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput, ThrustOutput, TorqueNodeOutput,
+};
 pub use run::{SpeedProfile, record};
 pub use simulator::{Simulator, SolverError, SolverOptions, StepStats};
 pub use state::SimState;

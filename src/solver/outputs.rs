@@ -1,6 +1,8 @@
 //! What the simulator reports at the current time: per bearing the journal,
 //! its force and film report and its housing's motion, per probe and port
-//! the node's motion, the spin, and the friction torque (`Simulator::outputs`).
+//! the node's motion, per thrust bearing its friction, the spin, the friction
+//! torque and power loss, and on a torque-driven shaft the rotation of the
+//! torque nodes and the torque in each shaft element (`Simulator::outputs`).
 
 use crate::bearing::BearingReport;
 use crate::fe::{DOF_X, DOF_Y};
@@ -56,7 +58,7 @@ pub struct ProbeOutput {
     pub y: f64,
 }
 
-/// Motion of one force port (`[[ports]]`) and the force applied there.
+/// Motion of one force port (`[[ports]]`).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct PortOutput {
     /// Displacement (m).
@@ -67,6 +69,24 @@ pub struct PortOutput {
     pub vx: f64,
     /// Velocity (m/s).
     pub vy: f64,
+}
+
+/// Friction of one thrust bearing (`[[thrust_bearings]]`).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ThrustOutput {
+    /// Friction torque opposing the spin (N·m); at standstill the breakaway torque.
+    pub friction_torque: f64,
+    /// Power dissipated, friction torque times the node's speed (W).
+    pub power_loss: f64,
+}
+
+/// Rotation of one `[[torques]]` node of a torque-driven shaft.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct TorqueNodeOutput {
+    /// Speed (rad/s).
+    pub speed: f64,
+    /// Angle (rad): the integral of its speed.
+    pub angle: f64,
 }
 
 /// Everything a front end reports at the current time.
@@ -84,8 +104,20 @@ pub struct Outputs {
     pub probes: Vec<ProbeOutput>,
     /// One entry per force port, in model order.
     pub ports: Vec<PortOutput>,
+    /// One entry per thrust bearing, in model order.
+    pub thrust_bearings: Vec<ThrustOutput>,
+    /// One entry per `[[torques]]` node, in model order (empty when the speed
+    /// is prescribed).
+    pub torques: Vec<TorqueNodeOutput>,
+    /// Torque (N·m) in each shaft element, from node `k` to `k + 1`, of a
+    /// torque-driven shaft (empty when the speed is prescribed): the twist
+    /// of the far end over the near one times its stiffness, plus damping.
+    pub shaft_torques: Vec<f64>,
     /// Sum of the bearings' friction torques (N·m).
     pub friction_torque: f64,
+    /// Sum of the power the bearings, rubs, seals and thrust bearings
+    /// dissipate (W).
+    pub power_loss: f64,
 }
 
 impl Simulator {
@@ -95,9 +127,16 @@ impl Simulator {
         let speed = self.speed_at(t);
         let mut bearings = Vec::with_capacity(self.output_bearings.len());
         let mut friction_torque = 0.0;
+        let mut power_loss = 0.0;
         for (k, (bearing, site)) in self.output_bearings.iter().enumerate() {
             let placed = &self.rotor.model.bearings[k];
             let node = placed.node;
+            // The node's own speed: a torque-driven shaft twists.
+            let speed = if self.torsion.is_some() {
+                self.node_rotation(node).0
+            } else {
+                speed
+            };
             let at = |dof: usize, v: &[f64]| self.rotor.node_value(node, dof, v);
             let (x, y) = (at(DOF_X, &self.state.u), at(DOF_Y, &self.state.u));
             let (vx, vy) = (at(DOF_X, &self.state.ud), at(DOF_Y, &self.state.ud));
@@ -139,6 +178,7 @@ impl Simulator {
                 })?;
             let report = bearing.report(q, qd, speed, eval);
             friction_torque += report.friction_torque;
+            power_loss += report.power_loss;
             bearings.push(BearingOutput {
                 x,
                 y,
@@ -158,9 +198,42 @@ impl Simulator {
                 y: self.rotor.node_value(p.node, DOF_Y, &self.state.u),
             })
             .collect();
-        for k in 0..self.rotor.model.thrust_bearings.len() {
-            friction_torque += self.thrust_friction(k);
+        let thrust_bearings: Vec<ThrustOutput> = self
+            .rotor
+            .model
+            .thrust_bearings
+            .iter()
+            .enumerate()
+            .map(|(k, t)| {
+                let torque = self.thrust_friction(k);
+                ThrustOutput {
+                    friction_torque: torque,
+                    power_loss: torque * self.node_rotation(t.node).0,
+                }
+            })
+            .collect();
+        for t in &thrust_bearings {
+            friction_torque += t.friction_torque;
+            power_loss += t.power_loss;
         }
+        let (torques, shaft_torques) = if self.torsion.is_some() {
+            let model = &self.rotor.model;
+            (
+                model
+                    .torques
+                    .iter()
+                    .map(|t| {
+                        let (speed, angle) = self.node_rotation(t.node);
+                        TorqueNodeOutput { speed, angle }
+                    })
+                    .collect(),
+                (0..model.elements.len())
+                    .map(|k| self.section_torque(k).unwrap_or(0.0))
+                    .collect(),
+            )
+        } else {
+            (Vec::new(), Vec::new())
+        };
         let ports = self
             .rotor
             .model
@@ -183,7 +256,11 @@ impl Simulator {
             bearings,
             probes,
             ports,
+            thrust_bearings,
+            torques,
+            shaft_torques,
             friction_torque,
+            power_loss,
         })
     }
 }

@@ -196,8 +196,21 @@ pub(super) fn settle(
             outcome => outcome,
         },
     }?;
-    static_stability::check(rotor, sites, speed, journal_rest(rotor))?;
-    Ok(outcome)
+    let Some(unstable) = static_stability::check(rotor, sites, speed, journal_rest(rotor))? else {
+        return Ok(outcome);
+    };
+    // The rotor buckles along its unstable mode until its journals rest on
+    // their bearings (a generator's pull at standstill draws the rotor onto
+    // the pads): the equilibrium there, if the contacts hold it.
+    let refused = || SolverError::Static(unstable.message.clone());
+    let start =
+        resting_start_along(rotor, sites, f_ext, Some(&unstable.mode)).ok_or_else(refused)?;
+    let buckled = newton_static(rotor, sites, speed, options, time, (start, None), f_ext)
+        .map_err(|_| refused())?;
+    match static_stability::check(rotor, sites, speed, journal_rest(rotor))? {
+        None => Ok(buckled),
+        Some(_) => Err(refused()),
+    }
 }
 
 /// The rotor resting on its fluid-film bearings, as a start for Newton: each
@@ -206,6 +219,17 @@ pub(super) fn settle(
 /// from the same system without the offsets. `None` without a bearing that can
 /// rest on contact, or when no journal is pushed at all.
 fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>> {
+    resting_start_along(rotor, sites, f_ext, None)
+}
+
+/// [`resting_start`] with each journal pushed along its motion in `mode`
+/// (on all DOFs) when given, instead of the way the loads push it.
+fn resting_start_along(
+    rotor: &Rotor,
+    sites: &Sites,
+    f_ext: &[f64],
+    mode: Option<&[f64]>,
+) -> Option<Vec<f64>> {
     let mut a = rotor.stiffness.clone();
     let mut contacts = Vec::new();
     for site in &sites.list {
@@ -226,7 +250,8 @@ fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>
     let mut pushed = false;
     for &(site, k) in &contacts {
         let [cx, cy] = site.journal;
-        let (x, y) = (cx.of(&u), cy.of(&u));
+        let push = mode.unwrap_or(&u);
+        let (x, y) = (cx.of(push), cy.of(push));
         let d = x.hypot(y);
         if d > 0.0 {
             let direction = [x / d, y / d];

@@ -150,20 +150,20 @@ impl Torsion {
 }
 
 impl Simulator {
-    /// The torque (N·m) in the shaft element from `node` to the next, the
-    /// twist of the far end over the near one times its torsional stiffness
-    /// plus damping (a coupling's where one is); `None` when the speed is
-    /// prescribed or no element starts there.
-    pub fn section_torque(&self, node: usize) -> Option<f64> {
+    /// The torque (N·m) in shaft element `element` (from node `element` to
+    /// the next), the twist of the far end over the near one times its
+    /// torsional stiffness plus damping (a coupling's where one is; a twist
+    /// a support holds is zero); `None` when the speed is prescribed or there
+    /// is no such element.
+    pub fn section_torque(&self, element: usize) -> Option<f64> {
         let tors = self.torsion.as_ref()?;
-        let (i, j) = (
-            tors.chain.dofs[node]?,
-            tors.chain.dofs.get(node + 1).copied()??,
-        );
+        let &(k, c) = tors.chain.elements.get(element)?;
         let s = &self.state;
-        let k = -tors.chain.stiffness.get(i, j);
-        let c = -tors.chain.damping.get(i, j);
-        Some(k * (s.twist[j] - s.twist[i]) + c * (s.twist_rate[j] - s.twist_rate[i]))
+        let at = |node: usize| {
+            tors.chain.dofs[node].map_or((0.0, 0.0), |i| (s.twist[i], s.twist_rate[i]))
+        };
+        let (near, far) = (at(element), at(element + 1));
+        Some(k * (far.0 - near.0) + c * (far.1 - near.1))
     }
 
     /// The speed (rad/s) and angle (rad) of `node` (0-based): its twist of a

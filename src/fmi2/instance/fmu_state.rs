@@ -3,8 +3,8 @@
 
 use super::super::snapshot::Snapshot;
 use super::super::states::Call;
-use super::super::variables::VISCOSITY_RANGE;
-use super::{Instance, Status, category, model_viscosity};
+use super::super::variables::{EXCITATION_RANGE, VISCOSITY_RANGE};
+use super::{Instance, Status, category, model_tuned};
 use crate::solver::Simulator;
 use crate::solver::reduction_check::ValidityWatch;
 use crate::units::Short;
@@ -15,7 +15,7 @@ impl Instance {
         Snapshot {
             sim: self.sim.state().clone(),
             params: self.params,
-            viscosity: self.viscosity.clone(),
+            tuned: self.tuned.clone(),
             phase: self.phase,
             fingerprint: self.fingerprint,
         }
@@ -61,21 +61,25 @@ impl Instance {
         if let Err(why) = fits {
             return self.report(Status::Error, format!("{}: {why}", call.name()));
         }
-        let film = |k: usize| self.model.bearings[k].kind.viscosity().is_some();
-        let (lo, hi) = VISCOSITY_RANGE;
-        if let Some((k, mu)) = snap.viscosity.iter().enumerate().find(|&(k, &mu)| {
-            if film(k) {
-                !(lo..=hi).contains(&mu)
-            } else {
-                mu != 0.0
+        let tunable = |k: usize| self.model.bearings[k].kind.tuned().is_some();
+        let range = |k: usize| {
+            let kind = &self.model.bearings[k].kind;
+            match (kind.viscosity(), kind.excitation()) {
+                (Some(_), _) => Some(("viscosity", VISCOSITY_RANGE, " Pa·s")),
+                (_, Some(_)) => Some(("field excitation", EXCITATION_RANGE, "")),
+                _ => None,
             }
+        };
+        if let Some((k, &value)) = snap.tuned.iter().enumerate().find(|&(k, &value)| {
+            range(k).map_or(value != 0.0, |(_, (lo, hi), _)| !(lo..=hi).contains(&value))
         }) {
+            let (what, (lo, hi), unit) = range(k).unwrap_or(("tuned value", (0.0, 0.0), ""));
             return self.report(
                 Status::Error,
                 format!(
-                    "{}: viscosity {} Pa·s of bearing {} in the state is outside [{lo}, {hi}] Pa·s",
+                    "{}: {what} {}{unit} of bearing {} in the state is outside [{lo}, {hi}]{unit}",
                     call.name(),
-                    Short(*mu),
+                    Short(value),
                     self.model.bearings[k].name
                 ),
             );
@@ -85,14 +89,14 @@ impl Instance {
             // The state's rotor, built aside: the running one stays until it is ready.
             match Self::fresh_simulator(&self.model, modes) {
                 Ok(mut sim) => {
-                    let given = model_viscosity(&self.model);
-                    Self::load_state(&mut sim, snap, &given, film).map(|()| Some(sim))
+                    let given = model_tuned(&self.model);
+                    Self::load_state(&mut sim, snap, &given, tunable).map(|()| Some(sim))
                 }
                 Err(e) => Err(e),
             }
         } else {
-            let now = self.viscosity.clone();
-            Self::load_state(&mut self.sim, snap, &now, film).map(|()| None)
+            let now = self.tuned.clone();
+            Self::load_state(&mut self.sim, snap, &now, tunable).map(|()| None)
         };
         match result {
             Ok(Some(sim)) => {
@@ -105,24 +109,23 @@ impl Instance {
             Err(e) => return self.report(Status::Error, format!("{}: {e}", call.name())),
         }
         self.params = snap.params;
-        self.viscosity = snap.viscosity.clone();
+        self.tuned = snap.tuned.clone();
         self.phase = snap.phase;
         self.outputs = None;
         Status::Ok
     }
 
-    /// Put `snap`'s viscosities (where they differ from `held`, those `sim`
-    /// runs with), options and simulator state into `sim`.
+    /// Put `snap`'s tuned viscosities and excitations (where they differ from
+    /// `held`, those `sim` runs with), options and simulator state into `sim`.
     fn load_state(
         sim: &mut Simulator,
         snap: &Snapshot,
         held: &[f64],
-        film: impl Fn(usize) -> bool,
+        tunable: impl Fn(usize) -> bool,
     ) -> Result<(), String> {
-        for (k, (&mu, &now)) in snap.viscosity.iter().zip(held).enumerate() {
-            if mu != now && film(k) {
-                sim.set_bearing_viscosity(k, mu)
-                    .map_err(|e| e.to_string())?;
+        for (k, (&value, &now)) in snap.tuned.iter().zip(held).enumerate() {
+            if value != now && tunable(k) {
+                sim.set_bearing_tuned(k, value).map_err(|e| e.to_string())?;
             }
         }
         sim.set_options(snap.params.options())

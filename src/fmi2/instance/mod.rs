@@ -28,7 +28,7 @@
 //! assert_eq!(fmu.get(speed, Kind::Real), Ok(100.0));
 //! ```
 
-use crate::model::{DEFAULT_REDUCED_MODES, RotorModel};
+use crate::model::{DEFAULT_REDUCED_MODES, Drive, RotorModel};
 use crate::rotor::Rotor;
 use crate::solver::reduction_check::ValidityWatch;
 use crate::solver::{Outputs, Simulator, SolverError, SolverOptions};
@@ -83,6 +83,8 @@ pub(super) struct Params {
     pub(super) gravity: bool,
     /// Fixed-interface modes of the reduced rotor, 0 for the full rotor.
     pub(super) reduced_modes: i32,
+    /// Initial speed of a torque-driven shaft (rad/s; `shaft.initial_speed`).
+    pub(super) initial_speed: f64,
 }
 
 impl Params {
@@ -109,6 +111,7 @@ impl Params {
             ramp_time: 0.0,
             gravity: true,
             reduced_modes: Rotor::transient_modes(model).unwrap_or(DEFAULT_REDUCED_MODES) as i32,
+            initial_speed: START_SPEED,
         }
     }
 }
@@ -123,7 +126,8 @@ pub struct Instance {
     vars: Vec<Variable>,
     sim: Simulator,
     params: Params,
-    viscosity: Vec<f64>,
+    /// The tuned value of each model bearing ([`tuned`](crate::bearing::BearingKind::tuned); 0 where none).
+    tuned: Vec<f64>,
     phase: Phase,
     start_time: f64,
     stop_time: Option<f64>,
@@ -144,13 +148,13 @@ fn category(status: Status) -> &'static str {
     }
 }
 
-/// The viscosity of each model bearing as the model file gives it (0 where the
-/// bearing has none).
-fn model_viscosity(model: &RotorModel) -> Vec<f64> {
+/// The tuned value ([`tuned`](crate::bearing::BearingKind::tuned): viscosity or field excitation) of
+/// each model bearing as the model file gives it (0 where the bearing has none).
+fn model_tuned(model: &RotorModel) -> Vec<f64> {
     model
         .bearings
         .iter()
-        .map(|b| b.kind.viscosity().unwrap_or(0.0))
+        .map(|b| b.kind.tuned().unwrap_or(0.0))
         .collect()
 }
 
@@ -168,7 +172,7 @@ impl Instance {
             .collect();
         let vars = variables(&model);
         let (_, guid) = model_description(&model);
-        let viscosity = model_viscosity(&model);
+        let tuned = model_tuned(&model);
         let params = Params::start(&model);
         let sim = Self::fresh_simulator(&model, params.reduced_modes)?;
         let mut messages: Vec<LogMessage> = messages;
@@ -183,7 +187,7 @@ impl Instance {
             vars,
             sim,
             params,
-            viscosity,
+            tuned,
             phase: Phase::Instantiated,
             start_time: 0.0,
             stop_time: None,
@@ -205,7 +209,7 @@ impl Instance {
     }
 
     /// Rebuild the simulator on the rotor `modes` selects (0: full), carrying
-    /// the inputs, their rates and the tuned viscosities over; the choice is
+    /// the inputs, their rates and the tuned viscosities and excitations over; the choice is
     /// logged (`logAll`).
     fn rebuild_simulator(&mut self, modes: i32) -> Result<(), SolverError> {
         let mut sim = Self::fresh_simulator(&self.model, modes).map_err(SolverError::Input)?;
@@ -222,10 +226,13 @@ impl Instance {
         state.loads.clone_from(&old.loads);
         state.load_rates.clone_from(&old.load_rates);
         sim.set_state(state)?;
-        let model = model_viscosity(&self.model);
-        for (k, (&mu, &given)) in self.viscosity.iter().zip(&model).enumerate() {
-            if mu != given {
-                sim.set_bearing_viscosity(k, mu)?;
+        if self.model.drive == Drive::Torque {
+            sim.set_speed(self.params.initial_speed, 0.0)?;
+        }
+        let model = model_tuned(&self.model);
+        for (k, (&value, &given)) in self.tuned.iter().zip(&model).enumerate() {
+            if value != given {
+                sim.set_bearing_tuned(k, value)?;
             }
         }
         self.watch = ValidityWatch::new(sim.rotor());
@@ -398,10 +405,12 @@ impl Instance {
             Binding::RampTime => p.ramp_time,
             Binding::Gravity => f64::from(u8::from(p.gravity)),
             Binding::ReducedModes => f64::from(p.reduced_modes),
-            Binding::Viscosity(k) => self.viscosity[k],
+            Binding::Viscosity(k) | Binding::Excitation(k) => self.tuned[k],
             Binding::UnbalancePhase(k) => s.unbalance_phase[k],
             Binding::Speed => self.sim.speed_at(s.time),
             Binding::Unbalance(k) => s.unbalance[k] + s.unbalance_rate[k] * (s.time - s.speed_time),
+            Binding::Load(i) => self.sim.load_at(i, s.time),
+            Binding::InitialSpeed => p.initial_speed,
             binding => {
                 if self.phase == Phase::InitializationMode && self.outputs.is_none() {
                     self.settle()?;
@@ -426,6 +435,17 @@ impl Instance {
                     Binding::HousingY(k) => o.bearings[k].housing.y,
                     Binding::HousingVx(k) => o.bearings[k].housing.vx,
                     Binding::HousingVy(k) => o.bearings[k].housing.vy,
+                    Binding::PortX(k) => o.ports[k].x,
+                    Binding::PortY(k) => o.ports[k].y,
+                    Binding::PortVx(k) => o.ports[k].vx,
+                    Binding::PortVy(k) => o.ports[k].vy,
+                    Binding::BearingPowerLoss(k) => o.bearings[k].report.power_loss,
+                    Binding::ThrustFriction(k) => o.thrust_bearings[k].friction_torque,
+                    Binding::ThrustPowerLoss(k) => o.thrust_bearings[k].power_loss,
+                    Binding::PowerLoss => o.power_loss,
+                    Binding::TorqueSpeed(k) => o.torques[k].speed,
+                    Binding::TorqueAngle(k) => o.torques[k].angle,
+                    Binding::ShaftTorque(k) => o.shaft_torques[k],
                     _ => f64::NAN,
                 }
             }
@@ -510,16 +530,24 @@ impl Instance {
             }
             Binding::ReducedModes if value as i32 == self.params.reduced_modes => Ok(()),
             Binding::ReducedModes => self.rebuild_simulator(value as i32),
-            Binding::Viscosity(k) => {
-                let r = self.sim.set_bearing_viscosity(k, value);
+            Binding::Viscosity(k) | Binding::Excitation(k) => {
+                let r = self.sim.set_bearing_tuned(k, value);
                 if r.is_ok() {
-                    self.viscosity[k] = value;
+                    self.tuned[k] = value;
                 }
                 r
             }
             Binding::UnbalancePhase(k) => self.sim.set_unbalance_phase(k, value),
             Binding::Speed => self.sim.set_speed(value, 0.0),
             Binding::Unbalance(k) => self.sim.set_unbalance(k, value),
+            Binding::Load(i) => self.sim.set_load(i, value, 0.0),
+            Binding::InitialSpeed => {
+                let r = self.sim.set_speed(value, 0.0);
+                if r.is_ok() {
+                    self.params.initial_speed = value;
+                }
+                r
+            }
             _ => return bad(self, "cannot be set"),
         };
         self.outputs = None;
@@ -561,9 +589,19 @@ impl Instance {
         let s = self.sim.state();
         let now = s.time;
         let result = match v.binding {
+            _ if v.causality != Causality::Input => {
+                return self.report(
+                    Status::Error,
+                    format!("{call}: {} is not a continuous input", v.name),
+                );
+            }
             Binding::Speed => {
                 let w = self.sim.speed_at(now);
                 self.sim.set_speed(w, value)
+            }
+            Binding::Load(i) => {
+                let load = self.sim.load_at(i, now);
+                self.sim.set_load(i, load, value)
             }
             Binding::Unbalance(k) => {
                 let me = s.unbalance[k] + s.unbalance_rate[k] * (now - s.speed_time);
@@ -603,7 +641,7 @@ impl Instance {
                 self.watch = ValidityWatch::new(sim.rotor());
                 self.sim = sim;
                 self.params = params;
-                self.viscosity = model_viscosity(&self.model);
+                self.tuned = model_tuned(&self.model);
                 self.phase = Phase::Instantiated;
                 self.outputs = None;
                 self.start_time = 0.0;

@@ -117,15 +117,15 @@ impl Instance {
     /// the running speed or the frequency of the motion at the kept nodes
     /// has left the range the rotor is validated for, with the error
     /// estimate there (against the full rotor with this instance's
-    /// viscosities) and the mode count that would reach it.
+    /// tuned viscosities and excitations) and the mode count that would reach it.
     fn watch_reduction(&mut self, call: &str) -> Status {
         let (t, speed) = (self.sim.time(), self.sim.speed_at(self.sim.time()));
         let Some(excursion) = self.watch.check(speed, self.sim.state()) else {
             return Status::Ok;
         };
         let mut model = self.model.clone();
-        for (b, &mu) in model.bearings.iter_mut().zip(&self.viscosity) {
-            b.kind.set_viscosity(mu);
+        for (b, &value) in model.bearings.iter_mut().zip(&self.tuned) {
+            b.kind.set_tuned(value);
         }
         let report = match Rotor::new(model) {
             Ok(full) => excursion_report(&full, self.sim.rotor(), speed, excursion),

@@ -16,11 +16,9 @@ use crate::model::{ModelError, Pedestal, PlacedBearing, PlacedElement, TableFile
 use super::bearings::{RUB_WIDTH, contact_law, shaft_radius_at};
 use super::pedestals::lookup;
 use super::tables::{TableInput, coefficient_table};
-use crate::model::limits::{CLEARANCE, FLUX_DENSITY, LENGTH, PULL_STIFFNESS, RADIUS};
-
-/// Largest field excitation of a magnetic pull (2: twice the nominal flux,
-/// beyond any over-excitation a generator survives).
-pub const MAX_EXCITATION: f64 = 2.0;
+use crate::model::limits::{
+    CLEARANCE, FLUX_DENSITY, LENGTH, MAX_EXCITATION, PULL_STIFFNESS, RADIUS,
+};
 
 /// Check each rub, seal and magnetic pull; names are claimed in `names`
 /// (shared with the bearings), table files read are added to `files`.

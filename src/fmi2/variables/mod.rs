@@ -1,0 +1,305 @@
+//! The FMU's variable table, derived from the rotor model: the single source of
+//! the value references, the model description and the runtime bindings.
+//!
+//! Order (and so value references) is fixed: parameters, inputs, outputs, each
+//! in model order. The same function builds the table for `modelDescription.xml`
+//! (packing) and inside the FMU (from the model file in `resources/`), so the
+//! two can never drift apart; a GUID hashed from the description ties them.
+
+use crate::model::{Drive, RotorModel};
+use crate::solver::SolverOptions;
+
+mod drive;
+mod loads;
+mod machine;
+
+/// What a variable reads or writes in the simulator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Binding {
+    /// Internal step (s).
+    TimeStep,
+    /// Relative solver tolerance.
+    Tolerance,
+    /// Newton iterations per step attempt (Integer).
+    MaxIterations,
+    /// Unbalance ramp time constant (s).
+    RampTime,
+    /// Gravity on/off (Boolean).
+    Gravity,
+    /// Fixed-interface modes of the reduced rotor, 0 for the full rotor (Integer).
+    ReducedModes,
+    /// Oil viscosity of model bearing `k` (Pa·s).
+    Viscosity(usize),
+    /// Angular position of unbalance plane `k` (rad).
+    UnbalancePhase(usize),
+    /// Spin speed input (rad/s).
+    Speed,
+    /// Unbalance of plane `k` (kg·m).
+    Unbalance(usize),
+    /// Journal x of bearing `k` (m).
+    BearingX(usize),
+    /// Journal y of bearing `k` (m).
+    BearingY(usize),
+    /// Force x of bearing `k` on the journal (N).
+    BearingFx(usize),
+    /// Force y of bearing `k` on the journal (N).
+    BearingFy(usize),
+    /// Eccentricity ratio of bearing `k`.
+    BearingEccentricity(usize),
+    /// Friction torque of bearing `k` (N·m).
+    BearingFriction(usize),
+    /// Contact normal force of bearing `k` (N).
+    BearingContact(usize),
+    /// Minimum film thickness of bearing `k` (m).
+    BearingMinFilm(usize),
+    /// Probe `k` x (m).
+    ProbeX(usize),
+    /// Probe `k` y (m).
+    ProbeY(usize),
+    /// Spin angle (rad).
+    SpinAngle,
+    /// Total bearing friction torque (N·m).
+    FrictionTorque,
+    /// Journal x of bearing `k` relative to its housing (m).
+    BearingRelativeX(usize),
+    /// Journal y of bearing `k` relative to its housing (m).
+    BearingRelativeY(usize),
+    /// Housing x of bearing `k` (m), absolute.
+    HousingX(usize),
+    /// Housing y of bearing `k` (m), absolute.
+    HousingY(usize),
+    /// Housing velocity x of bearing `k` (m/s), absolute.
+    HousingVx(usize),
+    /// Housing velocity y of bearing `k` (m/s), absolute.
+    HousingVy(usize),
+    /// Field excitation of the magnetic pull that is model bearing `k`.
+    Excitation(usize),
+    /// Load input channel `i` (the order of
+    /// [`RotorModel::load_inputs`]): a force (N), a port force (N) or a
+    /// drive torque (N·m).
+    Load(usize),
+    /// Port `k` x (m).
+    PortX(usize),
+    /// Port `k` y (m).
+    PortY(usize),
+    /// Port `k` velocity x (m/s).
+    PortVx(usize),
+    /// Port `k` velocity y (m/s).
+    PortVy(usize),
+    /// Power dissipated in model bearing `k` (W).
+    BearingPowerLoss(usize),
+    /// Friction torque of thrust bearing `k` (N·m).
+    ThrustFriction(usize),
+    /// Power dissipated in thrust bearing `k` (W).
+    ThrustPowerLoss(usize),
+    /// Total power dissipated in the bearings, rubs, seals and thrust bearings (W).
+    PowerLoss,
+    /// Initial spin speed of a torque-driven shaft (rad/s).
+    InitialSpeed,
+    /// Speed of torque node `k` (rad/s).
+    TorqueSpeed(usize),
+    /// Angle of torque node `k` (rad).
+    TorqueAngle(usize),
+    /// Torque carried by shaft element `k` (N·m).
+    ShaftTorque(usize),
+}
+
+/// FMI base type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// fmi2Real.
+    Real,
+    /// fmi2Integer.
+    Integer,
+    /// fmi2Boolean.
+    Boolean,
+}
+
+/// FMI causality.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Causality {
+    /// A parameter.
+    Parameter,
+    /// An input.
+    Input,
+    /// An output.
+    Output,
+}
+
+/// FMI variability.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Variability {
+    /// Fixed after initialization.
+    Fixed,
+    /// Changeable between steps.
+    Tunable,
+    /// Continuous in time.
+    Continuous,
+}
+
+/// One scalar variable.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Variable {
+    /// Structured name, e.g. `bearings.generator_guide.x`.
+    pub name: String,
+    /// Value reference (its index in the table).
+    pub value_reference: u32,
+    /// Description with the physics and sign convention.
+    pub description: String,
+    /// Base type.
+    pub kind: Kind,
+    /// Causality.
+    pub causality: Causality,
+    /// Variability.
+    pub variability: Variability,
+    /// SI unit name (declared in `UnitDefinitions`), if any.
+    pub unit: Option<&'static str>,
+    /// Display unit, if any.
+    pub display_unit: Option<&'static str>,
+    /// Start value (parameters and inputs).
+    pub start: Option<f64>,
+    /// What it is bound to.
+    pub binding: Binding,
+    /// Output depends directly on the speed input (film forces and friction).
+    pub feedthrough_speed: bool,
+    /// Smallest value a master may set (declared `min`), if bounded.
+    pub min: Option<f64>,
+    /// Largest value a master may set (declared `max`), if bounded.
+    pub max: Option<f64>,
+}
+
+/// Allowed field excitations of a magnetic pull (0 off, 1 nominal).
+pub const EXCITATION_RANGE: (f64, f64) = (0.0, crate::model::limits::MAX_EXCITATION);
+
+/// Allowed oil viscosities (Pa·s): positive, from a gas film to a heavy grease
+/// (the model file's range, [`crate::model::limits::VISCOSITY`]).
+pub const VISCOSITY_RANGE: (f64, f64) = (
+    crate::model::limits::VISCOSITY.min,
+    crate::model::limits::VISCOSITY.max,
+);
+
+/// The declared `[min, max]` of a settable variable: the solver's option
+/// ranges, the model's largest speed, physical signs. The FMU checks every set
+/// value against it, and `modelDescription.xml` declares it.
+pub fn value_range(binding: Binding, model: &RotorModel) -> (Option<f64>, Option<f64>) {
+    let pair = |(lo, hi): (f64, f64)| (Some(lo), Some(hi));
+    let ints = |(lo, hi): (usize, usize)| (Some(lo as f64), Some(hi as f64));
+    match binding {
+        Binding::TimeStep => pair(SolverOptions::TIME_STEP_RANGE),
+        Binding::Tolerance => pair(SolverOptions::TOLERANCE_RANGE),
+        Binding::MaxIterations => ints(SolverOptions::MAX_ITERATIONS_RANGE),
+        Binding::ReducedModes => ints((0, crate::model::MAX_REDUCED_MODES)),
+        Binding::RampTime => pair(SolverOptions::RAMP_TIME_RANGE),
+        Binding::Viscosity(_) => pair(VISCOSITY_RANGE),
+        Binding::Excitation(_) => pair(EXCITATION_RANGE),
+        Binding::Speed => (Some(-model.max_speed), Some(model.max_speed)),
+        Binding::Unbalance(_) => (Some(0.0), None),
+        _ => (None, None),
+    }
+}
+
+/// An output of a bearing: name suffix, description, unit, display unit, binding.
+pub(super) type OutputSpec = (
+    &'static str,
+    String,
+    Option<&'static str>,
+    Option<&'static str>,
+    Binding,
+);
+
+/// Defaults of the solver parameters.
+pub const DEFAULT_TIME_STEP: f64 = 1e-3;
+/// Start value of `shaft.speed` (rad/s): the machine at standstill, its
+/// journals resting on their bearings; a master sets another start value to
+/// begin at speed.
+pub const START_SPEED: f64 = 0.0;
+/// Default relative tolerance.
+pub const DEFAULT_TOLERANCE: f64 = 1e-8;
+/// Default Newton iteration limit.
+pub const DEFAULT_MAX_ITERATIONS: f64 = 50.0;
+
+/// The variables being built: each pushed one takes the next value reference.
+pub(super) struct Table<'a> {
+    /// The model the variables describe.
+    pub(super) model: &'a RotorModel,
+    out: Vec<Variable>,
+}
+
+impl Table<'_> {
+    /// Append a variable; `min`/`max` from [`value_range`].
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn push(
+        &mut self,
+        name: String,
+        description: String,
+        kind: Kind,
+        causality: Causality,
+        variability: Variability,
+        unit: Option<&'static str>,
+        display_unit: Option<&'static str>,
+        start: Option<f64>,
+        binding: Binding,
+    ) {
+        // A prescribed speed reaches the films, friction and losses at once;
+        // a torque-driven shaft has no speed input.
+        let feedthrough_speed = self.model.drive == Drive::Speed
+            && matches!(
+                binding,
+                Binding::BearingFx(_)
+                    | Binding::BearingFy(_)
+                    | Binding::BearingFriction(_)
+                    | Binding::FrictionTorque
+                    | Binding::BearingPowerLoss(_)
+                    | Binding::ThrustFriction(_)
+                    | Binding::ThrustPowerLoss(_)
+                    | Binding::PowerLoss
+            );
+        let (min, max) = value_range(binding, self.model);
+        self.out.push(Variable {
+            min,
+            max,
+            value_reference: self.out.len() as u32,
+            name,
+            description,
+            kind,
+            causality,
+            variability,
+            unit,
+            display_unit,
+            start,
+            binding,
+            feedthrough_speed,
+        });
+    }
+
+    /// Append the continuous outputs `{group}.{name}.{suffix}` of `specs`.
+    pub(super) fn outputs(&mut self, group: &str, name: &str, specs: Vec<OutputSpec>) {
+        for (suffix, description, unit, display, binding) in specs {
+            self.push(
+                format!("{group}.{name}.{suffix}"),
+                description,
+                Kind::Real,
+                Causality::Output,
+                Variability::Continuous,
+                unit,
+                display,
+                None,
+                binding,
+            );
+        }
+    }
+}
+
+/// The variable table of `model`: the machine's variables in their historic
+/// order, then each later group appended (so a model without its elements
+/// keeps every value reference).
+pub fn variables(model: &RotorModel) -> Vec<Variable> {
+    let mut t = Table {
+        model,
+        out: Vec::new(),
+    };
+    machine::add(&mut t);
+    loads::add(&mut t);
+    drive::add(&mut t);
+    t.out
+}
