@@ -51,6 +51,7 @@
 mod condense;
 mod dense;
 mod factor;
+mod line_search;
 mod newmark;
 mod newton;
 pub mod run;

@@ -256,6 +256,26 @@ impl Simulator {
         }
     }
 
+    /// Predictor `u + h u̇ + h²/2 ü` into `newmark.u` and `newmark.p`: the
+    /// condensed Newton only needs it on the journal and pad coordinates
+    /// (`journals_only`).
+    pub(super) fn predict(&mut self, h: f64, journals_only: bool) {
+        let (s, w) = (&self.state, &mut self.newmark);
+        let predict = |i: usize| s.u[i] + h * s.ud[i] + 0.5 * h * h * s.udd[i];
+        if journals_only {
+            for &i in &self.sites.journal_dofs {
+                w.u[i] = predict(i);
+            }
+        } else {
+            for (i, u) in w.u.iter_mut().enumerate() {
+                *u = predict(i);
+            }
+        }
+        for i in 0..s.p.len() {
+            w.p[i] = s.p[i] + h * s.pd[i] + 0.5 * h * h * s.pdd[i];
+        }
+    }
+
     /// One Newmark step of size `h`. `Ok(None)`: converged, state advanced;
     /// `Ok(Some(residual))`: Newton failed, state untouched. A bearing error
     /// (journal beyond the clearance) at an iterate counts as a failure of the
@@ -276,31 +296,19 @@ impl Simulator {
         self.external_force(t1, spin1);
         let mut factor = self.factor.take();
         let exact = self.prepare_factor(h, speed1, &mut factor);
-        // Predictor `u + h u̇ + h²/2 ü`: the condensed Newton only needs it on the
-        // journal and pad coordinates.
-        {
-            let (s, w) = (&self.state, &mut self.newmark);
-            let predict = |i: usize| s.u[i] + h * s.ud[i] + 0.5 * h * h * s.udd[i];
-            if matches!(exact, Ok(true)) {
-                for &i in &self.sites.journal_dofs {
-                    w.u[i] = predict(i);
-                }
-            } else {
-                for (i, u) in w.u.iter_mut().enumerate() {
-                    *u = predict(i);
-                }
-            }
-            for i in 0..s.p.len() {
-                w.p[i] = s.p[i] + h * s.pd[i] + 0.5 * h * h * s.pdd[i];
-            }
-        }
+        self.predict(h, matches!(exact, Ok(true)));
         let outcome = match exact {
             Ok(true) => match factor.as_ref() {
-                Some(f) => self.newton_condensed(h, t1, speed1, f),
+                Some(f) => self.newton_condensed(h, t1, speed1, f, false),
                 None => Err(SolverError::Input("internal: no factorization".into())),
             },
             Ok(false) => self.newton(h, t1, speed1, &mut factor),
             Err(e) => Err(e),
+        };
+        // Plain Newton failed: the damped Newton gets the step before it is cut.
+        let outcome = match outcome {
+            Ok(Some(_)) => self.retry_damped(h, t1, speed1, &mut factor),
+            other => other,
         };
         self.factor = factor;
         self.record_factor();

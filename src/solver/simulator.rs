@@ -55,7 +55,7 @@ impl Default for SolverOptions {
             time_step: 1e-4,
             tolerance: 1e-8,
             max_iterations: 50,
-            max_step_cuts: 10,
+            max_step_cuts: 16,
             unbalance_ramp_time: 0.0,
             gravity: true,
         }
@@ -73,6 +73,8 @@ pub struct StepStats {
     pub refreshes: usize,
     /// Step halvings.
     pub step_cuts: usize,
+    /// Steps solved again by the damped Newton after plain Newton failed.
+    pub retries: usize,
     /// Factorizations of the linear part.
     pub factorizations: usize,
 }
@@ -249,7 +251,7 @@ impl Simulator {
             refactor_journal_limit: 8,
             newmark: NewmarkWork::new(n, n_internal),
             schur: SchurSolve::new(n, &sites),
-            condensed: CondensedWork::new(sites.n_journal),
+            condensed: CondensedWork::new(&sites),
             stats: StepStats::default(),
             rotor,
             options,

@@ -594,10 +594,11 @@ impl Instance {
                 Status::Ok,
                 category(Status::Ok),
                 format!(
-                    "{call} from {current} s by {step} s: {} internal steps, {} Newton iterations, {} step cuts ({} Jacobian refreshes, {} factorizations)",
+                    "{call} from {current} s by {step} s: {} internal steps, {} Newton iterations, {} step cuts, {} damped retries ({} Jacobian refreshes, {} factorizations)",
                     after.steps - before.steps,
                     after.iterations - before.iterations,
                     after.step_cuts - before.step_cuts,
+                    after.retries - before.retries,
                     after.refreshes - before.refreshes,
                     after.factorizations - before.factorizations,
                 ),
