@@ -430,3 +430,55 @@ fn the_cli_runs_up_from_rest_and_coasts_down_to_rest() {
         assert!(moving[film] > 0.0);
     }
 }
+
+/// `rotor simulate` says when a contact leaves the range of its law (issue
+/// 22): the 1e3 kg·m rub of the Jeffcott rotor throws the disk centimetres
+/// "into" its seal at forces far past yield, and the journals into their
+/// bushings; each contact gets one warning per limit for the whole run. The
+/// shipped rotor at its own unbalance, run up from rest on its bushings,
+/// gets none.
+#[test]
+fn the_cli_warns_once_per_run_when_a_contact_leaves_its_law() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("envelope_contact_cli");
+    std::fs::create_dir_all(&dir).unwrap();
+    let rub = dir.join("jeffcott_seal.toml");
+    std::fs::write(
+        &rub,
+        JEFFCOTT.replace("magnitude = 2e-5", "magnitude = 1e3")
+            + "\n[[rubs]]\nname = \"seal\"\nnode = 5\ngap = 200e-6\n",
+    )
+    .unwrap();
+    let shipped =
+        std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/models/jeffcott.toml"));
+    let run = |model: &std::path::Path, speed: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .arg("simulate")
+            .arg(model)
+            .args(speed)
+            .args(["--duration", "0.05", "--csv"])
+            .arg(dir.join("run.csv"))
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    let stderr = run(&rub, &["--rpm", "3000"]);
+    for contact in ["rub seal", "bearing left", "bearing right"] {
+        let count = |what: &str| {
+            stderr
+                .lines()
+                .filter(|l| {
+                    l.starts_with(&format!("warning: {contact}: at t = ")) && l.contains(what)
+                })
+                .count()
+        };
+        assert_eq!(count("into its stator"), 1, "{contact}:\n{stderr}");
+        assert_eq!(count("yield onset of steel"), 1, "{contact}:\n{stderr}");
+    }
+    let stderr = run(&shipped, &["--ramp-rpm", "0:3000"]);
+    assert!(!stderr.contains("warning"), "{stderr}");
+}

@@ -49,8 +49,10 @@
 //! still fails is an error: an unconverged state is never returned.
 
 mod condense;
+pub mod contact_watch;
 mod dense;
 mod factor;
+mod film_start;
 mod line_search;
 mod newmark;
 mod newton;
@@ -60,6 +62,7 @@ mod sites;
 mod state;
 pub mod statics;
 
+pub use contact_watch::{ContactLimit, ContactWarning};
 pub use run::{SpeedProfile, record};
 pub use simulator::{
     BearingOutput, Outputs, ProbeOutput, Simulator, SolverError, SolverOptions, StepStats,

@@ -324,6 +324,7 @@ impl Simulator {
             s.time = t1;
             s.spin_angle = spin1;
             self.stats.steps += 1;
+            self.watch_contacts(t1, speed1);
         }
         Ok(outcome)
     }

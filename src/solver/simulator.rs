@@ -5,6 +5,7 @@ use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::LinalgError;
 use crate::rotor::Rotor;
 
+use super::contact_watch::ContactWatch;
 use super::factor::{Factor, FactorWork};
 use super::newmark::NewmarkWork;
 use super::newton::{CondensedWork, SchurSolve};
@@ -195,6 +196,8 @@ pub struct Simulator {
     pub(super) schur: SchurSolve,
     pub(super) condensed: CondensedWork,
     pub(super) stats: StepStats,
+    /// Contacts reported beyond the limits of their law ([`super::contact_watch`]).
+    pub(super) contact_watch: ContactWatch,
 }
 
 impl Simulator {
@@ -253,6 +256,7 @@ impl Simulator {
             schur: SchurSolve::new(n, &sites),
             condensed: CondensedWork::new(&sites),
             stats: StepStats::default(),
+            contact_watch: ContactWatch::new(sites.list.len()),
             rotor,
             options,
             state,

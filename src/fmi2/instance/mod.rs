@@ -604,8 +604,17 @@ impl Instance {
                 ),
             ));
         }
+        // Contact beyond its law's limits: each contact and limit once per
+        // episode, as fmi2Warning.
+        let warnings = self.sim.take_contact_warnings();
+        let warned = !warnings.is_empty();
+        for w in warnings {
+            self.messages
+                .push((Status::Warning, category(Status::Warning), w.message));
+        }
         match result {
             Ok(()) => match self.current_outputs() {
+                Ok(_) if warned => Status::Warning,
                 Ok(_) => Status::Ok,
                 Err(s) => s,
             },
