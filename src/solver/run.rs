@@ -47,6 +47,15 @@ impl SpeedProfile {
         }
     }
 
+    /// The largest |speed| (rad/s) the profile reaches.
+    pub fn top_speed(&self) -> f64 {
+        match self {
+            SpeedProfile::Constant(w) => w.abs(),
+            SpeedProfile::Ramp { from, to, .. } => from.abs().max(to.abs()),
+            SpeedProfile::Table(points) => points.iter().fold(0.0, |m, p| m.max(p.1.abs())),
+        }
+    }
+
     /// Check the profile's numbers.
     pub fn validate(&self) -> Result<(), String> {
         match self {
@@ -90,13 +99,14 @@ impl SpeedProfile {
 
 /// Run `sim` from its current time for `duration` s, following `profile`,
 /// recording outputs every `output_step` s (the first record at the start).
-/// `progress` is called with the fraction done after every record.
+/// `progress` is called with the fraction done and the simulator after
+/// every record.
 pub fn record(
     sim: &mut Simulator,
     profile: &SpeedProfile,
     duration: f64,
     output_step: f64,
-    mut progress: impl FnMut(f64),
+    mut progress: impl FnMut(f64, &Simulator),
 ) -> Result<Vec<Outputs>, SolverError> {
     profile.validate().map_err(SolverError::Input)?;
     if !(duration.is_finite() && duration >= 0.0 && output_step.is_finite() && output_step > 0.0) {
@@ -116,7 +126,7 @@ pub fn record(
         let (w, rate) = profile.at(t);
         sim.set_speed(w, rate)?;
         out.push(sim.outputs()?);
-        progress(k as f64 / count as f64);
+        progress(k as f64 / count as f64, sim);
     }
     Ok(out)
 }

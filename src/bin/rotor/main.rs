@@ -487,11 +487,17 @@ fn run(cli: Cli) -> Result<(), String> {
             let profile =
                 simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
             let rotor = load(&model)?;
-            let modes = reduced_modes.unwrap_or(rotor.model.reduced_modes.unwrap_or(0));
-            let rotor = if modes == 0 {
-                rotor
+            let modes = match reduced_modes {
+                Some(m) => m,
+                None => Rotor::transient_modes(&rotor.model).map_err(|e| e.to_string())?,
+            };
+            let (rotor, full) = if modes == 0 {
+                (rotor, None)
             } else {
-                rotor.reduced(modes).map_err(|e| e.to_string())?
+                (
+                    rotor.reduced(modes).map_err(|e| e.to_string())?,
+                    Some(rotor),
+                )
             };
             let options = rotor_bearing::solver::SolverOptions {
                 time_step: step,
@@ -508,7 +514,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 csv,
                 plots,
             };
-            simulate::simulate(rotor, options, run)
+            simulate::simulate(rotor, full, options, run)
         }
     }
 }

@@ -9,6 +9,9 @@ use rotor_bearing::model::speed_table;
 use rotor_bearing::plot::{RAD_S_TO_RPM, orbits_png, spectrum_png, waterfall_png};
 use rotor_bearing::report::{csv as report_csv, series};
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::solver::reduction_check::{
+    Excursion, ValidityWatch, error_estimate, excursion_report,
+};
 use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record};
 
 use crate::write_file;
@@ -66,7 +69,15 @@ pub struct Run {
     pub plots: Option<String>,
 }
 
-pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String> {
+/// The run of `rotor` (reduced from `full` when that is given): the reduced
+/// rotor says how far it is from the full one at the top speed, and warns
+/// when the speed or the motion leaves the range it is validated for.
+pub fn simulate(
+    rotor: Rotor,
+    full: Option<Rotor>,
+    options: SolverOptions,
+    run: Run,
+) -> Result<(), String> {
     let Run {
         profile,
         duration,
@@ -78,6 +89,18 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
     let profile = &profile;
     let model = rotor.model.clone();
     eprintln!("{}", rotor.coordinates());
+    let mut watch = ValidityWatch::new(&rotor);
+    let top = profile.top_speed();
+    if let Some(full) = &full {
+        let rpm = top * RAD_S_TO_RPM;
+        let estimate = error_estimate(full, &rotor, top, top);
+        if top > watch.limit() {
+            let report = excursion_report(full, &rotor, top, Excursion::Speed(top));
+            eprintln!("warning: {}: top speed {rpm:.0} rpm: {report}", model.name);
+        } else {
+            eprintln!("reduced rotor at the top speed {rpm:.0} rpm: {estimate}");
+        }
+    }
     let mut sim = Simulator::new(rotor, options).map_err(|e| e.to_string())?;
     let (w0, _) = profile.at(0.0);
     sim.set_speed(w0, 0.0).map_err(|e| e.to_string())?;
@@ -94,7 +117,24 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
     let started = std::time::Instant::now();
     let mut shown = 0;
     let terminal = std::io::IsTerminal::is_terminal(&std::io::stderr());
-    let records = record(&mut sim, profile, duration, output_step, |f| {
+    // The first excursion of the motion is reported as it happens, the
+    // highest at the end: (count, time, speed, excursion).
+    let mut excursions: (usize, f64, f64, Option<Excursion>) = (0, 0.0, 0.0, None);
+    let records = record(&mut sim, profile, duration, output_step, |f, sim| {
+        let speed = sim.speed_at(sim.time());
+        // The speed was judged before the run: here the motion's frequency.
+        let motion = watch.check(speed, sim.state());
+        if let (Some(e @ Excursion::Motion(_)), Some(full)) = (motion, &full) {
+            let t = sim.time();
+            if excursions.0 == 0 {
+                let report = excursion_report(full, sim.rotor(), speed, e);
+                eprintln!("warning: {}: at t = {t:.4} s {report}", model.name);
+            }
+            if excursions.3.is_none_or(|x| e.frequency() > x.frequency()) {
+                (excursions.1, excursions.2, excursions.3) = (t, speed, Some(e));
+            }
+            excursions.0 += 1;
+        }
         let pct = (f * 100.0) as usize;
         if terminal && pct >= shown + 5 {
             shown = pct - pct % 5;
@@ -114,6 +154,13 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         started.elapsed().as_secs_f64(),
         sim.stats()
     );
+    if let (Some(full), (count @ 2.., t, speed, Some(e))) = (&full, excursions) {
+        let report = excursion_report(full, sim.rotor(), speed, e);
+        eprintln!(
+            "warning: {}: the motion left the validated range {count} times; the highest, at t = {t:.4} s: {report}",
+            model.name
+        );
+    }
     let out = report_csv::simulation(&model, &records);
     match csv {
         Some(path) => write_file(&path, &out)?,

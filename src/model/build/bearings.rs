@@ -8,6 +8,9 @@ use crate::bearing::{BearingKind, PlainBearing, RubElement, TiltingPadBearing};
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{BearingEntry, RubEntry};
+use crate::model::limits::{
+    CLEARANCE, CONTACT_STIFFNESS, DAMPING, LENGTH, RADIUS, STIFFNESS, VISCOSITY,
+};
 use crate::model::{ModelError, PlacedBearing, PlacedElement};
 
 /// Check each bearing: unique name, its node and the parameters of its `type`; film bearings
@@ -42,14 +45,15 @@ pub(super) fn bearings(
                 cyy,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
-                let f = |key: &str, v: f64| ctx.finite(p.key(key), v);
+                let k = |key: &str, v: f64| ctx.within(p.key(key), v, &STIFFNESS);
+                let c = |key: &str, v: f64| ctx.within(p.key(key), v, &DAMPING);
                 let k = [
-                    [f("kxx", kxx)?, f("kxy", kxy)?],
-                    [f("kyx", kyx)?, f("kyy", kyy)?],
+                    [k("kxx", kxx)?, k("kxy", kxy)?],
+                    [k("kyx", kyx)?, k("kyy", kyy)?],
                 ];
                 let c = [
-                    [f("cxx", cxx)?, f("cxy", cxy)?],
-                    [f("cyx", cyx)?, f("cyy", cyy)?],
+                    [c("cxx", cxx)?, c("cxy", cxy)?],
+                    [c("cyx", cyx)?, c("cyy", cyy)?],
                 ];
                 for (key, v) in [
                     ("kxx", k[0][0]),
@@ -82,10 +86,10 @@ pub(super) fn bearings(
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
                 let mut bearing = PlainBearing {
-                    radius: ctx.positive(p.key("radius"), radius)?,
-                    length: ctx.positive(p.key("length"), length)?,
-                    clearance: ctx.positive(p.key("clearance"), clearance)?,
-                    viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
+                    radius: ctx.within(p.key("radius"), radius, &RADIUS)?,
+                    length: ctx.within(p.key("length"), length, &LENGTH)?,
+                    clearance: ctx.within(p.key("clearance"), clearance, &CLEARANCE)?,
+                    viscosity: ctx.within(p.key("viscosity"), viscosity, &VISCOSITY)?,
                     contact: None,
                 };
                 bearing.contact = contact_law(
@@ -125,8 +129,8 @@ pub(super) fn bearings(
                 friction_coefficient,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
-                let radius = ctx.positive(p.key("radius"), radius)?;
-                let clearance = ctx.positive(p.key("clearance"), clearance)?;
+                let radius = ctx.within(p.key("radius"), radius, &RADIUS)?;
+                let clearance = ctx.within(p.key("clearance"), clearance, &CLEARANCE)?;
                 if clearance >= 0.1 * radius {
                     return Err(ctx.err(
                         p.key("clearance"),
@@ -194,9 +198,9 @@ pub(super) fn bearings(
                 }
                 let mut bearing = TiltingPadBearing {
                     radius,
-                    length: ctx.positive(p.key("length"), length)?,
+                    length: ctx.within(p.key("length"), length, &LENGTH)?,
                     clearance,
-                    viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
+                    viscosity: ctx.within(p.key("viscosity"), viscosity, &VISCOSITY)?,
                     pads: pivots
                         .iter()
                         .map(|d| Pad::new(d.to_radians(), arc.to_radians(), offset, preload))
@@ -221,14 +225,14 @@ pub(super) fn bearings(
     for (i, r) in rubs.into_iter().enumerate() {
         let p = root.key("rubs").index(i);
         let node = ctx.location(&p, r.node, r.z, node_z)?;
-        let gap = ctx.positive(p.key("gap"), r.gap)?;
+        let gap = ctx.within(p.key("gap"), r.gap, &CLEARANCE)?;
         // The shaft's outer radius at the node: the larger of its elements'.
         let shaft_radius = elements
             .iter()
             .filter(|e| e.node == node || e.node + 1 == node)
             .map(|e| 0.5 * e.element.section.outer_diameter)
             .fold(0.0, f64::max);
-        let radius = ctx.positive(p.key("radius"), r.radius.unwrap_or(shaft_radius))?;
+        let radius = ctx.within(p.key("radius"), r.radius.unwrap_or(shaft_radius), &RADIUS)?;
         let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
         let law = contact_law(
             ctx,
@@ -269,11 +273,12 @@ fn contact_law(
     }
     let mut law = default;
     if let Some(k) = stiffness {
-        law.stiffness = ctx.positive(p.key("contact_stiffness"), k)?;
+        law.stiffness = ctx.within(p.key("contact_stiffness"), k, &CONTACT_STIFFNESS)?;
         law.damping = ContactLaw::DAMPING_TIME * law.stiffness;
     }
     if let Some(c) = damping {
         law.damping = ctx.non_negative(p.key("contact_damping"), c)?;
+        ctx.within(p.key("contact_damping"), c, &DAMPING)?;
     }
     if let Some(mu) = friction {
         law.friction = ctx.non_negative(p.key("friction_coefficient"), mu)?;
