@@ -348,8 +348,14 @@ fn a_rub_with_the_journals_in_contact_runs_on_with_the_orbit_held_by_the_stator(
         let mut sim = Simulator::new(Rotor::new(model.clone()).unwrap(), options).unwrap();
         sim.set_speed(speed, 0.0).unwrap();
         sim.settle_static().unwrap();
-        let records = record(&mut sim, &SpeedProfile::Constant(speed), 1.0, 1e-3, |_| {})
-            .unwrap_or_else(|e| panic!("step {step} s: {e}"));
+        let records = record(
+            &mut sim,
+            &SpeedProfile::Constant(speed),
+            1.0,
+            1e-3,
+            |_, _| {},
+        )
+        .unwrap_or_else(|e| panic!("step {step} s: {e}"));
         assert_eq!(records.last().unwrap().time, 1.0);
         let peak_force = records
             .iter()
