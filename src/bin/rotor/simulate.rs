@@ -140,8 +140,12 @@ pub fn simulate(
             shown = pct - pct % 5;
             eprint!("\rsimulating {}: {shown:3}%", model.name);
         }
-    })
-    .map_err(|e| format!("{}: {e}", model.name))?;
+    });
+    // Contact beyond its law's limits is reported whether or not the run ended.
+    for w in sim.take_contact_warnings() {
+        eprintln!("{}warning: {}", if terminal { "\r" } else { "" }, w.message);
+    }
+    let records = records.map_err(|e| format!("{}: {e}", model.name))?;
     eprintln!(
         "{}simulated {} s of {} in {:.4} s wall-clock ({:?})",
         if terminal { "\r" } else { "" },
