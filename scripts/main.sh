@@ -37,16 +37,17 @@ $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --out
 $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --output-step 5e-3 --ramp-time 2 \
   --reduced-modes 10 --csv out/hydro_unit_reduced.csv
 # The whole machine: a 300 rpm Francis unit on its bearing brackets with a runner
-# seal (docs/machine.md): Campbell diagram, unbalance response, operating point
-# and a 10 s transient at 300 rpm.
+# seal and the generator's magnetic pull (docs/machine.md): Campbell diagram and
+# unbalance response as shipped (field off), operating point and a 10 s
+# transient at 300 rpm synchronized (nominal field).
 $rotor info models/hydro_unit_brackets.toml > out/hydro_unit_brackets_info.txt
 $rotor draw models/hydro_unit_brackets.toml --png out/hydro_unit_brackets.png
 $rotor campbell models/hydro_unit_brackets.toml --steps 40 --modes 8 --csv out/hydro_unit_brackets_campbell.csv \
   --png out/hydro_unit_brackets_campbell.png
 $rotor unbalance models/hydro_unit_brackets.toml --min-rpm 30 --max-rpm 600 --points 120 \
   --csv out/hydro_unit_brackets_unbalance.csv --png out/hydro_unit_brackets_unbalance.png
-$rotor operating-point models/hydro_unit_brackets.toml --rpm 300 > out/hydro_unit_brackets_operating_point.txt
-$rotor simulate models/hydro_unit_brackets.toml --rpm 300 --duration 10 --step 2e-3 --output-step 2e-3 --ramp-time 1 \
+$rotor operating-point models/hydro_unit_brackets.toml --rpm 300 --excitation 1 > out/hydro_unit_brackets_operating_point.txt
+$rotor simulate models/hydro_unit_brackets.toml --excitation 1 --rpm 300 --duration 10 --step 2e-3 --output-step 2e-3 --ramp-time 1 \
   --csv out/hydro_unit_brackets.csv --plots out/hydro_unit_brackets > out/hydro_unit_brackets_windows.txt
 # The FMU: build, pack, validate with FMPy, and simulate it with FMPy.
 bash fmu_pack.sh

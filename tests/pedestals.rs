@@ -501,14 +501,12 @@ fn first_forward_hz(model: RotorModel, rpm: f64) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
-/// The shipped hydro unit with its field off (no magnetic pull), or as
-/// shipped (synchronized, nominal field).
+/// The shipped hydro unit with its field off (as shipped: no magnetic pull
+/// at standstill) or on (synchronized, nominal field).
 fn hydro_field(on: bool) -> RotorModel {
     let mut m = hydro_unit_brackets();
     for b in &mut m.bearings {
-        if !on {
-            b.kind.set_excitation(0.0);
-        }
+        b.kind.set_excitation(if on { 1.0 } else { 0.0 });
     }
     m
 }
@@ -601,5 +599,74 @@ fn the_hydro_unit_on_brackets_has_the_critical_speeds_and_orbits_of_its_kind() {
     assert!(
         (60.0..75.0).contains(&field[0]) && (60.0..75.0).contains(&field[1]),
         "field on {field:?}, off {relative:?} µm pk-pk"
+    );
+}
+
+/// `--excitation` on the command line puts the shipped unit's field on: the
+/// first forward lateral mode `rotor modes --rpm 300 --excitation 1` prints
+/// is the field-on model's (12.2 Hz), without it the shipped field-off one
+/// (13.4 Hz); a value outside [0, 2] or a model without a pull is refused by
+/// name.
+#[test]
+fn the_excitation_option_sets_every_magnetic_pull() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/models/hydro_unit_brackets.toml"
+    );
+    let run = |extra: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .args(["modes", path, "--rpm", "300", "--modes", "12"])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    // The lowest forward mode of the table with |ζ| < 0.5 (Hz).
+    let printed = |out: &std::process::Output| -> f64 {
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stdout)
+            .lines()
+            .filter(|l| l.trim_end().ends_with(" forward"))
+            .filter_map(|l| {
+                let cols: Vec<&str> = l.split_whitespace().collect();
+                let zeta: f64 = cols[3].parse().ok()?;
+                (zeta.abs() < 0.5).then(|| cols[2].parse::<f64>().unwrap())
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    for (args, on) in [(vec!["--excitation", "1"], true), (vec![], false)] {
+        let want = first_forward_hz(hydro_field(on), 300.0);
+        let got = printed(&run(&args));
+        assert!(
+            (got - want).abs() < 1e-4,
+            "field on {on}: {got} Hz vs {want} Hz"
+        );
+    }
+    for (args, want) in [
+        (
+            vec!["--excitation", "3"],
+            "--excitation 3: must lie in [0, 2]",
+        ),
+        (
+            vec!["--excitation=-0.5"],
+            "--excitation -0.5: must lie in [0, 2]",
+        ),
+    ] {
+        let out = run(&args);
+        assert!(!out.status.success());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(want), "{err}");
+    }
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["modes", "--excitation", "1"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success() && err.contains("has no magnetic pull"),
+        "{err}"
     );
 }

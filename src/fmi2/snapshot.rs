@@ -39,8 +39,10 @@ pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
 /// Format version of the byte image (1 was the unversioned `RBFMU01` image;
 /// 3 added the step and speed of the factorization in hand, 4 the reduced
 /// rotor's mode count, 5 the load inputs of forces and ports and the
-/// torsional state of a torque-driven shaft).
-pub const VERSION: u64 = 5;
+/// torsional state of a torque-driven shaft, 6 the initial speed of a
+/// torque-driven shaft and each bearing's tuned value, the field excitation
+/// of a magnetic pull beside the viscosities).
+pub const VERSION: u64 = 6;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -537,8 +539,8 @@ mod tests {
     fn out_of_domain_fields_are_refused() {
         let s = sample();
         let mut bytes = s.to_bytes();
-        // The phase is the twelfth scalar, right after the header and eleven others.
-        let at = HEADER + 11 * 8;
+        // The phase is the thirteenth scalar, right after the header and twelve others.
+        let at = HEADER + 12 * 8;
         bytes[at..at + 8].copy_from_slice(&9.0f64.to_le_bytes());
         let body = bytes.len() - TRAILER;
         let sum = fnv1a(&bytes[..body]);

@@ -5,6 +5,7 @@ use crate::linalg::LinalgError;
 use crate::rotor::Rotor;
 use crate::units::Short;
 
+use super::contact_watch::ContactWatch;
 use super::factor::{Factor, FactorWork};
 use super::newmark::NewmarkWork;
 use super::newton::{CondensedWork, SchurSolve};
@@ -68,7 +69,7 @@ impl Default for SolverOptions {
             time_step: 1e-4,
             tolerance: 1e-8,
             max_iterations: 50,
-            max_step_cuts: 10,
+            max_step_cuts: 16,
             unbalance_ramp_time: 0.0,
             gravity: true,
         }
@@ -86,6 +87,8 @@ pub struct StepStats {
     pub refreshes: usize,
     /// Step halvings.
     pub step_cuts: usize,
+    /// Steps solved again by the damped Newton after plain Newton failed.
+    pub retries: usize,
     /// Factorizations of the linear part.
     pub factorizations: usize,
 }
@@ -168,6 +171,8 @@ pub struct Simulator {
     pub(super) warnings: Warnings,
     /// The twist of a torque-driven shaft; `None` when the speed is prescribed.
     pub(super) torsion: Option<Torsion>,
+    /// Contacts reported beyond the limits of their law ([`super::contact_watch`]).
+    pub(super) contact_watch: ContactWatch,
 }
 
 impl Simulator {
@@ -253,10 +258,11 @@ impl Simulator {
             refactor_journal_limit: 8,
             newmark: NewmarkWork::new(n, n_internal, rotor.model.load_inputs().len()),
             schur: SchurSolve::new(n, &sites),
-            condensed: CondensedWork::new(sites.n_journal),
+            condensed: CondensedWork::new(&sites),
             stats: StepStats::default(),
             warnings: Warnings::new(&rotor),
             torsion,
+            contact_watch: ContactWatch::new(sites.list.len()),
             rotor,
             options,
             state,

@@ -38,26 +38,17 @@ fn negative_elements(rotor: &Rotor, sites: &Sites) -> Vec<(String, f64)> {
     out
 }
 
-/// A statically unstable equilibrium: the refusal naming the net
-/// stiffness and the culprits, and the mode it diverges along (real, on all
-/// DOFs, largest entry positive).
-pub(super) struct Unstable {
-    pub message: String,
-    pub mode: Vec<f64>,
-}
-
-/// The instability of the equilibrium of `sites` (evaluated at it) at
-/// `speed` (rad/s), `None` if it is stable; `k_rest` is the statics' journal
-/// regularization.
+/// Refuse the equilibrium of `sites` (evaluated at it) at `speed` (rad/s) if
+/// it is statically unstable; `k_rest` is the statics' journal regularization.
 pub(super) fn check(
     rotor: &Rotor,
     sites: &mut Sites,
     speed: f64,
     k_rest: f64,
-) -> Result<Option<Unstable>, SolverError> {
+) -> Result<(), SolverError> {
     let culprits = negative_elements(rotor, sites);
     if culprits.is_empty() {
-        return Ok(None);
+        return Ok(());
     }
     let n = rotor.dof_count();
     let mut a = rotor.stiffness.clone();
@@ -125,7 +116,7 @@ pub(super) fn check(
         }
     }
     let Some((lambda, vector)) = unstable else {
-        return Ok(None);
+        return Ok(());
     };
     let vector = &vector;
     let at = (0..n)
@@ -140,19 +131,11 @@ pub(super) fn check(
         ),
         _ => String::new(),
     };
-    // A real eigenvector up to a complex factor: turned by the phase of its
-    // largest entry.
-    let phase = at.map_or(nalgebra::Complex::new(1.0, 0.0), |i| {
-        vector[i].conj() / vector[i].norm()
-    });
-    Ok(Some(Unstable {
-        message: format!(
-            "the equilibrium at {} rpm is statically unstable: the net stiffness is {} N/m in the mode largest{place}; the negative stiffness of {names} exceeds what the shaft, bearings and supports hold",
-            short(rpm),
-            short(lambda)
-        ),
-        mode: vector.iter().map(|v| (v * phase).re).collect(),
-    }))
+    Err(SolverError::Static(format!(
+        "the equilibrium at {} rpm is statically unstable: the net stiffness is {} N/m in the mode largest{place}; the negative stiffness of {names} exceeds what the shaft, bearings and supports hold",
+        short(rpm),
+        short(lambda)
+    )))
 }
 
 /// A number to six significant digits.

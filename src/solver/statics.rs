@@ -9,6 +9,7 @@ use crate::bearing::BearingEval;
 use crate::rotor::Rotor;
 
 use super::factor::make_factor;
+use super::film_start::{film_start, reseat_pads};
 use super::newton::SchurSolve;
 use super::simulator::{SolverError, SolverOptions, inf_norm};
 use super::sites::{Sites, add_coupling};
@@ -169,10 +170,14 @@ fn journal_rest(rotor: &Rotor) -> f64 {
 /// tilts. `time` (s) only labels bearing errors.
 ///
 /// At standstill a fluid film carries nothing and the journals rest on their
-/// bushings or pads: Newton then starts from [`resting_start`]; at any other
-/// speed it falls back to that start when the given one fails (a film too weak
-/// to lift the journal off). An equilibrium the machine cannot hold (negative
-/// net stiffness, [`static_stability`]) is an error naming the elements.
+/// bushings or pads: Newton then starts from [`resting_start`]. At any other
+/// speed, when Newton from the given start fails or ends with a tilting pad on
+/// its unloaded branch where a loaded tilt exists ([`reseat_pads`]), a rotor
+/// with tilting pads starts again from the bearings' own equilibria
+/// ([`film_start`]), re-seating such pads after every step; then Newton starts
+/// from [`resting_start`] (a film too weak to lift the journal off).
+/// An equilibrium the machine cannot hold (negative net stiffness,
+/// [`static_stability`]) is an error naming the elements.
 pub(super) fn settle(
     rotor: &Rotor,
     sites: &mut Sites,
@@ -182,34 +187,72 @@ pub(super) fn settle(
     (u0, p0): (Vec<f64>, Option<Vec<f64>>),
     f_ext: &[f64],
 ) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
+    let outcome = settle_unchecked(rotor, sites, speed, options, time, (u0, p0), f_ext)?;
+    static_stability::check(rotor, sites, speed, journal_rest(rotor))?;
+    Ok(outcome)
+}
+
+/// [`settle`] without the stability check.
+fn settle_unchecked(
+    rotor: &Rotor,
+    sites: &mut Sites,
+    speed: f64,
+    options: &SolverOptions,
+    time: f64,
+    (u0, p0): (Vec<f64>, Option<Vec<f64>>),
+    f_ext: &[f64],
+) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
     // The resting start costs a banded factorization: build it only when used.
-    let outcome = match (speed == 0.0)
-        .then(|| resting_start(rotor, sites, f_ext))
+    if speed == 0.0 {
+        if let Some(u) = resting_start(rotor, sites, f_ext) {
+            return newton_static(rotor, sites, speed, options, time, (u, None), f_ext, false);
+        }
+    }
+    let direct = newton_static(rotor, sites, speed, options, time, (u0, p0), f_ext, false);
+    let settled = |sites: &Sites, (u, p): &(Vec<f64>, Vec<f64>)| {
+        !reseat_pads(sites, u, &mut p.clone(), speed)
+    };
+    if direct.as_ref().is_ok_and(|e| settled(sites, e)) {
+        return direct;
+    }
+    let pads = sites.n_internal > 0;
+    if let Some((u, p)) = pads
+        .then(|| film_start(rotor, sites, f_ext, speed))
         .flatten()
     {
-        Some(u) => newton_static(rotor, sites, speed, options, time, (u, None), f_ext),
-        None => match newton_static(rotor, sites, speed, options, time, (u0, p0), f_ext) {
-            Err(e) => match resting_start(rotor, sites, f_ext) {
-                Some(u) => newton_static(rotor, sites, speed, options, time, (u, None), f_ext),
-                None => Err(e),
-            },
-            outcome => outcome,
-        },
-    }?;
-    let Some(unstable) = static_stability::check(rotor, sites, speed, journal_rest(rotor))? else {
-        return Ok(outcome);
+        let outcome = newton_static(
+            rotor,
+            sites,
+            speed,
+            options,
+            time,
+            (u, Some(p)),
+            f_ext,
+            true,
+        );
+        if outcome.as_ref().is_ok_and(|e| settled(sites, e)) {
+            return outcome;
+        }
+    }
+    let unsettled = || {
+        SolverError::Static(
+            "Newton ended with a tilting pad carrying nothing where a loaded tilt exists, and no start found the equilibrium with every pad on its loaded branch".into(),
+        )
     };
-    // The rotor buckles along its unstable mode until its journals rest on
-    // their bearings (a generator's pull at standstill draws the rotor onto
-    // the pads): the equilibrium there, if the contacts hold it.
-    let refused = || SolverError::Static(unstable.message.clone());
-    let start =
-        resting_start_along(rotor, sites, f_ext, Some(&unstable.mode)).ok_or_else(refused)?;
-    let buckled = newton_static(rotor, sites, speed, options, time, (start, None), f_ext)
-        .map_err(|_| refused())?;
-    match static_stability::check(rotor, sites, speed, journal_rest(rotor))? {
-        None => Ok(buckled),
-        Some(_) => Err(refused()),
+    match direct {
+        Err(e) => match resting_start(rotor, sites, f_ext) {
+            Some(u) => {
+                let outcome =
+                    newton_static(rotor, sites, speed, options, time, (u, None), f_ext, false);
+                match outcome {
+                    Ok(found) if !pads || settled(sites, &found) => Ok(found),
+                    Ok(_) => Err(unsettled()),
+                    Err(_) => outcome,
+                }
+            }
+            None => Err(e),
+        },
+        Ok(_) => Err(unsettled()),
     }
 }
 
@@ -219,17 +262,6 @@ pub(super) fn settle(
 /// from the same system without the offsets. `None` without a bearing that can
 /// rest on contact, or when no journal is pushed at all.
 fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>> {
-    resting_start_along(rotor, sites, f_ext, None)
-}
-
-/// [`resting_start`] with each journal pushed along its motion in `mode`
-/// (on all DOFs) when given, instead of the way the loads push it.
-fn resting_start_along(
-    rotor: &Rotor,
-    sites: &Sites,
-    f_ext: &[f64],
-    mode: Option<&[f64]>,
-) -> Option<Vec<f64>> {
     let mut a = rotor.stiffness.clone();
     let mut contacts = Vec::new();
     for site in &sites.list {
@@ -250,8 +282,7 @@ fn resting_start_along(
     let mut pushed = false;
     for &(site, k) in &contacts {
         let [cx, cy] = site.journal;
-        let push = mode.unwrap_or(&u);
-        let (x, y) = (cx.of(push), cy.of(push));
+        let (x, y) = (cx.of(&u), cy.of(&u));
         let d = x.hypot(y);
         if d > 0.0 {
             let direction = [x / d, y / d];
@@ -268,7 +299,10 @@ fn resting_start_along(
     Some(rhs)
 }
 
-/// Newton with backtracking on the static residual from `u0`, `p0`.
+/// Newton with backtracking on the static residual from `u0`, `p0`; with
+/// `reseat`, pads left on their unloaded branch are re-seated after every
+/// accepted step ([`reseat_pads`]) and the residual is taken there.
+#[allow(clippy::too_many_arguments)]
 fn newton_static(
     rotor: &Rotor,
     sites: &mut Sites,
@@ -277,6 +311,7 @@ fn newton_static(
     time: f64,
     (u0, p0): (Vec<f64>, Option<Vec<f64>>),
     f_ext: &[f64],
+    reseat: bool,
 ) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
     let n = rotor.dof_count();
     let tol = options.tolerance;
@@ -360,6 +395,10 @@ fn newton_static(
         }
         if !accepted {
             break;
+        }
+        if reseat && reseat_pads(sites, &u, &mut p, speed) {
+            residual = work.residual(rotor, sites, (&u, &p), speed, time)?;
+            absolute = work.absolute();
         }
     }
     Err(SolverError::Static(format!(

@@ -53,6 +53,11 @@ struct Cli {
 struct ModelArg {
     /// Model file (TOML); the built-in classic disk-on-shaft rotor when omitted.
     model: Option<PathBuf>,
+    /// Field excitation of every magnetic pull (0 off, 1 nominal, up to 2),
+    /// instead of the model file's: e.g. 1 to analyse a generator
+    /// synchronized whose file starts it at standstill with the field off.
+    #[arg(long)]
+    excitation: Option<f64>,
 }
 
 #[derive(Subcommand)]
@@ -351,10 +356,30 @@ fn read_model(path: &Path) -> Result<RotorModel, String> {
 }
 
 fn load(arg: &ModelArg) -> Result<Rotor, String> {
-    let model = match &arg.model {
+    let mut model = match &arg.model {
         Some(path) => read_model(path)?,
         None => RotorModel::default_model(),
     };
+    if let Some(e) = arg.excitation {
+        let max = rotor_bearing::model::limits::MAX_EXCITATION;
+        if !(e.is_finite() && (0.0..=max).contains(&e)) {
+            return Err(format!(
+                "--excitation {e}: must lie in [0, {max}] (1 is the nominal field)"
+            ));
+        }
+        let mut pulls = 0;
+        for b in &mut model.bearings {
+            if b.kind.set_excitation(e) {
+                pulls += 1;
+            }
+        }
+        if pulls == 0 {
+            return Err(format!(
+                "--excitation {e}: {} has no magnetic pull",
+                model.source
+            ));
+        }
+    }
     Rotor::new(model).map_err(|e| e.to_string())
 }
 

@@ -144,6 +144,10 @@ pub fn simulate(
     for w in sim.take_warnings() {
         eprintln!("warning: {}: {w}", model.source);
     }
+    // Contact beyond its law's limits is reported whether or not the run ended.
+    for w in sim.take_contact_warnings() {
+        eprintln!("{}warning: {}", if terminal { "\r" } else { "" }, w.message);
+    }
     let records = result.map_err(|e| format!("{}: {e}", model.name))?;
     eprintln!(
         "{}simulated {} s of {} in {:.4} s wall-clock ({:?})",
