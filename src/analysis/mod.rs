@@ -7,6 +7,7 @@ pub mod campbell;
 pub mod linear;
 pub mod linearize;
 pub mod modal;
+pub mod mode_tracking;
 pub mod operating_point;
 pub mod shapes;
 pub mod spectrum;

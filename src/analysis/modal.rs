@@ -73,6 +73,47 @@ pub struct Mode {
     pub residual: f64,
 }
 
+/// Damping ratio from which an eigenvalue is a non-oscillating (overdamped)
+/// root, not a mode: `|Im λ| ≤ √(1 − 0.999²) |λ| ≈ 0.045 |λ|`, a log
+/// decrement above 140 (the amplitude falls by e¹⁴⁰ within one period).
+/// Such roots (journal and pad-tilt film roots on tilting pads,
+/// `λ ≈ −K/C`) are reported apart ([`ModalResult::overdamped`]), never
+/// counted among the requested modes and never given a whirl direction.
+pub const NON_OSCILLATING_DAMPING_RATIO: f64 = 0.999;
+
+/// A non-oscillating root of the linearized rotor: `x(t) ∝ e^{λt}` decays
+/// (or grows, `Re λ > 0`) without completing an oscillation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OverdampedRoot {
+    /// Eigenvalue `λ` (1/s); `|Im λ| ≤ 0.045 |λ|`.
+    pub eigenvalue: C64,
+}
+
+impl OverdampedRoot {
+    /// Decay rate `−Re λ` (1/s); negative for a growing root.
+    pub fn decay_rate(&self) -> f64 {
+        -self.eigenvalue.re
+    }
+
+    /// Time constant `1/|Re λ|` (s).
+    pub fn time_constant(&self) -> f64 {
+        1.0 / self.eigenvalue.re.abs()
+    }
+}
+
+/// The modes of one modal analysis and the non-oscillating roots found with
+/// them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModalResult {
+    /// The requested number of oscillating modes, by increasing damped
+    /// frequency (fewer only when the rotor has no more).
+    pub modes: Vec<Mode>,
+    /// The non-oscillating roots (ζ ≥ [`NON_OSCILLATING_DAMPING_RATIO`]) no
+    /// farther from the shift than the last listed mode, by increasing `|λ|`;
+    /// rigid-body roots (`λ = 0` of a free rotor) excluded.
+    pub overdamped: Vec<OverdampedRoot>,
+}
+
 /// Options of a modal analysis.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ModalOptions {
@@ -116,11 +157,21 @@ pub fn modes_at(
     speed: f64,
     options: &ModalOptions,
 ) -> Result<Vec<Mode>, ModalError> {
+    Ok(modal_analysis_at(rotor, speed, options)?.modes)
+}
+
+/// [`modal_analysis`] of a rotor whose nonlinear bearings are first
+/// linearized about the static equilibrium at `speed` (as [`modes_at`]).
+pub fn modal_analysis_at(
+    rotor: &Rotor,
+    speed: f64,
+    options: &ModalOptions,
+) -> Result<ModalResult, ModalError> {
     if rotor.nonlinear_bearings.is_empty() {
-        return modes(rotor, speed, options);
+        return modal_analysis(rotor, speed, options);
     }
     let linear = linearized(rotor, speed, speed)?;
-    modes(&linear, speed, options)
+    modal_analysis(&linear, speed, options)
 }
 
 /// `D = C + Ω G` as a band matrix.
@@ -284,6 +335,17 @@ impl ShiftInvert {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mode>, ModalError> {
+    Ok(modal_analysis(rotor, speed, options)?.modes)
+}
+
+/// The lowest (or nearest-target) `options.modes` oscillating modes of a
+/// linear rotor at `speed` (rad/s), as [`modes`], and the non-oscillating
+/// roots found with them (see [`ModalResult`]).
+pub fn modal_analysis(
+    rotor: &Rotor,
+    speed: f64,
+    options: &ModalOptions,
+) -> Result<ModalResult, ModalError> {
     if let Some(b) = rotor.nonlinear_bearings.first() {
         return Err(ModalError::NonlinearBearing(b.name.clone()));
     }
@@ -323,9 +385,10 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
     }
     .map_err(lin)?;
     // Oscillating modes come as conjugate pairs; non-oscillating eigenvalues
-    // (rigid-body motion, overdamped modes) take slots too: widen until enough
+    // (rigid-body motion, overdamped roots) take slots too: widen until enough
     // oscillating ones are found or the whole spectrum is in hand.
-    let oscillating = |l: &C64| l.im > 1e-6 * l.norm() + 1e-9 * scale;
+    let real_part = (1.0 - NON_OSCILLATING_DAMPING_RATIO.powi(2)).sqrt();
+    let oscillating = |l: &C64| l.im > real_part * l.norm() + 1e-9 * scale;
     let mut nev = (2 * options.modes + 4).min(2 * n);
     let mut eigen = loop {
         let (found, per_pair) = solver.eigenpairs(nev).map_err(lin)?;
@@ -336,6 +399,19 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
         let not_oscillating = found.len() - per_pair * kept;
         nev = (nev + 2 * (options.modes - kept) + not_oscillating).min(2 * n);
     };
+    // Non-oscillating roots: one of each conjugate pair (Im λ ≥ 0, or real to
+    // round-off), not the rigid-body roots λ = 0 of a free rotor.
+    let mut overdamped: Vec<OverdampedRoot> = eigen
+        .iter()
+        .map(|(l, _)| *l)
+        .filter(|l| {
+            !oscillating(l)
+                && l.im.abs() <= real_part * l.norm() + 1e-9 * scale
+                && (l.im >= 0.0 || l.im.abs() <= 1e-9 * scale)
+                && l.norm() > 1e-9 * scale
+        })
+        .map(|eigenvalue| OverdampedRoot { eigenvalue })
+        .collect();
     eigen.retain(|(l, _)| oscillating(l));
     // Only the modes that can be listed are polished: those ranked within
     // `options.modes` by the Arnoldi values, or close enough to the last of
@@ -375,7 +451,27 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
     } else {
         out.truncate(options.modes);
     }
-    Ok(out)
+    // Only the roots no farther from the shift than the last listed mode:
+    // the Krylov process found every eigenvalue that near, none beyond.
+    let distance = |l: C64| {
+        if t > 0.0 {
+            (l - C64::new(0.0, t)).norm()
+        } else {
+            l.norm()
+        }
+    };
+    if out.len() == options.modes {
+        let reach = out
+            .iter()
+            .map(|m| distance(m.eigenvalue))
+            .fold(0.0, f64::max);
+        overdamped.retain(|r| distance(r.eigenvalue) <= reach);
+    }
+    overdamped.sort_by(|a, b| a.eigenvalue.norm().total_cmp(&b.eigenvalue.norm()));
+    Ok(ModalResult {
+        modes: out,
+        overdamped,
+    })
 }
 
 /// Steps of nonlinear inverse iteration that polish a mode.

@@ -5,7 +5,6 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use crate::analysis::campbell::{CampbellPoint, CriticalSpeed, OVERDAMPED_DAMPING_RATIO};
 use crate::analysis::modal::Whirl;
 
 pub use crate::units::RAD_S_TO_RPM;
@@ -39,136 +38,12 @@ macro_rules! legend {
     };
 }
 
-fn whirl_color(w: Whirl) -> RGBColor {
+pub(crate) fn whirl_color(w: Whirl) -> RGBColor {
     match w {
         Whirl::Forward => RGBColor(200, 30, 30),
         Whirl::Backward => RGBColor(30, 60, 200),
         Whirl::Mixed => RGBColor(110, 110, 110),
     }
-}
-
-/// Campbell diagram: damped natural frequencies (Hz) against speed (rpm), markers
-/// coloured by whirl (red forward, blue backward, grey mixed), the excitation
-/// lines `ω = h Ω` for `harmonics`, the critical speeds circled and the
-/// overdamped crossings ([`CriticalSpeed::is_overdamped`]) marked with grey crosses.
-pub fn campbell_png(
-    path: &Path,
-    title: &str,
-    diagram: &[CampbellPoint],
-    harmonics: &[f64],
-    criticals: &[CriticalSpeed],
-) -> Result<(), PlotError> {
-    let hz = 1.0 / (2.0 * std::f64::consts::PI);
-    let s_max = diagram
-        .iter()
-        .map(|p| p.speed)
-        .fold(0.0, f64::max)
-        .max(1e-9)
-        * RAD_S_TO_RPM;
-    let s_min = diagram
-        .iter()
-        .map(|p| p.speed)
-        .fold(f64::INFINITY, f64::min)
-        .min(s_max)
-        * RAD_S_TO_RPM;
-    let f_max = diagram
-        .iter()
-        .flat_map(|p| p.modes.iter().map(|m| m.damped_frequency * hz))
-        .fold(0.0, f64::max)
-        .max(1e-9)
-        * 1.08;
-
-    let root = BitMapBackend::new(path, (1100, 760)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| failed(path, e))?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 26))
-        .margin(16)
-        .x_label_area_size(48)
-        .y_label_area_size(70)
-        .build_cartesian_2d(s_min..s_max, 0.0..f_max)
-        .map_err(|e| failed(path, e))?;
-    chart
-        .configure_mesh()
-        .x_desc("spin speed (rpm)")
-        .y_desc("damped natural frequency (Hz)")
-        .label_style(("sans-serif", 16))
-        .x_label_formatter(&|v| format!("{v:.0}"))
-        .y_label_formatter(&|v| format!("{v:.0}"))
-        .draw()
-        .map_err(|e| failed(path, e))?;
-
-    let ranks = diagram.iter().map(|p| p.modes.len()).min().unwrap_or(0);
-    for rank in 0..ranks {
-        let line: Vec<(f64, f64)> = diagram
-            .iter()
-            .map(|p| (p.speed * RAD_S_TO_RPM, p.modes[rank].damped_frequency * hz))
-            .collect();
-        chart
-            .draw_series(LineSeries::new(
-                line,
-                RGBColor(180, 180, 180).stroke_width(1),
-            ))
-            .map_err(|e| failed(path, e))?;
-        chart
-            .draw_series(diagram.iter().map(|p| {
-                let m = &p.modes[rank];
-                Circle::new(
-                    (p.speed * RAD_S_TO_RPM, m.damped_frequency * hz),
-                    3,
-                    whirl_color(m.whirl).filled(),
-                )
-            }))
-            .map_err(|e| failed(path, e))?;
-    }
-    for &h in harmonics {
-        chart
-            .draw_series(LineSeries::new(
-                [(s_min, h * s_min / 60.0), (s_max, h * s_max / 60.0)],
-                BLACK.stroke_width(2),
-            ))
-            .map_err(|e| failed(path, e))?
-            .label(format!("{h}× excitation"))
-            .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLACK.stroke_width(2)));
-    }
-    chart
-        .draw_series(criticals.iter().filter(|c| !c.is_overdamped()).map(|c| {
-            Circle::new(
-                (c.speed * RAD_S_TO_RPM, c.harmonic * c.speed * hz),
-                8,
-                BLACK.stroke_width(2),
-            )
-        }))
-        .map_err(|e| failed(path, e))?
-        .label("critical speed")
-        .legend(|(x, y)| Circle::new((x + 10, y), 6, BLACK.stroke_width(2)));
-    let grey = RGBColor(120, 120, 120);
-    chart
-        .draw_series(criticals.iter().filter(|c| c.is_overdamped()).map(|c| {
-            Cross::new(
-                (c.speed * RAD_S_TO_RPM, c.harmonic * c.speed * hz),
-                7,
-                grey.stroke_width(2),
-            )
-        }))
-        .map_err(|e| failed(path, e))?
-        .label(format!(
-            "overdamped crossing (ζ ≥ {OVERDAMPED_DAMPING_RATIO}), not a critical speed"
-        ))
-        .legend(move |(x, y)| Cross::new((x + 10, y), 6, grey.stroke_width(2)));
-    for (w, name) in [
-        (Whirl::Forward, "forward whirl"),
-        (Whirl::Backward, "backward whirl"),
-        (Whirl::Mixed, "mixed / planar"),
-    ] {
-        chart
-            .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())
-            .map_err(|e| failed(path, e))?
-            .label(name)
-            .legend(move |(x, y)| Circle::new((x + 10, y), 4, whirl_color(w).filled()));
-    }
-    legend!(chart, SeriesLabelPosition::UpperLeft, path)?;
-    root.present().map_err(|e| failed(path, e))?;
-    Ok(())
 }
 
 /// Dimensionless bearing coefficients against eccentricity ratio (the paper's
@@ -469,12 +344,15 @@ pub fn waterfall_png(
     Ok(())
 }
 
+mod campbell;
 mod drawing;
+pub mod legend;
 mod shapes;
 mod stability;
 mod ucs;
 mod unbalance;
 
+pub use campbell::{CampbellMarks, campbell_png, critical_label};
 pub use drawing::{radial_exaggeration, rotor_png};
 pub use shapes::mode_shapes_png;
 pub use stability::stability_png;

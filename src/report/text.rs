@@ -3,11 +3,12 @@
 
 use std::fmt::Write;
 
-use crate::analysis::modal::Mode;
+use crate::analysis::campbell::{CampbellPoint, CriticalMargin};
+use crate::analysis::modal::{Mode, NON_OSCILLATING_DAMPING_RATIO, OverdampedRoot};
 use crate::analysis::operating_point::BearingOperatingPoint;
 use crate::analysis::stability::Stability;
 use crate::analysis::ucs::CriticalSpeedMap;
-use crate::analysis::unbalance::{Peak, SeparationMargin, UnbalanceSweep};
+use crate::analysis::unbalance::{OperatingRange, Peak, SeparationMargin, UnbalanceSweep};
 use crate::bearing::BearingKind;
 use crate::rotor::Rotor;
 use crate::units::RAD_S_TO_RPM;
@@ -274,13 +275,21 @@ pub fn stability(result: &Stability, q_max: f64) -> String {
         short(result.speed * RAD_S_TO_RPM)
     );
     for (k, m) in result.modes.iter().enumerate() {
+        let (zeta, delta) = if m.damping_ratio.abs() < ROUND_OFF_DAMPING_RATIO {
+            ("0".to_string(), "0".to_string())
+        } else {
+            (
+                format!("{:.6}", m.damping_ratio),
+                format!("{:.6}", m.log_decrement),
+            )
+        };
         writeln!(
             s,
-            "{:5} {:9.4} {:15.6} {:9.6} {:>9}",
+            "{:5} {:9.4} {:>15} {:>9} {:>9}",
             k + 1,
             m.damped_frequency / (2.0 * std::f64::consts::PI),
-            m.damping_ratio,
-            m.log_decrement,
+            zeta,
+            delta,
             m.whirl.label()
         )
         .ok();
@@ -321,6 +330,33 @@ pub fn stability(result: &Stability, q_max: f64) -> String {
     s
 }
 
+/// Damping ratios smaller than this are the eigen-solver's round-off, not
+/// damping: it resolves ζ to about 1e-11 (`tests/modal_reference.rs`), and an
+/// undamped rotor's modes come out with |ζ| of 1e-24 … 1e-13. They print as 0.
+pub const ROUND_OFF_DAMPING_RATIO: f64 = 1e-9;
+
+/// `ζ` for a table: `{:.3e}`, or `0` below [`ROUND_OFF_DAMPING_RATIO`].
+pub fn damping_ratio(z: f64) -> String {
+    if z.abs() < ROUND_OFF_DAMPING_RATIO {
+        "0".into()
+    } else {
+        format!("{z:.3e}")
+    }
+}
+
+/// `ζ` and `δ` of a mode for the tables, round-off printed as 0 (`δ` of a
+/// round-off `ζ` is round-off too; never `-0.0000`).
+fn zeta_delta(m: &Mode, zeta_digits: usize, delta_digits: usize) -> (String, String) {
+    if m.damping_ratio.abs() < ROUND_OFF_DAMPING_RATIO {
+        ("0".into(), "0".into())
+    } else {
+        (
+            format!("{:.*e}", zeta_digits, m.damping_ratio),
+            format!("{:.*}", delta_digits, m.log_decrement),
+        )
+    }
+}
+
 /// The modes table `rotor modes` prints: damped frequency (rad/s, Hz), damping
 /// ratio, logarithmic decrement and whirl.
 pub fn modes(name: &str, rpm: f64, modes: &[Mode]) -> String {
@@ -328,15 +364,119 @@ pub fn modes(name: &str, rpm: f64, modes: &[Mode]) -> String {
         "{name} at {rpm} rpm:\n mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl\n"
     );
     for (k, m) in modes.iter().enumerate() {
+        let (zeta, delta) = zeta_delta(m, 4, 4);
         writeln!(
             s,
-            "{:5} {:12.4} {:11.4} {:14.4e} {:9.4} {:>9}",
+            "{:5} {:12.4} {:11.4} {:>14} {:>9} {:>9}",
             k + 1,
             m.damped_frequency,
             m.damped_frequency / (2.0 * std::f64::consts::PI),
-            m.damping_ratio,
-            m.log_decrement,
+            zeta,
+            delta,
             m.whirl.label()
+        )
+        .ok();
+    }
+    s
+}
+
+/// The non-oscillating roots of a modal analysis, apart from the modes: the
+/// decay rate `−Re λ` (1/s) and time constant of each, or nothing when there
+/// are none.
+pub fn overdamped_roots(roots: &[OverdampedRoot]) -> String {
+    if roots.is_empty() {
+        return String::new();
+    }
+    let mut s = format!(
+        "non-oscillating (overdamped) roots, not modes (ζ ≥ {NON_OSCILLATING_DAMPING_RATIO}, not counted in --modes):\n  decay rate (1/s)  time constant (s)\n"
+    );
+    for r in roots {
+        writeln!(
+            s,
+            "  {:>16} {:>18}",
+            short(r.decay_rate()),
+            short(r.time_constant())
+        )
+        .ok();
+    }
+    s
+}
+
+/// How many non-oscillating roots the speeds of a Campbell diagram had (they
+/// are not branches), or nothing when none.
+pub fn overdamped_summary(diagram: &[CampbellPoint]) -> String {
+    let counts: Vec<usize> = diagram.iter().map(|p| p.overdamped.len()).collect();
+    let (lo, hi) = (
+        counts.iter().copied().min().unwrap_or(0),
+        counts.iter().copied().max().unwrap_or(0),
+    );
+    match (lo, hi) {
+        (_, 0) => String::new(),
+        (lo, hi) if lo == hi => format!(
+            "non-oscillating (overdamped) roots: {hi} at every speed, below the listed modes; not branches\n"
+        ),
+        (lo, hi) => format!(
+            "non-oscillating (overdamped) roots: {lo} to {hi} per speed, below the listed modes; not branches\n"
+        ),
+    }
+}
+
+/// API 684 separation margins of the critical speeds of a Campbell diagram
+/// (amplification factor `1/(2ζ)`) from the operating range, and their
+/// distance from the maximum speed.
+pub fn critical_margins(
+    margins: &[CriticalMargin],
+    range: Option<&OperatingRange>,
+    max_speed: Option<f64>,
+) -> String {
+    if margins.is_empty() {
+        return String::new();
+    }
+    let mut s = match range {
+        Some(r) if r.min == r.max => format!(
+            "separation margins (API 684, AF = 1/(2ζ)) from the operating speed {} rpm",
+            short(r.min * RAD_S_TO_RPM)
+        ),
+        Some(r) => format!(
+            "separation margins (API 684, AF = 1/(2ζ)) from the operating range {} … {} rpm",
+            short(r.min * RAD_S_TO_RPM),
+            short(r.max * RAD_S_TO_RPM)
+        ),
+        None => {
+            "critical speeds (no operating speed: speed_rpm or --operating-rpm; margins not judged)"
+                .to_string()
+        }
+    };
+    if let Some(m) = max_speed {
+        write!(s, ", maximum speed {} rpm", short(m * RAD_S_TO_RPM)).ok();
+    }
+    s.push_str(":\n   speed (rpm)        AF  required SM  actual SM  from max speed  result\n");
+    for m in margins {
+        let af = if m.amplification_factor.is_finite() {
+            format!("{:.2}", m.amplification_factor)
+        } else {
+            "∞".into()
+        };
+        let (required, actual, verdict) = match &m.margin {
+            Some(sm) => (
+                sm.required
+                    .map_or("none".to_string(), |r| format!("{:.1} %", 100.0 * r)),
+                format!("{:.1} %", 100.0 * sm.actual),
+                if sm.pass { "pass" } else { "FAIL" },
+            ),
+            None => ("—".into(), "—".into(), "not judged"),
+        };
+        let from_max = m
+            .from_max_speed
+            .map_or("—".to_string(), |d| format!("{:+.1} %", 100.0 * d));
+        writeln!(
+            s,
+            "  {:>12.2} {:>9} {:>12} {:>10} {:>15}  {verdict}",
+            m.critical.speed * RAD_S_TO_RPM,
+            af,
+            required,
+            actual,
+            from_max
         )
         .ok();
     }

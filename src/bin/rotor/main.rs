@@ -114,9 +114,12 @@ enum Command {
         /// Number of speed steps (the grid has steps + 1 points).
         #[arg(long, default_value_t = 40)]
         steps: usize,
-        /// Number of modes per speed.
+        /// Number of oscillating modes per speed (overdamped roots are listed apart).
         #[arg(long, default_value_t = 8)]
         modes: usize,
+        /// Operating speed range MIN:MAX (rpm) for the separation margins; default: the model's speed_rpm.
+        #[arg(long)]
+        operating_rpm: Option<String>,
         /// Write the diagram to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
@@ -383,9 +386,20 @@ fn run(cli: Cli) -> Result<(), String> {
             max_rpm,
             steps,
             modes,
+            operating_rpm,
             csv,
             png,
-        } => modal::campbell_diagram(&load(&model)?, max_rpm, steps, modes, csv, png),
+        } => modal::campbell_diagram(
+            &load(&model)?,
+            modal::CampbellRequest {
+                max_rpm,
+                steps,
+                modes,
+                operating_rpm,
+                csv,
+                png,
+            },
+        ),
         Command::Coefficients {
             model,
             bearing,

@@ -3,11 +3,12 @@
 use std::path::PathBuf;
 
 use rotor_bearing::analysis::campbell::{
-    CriticalSpeed, OVERDAMPED_DAMPING_RATIO, campbell, critical_speeds, default_top_speed,
-    speed_grid,
+    CriticalSpeed, OVERDAMPED_DAMPING_RATIO, campbell, critical_margins, critical_speeds,
+    default_top_speed, speed_grid,
 };
-use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
-use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png, mode_shapes_png};
+use rotor_bearing::analysis::modal::{ModalOptions, modal_analysis_at};
+use rotor_bearing::analysis::unbalance::OperatingRange;
+use rotor_bearing::plot::{CampbellMarks, RAD_S_TO_RPM, campbell_png, mode_shapes_png};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
 
@@ -28,22 +29,26 @@ pub fn modes(rotor: &Rotor, rpm: f64, count: usize, files: ModeFiles) -> Result<
         modes: count,
         ..ModalOptions::default()
     };
-    let ms = modes_at(rotor, speed, &options).map_err(|e| e.to_string())?;
-    print!("{}", text::modes(&rotor.model.name, rpm, &ms));
+    let result = modal_analysis_at(rotor, speed, &options).map_err(|e| e.to_string())?;
+    let ms = &result.modes;
+    let mut out = text::modes(&rotor.model.name, rpm, ms);
+    out.push_str(&text::overdamped_roots(&result.overdamped));
     if let Some(path) = files.csv {
-        write_file(&path, &report_csv::modes(rpm, &ms))?;
+        write_file(&path, &report_csv::modes(rpm, ms))?;
     }
     if let Some(path) = files.shapes_csv {
-        write_file(&path, &report_csv::mode_shapes(&rotor.model, &ms))?;
+        write_file(&path, &report_csv::mode_shapes(&rotor.model, ms))?;
     }
     if let Some(path) = files.shapes_png {
         let title = format!(
             "Mode shapes of {} at {rpm} rpm (red forward, blue backward whirl)",
             rotor.model.name
         );
-        mode_shapes_png(&path, &title, &rotor.model, &ms).map_err(|e| e.to_string())?;
+        mode_shapes_png(&path, &title, &rotor.model, ms).map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
     }
+    // Printed last: files are written even when stdout is a closed pipe.
+    print!("{out}");
     Ok(())
 }
 
@@ -53,18 +58,37 @@ fn rounded(rpm: f64) -> f64 {
     (rpm * 1e6).round() / 1e6
 }
 
-/// `rotor campbell`: the diagram up to `max_rpm` (default from the model, see
-/// [`default_top_speed`]) and the 1× critical speeds, overdamped crossings apart.
-pub fn campbell_diagram(
+/// What `rotor campbell` was asked for.
+pub struct CampbellRequest {
+    pub max_rpm: Option<f64>,
+    pub steps: usize,
+    pub modes: usize,
+    pub operating_rpm: Option<String>,
+    pub csv: Option<PathBuf>,
+    pub png: Option<PathBuf>,
+}
+
+/// The operating range of `--operating-rpm`, else the model's `speed_rpm`.
+pub fn operating_range(
     rotor: &Rotor,
-    max_rpm: Option<f64>,
-    steps: usize,
-    count: usize,
-    csv: Option<PathBuf>,
-    png: Option<PathBuf>,
-) -> Result<(), String> {
+    operating_rpm: Option<&str>,
+) -> Result<Option<OperatingRange>, String> {
+    match operating_rpm {
+        Some(t) => Ok(Some(crate::unbalance::operating_range(t)?)),
+        None => Ok((rotor.model.nominal_speed != 0.0).then(|| OperatingRange {
+            min: rotor.model.nominal_speed.abs(),
+            max: rotor.model.nominal_speed.abs(),
+        })),
+    }
+}
+
+/// `rotor campbell`: the diagram up to `max_rpm` (default from the model, see
+/// [`default_top_speed`]), the 1× critical speeds with their API 684
+/// separation margins, overdamped crossings apart.
+pub fn campbell_diagram(rotor: &Rotor, req: CampbellRequest) -> Result<(), String> {
     let model = &rotor.model;
-    let (max_rpm, origin) = match max_rpm {
+    let steps = req.steps;
+    let (max_rpm, origin) = match req.max_rpm {
         Some(rpm) => (rpm, "--max-rpm".to_string()),
         None => {
             let origin = if model.max_speed_stated {
@@ -88,13 +112,14 @@ pub fn campbell_diagram(
             "--max-rpm must be positive (got {max_rpm}) and --steps at least 1 (got {steps})"
         ));
     }
+    let range = operating_range(rotor, req.operating_rpm.as_deref())?;
     let options = ModalOptions {
-        modes: count,
+        modes: req.modes,
         ..ModalOptions::default()
     };
     let speeds = speed_grid(rotor, max_rpm / RAD_S_TO_RPM, steps);
-    println!(
-        "speed grid of {}: {:.2} to {:.2} rpm in {steps} steps (top speed: {origin}{})",
+    let mut out = format!(
+        "speed grid of {}: {:.2} to {:.2} rpm in {steps} steps (top speed: {origin}{})\n",
         model.name,
         speeds[0] * RAD_S_TO_RPM,
         max_rpm,
@@ -114,40 +139,49 @@ pub fn campbell_diagram(
     );
     let criticals = critical_speeds(rotor, &diagram, 1.0, &options).map_err(|e| e.to_string())?;
     let line = |c: &CriticalSpeed| {
-        println!(
-            "  {:10.2} rpm ({:9.3} rad/s)  branch {}  {} whirl  ζ = {:.3e}",
+        format!(
+            "  {:10.2} rpm ({:9.3} rad/s)  branch {}  {} whirl  ζ = {}\n",
             c.speed * RAD_S_TO_RPM,
             c.speed,
-            c.rank + 1,
+            c.branch + 1,
             c.whirl.label(),
-            c.damping_ratio
+            text::damping_ratio(c.damping_ratio)
         )
     };
-    println!(
-        "critical speeds of {} (1× unbalance excitation, ζ < {OVERDAMPED_DAMPING_RATIO}):",
+    out.push_str(&format!(
+        "critical speeds of {} (1× unbalance excitation, ζ < {OVERDAMPED_DAMPING_RATIO}):\n",
         model.name
-    );
+    ));
     let (overdamped, critical): (Vec<_>, Vec<_>) =
         criticals.iter().partition(|c| c.is_overdamped());
     if critical.is_empty() {
-        println!("  none up to {max_rpm:.2} rpm");
+        out.push_str(&format!("  none up to {max_rpm:.2} rpm\n"));
     }
-    critical.into_iter().for_each(line);
+    critical.into_iter().for_each(|c| out.push_str(&line(c)));
     if !overdamped.is_empty() {
-        println!(
-            "overdamped crossings of the 1× line (ζ ≥ {OVERDAMPED_DAMPING_RATIO}: no resonance peak, not critical speeds):"
-        );
-        overdamped.into_iter().for_each(line);
+        out.push_str(&format!(
+            "overdamped crossings of the 1× line (ζ ≥ {OVERDAMPED_DAMPING_RATIO}: no resonance peak, not critical speeds):\n"
+        ));
+        overdamped.into_iter().for_each(|c| out.push_str(&line(c)));
     }
-    let out = report_csv::campbell(&diagram);
-    match csv {
-        Some(path) => write_file(&path, &out)?,
-        None => print!("{out}"),
+    let max_speed = model.max_speed_stated.then_some(model.max_speed);
+    let margins = critical_margins(&criticals, range.as_ref(), max_speed);
+    out.push_str(&text::critical_margins(&margins, range.as_ref(), max_speed));
+    out.push_str(&text::overdamped_summary(&diagram));
+    if let Some(path) = req.csv {
+        write_file(&path, &report_csv::campbell(&diagram))?;
     }
-    if let Some(path) = png {
+    if let Some(path) = req.png {
         let title = format!("Campbell diagram: {}", model.name);
-        campbell_png(&path, &title, &diagram, &[1.0], &criticals).map_err(|e| e.to_string())?;
+        let marks = CampbellMarks {
+            operating: range.map(|r| (r.min, r.max)),
+            max_speed,
+            margins,
+        };
+        campbell_png(&path, &title, &diagram, &[1.0], &criticals, &marks)
+            .map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
     }
+    print!("{out}");
     Ok(())
 }
