@@ -5,7 +5,7 @@ use std::fmt::Write;
 
 use crate::analysis::campbell::{CampbellPoint, CriticalMargin};
 use crate::analysis::modal::{Mode, NON_OSCILLATING_DAMPING_RATIO, OverdampedRoot};
-use crate::analysis::operating_point::BearingOperatingPoint;
+use crate::analysis::operating_point::{BearingOperatingPoint, ROUND_OFF_LOAD};
 use crate::analysis::stability::Stability;
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::analysis::unbalance::{OperatingRange, Peak, SeparationMargin, UnbalanceSweep};
@@ -195,14 +195,27 @@ pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin
     s
 }
 
-/// A 2×2 matrix in one line: `[[a, b], [c, d]]`, six significant digits.
+/// Fraction of a coefficient matrix's largest entry below which an entry is
+/// the equilibrium's round-off (it is solved to 1e-8): printed as 0.
+pub const ROUND_OFF_COEFFICIENT: f64 = 1e-7;
+
+/// A 2×2 matrix in one line: `[[a, b], [c, d]]`, six significant digits,
+/// entries below [`ROUND_OFF_COEFFICIENT`] of the largest as 0.
 fn matrix(m: &[[f64; 2]; 2]) -> String {
+    let largest = m.iter().flatten().fold(0.0f64, |a, v| a.max(v.abs()));
+    let cell = |v: f64| {
+        if v.abs() <= ROUND_OFF_COEFFICIENT * largest {
+            "0".to_string()
+        } else {
+            short(v)
+        }
+    };
     format!(
         "[[{}, {}], [{}, {}]]",
-        short(m[0][0]),
-        short(m[0][1]),
-        short(m[1][0]),
-        short(m[1][1])
+        cell(m[0][0]),
+        cell(m[0][1]),
+        cell(m[1][0]),
+        cell(m[1][1])
     )
 }
 
@@ -213,22 +226,51 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
     let mut s = String::new();
     for p in points {
         writeln!(s, "bearing {} at {} rpm:", p.name, short(rpm)).ok();
-        writeln!(
-            s,
-            "  static load {} N (Fx = {} N, Fy = {} N), journal at x = {} µm, y = {} µm",
-            short(p.load),
-            short(p.force[0]),
-            short(p.force[1]),
-            short(p.journal[0] * 1e6),
-            short(p.journal[1] * 1e6)
-        )
-        .ok();
-        if let Some(f) = &p.film {
+        if p.is_unloaded() {
+            // Round-off: the journal is centred, the load line undefined.
+            let centred = p
+                .film
+                .as_ref()
+                .is_some_and(|f| f.eccentricity <= ROUND_OFF_LOAD);
+            let (x, y) = if centred {
+                ("0".into(), "0".into())
+            } else {
+                (short(p.journal[0] * 1e6), short(p.journal[1] * 1e6))
+            };
             writeln!(
                 s,
-                "  eccentricity ratio {}, attitude angle {}°, minimum film thickness {} µm",
-                short(f.eccentricity),
-                short(f.attitude_angle.to_degrees()),
+                "  static load 0 N (unloaded), journal at x = {x} µm, y = {y} µm"
+            )
+            .ok();
+        } else {
+            writeln!(
+                s,
+                "  static load {} N (Fx = {} N, Fy = {} N), journal at x = {} µm, y = {} µm",
+                short(p.load),
+                short(p.force[0]),
+                short(p.force[1]),
+                short(p.journal[0] * 1e6),
+                short(p.journal[1] * 1e6)
+            )
+            .ok();
+        }
+        if let Some(f) = &p.film {
+            let (eccentricity, attitude) = if p.is_unloaded() {
+                let e = if f.eccentricity <= ROUND_OFF_LOAD {
+                    "0".to_string()
+                } else {
+                    short(f.eccentricity)
+                };
+                (e, "—".to_string())
+            } else {
+                (
+                    short(f.eccentricity),
+                    format!("{}°", short(f.attitude_angle.to_degrees())),
+                )
+            };
+            writeln!(
+                s,
+                "  eccentricity ratio {eccentricity}, attitude angle {attitude}, minimum film thickness {} µm",
                 short(f.min_film_thickness * 1e6)
             )
             .ok();
