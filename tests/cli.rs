@@ -448,6 +448,10 @@ fn simulate_reports_oil_whirl_at_half_speed_with_the_sweeps_share() {
             "9000",
             "--duration",
             "0.6",
+            // Outputs on a 0.1 ms grid: the windows' six-decimal times
+            // select the same samples in sweep.py.
+            "--step",
+            "1e-4",
             "--csv",
             csv.to_str().unwrap(),
         ],

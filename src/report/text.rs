@@ -10,7 +10,9 @@ use crate::analysis::stability::Stability;
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::analysis::unbalance::{OperatingRange, Peak, SeparationMargin, UnbalanceSweep};
 use crate::bearing::BearingKind;
+use crate::model::RotorModel;
 use crate::rotor::Rotor;
+use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
 
 /// What `rotor info` prints: sizes, disks, bearings, unbalances, probes, gravity.
@@ -536,6 +538,57 @@ pub fn critical_speed_map(name: &str, map: &CriticalSpeedMap, step: usize) -> St
             .map(|v| format!("{:10.1}", v * RAD_S_TO_RPM))
             .collect();
         writeln!(s, "  k = {k:9.3e} N/m: {}", rpm.join(" ")).ok();
+    }
+    s
+}
+
+/// What `rotor simulate` prints without `--csv` (the table goes to a file,
+/// never to the terminal): the run's length and records, and per bearing and
+/// probe the largest displacement from the centre (µm) and, for fluid-film
+/// bearings, the largest eccentricity ratio and smallest film thickness.
+pub fn run_summary(model: &RotorModel, records: &[Outputs]) -> String {
+    let (Some(first), Some(last)) = (records.first(), records.last()) else {
+        return "no records\n".into();
+    };
+    let mut s = format!(
+        "{}: {} records from t = {} to {} s, {} → {} rpm (--csv FILE writes them all)\n",
+        model.name,
+        records.len(),
+        short(first.time),
+        short(last.time),
+        short(first.speed * RAD_S_TO_RPM),
+        short(last.speed * RAD_S_TO_RPM)
+    );
+    s.push_str("largest displacement from the centre:\n");
+    for (k, (name, x, y)) in super::series::orbits(model, records).iter().enumerate() {
+        let r = x
+            .iter()
+            .zip(y)
+            .map(|(a, b)| a.hypot(*b))
+            .fold(0.0, f64::max);
+        write!(s, "  {name:<28} {:>10} µm", short(r * 1e6)).ok();
+        let film = model
+            .bearings
+            .get(k)
+            .filter(|b| b.kind.journal_clearance().is_some() && !b.kind.is_rub());
+        if film.is_some() {
+            let e = records
+                .iter()
+                .map(|o| o.bearings[k].report.eccentricity)
+                .fold(0.0, f64::max);
+            let h = records
+                .iter()
+                .map(|o| o.bearings[k].report.min_film_thickness)
+                .fold(f64::INFINITY, f64::min);
+            write!(
+                s,
+                ", eccentricity ratio up to {}, film down to {} µm",
+                short(e),
+                short(h * 1e6)
+            )
+            .ok();
+        }
+        s.push('\n');
     }
     s
 }

@@ -58,8 +58,9 @@ mod simulator;
 mod sites;
 mod state;
 pub mod statics;
+pub mod time_step;
 
-pub use run::{SpeedProfile, record};
+pub use run::{SpeedProfile, record, record_into};
 pub use simulator::{
     BearingOutput, Outputs, ProbeOutput, Simulator, SolverError, SolverOptions, StepStats,
 };

@@ -96,8 +96,23 @@ pub fn record(
     profile: &SpeedProfile,
     duration: f64,
     output_step: f64,
-    mut progress: impl FnMut(f64),
+    progress: impl FnMut(f64),
 ) -> Result<Vec<Outputs>, SolverError> {
+    let mut out = Vec::new();
+    record_into(sim, profile, duration, output_step, &mut out, progress)?;
+    Ok(out)
+}
+
+/// [`record`] into `out`, which keeps the records made before a failure (the
+/// run up to the last converged output), so a failed run loses nothing.
+pub fn record_into(
+    sim: &mut Simulator,
+    profile: &SpeedProfile,
+    duration: f64,
+    output_step: f64,
+    out: &mut Vec<Outputs>,
+    mut progress: impl FnMut(f64),
+) -> Result<(), SolverError> {
     profile.validate().map_err(SolverError::Input)?;
     if !(duration.is_finite() && duration >= 0.0 && output_step.is_finite() && output_step > 0.0) {
         return Err(SolverError::Input(format!(
@@ -106,7 +121,7 @@ pub fn record(
     }
     let t0 = sim.time();
     let count = (duration / output_step).round() as usize;
-    let mut out = Vec::with_capacity(count + 1);
+    out.reserve(count + 1);
     let (w, rate) = profile.at(t0);
     sim.set_speed(w, rate)?;
     out.push(sim.outputs()?);
@@ -118,5 +133,5 @@ pub fn record(
         out.push(sim.outputs()?);
         progress(k as f64 / count as f64);
     }
-    Ok(out)
+    Ok(())
 }

@@ -144,9 +144,12 @@ enum Command {
         /// Simulated time (s).
         #[arg(long, default_value_t = 1.0)]
         duration: f64,
-        /// Internal time step (s).
-        #[arg(long, default_value_t = 1e-4)]
-        step: f64,
+        /// Internal time step (s). Default: 60 steps per revolution at the top
+        /// speed (the larger of the run's and the model's max_speed_rpm, else
+        /// speed_rpm), at most 1 ms — the FMU's solver.time_step follows the
+        /// same rule at the model's top speed.
+        #[arg(long)]
+        step: Option<f64>,
         /// Output interval (s); defaults to the internal step, at least 1/20 000 of the duration.
         #[arg(long)]
         output_step: Option<f64>,
@@ -164,7 +167,8 @@ enum Command {
         /// 0 for the full rotor. Default: the model's `[reduction]`, else full.
         #[arg(long)]
         reduced_modes: Option<usize>,
-        /// Write the outputs to this CSV file.
+        /// Write the outputs to this CSV file (without it the terminal gets a
+        /// summary, not the table); a run that fails keeps the rows up to the failure.
         #[arg(long)]
         csv: Option<PathBuf>,
         /// Write PREFIX_orbits.png and PREFIX_spectrum.png (last half of the run) and
@@ -501,6 +505,14 @@ fn run(cli: Cli) -> Result<(), String> {
             let profile =
                 simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
             let rotor = load(&model)?;
+            simulate::check_speeds(&rotor.model, &profile)?;
+            let step = step.unwrap_or_else(|| {
+                let peak = rotor_bearing::solver::time_step::peak_speed(&profile);
+                let h =
+                    rotor_bearing::solver::time_step::default_time_step(&rotor.model, Some(peak));
+                eprintln!("{}", simulate::describe_default_step(&rotor.model, peak, h));
+                h
+            });
             let modes = reduced_modes.unwrap_or(rotor.model.reduced_modes.unwrap_or(0));
             let rotor = if modes == 0 {
                 rotor

@@ -5,11 +5,16 @@ use std::path::{Path, PathBuf};
 use rotor_bearing::analysis::spectrum::{
     MIN_REVOLUTIONS, band_limit, frequency_grid, full_spectrum, waterfall,
 };
+use rotor_bearing::model::RotorModel;
 use rotor_bearing::model::speed_table;
 use rotor_bearing::plot::{RAD_S_TO_RPM, orbits_png, spectrum_png, waterfall_png};
+use rotor_bearing::report::text::{self, short};
 use rotor_bearing::report::{csv as report_csv, series};
 use rotor_bearing::rotor::Rotor;
-use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record};
+use rotor_bearing::solver::time_step::{
+    MAX_DEFAULT_TIME_STEP, STEPS_PER_REVOLUTION, model_top_speed, peak_speed,
+};
+use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record_into};
 
 use crate::write_file;
 
@@ -56,6 +61,51 @@ pub fn speed_profile(
     }
 }
 
+/// Refuse, before the run, a speed profile that reaches past the model's
+/// `max_speed_rpm`, in rpm (the simulator would stop there mid-run).
+pub fn check_speeds(model: &RotorModel, profile: &SpeedProfile) -> Result<(), String> {
+    let peak = peak_speed(profile);
+    if peak > model.max_speed {
+        let stated = if model.max_speed_stated {
+            format!(
+                "{}: max_speed_rpm = {}",
+                model.source,
+                short(model.max_speed * RAD_S_TO_RPM)
+            )
+        } else {
+            format!(
+                "the default max_speed_rpm {} (give max_speed_rpm in {})",
+                short(model.max_speed * RAD_S_TO_RPM),
+                model.source
+            )
+        };
+        return Err(format!(
+            "the speed profile reaches {} rpm, above {stated}: nothing was run",
+            short(peak * RAD_S_TO_RPM)
+        ));
+    }
+    Ok(())
+}
+
+/// Where the default time step `h` of a run reaching `peak` (rad/s) came from.
+pub fn describe_default_step(model: &RotorModel, peak: f64, h: f64) -> String {
+    let top = model_top_speed(model).unwrap_or(0.0).max(peak);
+    if h < MAX_DEFAULT_TIME_STEP {
+        format!(
+            "time step {} s ({} steps per revolution at {} rpm; --step to choose)",
+            short(h),
+            STEPS_PER_REVOLUTION,
+            short(top * RAD_S_TO_RPM)
+        )
+    } else {
+        format!(
+            "time step {} s (at most 1 ms; {} rpm needs no finer; --step to choose)",
+            short(h),
+            short(top * RAD_S_TO_RPM)
+        )
+    }
+}
+
 /// What `rotor simulate` records and writes.
 pub struct Run {
     pub profile: SpeedProfile,
@@ -94,14 +144,44 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
     let started = std::time::Instant::now();
     let mut shown = 0;
     let terminal = std::io::IsTerminal::is_terminal(&std::io::stderr());
-    let records = record(&mut sim, profile, duration, output_step, |f| {
-        let pct = (f * 100.0) as usize;
-        if terminal && pct >= shown + 5 {
-            shown = pct - pct % 5;
-            eprint!("\rsimulating {}: {shown:3}%", model.name);
-        }
-    })
-    .map_err(|e| format!("{}: {e}", model.name))?;
+    let mut records = Vec::new();
+    let outcome = record_into(
+        &mut sim,
+        profile,
+        duration,
+        output_step,
+        &mut records,
+        |f| {
+            let pct = (f * 100.0) as usize;
+            if terminal && pct >= shown + 5 {
+                shown = pct - pct % 5;
+                eprint!("\rsimulating {}: {shown:3}%", model.name);
+            }
+        },
+    );
+    if let Err(e) = outcome {
+        // Keep what was computed: the rows up to the last converged output.
+        let reached = records.last().map_or(0.0, |o| o.time);
+        let kept = match &csv {
+            Some(path) if !records.is_empty() => {
+                write_file(path, &report_csv::simulation(&model, &records))?;
+                format!(
+                    "; the {} rows up to t = {} s are in {}",
+                    records.len(),
+                    short(reached),
+                    path.display()
+                )
+            }
+            _ => String::new(),
+        };
+        return Err(format!(
+            "{}{}: {e} (failed after t = {} s of {} s{kept})",
+            if terminal { "\n" } else { "" },
+            model.name,
+            short(reached),
+            short(duration)
+        ));
+    }
     eprintln!(
         "{}simulated {} s of {} in {:.4} s wall-clock ({:?})",
         if terminal { "\r" } else { "" },
@@ -110,10 +190,9 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         started.elapsed().as_secs_f64(),
         sim.stats()
     );
-    let out = report_csv::simulation(&model, &records);
-    match csv {
-        Some(path) => write_file(&path, &out)?,
-        None if plots.is_none() => print!("{out}"),
+    match &csv {
+        Some(path) => write_file(path, &report_csv::simulation(&model, &records))?,
+        None if plots.is_none() => print!("{}", text::run_summary(&model, &records)),
         None => {}
     }
     if let Some(prefix) = plots {
