@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Idempotent set-up of a fresh machine: system packages for the build (bindgen's
-# libclang, fontconfig/freetype and a font for the PNG plots) and the Rust
-# toolchain's components. Safe to run again: it installs only what is missing.
+# libclang, fontconfig/freetype and a font for the PNG plots), headless
+# Chromium for the report test, and the Rust toolchain's components. Safe to
+# run again: it installs only what is missing.
 set -euo pipefail
 
 need=()
@@ -14,6 +15,20 @@ if [ ${#need[@]} -gt 0 ]; then
   [ "$(id -u)" -ne 0 ] && SUDO="sudo"
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${need[@]}" >/dev/null
+fi
+
+# Headless Chromium (Debian's package) for the test that renders the HTML
+# report in a real browser (tests/analyst_report.rs), with a font for its text.
+chromium=()
+for pkg in chromium fonts-dejavu-core; do
+  dpkg -s "$pkg" >/dev/null 2>&1 || chromium+=("$pkg")
+done
+if [ ${#chromium[@]} -gt 0 ]; then
+  echo "setup: installing ${chromium[*]}"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${chromium[@]}" >/dev/null
 fi
 
 if ! command -v cargo >/dev/null 2>&1; then

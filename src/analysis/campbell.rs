@@ -8,34 +8,15 @@
 
 use nalgebra::Complex;
 
-use crate::model::RotorModel;
 use crate::rotor::Rotor;
-use crate::units::RAD_S_TO_RPM;
 
 /// Damping ratio from which a crossing of an excitation line is overdamped,
 /// not a critical speed: the amplification `1/(2ζ)` is at most 1.
 pub const OVERDAMPED_DAMPING_RATIO: f64 = 0.5;
 
-/// Top speed (rpm) of a Campbell diagram of a model that states neither
-/// `max_speed_rpm` nor `speed_rpm`.
-pub const FALLBACK_TOP_RPM: f64 = 4000.0;
-
 /// Start of the speed grid of a model with fluid-film bearings, as a fraction
 /// of the top speed: a film carries load only when turning.
 pub const FILM_START_FRACTION: f64 = 0.01;
-
-/// Default top speed (rad/s) of a Campbell diagram of `model`: 1.25 × its
-/// `max_speed_rpm` when the file states it, else 1.25 × its `speed_rpm` when
-/// not zero, else [`FALLBACK_TOP_RPM`].
-pub fn default_top_speed(model: &RotorModel) -> f64 {
-    if model.max_speed_stated {
-        1.25 * model.max_speed
-    } else if model.nominal_speed != 0.0 {
-        1.25 * model.nominal_speed.abs()
-    } else {
-        FALLBACK_TOP_RPM / RAD_S_TO_RPM
-    }
-}
 
 /// The `steps + 1` speeds (rad/s) of a Campbell diagram up to `top` (rad/s):
 /// evenly spaced from 0 for linear bearings, from [`FILM_START_FRACTION`] ×
@@ -129,7 +110,7 @@ impl CriticalSpeed {
 pub struct CriticalMargin {
     /// The critical speed.
     pub critical: CriticalSpeed,
-    /// `AF = 1/(2ζ)` of the mode at the crossing (∞ for ζ ≤ 0).
+    /// `AF = 1/(2ζ)` of the mode at the crossing (∞ for ζ ≤ 0 or round-off).
     pub amplification_factor: f64,
     /// Separation margin from the operating range, when one is known.
     pub margin: Option<SeparationMargin>,
@@ -151,7 +132,7 @@ pub fn critical_margins(
         .filter(|c| !c.is_overdamped())
         .map(|c| {
             // An undamped or unstable mode has an unbounded resonance.
-            let af = if c.damping_ratio > 0.0 {
+            let af = if c.damping_ratio >= super::modal::ROUND_OFF_DAMPING_RATIO {
                 1.0 / (2.0 * c.damping_ratio)
             } else {
                 f64::INFINITY
@@ -296,6 +277,95 @@ pub fn critical_speeds(
     }
     found.sort_by(|a, b| a.speed.total_cmp(&b.speed));
     Ok(found)
+}
+
+/// What a Campbell study sweeps (speeds in rad/s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CampbellRequest {
+    /// Top speed; `None` for the model's default
+    /// ([`default_top_speed`](super::speed_range::default_top_speed) with the
+    /// operating range).
+    pub max: Option<f64>,
+    /// Speed steps (the grid has `steps + 1` speeds, [`speed_grid`]).
+    pub steps: usize,
+    /// Oscillating modes per speed.
+    pub modes: usize,
+    /// Operating range of the separation margins.
+    pub operating: Option<OperatingRange>,
+}
+
+impl CampbellRequest {
+    /// The defaults of `rotor campbell`: the model's top speed, 40 steps, 8
+    /// modes, margins from `operating`.
+    pub fn default_for(operating: Option<OperatingRange>) -> Self {
+        Self {
+            max: None,
+            steps: 40,
+            modes: 8,
+            operating,
+        }
+    }
+}
+
+/// A Campbell study: the diagram, its 1× critical speeds (overdamped
+/// crossings among them, [`CriticalSpeed::is_overdamped`]) and their API 684
+/// margins from the operating range and distance from the maximum speed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CampbellStudy {
+    /// The tracked diagram.
+    pub diagram: Vec<CampbellPoint>,
+    /// Every crossing of the 1× line, by speed.
+    pub criticals: Vec<CriticalSpeed>,
+    /// The critical speeds (not overdamped) with their margins.
+    pub margins: Vec<CriticalMargin>,
+    /// The top speed (rad/s).
+    pub top: f64,
+    /// Where the top speed came from (`None` when given).
+    pub top_origin: Option<super::speed_range::TopSpeedOrigin>,
+    /// The operating range of the margins.
+    pub operating: Option<OperatingRange>,
+    /// The model's maximum speed, when the file states it (rad/s).
+    pub max_speed: Option<f64>,
+}
+
+/// The Campbell study `rotor campbell` and the report run.
+pub fn campbell_study(
+    rotor: &Rotor,
+    request: &CampbellRequest,
+) -> Result<CampbellStudy, ModalError> {
+    let (top, top_origin) = match request.max {
+        Some(m) => (m, None),
+        None => {
+            let (t, o) =
+                super::speed_range::default_top_speed(&rotor.model, request.operating.as_ref());
+            (t, Some(o))
+        }
+    };
+    if !(top.is_finite() && top > 0.0) || request.steps == 0 {
+        return Err(ModalError::Options(format!(
+            "--max-rpm must be positive (got {} rpm) and --steps at least 1 (got {})",
+            top * crate::units::RAD_S_TO_RPM,
+            request.steps
+        )));
+    }
+    let options = ModalOptions {
+        modes: request.modes,
+        ..ModalOptions::default()
+    };
+    let diagram = campbell(rotor, &speed_grid(rotor, top, request.steps), &options)?;
+    let criticals = critical_speeds(rotor, &diagram, 1.0, &options)?;
+    let model = &rotor.model;
+    let max_speed = model.max_speed_stated.then_some(model.max_speed);
+    let margins = critical_margins(&criticals, request.operating.as_ref(), max_speed);
+    Ok(CampbellStudy {
+        diagram,
+        criticals,
+        margins,
+        top,
+        top_origin,
+        operating: request.operating,
+        max_speed,
+    })
 }
 
 /// Illinois regula falsi on a bracket `(a, f(a))`, `(b, f(b))` with a sign change.

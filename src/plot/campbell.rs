@@ -7,24 +7,12 @@ use std::path::Path;
 use plotters::prelude::*;
 
 use crate::analysis::campbell::{
-    CampbellPoint, CriticalMargin, CriticalSpeed, OVERDAMPED_DAMPING_RATIO, branch, branch_count,
+    CampbellStudy, CriticalMargin, OVERDAMPED_DAMPING_RATIO, branch, branch_count,
 };
 use crate::analysis::modal::Whirl;
 
 use super::legend::{LEGEND_WIDTH, Swatch, draw_legend};
 use super::{PlotError, RAD_S_TO_RPM, failed, whirl_color};
-
-/// The speeds a Campbell diagram marks (rad/s).
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct CampbellMarks {
-    /// Operating speed range `(min, max)`, shaded (a line when `min = max`).
-    pub operating: Option<(f64, f64)>,
-    /// Maximum (trip or runaway) speed, a dashed line.
-    pub max_speed: Option<f64>,
-    /// The critical speeds with their margins, numbered on the chart and
-    /// listed beside it.
-    pub margins: Vec<CriticalMargin>,
-}
 
 /// Legend line of one critical speed: number, speed, whirl, ζ, AF, margin.
 pub fn critical_label(k: usize, m: &CriticalMargin) -> String {
@@ -57,16 +45,13 @@ pub fn critical_label(k: usize, m: &CriticalMargin) -> String {
 /// grey line per tracked branch with markers coloured by whirl (red forward,
 /// blue backward, grey mixed), the excitation lines `ω = h Ω` for `harmonics`,
 /// the critical speeds circled and numbered, the overdamped crossings
-/// ([`CriticalSpeed::is_overdamped`]) as grey crosses, and the operating
-/// range and maximum speed of `marks`. Non-oscillating roots are not drawn.
-pub fn campbell_png(
-    path: &Path,
-    title: &str,
-    diagram: &[CampbellPoint],
-    harmonics: &[f64],
-    criticals: &[CriticalSpeed],
-    marks: &CampbellMarks,
-) -> Result<(), PlotError> {
+/// ([`is_overdamped`](crate::analysis::campbell::CriticalSpeed::is_overdamped)) as grey crosses, the operating range
+/// and the model's maximum speed, the critical speeds' margins listed beside
+/// the chart. Non-oscillating roots are not drawn.
+pub fn campbell_png(path: &Path, title: &str, study: &CampbellStudy) -> Result<(), PlotError> {
+    let diagram = &study.diagram;
+    let criticals = &study.criticals;
+    let harmonics = [1.0];
     let hz = 1.0 / (2.0 * std::f64::consts::PI);
     let s_max = diagram
         .iter()
@@ -111,8 +96,8 @@ pub fn campbell_png(
 
     let mut legend = Vec::new();
     let band = RGBColor(120, 200, 120);
-    if let Some((lo, hi)) = marks.operating {
-        let (lo, hi) = (lo * RAD_S_TO_RPM, hi * RAD_S_TO_RPM);
+    if let Some(r) = &study.operating {
+        let (lo, hi) = (r.min * RAD_S_TO_RPM, r.max * RAD_S_TO_RPM);
         // A single speed is drawn as a thin band, 0.4 % of the axis wide.
         let pad = if hi > lo { 0.0 } else { 2e-3 * (s_max - s_min) };
         chart
@@ -129,7 +114,7 @@ pub fn campbell_png(
         legend.push((Swatch::Band(band), text));
     }
     let dark = RGBColor(90, 40, 20);
-    if let Some(m) = marks.max_speed {
+    if let Some(m) = study.max_speed {
         let m = m * RAD_S_TO_RPM;
         if m <= s_max {
             chart
@@ -167,7 +152,7 @@ pub fn campbell_png(
             }))
             .map_err(|e| failed(path, e))?;
     }
-    for &h in harmonics {
+    for &h in &harmonics {
         chart
             .draw_series(LineSeries::new(
                 [(s_min, h * s_min / 60.0), (s_max, h * s_max / 60.0)],
@@ -212,7 +197,7 @@ pub fn campbell_png(
     ] {
         legend.push((Swatch::Dot(whirl_color(w)), name.into()));
     }
-    for (k, m) in marks.margins.iter().enumerate() {
+    for (k, m) in study.margins.iter().enumerate() {
         legend.push((Swatch::Ring(BLACK), critical_label(k, m)));
     }
     draw_legend(&side, path, None, &legend)?;

@@ -35,15 +35,18 @@ pub const LEGEND_WIDTH: u32 = 300;
 /// Height (px) of one legend row.
 const ROW: i32 = 24;
 
-/// Characters per legend line before a label wraps.
-const WRAP: usize = 30;
+/// Characters per legend line before a label wraps, in a panel `width` px
+/// wide (16 px sans-serif: about 9 px per character, the text 52 px in).
+pub fn wrap_width(width: u32) -> usize {
+    ((width.saturating_sub(60)) / 9).max(12) as usize
+}
 
-/// `label` broken into lines of at most [`WRAP`] characters at spaces.
-pub fn wrapped(label: &str) -> Vec<String> {
+/// `label` broken into lines of at most `wrap` characters at spaces.
+pub fn wrapped(label: &str, wrap: usize) -> Vec<String> {
     let mut lines: Vec<String> = Vec::new();
     for word in label.split(' ') {
         match lines.last_mut() {
-            Some(line) if line.chars().count() + 1 + word.chars().count() <= WRAP => {
+            Some(line) if line.chars().count() + 1 + word.chars().count() <= wrap => {
                 line.push(' ');
                 line.push_str(word);
             }
@@ -53,14 +56,17 @@ pub fn wrapped(label: &str) -> Vec<String> {
     lines
 }
 
-/// Height (px) the legend of `entries` takes, with an optional heading.
-pub fn legend_height(heading: Option<&str>, entries: &[(Swatch, String)]) -> i32 {
-    let rows: usize = entries.iter().map(|(_, l)| wrapped(l).len()).sum();
+/// Height (px) the legend of `entries` takes in a panel `width` px wide,
+/// with an optional heading.
+pub fn legend_height(width: u32, heading: Option<&str>, entries: &[(Swatch, String)]) -> i32 {
+    let wrap = wrap_width(width);
+    let rows: usize = entries.iter().map(|(_, l)| wrapped(l, wrap).len()).sum();
     ROW * (rows as i32 + i32::from(heading.is_some())) + 16
 }
 
 /// Draw `entries` top down in `area` (a panel beside the chart), under
-/// `heading` if given.
+/// `heading` if given, wrapped to the panel's width. Entries that do not fit
+/// its height are counted in a last line instead.
 pub fn draw_legend(
     area: &DrawingArea<BitMapBackend, Shift>,
     path: &Path,
@@ -68,6 +74,8 @@ pub fn draw_legend(
     entries: &[(Swatch, String)],
 ) -> Result<(), PlotError> {
     let font = ("sans-serif", 16).into_font();
+    let (width, height) = area.dim_in_pixel();
+    let wrap = wrap_width(width);
     let mut y = 12;
     if let Some(h) = heading {
         area.draw(&Text::new(
@@ -78,7 +86,17 @@ pub fn draw_legend(
         .map_err(|e| failed(path, e))?;
         y += ROW;
     }
-    for (swatch, label) in entries {
+    for (k, (swatch, label)) in entries.iter().enumerate() {
+        let lines = wrapped(label, wrap);
+        if y + ROW * (lines.len() as i32 + 1) > height as i32 {
+            area.draw(&Text::new(
+                format!("… {} more (see the table)", entries.len() - k),
+                (10, y),
+                font.clone(),
+            ))
+            .map_err(|e| failed(path, e))?;
+            break;
+        }
         let mid = y + 8;
         let (x0, x1) = (10, 44);
         match *swatch {
@@ -120,7 +138,7 @@ pub fn draw_legend(
                 ))
                 .map_err(|e| failed(path, e))?,
         }
-        for line in wrapped(label) {
+        for line in lines {
             area.draw(&Text::new(line, (52, y), font.clone()))
                 .map_err(|e| failed(path, e))?;
             y += ROW;
@@ -135,15 +153,20 @@ mod tests {
 
     #[test]
     fn long_labels_wrap_at_spaces_and_short_ones_stay() {
-        assert_eq!(wrapped("forward whirl"), ["forward whirl"]);
-        let lines = wrapped("overdamped crossing (ζ ≥ 0.5), not a critical speed");
-        assert!(lines.len() == 2, "{lines:?}");
-        assert!(lines.iter().all(|l| l.chars().count() <= WRAP));
+        let wrap = wrap_width(LEGEND_WIDTH);
+        assert_eq!(wrap, 26);
+        assert_eq!(wrapped("forward whirl", wrap), ["forward whirl"]);
+        let lines = wrapped("overdamped crossing (ζ ≥ 0.5), not a critical speed", wrap);
+        assert_eq!(lines.len(), 2, "{lines:?}");
+        assert!(lines.iter().all(|l| l.chars().count() <= wrap));
         assert_eq!(
             lines.join(" "),
             "overdamped crossing (ζ ≥ 0.5), not a critical speed"
         );
         let entries = [(Swatch::Dot(BLACK), "a".to_string())];
-        assert_eq!(legend_height(Some("h"), &entries), 2 * ROW + 16);
+        assert_eq!(
+            legend_height(LEGEND_WIDTH, Some("h"), &entries),
+            2 * ROW + 16
+        );
     }
 }

@@ -352,7 +352,7 @@ mod stability;
 mod ucs;
 mod unbalance;
 
-pub use campbell::{CampbellMarks, campbell_png, critical_label};
+pub use campbell::{campbell_png, critical_label};
 pub use drawing::{radial_exaggeration, rotor_png};
 pub use shapes::mode_shapes_png;
 pub use stability::stability_png;

@@ -37,6 +37,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand};
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::units::Amplitude;
 
 #[derive(Parser)]
 #[command(
@@ -53,6 +54,43 @@ struct Cli {
 struct ModelArg {
     /// Model file (TOML); the built-in classic disk-on-shaft rotor when omitted.
     model: Option<PathBuf>,
+}
+
+/// Where the destabilizing cross-coupling acts and the machine data of its
+/// anticipated size (`rotor stability` and `rotor report`).
+#[derive(Args)]
+struct StageArgs {
+    /// Where the cross-coupling acts: node numbers or disk names, comma-separated,
+    /// Q split equally; default the disks, else mid-span.
+    #[arg(long)]
+    at: Option<String>,
+    /// Rated power of the stages (W), for Wachel's anticipated cross-coupling Q_A.
+    #[arg(long)]
+    power: Option<f64>,
+    /// Impeller diameter D (m).
+    #[arg(long)]
+    impeller_diameter: Option<f64>,
+    /// Restrictive flow width H (m): the smaller of impeller discharge and diffuser widths.
+    #[arg(long)]
+    flow_width: Option<f64>,
+    /// Discharge over suction density (1 for a liquid).
+    #[arg(long, default_value_t = 1.0)]
+    density_ratio: f64,
+    /// Stage factor B: 3 for centrifugal impellers (Wachel), 1.5 for axial stages (Alford).
+    #[arg(long, default_value_t = 3.0)]
+    stage_factor: f64,
+}
+
+impl StageArgs {
+    fn stages(&self) -> Result<Option<rotor_bearing::analysis::stability::StageData>, String> {
+        stability::stages(
+            self.power,
+            self.impeller_diameter,
+            self.flow_width,
+            self.density_ratio,
+            self.stage_factor,
+        )
+    }
 }
 
 #[derive(Subcommand)]
@@ -221,15 +259,19 @@ enum Command {
         #[arg(long)]
         pads_csv: Option<PathBuf>,
     },
-    /// Log decrements at a speed and the threshold of cross-coupled stiffness
-    /// at mid-span where the least stable forward mode turns unstable (API 684 Level I).
+    /// Log decrements at a speed, the threshold of cross-coupled stiffness at the
+    /// disks (or --at) where the least stable forward mode turns unstable, and with
+    /// --power/--impeller-diameter/--flow-width the API 617 / API 684 Level I screening.
     Stability {
         #[command(flatten)]
         model: ModelArg,
         /// Spin speed (rpm).
         #[arg(long)]
         rpm: f64,
-        /// Largest cross-coupled stiffness Q (N/m); default a tenth of the largest direct bearing stiffness.
+        #[command(flatten)]
+        stages: StageArgs,
+        /// Largest cross-coupled stiffness Q (N/m); default 10 × Q_A with stage data,
+        /// else a tenth of the largest direct bearing stiffness.
         #[arg(long)]
         cross_coupling_max: Option<f64>,
         /// Number of Q values from 0 to the maximum.
@@ -262,9 +304,10 @@ enum Command {
         /// Number of critical speeds per stiffness.
         #[arg(long, default_value_t = 4)]
         modes: usize,
-        /// Highest speed (rpm) of the bearings' stiffness curves.
-        #[arg(long, default_value_t = 4000.0)]
-        max_rpm: f64,
+        /// Highest speed (rpm) of the bearings' stiffness curves. Default: 1.25 × the
+        /// higher of the model's max_speed_rpm and speed_rpm, else 4000.
+        #[arg(long)]
+        max_rpm: Option<f64>,
         /// Number of speeds of the bearings' stiffness curves.
         #[arg(long, default_value_t = 20)]
         speeds: usize,
@@ -283,9 +326,14 @@ enum Command {
     Report {
         #[command(flatten)]
         model: ModelArg,
-        /// Operating speed (rpm).
+        /// Operating speed (rpm); default the model's speed_rpm.
         #[arg(long)]
-        rpm: f64,
+        rpm: Option<f64>,
+        /// Amplitudes as the orbit's semi-axis (0-pk) or twice it (pk-pk).
+        #[arg(long, default_value = "0-pk", value_parser = parse_amplitude)]
+        amplitude: Amplitude,
+        #[command(flatten)]
+        stages: StageArgs,
         /// HTML file to write.
         #[arg(long)]
         out: PathBuf,
@@ -298,10 +346,11 @@ enum Command {
         /// Lowest spin speed (rpm).
         #[arg(long, default_value_t = 0.0)]
         min_rpm: f64,
-        /// Highest spin speed (rpm).
-        #[arg(long, default_value_t = 4000.0)]
-        max_rpm: f64,
-        /// Number of speeds of the grid (both ends included).
+        /// Highest spin speed (rpm). Default: 1.25 × the highest of the model's
+        /// max_speed_rpm, its speed_rpm and the top of --operating-rpm, else 4000.
+        #[arg(long)]
+        max_rpm: Option<f64>,
+        /// Number of evenly spaced speeds (both ends included), refined near resonances.
         #[arg(long, default_value_t = 200)]
         points: usize,
         /// Excite with one unbalance at this node (numbered from 1) instead of the model's planes.
@@ -313,6 +362,9 @@ enum Command {
         /// Operating speed range MIN:MAX (rpm) for the separation margins; default: the model's speed_rpm.
         #[arg(long)]
         operating_rpm: Option<String>,
+        /// Amplitudes as the orbit's semi-axis (0-pk) or twice it (pk-pk), in tables and on axes.
+        #[arg(long, default_value = "0-pk", value_parser = parse_amplitude)]
+        amplitude: Amplitude,
         /// Write the response to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
@@ -355,6 +407,11 @@ fn load(arg: &ModelArg) -> Result<Rotor, String> {
         None => RotorModel::default_model(),
     };
     Rotor::new(model).map_err(|e| e.to_string())
+}
+
+/// `--amplitude 0-pk|pk-pk`.
+fn parse_amplitude(text: &str) -> Result<Amplitude, String> {
+    Amplitude::parse(text)
 }
 
 fn write_file(path: &Path, text: &str) -> Result<(), String> {
@@ -420,6 +477,7 @@ fn run(cli: Cli) -> Result<(), String> {
             node,
             unbalance: size,
             operating_rpm,
+            amplitude,
             csv,
             png,
         } => unbalance::unbalance(
@@ -431,6 +489,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 node,
                 unbalance: size,
                 operating_rpm,
+                amplitude,
                 csv,
                 png,
             },
@@ -444,6 +503,7 @@ fn run(cli: Cli) -> Result<(), String> {
         Command::Stability {
             model,
             rpm,
+            stages,
             cross_coupling_max,
             points,
             modes,
@@ -456,6 +516,8 @@ fn run(cli: Cli) -> Result<(), String> {
                 q_max: cross_coupling_max,
                 points,
                 modes,
+                stages: stages.stages()?,
+                at: stages.at,
                 csv,
                 png,
             },
@@ -485,7 +547,26 @@ fn run(cli: Cli) -> Result<(), String> {
                 png,
             },
         ),
-        Command::Report { model, rpm, out } => report::run(&load(&model)?, rpm, out),
+        Command::Report {
+            model,
+            rpm,
+            amplitude,
+            stages,
+            out,
+        } => {
+            let rotor = load(&model)?;
+            report::run(
+                &rotor,
+                report::Request {
+                    source: model.model.clone(),
+                    rpm,
+                    amplitude,
+                    sites: stability::sites(&rotor, stages.at.as_deref())?,
+                    stages: stages.stages()?,
+                    out,
+                },
+            )
+        }
         Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
         Command::Simulate {
             model,

@@ -1,19 +1,26 @@
-//! Plain-text summaries of a model for people: engineering units, no float
-//! noise, no debug structures.
+//! Plain-text summaries of a model and its results for people: engineering
+//! units, no float noise, no debug structures. The modal and Campbell tables
+//! are in [`modal`], the unbalance response in [`unbalance`].
 
 use std::fmt::Write;
 
-use crate::analysis::campbell::{CampbellPoint, CriticalMargin};
-use crate::analysis::modal::{Mode, NON_OSCILLATING_DAMPING_RATIO, OverdampedRoot};
 use crate::analysis::operating_point::{BearingOperatingPoint, ROUND_OFF_LOAD};
-use crate::analysis::stability::Stability;
+use crate::analysis::stability::{LEVEL_I_MIN_LOG_DEC, LEVEL_I_MIN_RATIO, Stability};
 use crate::analysis::ucs::CriticalSpeedMap;
-use crate::analysis::unbalance::{OperatingRange, Peak, SeparationMargin, UnbalanceSweep};
 use crate::bearing::BearingKind;
 use crate::model::RotorModel;
 use crate::rotor::Rotor;
 use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
+
+mod modal;
+mod unbalance;
+
+pub use modal::{
+    ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
+    overdamped_roots, overdamped_summary, zeta_and_log_dec,
+};
+pub use unbalance::{peak_cells, peak_table, unbalance_study};
 
 /// What `rotor info` prints: sizes, disks, bearings, unbalances, probes, gravity.
 pub fn model_summary(rotor: &Rotor) -> String {
@@ -142,68 +149,13 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
     }
 }
 
-/// The table of unbalance response peaks `rotor unbalance` prints: point, peak
-/// speed (rpm), major semi-axis (µm), amplification factor, required and actual
-/// separation margins (%) and the verdict. An undamped resonance
-/// ([`Peak::is_undamped`]) shows amplitude "unbounded" and AF "∞" (its margin
-/// is the one required for any AF past the cap). A peak without both half-power
-/// speeds inside the sweep has no AF (and no margin); a row with an AF but no
-/// margin had no operating range to measure from.
-pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin>)]) -> String {
-    let mut s = String::from(
-        "point                      speed (rpm)  amplitude (µm)        AF  required SM  actual SM  result\n",
-    );
-    for (peak, margin) in rows {
-        // An undamped resonance: infinite in theory, its numbers only the
-        // refinement's resolution.
-        let undamped = peak.is_undamped();
-        let af = match peak.amplification_factor {
-            _ if undamped => "∞".to_string(),
-            Some(a) => format!("{a:.2}"),
-            None => "—".to_string(),
-        };
-        let amplitude = if undamped {
-            "unbounded".to_string()
-        } else {
-            short(peak.amplitude * 1e6)
-        };
-        let (required, actual, verdict) = match margin {
-            Some(m) => (
-                m.required
-                    .map_or("none".to_string(), |r| format!("{:.1} %", 100.0 * r)),
-                format!("{:.1} %", 100.0 * m.actual),
-                if m.pass { "pass" } else { "FAIL" },
-            ),
-            None if peak.amplification_factor.is_none() => {
-                ("—".into(), "—".into(), "half-power speed outside the sweep")
-            }
-            None => ("—".into(), "—".into(), "no operating range"),
-        };
-        writeln!(
-            s,
-            "{:<26} {:>11.1} {:>15} {:>9} {:>12} {:>10}  {verdict}",
-            sweep.points[peak.point].label,
-            peak.speed * RAD_S_TO_RPM,
-            amplitude,
-            af,
-            required,
-            actual
-        )
-        .ok();
-    }
-    if rows.is_empty() {
-        s.push_str("(no peak inside the speed range)\n");
-    }
-    s
-}
-
 /// Fraction of a coefficient matrix's largest entry below which an entry is
 /// the equilibrium's round-off (it is solved to 1e-8): printed as 0.
 pub const ROUND_OFF_COEFFICIENT: f64 = 1e-7;
 
 /// A 2×2 matrix in one line: `[[a, b], [c, d]]`, six significant digits,
 /// entries below [`ROUND_OFF_COEFFICIENT`] of the largest as 0.
-fn matrix(m: &[[f64; 2]; 2]) -> String {
+pub fn coefficient_matrix(m: &[[f64; 2]; 2]) -> String {
     let largest = m.iter().flatten().fold(0.0f64, |a, v| a.max(v.abs()));
     let cell = |v: f64| {
         if v.abs() <= ROUND_OFF_COEFFICIENT * largest {
@@ -292,8 +244,8 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
                 .ok();
             }
         }
-        writeln!(s, "  K = {} N/m", matrix(&p.stiffness)).ok();
-        writeln!(s, "  C = {} N·s/m", matrix(&p.damping)).ok();
+        writeln!(s, "  K = {} N/m", coefficient_matrix(&p.stiffness)).ok();
+        writeln!(s, "  C = {} N·s/m", coefficient_matrix(&p.damping)).ok();
         for (k, pad) in p.film.iter().flat_map(|f| f.pads.iter()).enumerate() {
             writeln!(
                 s,
@@ -311,9 +263,11 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
 }
 
 /// What `rotor stability` prints: the modes at the speed (frequency, damping
-/// ratio, logarithmic decrement, whirl), where the cross-coupling acts and the
-/// threshold `Q` of the least stable forward mode.
-pub fn stability(result: &Stability, q_max: f64) -> String {
+/// ratio, logarithmic decrement, whirl), where the cross-coupling acts, the
+/// threshold `Q` of the least stable forward mode and, with stage data, the
+/// Level I screening with its formula and verdict. `sites` names the nodes
+/// (e.g. "node 6 (disk impeller)").
+pub fn stability(result: &Stability, sites: &[String]) -> String {
     let mut s = format!(
         "modes at {} rpm (no added cross-coupling):\n mode  f_d (Hz)   damping ratio   log dec     whirl\n",
         short(result.speed * RAD_S_TO_RPM)
@@ -338,13 +292,29 @@ pub fn stability(result: &Stability, q_max: f64) -> String {
         )
         .ok();
     }
-    writeln!(
-        s,
-        "cross-coupled stiffness [[0, Q], [-Q, 0]] at node {} (mid-span between the bearings)",
-        result.node + 1
-    )
-    .ok();
+    if sites.len() == 1 {
+        writeln!(
+            s,
+            "cross-coupled stiffness [[0, Q], [-Q, 0]] at {}",
+            sites[0]
+        )
+        .ok();
+    } else {
+        writeln!(
+            s,
+            "cross-coupled stiffness [[0, Q], [-Q, 0]] split equally over {}",
+            sites.join(", ")
+        )
+        .ok();
+    }
     match (result.threshold, &result.threshold_mode) {
+        (Some(0.0), Some(m)) if m.is_undamped() => {
+            writeln!(
+                s,
+                "the least stable forward mode has no damping (log dec 0): any cross-coupling destabilizes it"
+            )
+            .ok();
+        }
         (Some(0.0), _) => {
             writeln!(
                 s,
@@ -366,161 +336,51 @@ pub fn stability(result: &Stability, q_max: f64) -> String {
             writeln!(
                 s,
                 "stable up to Q = {} N/m (no threshold found)",
-                short(q_max)
+                short(result.q_max)
             )
             .ok();
         }
     }
-    s
-}
-
-/// Damping ratios smaller than this are the eigen-solver's round-off, not
-/// damping: it resolves ζ to about 1e-11 (`tests/modal_reference.rs`), and an
-/// undamped rotor's modes come out with |ζ| of 1e-24 … 1e-13. They print as 0.
-pub const ROUND_OFF_DAMPING_RATIO: f64 = 1e-9;
-
-/// `ζ` for a table: `{:.3e}`, or `0` below [`ROUND_OFF_DAMPING_RATIO`].
-pub fn damping_ratio(z: f64) -> String {
-    if z.abs() < ROUND_OFF_DAMPING_RATIO {
-        "0".into()
-    } else {
-        format!("{z:.3e}")
-    }
-}
-
-/// `ζ` and `δ` of a mode for the tables, round-off printed as 0 (`δ` of a
-/// round-off `ζ` is round-off too; never `-0.0000`).
-fn zeta_delta(m: &Mode, zeta_digits: usize, delta_digits: usize) -> (String, String) {
-    if m.damping_ratio.abs() < ROUND_OFF_DAMPING_RATIO {
-        ("0".into(), "0".into())
-    } else {
-        (
-            format!("{:.*e}", zeta_digits, m.damping_ratio),
-            format!("{:.*}", delta_digits, m.log_decrement),
-        )
-    }
-}
-
-/// The modes table `rotor modes` prints: damped frequency (rad/s, Hz), damping
-/// ratio, logarithmic decrement and whirl.
-pub fn modes(name: &str, rpm: f64, modes: &[Mode]) -> String {
-    let mut s = format!(
-        "{name} at {rpm} rpm:\n mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl\n"
-    );
-    for (k, m) in modes.iter().enumerate() {
-        let (zeta, delta) = zeta_delta(m, 4, 4);
+    if let Some(l) = &result.level_one {
+        let st = &l.stages;
+        writeln!(s, "API 617 / API 684 Level I screening:").ok();
         writeln!(
             s,
-            "{:5} {:12.4} {:11.4} {:>14} {:>9} {:>9}",
-            k + 1,
-            m.damped_frequency,
-            m.damped_frequency / (2.0 * std::f64::consts::PI),
-            zeta,
-            delta,
-            m.whirl.label()
+            "  anticipated cross-coupling Q_A = B P (ρd/ρs) / (D H Ω) = {} × {} W × {} / ({} m × {} m × {} rad/s) = {} N/m (Wachel)",
+            short(st.stage_factor),
+            short(st.power),
+            short(st.density_ratio),
+            short(st.diameter),
+            short(st.width),
+            short(result.speed.abs()),
+            short(l.anticipated)
         )
         .ok();
-    }
-    s
-}
-
-/// The non-oscillating roots of a modal analysis, apart from the modes: the
-/// decay rate `−Re λ` (1/s) and time constant of each, or nothing when there
-/// are none.
-pub fn overdamped_roots(roots: &[OverdampedRoot]) -> String {
-    if roots.is_empty() {
-        return String::new();
-    }
-    let mut s = format!(
-        "non-oscillating (overdamped) roots, not modes (ζ ≥ {NON_OSCILLATING_DAMPING_RATIO}, not counted in --modes):\n  decay rate (1/s)  time constant (s)\n"
-    );
-    for r in roots {
+        let ratio = match l.ratio {
+            Some(r) => format!("{r:.2}"),
+            None => format!("> {:.2}", result.q_max / l.anticipated),
+        };
         writeln!(
             s,
-            "  {:>16} {:>18}",
-            short(r.decay_rate()),
-            short(r.time_constant())
+            "  stability margin Q0/Q_A = {ratio} (at least {LEVEL_I_MIN_RATIO} required): {}",
+            if l.ratio_pass { "pass" } else { "FAIL" }
         )
         .ok();
-    }
-    s
-}
-
-/// How many non-oscillating roots the speeds of a Campbell diagram had (they
-/// are not branches), or nothing when none.
-pub fn overdamped_summary(diagram: &[CampbellPoint]) -> String {
-    let counts: Vec<usize> = diagram.iter().map(|p| p.overdamped.len()).collect();
-    let (lo, hi) = (
-        counts.iter().copied().min().unwrap_or(0),
-        counts.iter().copied().max().unwrap_or(0),
-    );
-    match (lo, hi) {
-        (_, 0) => String::new(),
-        (lo, hi) if lo == hi => format!(
-            "non-oscillating (overdamped) roots: {hi} at every speed, below the listed modes; not branches\n"
-        ),
-        (lo, hi) => format!(
-            "non-oscillating (overdamped) roots: {lo} to {hi} per speed, below the listed modes; not branches\n"
-        ),
-    }
-}
-
-/// API 684 separation margins of the critical speeds of a Campbell diagram
-/// (amplification factor `1/(2ζ)`) from the operating range, and their
-/// distance from the maximum speed.
-pub fn critical_margins(
-    margins: &[CriticalMargin],
-    range: Option<&OperatingRange>,
-    max_speed: Option<f64>,
-) -> String {
-    if margins.is_empty() {
-        return String::new();
-    }
-    let mut s = match range {
-        Some(r) if r.min == r.max => format!(
-            "separation margins (API 684, AF = 1/(2ζ)) from the operating speed {} rpm",
-            short(r.min * RAD_S_TO_RPM)
-        ),
-        Some(r) => format!(
-            "separation margins (API 684, AF = 1/(2ζ)) from the operating range {} … {} rpm",
-            short(r.min * RAD_S_TO_RPM),
-            short(r.max * RAD_S_TO_RPM)
-        ),
-        None => {
-            "critical speeds (no operating speed: speed_rpm or --operating-rpm; margins not judged)"
-                .to_string()
-        }
-    };
-    if let Some(m) = max_speed {
-        write!(s, ", maximum speed {} rpm", short(m * RAD_S_TO_RPM)).ok();
-    }
-    s.push_str(":\n   speed (rpm)        AF  required SM  actual SM  from max speed  result\n");
-    for m in margins {
-        let af = if m.amplification_factor.is_finite() {
-            format!("{:.2}", m.amplification_factor)
-        } else {
-            "∞".into()
-        };
-        let (required, actual, verdict) = match &m.margin {
-            Some(sm) => (
-                sm.required
-                    .map_or("none".to_string(), |r| format!("{:.1} %", 100.0 * r)),
-                format!("{:.1} %", 100.0 * sm.actual),
-                if sm.pass { "pass" } else { "FAIL" },
-            ),
-            None => ("—".into(), "—".into(), "not judged"),
-        };
-        let from_max = m
-            .from_max_speed
-            .map_or("—".to_string(), |d| format!("{:+.1} %", 100.0 * d));
         writeln!(
             s,
-            "  {:>12.2} {:>9} {:>12} {:>10} {:>15}  {verdict}",
-            m.critical.speed * RAD_S_TO_RPM,
-            af,
-            required,
-            actual,
-            from_max
+            "  log dec at Q_A = {:.4} (at least {LEVEL_I_MIN_LOG_DEC} required): {}",
+            l.mode_at_anticipated.log_decrement,
+            if l.log_dec_pass { "pass" } else { "FAIL" }
+        )
+        .ok();
+        writeln!(
+            s,
+            "  Level I: {}",
+            if l.pass() {
+                "pass"
+            } else {
+                "FAIL: a Level II analysis is required"
+            }
         )
         .ok();
     }
@@ -604,45 +464,5 @@ mod tests {
         assert_eq!(short(-9.81), "-9.81");
         assert_eq!(short(1e-4 * 1e6), "100");
         assert_eq!(short(2.5e-9), "2.5e-9");
-    }
-
-    #[test]
-    fn peak_table_prints_every_column_and_the_verdict() {
-        use crate::analysis::unbalance::{ResponsePoint, UnbalanceSweep};
-        let sweep = UnbalanceSweep {
-            speeds: vec![],
-            points: vec![ResponsePoint {
-                label: "probe disk".into(),
-                node: 3,
-            }],
-            response: vec![],
-        };
-        let peak = Peak {
-            point: 0,
-            speed: 1000.0 / RAD_S_TO_RPM,
-            amplitude: 12.5e-6,
-            half_power: Some((1.0, 2.0)),
-            amplification_factor: Some(4.0),
-        };
-        let margin = SeparationMargin {
-            required: Some(0.16),
-            actual: 0.125,
-            pass: false,
-        };
-        let no_af = Peak {
-            amplification_factor: None,
-            ..peak
-        };
-        let table = peak_table(&sweep, &[(peak, Some(margin)), (peak, None), (no_af, None)]);
-        let lines: Vec<&str> = table.lines().collect();
-        let cells: Vec<&str> = lines[1].split_whitespace().collect();
-        assert_eq!(
-            cells,
-            [
-                "probe", "disk", "1000.0", "12.5", "4.00", "16.0", "%", "12.5", "%", "FAIL"
-            ]
-        );
-        assert!(lines[2].ends_with("no operating range"), "{}", lines[2]);
-        assert!(lines[3].ends_with("half-power speed outside the sweep"));
     }
 }
