@@ -9,6 +9,7 @@ pub mod linearize;
 pub mod modal;
 pub mod mode_tracking;
 pub mod operating_point;
+pub mod orbit;
 mod polish;
 pub mod shapes;
 pub mod spectrum;

@@ -214,6 +214,10 @@ enum Command {
         /// (a run under 20 revolutions gets no frequency ratio).
         #[arg(long)]
         plots: Option<String>,
+        /// Amplitudes of the spectra and the window table: the orbit's radius (0-pk)
+        /// or twice it (pk-pk).
+        #[arg(long, default_value = "0-pk", value_parser = parse_amplitude)]
+        amplitude: Amplitude,
     },
     /// Write the generated parts of an FMU for MODEL into DIR: modelDescription.xml,
     /// resources/model.toml and documentation/index.html (fmu_pack.sh adds the binary).
@@ -582,6 +586,7 @@ fn run(cli: Cli) -> Result<(), String> {
             reduced_modes,
             csv,
             plots,
+            amplitude,
         } => {
             let profile =
                 simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
@@ -614,6 +619,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 settle: !no_settle,
                 csv,
                 plots,
+                amplitude,
             };
             simulate::simulate(rotor, options, run)
         }

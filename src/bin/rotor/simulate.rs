@@ -3,11 +3,13 @@
 use std::path::{Path, PathBuf};
 
 use rotor_bearing::analysis::spectrum::{
-    MIN_REVOLUTIONS, band_limit, frequency_grid, full_spectrum, waterfall,
+    MIN_REVOLUTIONS, about_moving_centre, band_limit, frequency_grid, full_spectrum, waterfall,
 };
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::model::speed_table;
-use rotor_bearing::plot::{RAD_S_TO_RPM, orbits_png, spectrum_png, waterfall_png};
+use rotor_bearing::plot::{
+    OrbitPanel, RAD_S_TO_RPM, WaterfallTrace, orbits_png, spectrum_png, waterfall_png,
+};
 use rotor_bearing::report::text::{self, short};
 use rotor_bearing::report::{csv as report_csv, series};
 use rotor_bearing::rotor::Rotor;
@@ -15,6 +17,7 @@ use rotor_bearing::solver::time_step::{
     MAX_DEFAULT_TIME_STEP, STEPS_PER_REVOLUTION, model_top_speed, peak_speed,
 };
 use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record_into};
+use rotor_bearing::units::Amplitude;
 
 use crate::write_file;
 
@@ -114,6 +117,7 @@ pub struct Run {
     pub settle: bool,
     pub csv: Option<PathBuf>,
     pub plots: Option<String>,
+    pub amplitude: Amplitude,
 }
 
 pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String> {
@@ -124,6 +128,7 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         settle,
         csv,
         plots,
+        amplitude,
     } = run;
     let profile = &profile;
     let model = rotor.model.clone();
@@ -200,22 +205,49 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         let tail = &records[records.len() / 2..];
         let t: Vec<f64> = tail.iter().map(|o| o.time).collect();
         let orbits = series::orbits(&model, tail);
+        let mean_speed = tail.iter().map(|o| o.speed).sum::<f64>() / tail.len() as f64;
+        let panels: Vec<OrbitPanel> = orbits
+            .iter()
+            .enumerate()
+            .map(|(k, (name, x, y))| OrbitPanel {
+                name: name.clone(),
+                x: x.clone(),
+                y: y.clone(),
+                clearance: model
+                    .bearings
+                    .get(k)
+                    .filter(|b| !b.kind.is_rub())
+                    .and_then(|b| b.kind.journal_clearance()),
+            })
+            .collect();
+        let spin: Vec<f64> = tail.iter().map(|o| o.spin_angle).collect();
         let path = PathBuf::from(format!("{prefix}_orbits.png"));
         orbits_png(
             &path,
             &format!("Orbits: {} (last half of the run)", model.name),
-            &orbits,
-            None,
+            &panels,
+            &spin,
+            mean_speed,
         )
         .map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
-        let mean_speed = tail.iter().map(|o| o.speed).sum::<f64>() / tail.len() as f64;
         let f_spin = mean_speed / (2.0 * std::f64::consts::PI);
-        let f_max = band_limit(2.5 * f_spin, output_step);
+        let f_max = band_limit(2.5 * f_spin.abs(), output_step);
         let freqs = frequency_grid(-f_max, f_max, 1601);
+        // About the orbit's moving centre: the rest position's drift is no line at 0 Hz.
         let spectra: Vec<(String, Vec<f64>)> = orbits
             .iter()
-            .map(|(name, x, y)| (name.clone(), full_spectrum(&t, x, y, &freqs)))
+            .map(|(name, x, y)| {
+                (
+                    name.clone(),
+                    full_spectrum(
+                        &t,
+                        &about_moving_centre(x, &spin),
+                        &about_moving_centre(y, &spin),
+                        &freqs,
+                    ),
+                )
+            })
             .collect();
         let path = PathBuf::from(format!("{prefix}_spectrum.png"));
         let markers = vec![
@@ -225,10 +257,14 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         ];
         spectrum_png(
             &path,
-            &format!("Full spectrum: {}", model.name),
+            &format!(
+                "Full spectrum: {} (last half of the run, about the orbit's moving centre)",
+                model.name
+            ),
             &freqs,
             &spectra,
             &markers,
+            amplitude,
         )
         .map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
@@ -237,14 +273,17 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         let speed: Vec<f64> = records.iter().map(|o| o.speed).collect();
         let (x, y): (Vec<f64>, Vec<f64>) = records.iter().map(series::watched_point).unzip();
         let watched = series::watched_point_name(&model);
-        println!("spectra of {watched}, windows of {MIN_REVOLUTIONS} revolutions (Hann):");
-        println!(
-            "window    start_s      end_s  revolutions  speed_rpm  dominant_Hz   ratio  amplitude_um  subsync_share"
-        );
+        let mut out =
+            format!("spectra of {watched}, windows of {MIN_REVOLUTIONS} revolutions (Hann):\n");
+        out.push_str(&format!(
+            "window    start_s      end_s  revolutions  speed_rpm  dominant_Hz   ratio  amplitude_um_{}  subsync_share\n",
+            amplitude.label()
+        ));
         let wf = match waterfall(&t, &x, &y, &speed, output_step) {
             Ok(wf) => wf,
             Err(short) => {
-                println!("     -  {short}: no frequency ratio");
+                out.push_str(&format!("     -  {short}: no frequency ratio\n"));
+                print!("{out}");
                 eprintln!(
                     "warning: {short} in the whole run: no frequency ratio and no waterfall (run longer or faster)"
                 );
@@ -253,37 +292,43 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         };
         for (w, row) in wf.rows.iter().enumerate() {
             let s = &row.window;
-            print!(
+            out.push_str(&format!(
                 "{w:6} {:10.6} {:10.6} {:12.1} {:10.1}",
                 s.start,
                 s.end,
                 s.revolutions,
                 s.speed * RAD_S_TO_RPM
-            );
+            ));
             match (s.peak, s.order()) {
-                (Some(p), Some(ratio)) => println!(
-                    " {:12.3} {ratio:7.3} {:13.4} {:14.6}",
+                (Some(p), Some(ratio)) => out.push_str(&format!(
+                    " {:12.3} {ratio:7.3} {:17.4} {:14.6}\n",
                     p.frequency,
-                    p.amplitude * 1e6,
+                    p.amplitude * 1e6 * amplitude.factor(),
                     s.subsynchronous_share
-                ),
-                _ => println!("  no motion: no dominant frequency"),
+                )),
+                _ => out.push_str("  no motion: no dominant frequency\n"),
             }
         }
-        let rows: Vec<(f64, Vec<f64>)> = wf
+        let traces: Vec<WaterfallTrace> = wf
             .rows
             .into_iter()
-            .map(|r| (r.speed * RAD_S_TO_RPM, r.amplitudes))
+            .map(|r| WaterfallTrace {
+                time: 0.5 * (r.window.start + r.window.end),
+                rpm: r.speed * RAD_S_TO_RPM,
+                amplitudes: r.amplitudes,
+            })
             .collect();
         let path = PathBuf::from(format!("{prefix}_waterfall.png"));
         waterfall_png(
             &path,
             &format!("Waterfall: {}, {watched}", model.name),
             &wf.freqs,
-            &rows,
+            &traces,
+            amplitude,
         )
         .map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
+        print!("{out}");
     }
     Ok(())
 }
