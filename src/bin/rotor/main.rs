@@ -108,7 +108,9 @@ enum Command {
         #[arg(long)]
         png: PathBuf,
     },
-    /// Static deflection under gravity (linear bearings).
+    /// Static deflection under gravity: linear bearings, or fluid films in their
+    /// static equilibrium at --rpm (at standstill the journals rest on their
+    /// bushings or pads).
     Static {
         #[command(flatten)]
         model: ModelArg,

@@ -40,6 +40,16 @@ pub fn model_summary(rotor: &Rotor) -> String {
         m.total_mass()
     )
     .ok();
+    // Node positions, eight to a line: where `node = N` in the file sits.
+    for (row, chunk) in m.node_z.chunks(8).enumerate() {
+        let cells: Vec<String> = chunk
+            .iter()
+            .enumerate()
+            .map(|(k, z)| format!("{}: {}", row * 8 + k + 1, short(*z)))
+            .collect();
+        let head = if row == 0 { "node z (m):" } else { "" };
+        writeln!(s, "  {head:<11} {}", cells.join(", ")).ok();
+    }
     for d in &m.disks {
         writeln!(
             s,
