@@ -53,8 +53,15 @@ fn every_command_ends_its_output_with_a_newline_and_stays_short() {
             &stdout[stdout.len().saturating_sub(40)..]
         );
         // A table of a 20 000-step run or of every node goes to a file.
-        assert!(stdout.lines().count() < 100, "{args:?}: {} lines", stdout.lines().count());
-        assert!(!stdout.contains("speed_rpm,") && !stdout.contains("time_s,"), "{args:?}");
+        assert!(
+            stdout.lines().count() < 100,
+            "{args:?}: {} lines",
+            stdout.lines().count()
+        );
+        assert!(
+            !stdout.contains("speed_rpm,") && !stdout.contains("time_s,"),
+            "{args:?}"
+        );
     }
 }
 
@@ -95,7 +102,10 @@ fn help_and_info_say_what_they_should() {
         .unwrap();
     let help = String::from_utf8(help.stdout).unwrap();
     assert!(!help.contains("(linear bearings)"), "{help}");
-    assert!(help.contains("fluid films in their static equilibrium"), "{help}");
+    assert!(
+        help.contains("fluid films in their static equilibrium"),
+        "{help}"
+    );
     let info = Command::new(env!("CARGO_BIN_EXE_rotor"))
         .arg("info")
         .arg(root().join("examples/my_pump.toml"))
