@@ -395,3 +395,92 @@ fn refined_grid_resolves_the_resonance_loop_of_the_polar_plot() {
         assert_eq!(node_xy(&q, 3).0, r[probe].0);
     }
 }
+
+/// `--amplitude pk-pk` states every amplitude as twice the orbit's
+/// semi-axis, and the heading says which convention the numbers are in; the
+/// transient's window table does the same.
+#[test]
+fn amplitudes_are_stated_zero_to_peak_or_peak_to_peak() {
+    let model =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor_damped.toml");
+    let table = |convention: &str| {
+        let out = rotor_cli()
+            .arg("unbalance")
+            .arg(&model)
+            .args(["--max-rpm", "3000", "--amplitude", convention])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let (zero, peak) = (table("0-pk"), table("pk-pk"));
+    let heading = |t: &str| {
+        t.lines()
+            .find(|l| l.starts_with("point "))
+            .unwrap()
+            .to_string()
+    };
+    assert!(heading(&zero).contains("µm 0-pk"), "{zero}");
+    assert!(heading(&peak).contains("µm pk-pk"), "{peak}");
+    let amplitudes = |t: &str| -> Vec<f64> {
+        t.lines()
+            .skip_while(|l| !l.starts_with("point "))
+            .skip(1)
+            .map(|l| l.split_whitespace().nth(3).unwrap().parse().unwrap())
+            .collect()
+    };
+    let (a, b) = (amplitudes(&zero), amplitudes(&peak));
+    assert!(!a.is_empty() && a.len() == b.len());
+    for (x, y) in a.iter().zip(&b) {
+        // Six significant digits each.
+        assert!((y / x - 2.0).abs() < 1e-5, "{x} vs {y}");
+    }
+    let bad = rotor_cli()
+        .args(["unbalance", "--amplitude", "rms"])
+        .output()
+        .unwrap();
+    assert!(
+        String::from_utf8_lossy(&bad.stderr)
+            .contains("expected 0-pk (the orbit's semi-axis) or pk-pk")
+    );
+    // The transient: the window table's amplitude column doubles as well.
+    let dir = out_dir("amplitude_windows");
+    let run = |convention: &str| {
+        let prefix = dir.join(convention);
+        let out = rotor_cli()
+            .args([
+                "simulate",
+                "--rpm",
+                "3000",
+                "--duration",
+                "0.5",
+                "--amplitude",
+                convention,
+                "--plots",
+            ])
+            .arg(&prefix)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let (zero, peak) = (run("0-pk"), run("pk-pk"));
+    assert!(zero.contains("amplitude_um_0-pk") && peak.contains("amplitude_um_pk-pk"));
+    let column = |t: &str| -> Vec<f64> {
+        t.lines()
+            .skip(2)
+            .map(|l| l.split_whitespace().nth(7).unwrap().parse().unwrap())
+            .collect()
+    };
+    for (x, y) in column(&zero).iter().zip(column(&peak)) {
+        assert!((y / x - 2.0).abs() < 1e-3, "{x} vs {y}");
+    }
+}

@@ -85,6 +85,7 @@ fn readme_quick_start_runs_as_written() {
         "out/my_pump_campbell.png",
         "out/my_pump_unbalance.png",
         "out/my_pump_run_up.csv",
+        "out/my_pump_report.html",
         "out/my_pump.fmu",
         "out/my_pump_fmu.csv",
     ] {
@@ -146,6 +147,13 @@ fn readme_quick_start_runs_as_written() {
     let last = rows.last().unwrap();
     assert!((last[time] - 3.0).abs() < 1e-9 && (last[speed] - 3600.0).abs() < 1e-6);
     assert!(rows[0][speed].abs() < 1e-9);
+
+    // The report: the stamp names the file and its hash; the summary is there.
+    let page = std::fs::read_to_string(root().join("out/my_pump_report.html")).unwrap();
+    assert!(page.contains("<td>model file</td><td>examples/my_pump.toml</td>"));
+    assert!(page.contains("<td>model SHA-256</td>"));
+    assert!(page.contains("<table id=\"summary-table\">"));
+    assert!(page.contains("<td class=\"pass\">pass</td>"));
 
     // The FMU, simulated by FMPy for 1 s at 376.99 rad/s (3600 rpm).
     let (header, rows) = csv_rows(&root().join("out/my_pump_fmu.csv"));

@@ -3,19 +3,21 @@
 //! ```text
 //! rotor info     [MODEL.toml]
 //! rotor draw     [MODEL.toml] --png FILE
-//! rotor static   [MODEL.toml] [--csv FILE]
+//! rotor static   [MODEL.toml] [--rpm N] [--csv FILE]
 //! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE] [--shapes-csv FILE] [--shapes-png FILE]
-//! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--csv FILE] [--png FILE]
+//! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--operating-rpm A:B] [--csv FILE] [--png FILE]
 //! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--csv FILE] [--png FILE]
 //! rotor simulate [MODEL.toml] (--rpm N | --ramp-rpm A:B | --speed-csv FILE) [--duration S] [--step S]
-//!                [--output-step S] [--ramp-time S] [--no-gravity] [--csv FILE] [--plots PREFIX]
+//!                [--output-step S] [--ramp-time S] [--no-gravity] [--amplitude 0-pk|pk-pk] [--csv FILE] [--plots PREFIX]
 //! rotor unbalance [MODEL.toml] [--min-rpm N] [--max-rpm N] [--points P] [--node N --unbalance KGM]
-//!                 [--operating-rpm A:B] [--csv FILE] [--png FILE]
+//!                 [--operating-rpm A:B] [--amplitude 0-pk|pk-pk] [--csv FILE] [--png FILE]
 //! rotor operating-point [MODEL.toml] --rpm N [--csv FILE] [--pads-csv FILE]
 //! rotor ucs [MODEL.toml] [--min-stiffness K] [--max-stiffness K] [--points P] [--modes K] [--max-rpm N]
 //!           [--speeds S] [--csv FILE] [--bearings-csv FILE] [--png FILE]
-//! rotor report [MODEL.toml] --rpm N --out FILE.html
-//! rotor stability [MODEL.toml] --rpm N [--cross-coupling-max Q] [--points P] [--modes K] [--csv FILE] [--png FILE]
+//! rotor report [MODEL.toml] [--rpm N] [--amplitude 0-pk|pk-pk] [--at NODES] [--power W --impeller-diameter D
+//!              --flow-width H [--density-ratio R] [--stage-factor B]] --out FILE.html
+//! rotor stability [MODEL.toml] --rpm N [--at NODES] [--cross-coupling-max Q] [--points P] [--modes K]
+//!                 [--power W --impeller-diameter D --flow-width H …] [--csv FILE] [--png FILE]
 //! ```
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
 //! `coefficients`, the reference plain short bearing).
