@@ -4,35 +4,86 @@
 #   ./fmu_pack.sh                      # the default FMU: models/hydro_unit.toml → out/RotorBearing.fmu
 #   ./fmu_pack.sh --model FILE.toml    # any model → out/<model name>.fmu
 #   ./fmu_pack.sh --model F --out X.fmu
+#   ./fmu_pack.sh --platforms linux64  # one platform only (default: linux64,win64)
 #
-# Builds the release library, generates modelDescription.xml, resources/model.toml
-# and documentation/index.html from the model (one source: the variable table in
-# src/fmi2/variables.rs), zips the FMU, then validates it with FMPy and fails on
-# any problem.
+# Builds the release library for each platform (linux64: the host toolchain;
+# win64: the cross toolchain of scripts/setup.sh, docs/platforms.md), generates
+# modelDescription.xml, resources/model.toml and documentation/index.html from
+# the model (one source: the variable table in src/fmi2/variables.rs), checks
+# that every binary exports the 34 fmi2 functions of a co-simulation FMU and
+# that the DLL imports system DLLs only (scripts/fmu_binary_check.sh), zips the
+# FMU, then validates it with FMPy and fails on any problem.
 set -euo pipefail
 cd "$(dirname "$0")"
 model=models/hydro_unit.toml
 out=""
+platforms=linux64,win64
 while [ $# -gt 0 ]; do
+  case "$1" in
+    --model|--out|--platforms) [ $# -ge 2 ] || { echo "fmu_pack.sh: $1 needs a value" >&2; exit 2; } ;;
+  esac
   case "$1" in
     --model) model="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    --platforms) platforms="$2"; shift 2 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     *) echo "fmu_pack.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
 [ -f "$model" ] || { echo "fmu_pack.sh: model file $model not found" >&2; exit 2; }
+linux64="" win64=""
+IFS=, read -r -a chosen <<< "$platforms"
+for p in "${chosen[@]}"; do
+  case "$p" in
+    linux64) linux64=1 ;;
+    win64) win64=1 ;;
+    *) echo "fmu_pack.sh: --platforms $platforms: unknown platform \"$p\" (linux64, win64)" >&2; exit 2 ;;
+  esac
+done
+[ -n "$linux64$win64" ] || { echo "fmu_pack.sh: --platforms \"$platforms\" names no platform (linux64, win64)" >&2; exit 2; }
 # Packing installs nothing: scripts/setup.sh and scripts/python_env.sh (run by
-# both README commands) provide the toolchain, libclang and the venv with FMPy.
+# both README commands) provide the toolchains, libclang and the venv with FMPy.
 for tool in cargo nm; do
   command -v "$tool" >/dev/null 2>&1 || { echo "fmu_pack.sh: $tool not found: run scripts/setup.sh" >&2; exit 2; }
 done
 [ -x .venv/bin/python ] || { echo "fmu_pack.sh: .venv missing: run scripts/python_env.sh" >&2; exit 2; }
+if [ -n "$win64" ]; then
+  . scripts/win64_env.sh
+  for tool in "$WIN64_CARGO" "$WIN64_RUSTC" "$WIN64_CC" x86_64-w64-mingw32-objdump; do
+    command -v "$tool" >/dev/null 2>&1 || {
+      echo "fmu_pack.sh: $tool not found: run scripts/setup.sh (or pack --platforms linux64)" >&2; exit 2; }
+  done
+  [ -f "$WIN64_SYSROOT/.complete" ] || {
+    echo "fmu_pack.sh: no $WIN64_TARGET standard library for $("$WIN64_RUSTC" -V) in $WIN64_SYSROOT:" \
+      "run scripts/setup.sh (or pack --platforms linux64)" >&2; exit 2; }
+fi
+
+# The rotor CLI writes the generated files, so the host build always runs.
 cargo build --release --quiet --lib --bin rotor
+so=target/release/librotor_bearing.so
+if [ -n "$win64" ]; then
+  # The library alone (no CLI, no plots) for Windows; Cargo.lock as it is.
+  win64_cargo build --release --quiet --locked --lib --no-default-features --target "$WIN64_TARGET"
+  dll="${WIN64_TARGET_DIR:-target/win64}/$WIN64_TARGET/release/rotor_bearing.dll"
+fi
+
+# Exports and (for the DLL) imports of each binary (scripts/fmu_binary_check.sh).
+checked=()
+if [ -n "$linux64" ]; then checked+=("$(bash scripts/fmu_binary_check.sh "$so")"); fi
+if [ -n "$win64" ]; then checked+=("$(bash scripts/fmu_binary_check.sh "$dll")"); fi
+
 stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 read -r name guid < <(target/release/rotor fmu-stage "$model" "$stage" 2>/dev/null)
-cp target/release/librotor_bearing.so "$stage/binaries/linux64/RotorBearing.so"
+rm -rf "$stage/binaries"
+if [ -n "$linux64" ]; then
+  mkdir -p "$stage/binaries/linux64"
+  cp "$so" "$stage/binaries/linux64/RotorBearing.so"
+fi
+if [ -n "$win64" ]; then
+  mkdir -p "$stage/binaries/win64"
+  cp "$dll" "$stage/binaries/win64/RotorBearing.dll"
+fi
 if [ -z "$out" ]; then
   if [ "$model" = models/hydro_unit.toml ]; then out=out/RotorBearing.fmu; else out="out/$name.fmu"; fi
 fi
@@ -42,15 +93,13 @@ rm -f "$out"
 import os, sys, zipfile
 stage, out = sys.argv[1], sys.argv[2]
 with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
-    for root, _, files in os.walk(stage):
+    for root, dirs, files in os.walk(stage):
+        dirs.sort()
         for f in sorted(files):
             path = os.path.join(root, f)
             z.write(path, os.path.relpath(path, stage))
 PY
-# Exported symbols: all fmi2* functions a co-simulation FMU must have.
-count=$(nm -D --defined-only "$stage/binaries/linux64/RotorBearing.so" | grep -c ' T fmi2')
-[ "$count" -ge 34 ] || { echo "fmu_pack.sh: only $count fmi2 functions exported" >&2; exit 1; }
-.venv/bin/python - "$out" <<'PY'
+.venv/bin/python - "$out" <<'PY' || { rm -f "$out"; exit 1; }
 import sys
 from fmpy.validation import validate_fmu
 problems = validate_fmu(sys.argv[1])
@@ -58,4 +107,10 @@ if problems:
     print("\n".join(problems), file=sys.stderr)
     sys.exit(f"fmu_pack.sh: FMPy validation of {sys.argv[1]} failed")
 PY
-echo "packed $out ($name, GUID $guid): $count fmi2 functions, FMPy validation passed"
+if [ -n "$linux64" ] && [ -n "$win64" ]; then
+  packed="linux64 and win64"
+else
+  packed="${linux64:+linux64}${win64:+win64} only (--platforms $platforms)"
+fi
+echo "packed $out ($name, GUID $guid) for $packed, FMPy validation passed"
+printf '  %s\n' "${checked[@]}"

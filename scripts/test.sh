@@ -7,8 +7,11 @@ bash scripts/setup.sh
 bash scripts/python_env.sh
 cargo fmt --all -- --check
 cargo clippy --all-targets --quiet -- -D warnings
+# The FMU library alone (no CLI, no plots), as the win64 DLL is built.
+cargo clippy --lib --no-default-features --quiet -- -D warnings
 # The FMU tests load the cdylib, which `cargo test` does not relink; the Python
-# tests use the packed FMU (fmu_pack.sh builds, packs and validates it with FMPy).
+# tests use the packed FMU (fmu_pack.sh builds the linux64 and win64 binaries,
+# packs and validates it with FMPy; tests/wine.rs runs the win64 one under Wine).
 cargo build --lib --examples --quiet
 bash fmu_pack.sh
 for model in models/*.toml; do

@@ -13,6 +13,7 @@ pub mod fe;
 pub mod fmi2;
 pub mod linalg;
 pub mod model;
+#[cfg(feature = "plot")]
 pub mod plot;
 pub mod report;
 pub mod rotor;

@@ -16,6 +16,10 @@ use rotor_bearing::fmi2::xml::model_description;
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
+#[path = "common/fmi2_functions.rs"]
+mod fmi2_functions;
+use fmi2_functions::FMI2_CS_FUNCTIONS;
+
 static LOG: Mutex<Vec<(u32, String)>> = Mutex::new(Vec::new());
 
 /// Logger with the fixed arguments of the variadic `fmi2CallbackLogger` (the
@@ -255,42 +259,7 @@ fn model_description_is_consistent() {
 #[test]
 fn exports_every_fmi2_function() {
     let lib = unsafe { libloading::Library::new(library_path()) }.unwrap();
-    for name in [
-        "fmi2GetTypesPlatform",
-        "fmi2GetVersion",
-        "fmi2SetDebugLogging",
-        "fmi2Instantiate",
-        "fmi2FreeInstance",
-        "fmi2SetupExperiment",
-        "fmi2EnterInitializationMode",
-        "fmi2ExitInitializationMode",
-        "fmi2Terminate",
-        "fmi2Reset",
-        "fmi2GetReal",
-        "fmi2GetInteger",
-        "fmi2GetBoolean",
-        "fmi2GetString",
-        "fmi2SetReal",
-        "fmi2SetInteger",
-        "fmi2SetBoolean",
-        "fmi2SetString",
-        "fmi2GetFMUstate",
-        "fmi2SetFMUstate",
-        "fmi2FreeFMUstate",
-        "fmi2SerializedFMUstateSize",
-        "fmi2SerializeFMUstate",
-        "fmi2DeSerializeFMUstate",
-        "fmi2GetDirectionalDerivative",
-        "fmi2SetRealInputDerivatives",
-        "fmi2GetRealOutputDerivatives",
-        "fmi2DoStep",
-        "fmi2CancelStep",
-        "fmi2GetStatus",
-        "fmi2GetRealStatus",
-        "fmi2GetIntegerStatus",
-        "fmi2GetBooleanStatus",
-        "fmi2GetStringStatus",
-    ] {
+    for name in FMI2_CS_FUNCTIONS {
         let sym: Result<libloading::Symbol<*const c_void>, _> = unsafe { lib.get(name.as_bytes()) };
         assert!(sym.is_ok(), "{name} is not exported");
     }
