@@ -122,7 +122,9 @@ def linear_threshold(viscosity):
         def zeta(rpm):
             out = subprocess.run([ROTOR, "modes", model, "--rpm", str(rpm), "--modes", "6"],
                                  capture_output=True, text=True, check=True).stdout
-            return min(float(line.split()[3]) for line in out.splitlines()[2:] if line.strip())
+            # The modes' rows (a number first); overdamped roots follow apart.
+            rows = [line.split() for line in out.splitlines()[2:]]
+            return min(float(r[3]) for r in rows if r and r[0].isdigit())
 
         lo, hi = 4000.0, 10000.0
         assert zeta(lo) > 0 > zeta(hi)

@@ -326,6 +326,10 @@ pub struct CampbellStudy {
     pub operating: Option<OperatingRange>,
     /// The model's maximum speed, when the file states it (rad/s).
     pub max_speed: Option<f64>,
+    /// Wall-clock time (s) of the diagram alone (the modes at every speed,
+    /// tracked), without the critical speeds' refinement: what the
+    /// benchmarks time.
+    pub diagram_seconds: f64,
 }
 
 /// The Campbell study `rotor campbell` and the report run.
@@ -352,7 +356,9 @@ pub fn campbell_study(
         modes: request.modes,
         ..ModalOptions::default()
     };
+    let clock = std::time::Instant::now();
     let diagram = campbell(rotor, &speed_grid(rotor, top, request.steps), &options)?;
+    let diagram_seconds = clock.elapsed().as_secs_f64();
     let criticals = critical_speeds(rotor, &diagram, 1.0, &options)?;
     let model = &rotor.model;
     let max_speed = model.max_speed_stated.then_some(model.max_speed);
@@ -365,6 +371,7 @@ pub fn campbell_study(
         top_origin,
         operating: request.operating,
         max_speed,
+        diagram_seconds,
     })
 }
 
