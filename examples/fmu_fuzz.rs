@@ -13,7 +13,10 @@
 //!   `fmi2DoStep` before initialization, a second `fmi2SetupExperiment`, a set
 //!   of a fixed parameter after initialization, of an output, of an unknown
 //!   value reference, of NaN) return `fmi2Error`;
-//! - a step past a defined stop time is refused.
+//! - a step past a defined stop time is refused, and so is a step too short to
+//!   advance the time by the 1e-8 s the integrator resolves (down to 1e-300 s);
+//! - the instance comes up from every spelling of the resource URI (scheme and
+//!   host in any case, with a query or a fragment).
 //!
 //! A crash or hang is seen by the parent. Exit code 1 with the seed and the
 //! call log on the first violation.
@@ -337,7 +340,8 @@ impl Fuzz<'_> {
         let h = match self.rng.below(10) {
             0 => -1e-3,
             1 => 0.0,
-            2 => self.rng.log_uniform(1e-9, 1e-5),
+            2 if self.rng.chance(0.2) => self.rng.log_uniform(1e-300, 0.99e-8),
+            2 => self.rng.log_uniform(1e-8, 1e-5),
             3 => self.rng.log_uniform(0.05, 0.3),
             _ => self.rng.log_uniform(1e-4, 2e-2),
         };
@@ -362,6 +366,12 @@ impl Fuzz<'_> {
                 )?;
             } else if h < 0.0 {
                 self.expect_error("fmi2DoStep", s, "negative communication step")?;
+            } else if t == self.time && (t + h) - t < 1e-8 {
+                self.expect_error(
+                    "fmi2DoStep",
+                    s,
+                    "a step that does not advance the time by the 1e-8 s the integrator resolves",
+                )?;
             } else if let Some(stop) = self.stop_time
                 && t == self.time
                 && t + h > stop * (1.0 + 1e-12) + 1e-12
@@ -691,7 +701,24 @@ fn run_sequence(
 ) -> Result<(), String> {
     let name = CString::new(format!("fuzz{seed}")).unwrap();
     let guid = CString::new(guid).unwrap();
-    let uri = CString::new(format!("file://{}", dir.join("resources").display())).unwrap();
+    // Every spelling of a local file URI an importer may pass: scheme and host
+    // in any case, with or without an authority, a query or a fragment (which
+    // are not part of the path).
+    let scheme = [
+        "file://",
+        "FILE://",
+        "file://localhost",
+        "File://LocalHost",
+        "file:",
+    ];
+    let tail = ["", "?fuzz=1", "#resources", "?a=b#c"];
+    let uri = format!(
+        "{}{}{}",
+        scheme[(seed % 5) as usize],
+        dir.join("resources").display(),
+        tail[((seed / 5) % 4) as usize]
+    );
+    let uri = CString::new(uri).unwrap();
     let callbacks = fmi2CallbackFunctions {
         logger: None,
         allocateMemory: None,

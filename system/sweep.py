@@ -11,10 +11,18 @@ frequency of the full spectrum (sign = whirl direction) and its order (× runnin
 speed), the sub-synchronous share and the growth rate of the sub-synchronous
 whirl. A point whose analysed record is too short to tell 0.5× from 1× is
 flagged `too_short` and never classified; a point at 0 rpm is a valid row
-(at rest, no whirl, its contact forces the bearing loads); a failing point (e.g. a solver
-failure) is a row with its message. The onset of whirl of each parameter set is
-located by bisection between the grid speeds where the classification changes,
-so the stability map gives thresholds, not grid points.
+(at rest, no whirl, its contact forces the bearing loads). No point is lost:
+- a solver failure (the FMU's static equilibrium or a step fails) is a row
+  `error: solver: TYPE: message — FMU: its own message`;
+- any other failure raises in the worker and is retried (`RETRIES` times, by
+  Dask possibly on another worker); a point that still fails is a row
+  `error: infrastructure: …` (unpacking, loading) or `error: refused: …` (a
+  value the FMU refuses), and the command exits non-zero;
+- the onset table names the failed grid points of each parameter set
+  (`missing_rpm`), and the stability map marks them.
+The onset of whirl of each parameter set is located by bisection between the
+grid speeds where the classification changes, so the stability map gives
+thresholds, not grid points.
 
 Definitions (docs/system.md):
 - analysed record: the outputs from `settle_fraction · duration` to the end;
@@ -64,18 +72,62 @@ def fmu_payload(path):
     return os.path.basename(path), hashlib.sha256(data).hexdigest(), data
 
 
-def local_fmu(payload):
-    """Extract a shipped FMU once per worker process; returns the folder."""
-    from fmpy import extract
+# Unpacked FMUs of this process, by SHA-256 (each worker process unpacks once).
+_UNPACKED = {}
+
+
+class InfrastructureError(RuntimeError):
+    """A point that failed for a reason outside the FMU's solver (unpacking,
+    loading, the file system): raised, so that Dask retries it elsewhere."""
+
+
+class PointFailure(RuntimeError):
+    """A point the FMU refused for a reason other than its solver (a value
+    outside its declared range, a model it does not instantiate): deterministic,
+    not retried, reported as a row and by a non-zero exit."""
+
+
+def local_fmu(payload, root=None):
+    """The folder holding the shipped FMU unpacked, once per host and content
+    (the bytes checked against their SHA-256 first, once per process).
+
+    Each process unpacks into a private temporary folder beside the final one
+    (`root`, default the system temporary directory) and renames it into place
+    in one step, so no process ever reads a half-written FMU: the final folder
+    exists only complete. A process that loses the race to another removes its
+    copy and uses the winner's."""
+    import io
+    import shutil
+    import zipfile
     name, digest, data = payload
-    folder = os.path.join(tempfile.gettempdir(), f"rotor_sweep_{digest[:16]}")
+    if digest in _UNPACKED and os.path.isfile(os.path.join(_UNPACKED[digest], "modelDescription.xml")):
+        return _UNPACKED[digest]
+    if hashlib.sha256(data).hexdigest() != digest:
+        raise InfrastructureError(f"{name}: the shipped bytes do not match their SHA-256 {digest[:16]}")
+    root = root or tempfile.gettempdir()
+    folder = os.path.join(root, f"rotor_sweep_{digest[:16]}")
     marker = os.path.join(folder, ".complete")
-    if not os.path.exists(marker):
-        fmu = os.path.join(tempfile.gettempdir(), f"rotor_sweep_{digest[:16]}_{name}")
-        with open(fmu, "wb") as f:
-            f.write(data)
-        extract(fmu, unzipdir=folder)
-        open(marker, "w").close()
+    if not os.path.isfile(marker):
+        private = tempfile.mkdtemp(prefix=f"rotor_sweep_{digest[:16]}.", dir=root)
+        try:
+            with zipfile.ZipFile(io.BytesIO(data)) as z:
+                z.extractall(private)
+            open(os.path.join(private, ".complete"), "w").close()
+            if os.path.isdir(folder) and not os.path.isfile(marker):
+                # An incomplete folder left by an interrupted older unpacking: move it aside.
+                try:
+                    os.rename(folder, f"{private}.stale")
+                except OSError:
+                    pass  # another process moved it first
+                shutil.rmtree(f"{private}.stale", ignore_errors=True)
+            try:
+                os.rename(private, folder)  # atomic; fails if another process was first
+            except OSError:
+                if not os.path.isfile(marker):
+                    raise
+        finally:
+            shutil.rmtree(private, ignore_errors=True)
+    _UNPACKED[digest] = folder
     return folder
 
 
@@ -135,15 +187,36 @@ def whirl_metrics(t, x, y, f_spin):
     }
 
 
+# FMI calls whose failure is the solver's: the static equilibrium at the start
+# speed (initialization) and the time steps.
+SOLVER_CALLS = ("fmi2EnterInitializationMode", "fmi2ExitInitializationMode", "fmi2DoStep")
+# Dask retries of a point that failed for an infrastructure reason.
+RETRIES = 3
+
+
+def failure_text(e, messages):
+    """`Type: message` of an exception, with the FMU's own messages (never empty)."""
+    text = str(e) or repr(e)
+    fmu = " | ".join(messages)
+    return f"{type(e).__name__}: {text}" + (f" — FMU: {fmu}" if fmu else "")
+
+
 def simulate_point(payload, rpm, overrides, duration, output_interval, settle_fraction=0.5):
-    """One sweep point; returns a flat dict and never raises."""
+    """One sweep point as a flat dict. A solver failure (the FMU's static
+    equilibrium or a step failing) is a row with status `error: solver: …`;
+    a value or model the FMU refuses raises `PointFailure`; anything else
+    (unpacking, loading, the file system) raises `InfrastructureError`, which
+    Dask retries."""
     from fmpy import read_model_description, simulate_fmu
+    from fmpy.fmi1 import FMICallException
     row = {"rpm": rpm, **{column_name(k): v for k, v in overrides.items()}, "status": "ok"}
     messages = []
 
     def log(*args):
-        text = args[-1]
-        messages.append(text.decode(errors="replace") if isinstance(text, bytes) else str(text))
+        status, text = args[-3], args[-1]
+        text = text.decode(errors="replace") if isinstance(text, bytes) else str(text)
+        if status not in (0, 1):  # the FMU's discards and errors explain a failure
+            messages.append(text)
 
     f_spin = rpm / 60.0
     record = (1.0 - settle_fraction) * duration
@@ -152,42 +225,64 @@ def simulate_point(payload, rpm, overrides, duration, output_interval, settle_fr
     try:
         folder = local_fmu(payload)
         md = read_model_description(folder)
-        bearings = sorted({v.name.split(".")[1] for v in md.modelVariables
-                           if v.name.startswith("bearings.") and v.name.endswith(".x")})
-        outputs = [f"bearings.{b}.{q}" for b in bearings for q in ("x", "y", "contact_force")]
-        start = {"shaft.speed": rpm * np.pi / 30.0}
-        for key, value in overrides.items():
-            for name in key.split(","):
-                start[name] = value
+    except InfrastructureError:
+        raise
+    except Exception as e:
+        raise InfrastructureError(f"{payload[0]} at {rpm} rpm: {failure_text(e, [])}") from e
+    bearings = sorted({v.name.split(".")[1] for v in md.modelVariables
+                       if v.name.startswith("bearings.") and v.name.endswith(".x")})
+    outputs = [f"bearings.{b}.{q}" for b in bearings for q in ("x", "y", "contact_force")]
+    start = {"shaft.speed": rpm * np.pi / 30.0}
+    for key, value in overrides.items():
+        for name in key.split(","):
+            start[name] = value
+    try:
         res = simulate_fmu(folder, stop_time=duration, output_interval=output_interval, start_values=start,
                            output=outputs, logger=log)
-        t = res["time"]
-        keep = t >= settle_fraction * duration - 1e-12
-        whirls = False
-        for b in bearings:
-            x, y = res[f"bearings.{b}.x"], res[f"bearings.{b}.y"]
-            row[f"{b}.peak_radius_m"] = float(np.max(np.hypot(x[keep] - x[keep].mean(), y[keep] - y[keep].mean())))
-            row[f"{b}.peak_contact_force_N"] = float(np.max(res[f"bearings.{b}.contact_force"][keep]))
-            if rpm == 0.0 or revolutions < MIN_REVOLUTIONS:
-                continue
-            m = whirl_metrics(t[keep], x[keep], y[keep], f_spin)
-            for q in ("dominant_hz", "dominant_order", "subsync_share", "growth_per_s", "whirl_content"):
-                row[f"{b}.{q}"] = m[q]
-            whirls |= m["whirl_content"] >= WHIRL_CONTENT and (
-                m["growth_per_s"] > 0 or m["subsync_share"] >= SATURATED_SHARE)
-            row["spectrum_hz"] = m["spectrum_hz"].tolist()
-            row["spectrum"] = m["spectrum"].tolist()
-        if rpm == 0.0:
-            row["whirl"] = False  # at standstill nothing whirls: the journals rest on their bearings
-        elif revolutions < MIN_REVOLUTIONS:
-            row["status"] = (f"too_short: {revolutions:.1f} revolutions analysed, at least {MIN_REVOLUTIONS} "
-                             f"needed (duration ≥ {MIN_REVOLUTIONS / f_spin / (1 - settle_fraction):.3g} s)")
-        else:
-            row["whirl"] = bool(whirls)
-    except Exception as e:  # a failed point is data, not the end of the sweep
-        cause = messages[0] if messages else ""
-        row["status"] = f"error: {cause} ({e})".replace("\n", " ")[:400]
+    except FMICallException as e:
+        if e.function not in SOLVER_CALLS:
+            raise PointFailure(f"{rpm} rpm, {overrides}: {failure_text(e, messages)}") from e
+        row["status"] = f"error: solver: {failure_text(e, messages)}".replace("\n", " ")[:600]
+        return row
+    except Exception as e:
+        if messages:  # the FMU said why (e.g. it refused the model at instantiation)
+            raise PointFailure(f"{rpm} rpm, {overrides}: {failure_text(e, messages)}") from e
+        raise InfrastructureError(f"{payload[0]} at {rpm} rpm: {failure_text(e, messages)}") from e
+    t = res["time"]
+    keep = t >= settle_fraction * duration - 1e-12
+    whirls = False
+    for b in bearings:
+        x, y = res[f"bearings.{b}.x"], res[f"bearings.{b}.y"]
+        row[f"{b}.peak_radius_m"] = float(np.max(np.hypot(x[keep] - x[keep].mean(), y[keep] - y[keep].mean())))
+        row[f"{b}.peak_contact_force_N"] = float(np.max(res[f"bearings.{b}.contact_force"][keep]))
+        if rpm == 0.0 or revolutions < MIN_REVOLUTIONS:
+            continue
+        m = whirl_metrics(t[keep], x[keep], y[keep], f_spin)
+        for q in ("dominant_hz", "dominant_order", "subsync_share", "growth_per_s", "whirl_content"):
+            row[f"{b}.{q}"] = m[q]
+        whirls |= m["whirl_content"] >= WHIRL_CONTENT and (
+            m["growth_per_s"] > 0 or m["subsync_share"] >= SATURATED_SHARE)
+        row["spectrum_hz"] = m["spectrum_hz"].tolist()
+        row["spectrum"] = m["spectrum"].tolist()
+    if rpm == 0.0:
+        row["whirl"] = False  # at standstill nothing whirls: the journals rest on their bearings
+    elif revolutions < MIN_REVOLUTIONS:
+        row["status"] = (f"too_short: {revolutions:.1f} revolutions analysed, at least {MIN_REVOLUTIONS} "
+                         f"needed (duration ≥ {MIN_REVOLUTIONS / f_spin / (1 - settle_fraction):.3g} s)")
+    else:
+        row["whirl"] = bool(whirls)
     return row
+
+
+def failed_row(rpm, overrides, kind, e):
+    """The row of a point that failed outside the solver (after its retries)."""
+    return {"rpm": rpm, **{column_name(k): v for k, v in overrides.items()},
+            "status": f"error: {kind}: {failure_text(e, [])}".replace("\n", " ")[:600]}
+
+
+def failed_outside_solver(row):
+    """Whether a row is a point lost for a reason other than the FMU's solver."""
+    return row["status"].startswith("error:") and not row["status"].startswith("error: solver:")
 
 
 def grid(rpms, params):
@@ -216,24 +311,47 @@ class Progress:
 
 def run_points(payload, points, duration, output_interval, client=None, what="sweep"):
     """Simulate (rpm, overrides) points, serially or on a Dask client, in order
-    (progress on stderr when `what` names the job)."""
+    (progress on stderr when `what` names the job). A point that raises is
+    retried (`RETRIES` times; on Dask by the scheduler, possibly on another
+    worker); one that still fails is a row `error: infrastructure: …` or
+    `error: refused: …`, never dropped."""
     progress = Progress(len(points), what) if points and what else (lambda done: None)
+
+    def lost(rpm, ov, e):
+        # By name: on Dask the exception class comes back through pickling.
+        kind = "refused" if type(e).__name__ == "PointFailure" else "infrastructure"
+        return failed_row(rpm, ov, kind, e)
+
     if client is None:
         rows = []
         for i, (rpm, ov) in enumerate(points, start=1):
-            rows.append(simulate_point(payload, rpm, ov, duration, output_interval))
+            for attempt in range(RETRIES + 1):
+                try:
+                    rows.append(simulate_point(payload, rpm, ov, duration, output_interval))
+                    break
+                except InfrastructureError as e:
+                    if attempt == RETRIES:
+                        rows.append(lost(rpm, ov, e))
+                except PointFailure as e:
+                    rows.append(lost(rpm, ov, e))
+                    break
             progress(i)
         return rows
     from dask.distributed import as_completed
     # A fresh key per call: re-scattering the same bytes under their content hash
     # can race with the release of the previous call's copy.
     shipped = client.scatter(payload, broadcast=True, hash=False)
-    futures = [client.submit(simulate_point, shipped, rpm, ov, duration, output_interval, pure=False)
+    futures = [client.submit(simulate_point, shipped, rpm, ov, duration, output_interval, pure=False,
+                             retries=RETRIES)
                for rpm, ov in points]
     index = {f.key: i for i, f in enumerate(futures)}
     rows = [None] * len(futures)
     for done, future in enumerate(as_completed(futures), start=1):
-        rows[index[future.key]] = future.result()
+        i = index[future.key]
+        try:
+            rows[i] = future.result()
+        except Exception as e:  # retries exhausted: the point is reported, not dropped
+            rows[i] = lost(*points[i], e)
         progress(done)
     return rows
 
@@ -262,6 +380,10 @@ def find_onsets(fmu, rows, params, duration, output_interval, refine, client=Non
         rs = sorted(rs, key=lambda r: r["rpm"])
         entry = dict(zip(keys, values))
         judged = [r for r in rs if r["status"] == "ok"]
+        # Grid points that failed are named in the table: an onset next to one
+        # is only as good as the points around it.
+        missing = [r["rpm"] for r in rs if r["status"].startswith("error")]
+        entry["missing_rpm"] = " ".join(f"{x:g}" for x in missing)
         first = next((i for i, r in enumerate(judged) if r["whirl"]), None)
         if first is None:
             entry.update(onset_rpm=float("nan"), bracket_rpm=float("nan"),
@@ -272,6 +394,13 @@ def find_onsets(fmu, rows, params, duration, output_interval, refine, client=Non
         else:
             brackets[values] = [judged[first - 1]["rpm"], judged[first]["rpm"]]
             entry["note"] = "refined"
+        if missing:
+            # Between the last stable and the first whirling speed the bisection
+            # judges anew; a failed point below that bracket may hide the onset.
+            lo = judged[max(first - 1, 0)]["rpm"] if first is not None else None
+            outside = first is None or any(x < lo for x in missing)
+            entry["note"] += (f"; {len(missing)} grid point(s) failed ({entry['missing_rpm']} rpm)"
+                              + (": the onset may lie there" if outside else ""))
         onsets.append(entry)
     overrides = {values: dict(zip(params, values)) for values in brackets}
     refinement = []
@@ -296,9 +425,9 @@ def find_onsets(fmu, rows, params, duration, output_interval, refine, client=Non
         if lo_hi is None:
             # a refinement point failed: report the last bracket from the table
             rs = [r for r in refinement if tuple(r[k] for k in keys) == values and r["status"] == "ok"]
-            if entry["note"] == "refined" and rs:
+            if entry["note"].startswith("refined") and rs:
                 stable = max((r["rpm"] for r in rs if not r["whirl"]), default=float("nan"))
-                entry["note"] = "refinement stopped by a failed point"
+                entry["note"] = entry["note"].replace("refined", "refinement stopped by a failed point", 1)
                 entry["onset_rpm"], entry["bracket_rpm"] = stable, float("nan")
             continue
         lo, hi = lo_hi
@@ -390,16 +519,24 @@ def plot(rows, prefix, params, onsets, fmu_name):
         ys = [o["onset_rpm"] for o in found]
         es = [o["bracket_rpm"] if np.isfinite(o["bracket_rpm"]) else 0.0 for o in found]
         if found:
-            ax.errorbar(xs, ys, yerr=es, fmt="o-", capsize=4)
+            ax.errorbar(xs, ys, yerr=es, fmt="o-", capsize=4, label="onset of whirl")
+        # Grid points that failed, where they would have been judged.
+        lost = [(r[first], r["rpm"]) for r in rows if r["status"].startswith("error") and not r.get("refinement")]
+        if lost:
+            ax.plot(*zip(*lost), "rx", ms=9, mew=2, label=f"grid point failed ({len(lost)}, see the table)")
         # Sets without an onset are named on the map, never left as blank axes.
         text = missing_onsets(onsets, first)
+        if found or lost:
+            # Clear of the words on the sets without an onset (top left).
+            ax.legend(fontsize=8, loc="lower right" if text else "best")
         if text:
             where = (0.5, 0.5) if not found else (0.02, 0.98)
             ax.text(*where, text, transform=ax.transAxes, ha="center" if not found else "left",
                     va="center" if not found else "top", fontsize=9)
             if not found:
                 ax.set_xlim(min(o[first] for o in onsets) * 0.9, max(o[first] for o in onsets) * 1.1)
-                ax.set_ylim(0, 1)
+                if not lost:
+                    ax.set_ylim(0, 1)
         ax.set_xlabel(first)
         ax.set_ylabel("onset of whirl (rpm), bisection bracket as error bar")
         ax.set_title(f"{fmu_name}: stability map")
@@ -466,13 +603,20 @@ def main(argv=None):
         write_table(onsets, a.out + "_onsets.csv")
     plot(rows, a.out, params, onsets, os.path.basename(fmu))
     failed = sum(r["status"].startswith("error") for r in rows)
+    lost = [r for r in rows + refinement if failed_outside_solver(r)]
     short = sum(r["status"].startswith("too_short") for r in rows)
     for o in onsets:
         where = f"{o['onset_rpm']:.0f} ± {o['bracket_rpm']:.0f} rpm" if np.isfinite(o["onset_rpm"]) else o["note"]
+        missing = f" (grid points failed: {o['missing_rpm']} rpm)" if o["missing_rpm"] else ""
         print("onset of whirl " + ", ".join(f"{k}={o[k]:g}" for k in o if k not in
-                                            ("onset_rpm", "bracket_rpm", "note")) + f": {where}")
+                                            ("onset_rpm", "bracket_rpm", "note", "missing_rpm"))
+              + f": {where}{missing}")
     print(f"sweep: {len(rows)} points ({failed} failed, {short} too short to classify) → {a.out}.csv, "
           f"{a.out}_*.png")
+    if lost:
+        for r in lost:
+            print(f"sweep: {r['rpm']:g} rpm failed outside the solver: {r['status']}", file=sys.stderr)
+        sys.exit(f"sweep: {len(lost)} point(s) failed for a reason other than the solver (see {a.out}.csv)")
 
 
 if __name__ == "__main__":

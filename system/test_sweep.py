@@ -4,7 +4,13 @@ known answer:
   decaying 0.45× whirl with known rates, a saturated half-speed whirl;
 - a 2-worker Dask LocalCluster gives exactly the numbers of the serial runs,
   with the FMU shipped from the client (its file is deleted before the run);
-- a failing point is a row of the table, not the end of the sweep;
+- the cluster sweep run first, from an empty temporary directory, on a fresh
+  cluster of several workers that all unpack the FMU at once, gives every
+  point, several times over (the unpacking race lost 13 of 585 points);
+- a solver failure is a row with the exception type and the FMU's message; a
+  point that fails outside the solver (a refused value, an FMU that will not
+  unpack) is a row too, and the command exits non-zero; the onset table and
+  the stability map name the failed grid points;
 - a run too short to tell 0.5× from 1× is flagged and never classified;
 - the Jeffcott rotor's response at 6000 rpm is 1.00× and at 10000 rpm a 0.50×
   whirl;
@@ -82,12 +88,89 @@ def cluster_equals_serial_and_failures_are_rows():
     good = [r for r in parallel if r["status"] == "ok"]
     check(len(bad) == 2 and all(r["solver.tolerance"] == 1e-14 for r in bad),
           f"the 1e-14 tolerance points fail and are reported: {[(r['rpm'], r['status'][:60]) for r in parallel]}")
+    # The row says what failed: the exception type, the FMI call and the FMU's own message.
+    check(all(r["status"].startswith("error: solver: FMICallException: fmi2ExitInitializationMode")
+              and "— FMU: initialization of jeffcott: static equilibrium: Newton stalled" in r["status"]
+              for r in bad), f"solver failures carry type and message: {bad[0]['status'][:200]}")
     check(len(good) == 2 and all(r["solver.tolerance"] == 1e-8 for r in good), "the normal points succeed")
     at = {r["rpm"]: r for r in good}
     order6 = at[6000.0]["right.dominant_order"]
     order10 = at[10000.0]["right.dominant_order"]
     check(abs(order6 - 1.0) <= 0.01 and not at[6000.0]["whirl"], f"6000 rpm: 1× response, order {order6:.4f}, stable")
     check(abs(order10 - 0.5) <= 0.01 and at[10000.0]["whirl"], f"10000 rpm: half-speed whirl, order {order10:.4f}")
+
+
+def cluster_first_from_an_empty_temporary_directory():
+    """Workers that start together all unpack the shipped FMU at once: on a
+    fresh cluster and an empty temporary directory, with nothing unpacked
+    before, every point must come back (issue 22: 9 of 15 runs lost 1–3
+    points, "File is not a zip file", "Truncated file header", "()")."""
+    rpms = [6000.0, 7000.0, 8000.0, 9000.0]
+    payload = sweep.fmu_payload(FMU)
+    runs, lost = 8, []
+    saved = os.environ.get("TMPDIR")
+    try:
+        for run in range(runs):
+            with tempfile.TemporaryDirectory() as tmp:
+                os.environ["TMPDIR"] = tmp  # the workers' temporary directory
+                with LocalCluster(n_workers=4, threads_per_worker=1, processes=True) as cluster, \
+                        Client(cluster) as client:
+                    rows = sweep.run_points(payload, list(sweep.grid(rpms, {})), 0.05, 5e-4, client, what=None)
+                lost += [(run, r["rpm"], r["status"][:120]) for r in rows if r["status"].startswith("error")]
+                leftovers = [f for f in os.listdir(tmp) if f.startswith("rotor_sweep_") and "." in f]
+                check(not leftovers, f"run {run + 1}: no private unpacking folder left behind: {leftovers}")
+    finally:
+        if saved is None:
+            os.environ.pop("TMPDIR", None)
+        else:
+            os.environ["TMPDIR"] = saved
+    check(not lost, f"{runs} fresh 4-worker clusters from empty temporary directories: every point "
+                    f"({runs * len(rpms)}), lost {lost}")
+
+
+def failures_outside_the_solver_are_reported():
+    """A value the FMU refuses and an FMU that cannot be unpacked are rows
+    (after the retries), never dropped; the command exits non-zero."""
+    name, digest, data = sweep.fmu_payload(FMU)
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True) as cluster, Client(cluster) as client:
+        broken = sweep.run_points((name, "0" * 64, data), [(6000.0, {})], 0.5, 5e-4, client, what=None)
+        refused = sweep.run_points((name, digest, data), [(6000.0, {"solver.time_step": 2.0})], 0.5, 5e-4, client,
+                                   what=None)
+    check(broken[0]["status"].startswith("error: infrastructure: InfrastructureError: ")
+          and sweep.failed_outside_solver(broken[0]),
+          f"an FMU that cannot be unpacked is a row after {sweep.RETRIES} retries: {broken[0]['status'][:120]}")
+    check(refused[0]["status"].startswith("error: refused: PointFailure: ")
+          and "solver.time_step = 2: above the declared maximum 1" in refused[0]["status"],
+          f"a refused value is a row with the FMU's message: {refused[0]['status'][:160]}")
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "s")
+        run = subprocess.run([sys.executable, os.path.join(root, "system", "sweep.py"), "--fmu", FMU,
+                              "--rpm", "6000:7000:2", "--param", "solver.time_step=1e-4,2.0", "--duration", "0.5",
+                              "--refine", "0", "--serial", "--out", out], capture_output=True, text=True)
+        table = open(out + ".csv").read()
+    check(run.returncode != 0 and "2 point(s) failed for a reason other than the solver" in run.stderr
+          and table.count("error: refused") == 2,
+          f"exit {run.returncode} with the refused points in the table: {run.stderr.strip()[-160:]}")
+
+
+def missing_grid_points_are_marked():
+    """The onset table names the grid points that failed; an onset next to a
+    failed point below it is said to be uncertain."""
+    params = {"p": [1.0]}
+    row = lambda rpm, whirl: {"rpm": rpm, "p": 1.0, "status": "ok", "whirl": whirl}
+    lost = {"rpm": 4000.0, "p": 1.0, "status": "error: infrastructure: OSError: disk full"}
+    onsets, _ = sweep.find_onsets(FMU, [lost, row(5000.0, True), row(6000.0, True)], params, 0.5, 5e-4, 0)
+    o = onsets[0]
+    check(o["missing_rpm"] == "4000" and "whirl already at the lowest judged speed 5000 rpm" in o["note"]
+          and "1 grid point(s) failed (4000 rpm): the onset may lie there" in o["note"],
+          f"a failed lowest grid point is named: {o}")
+    onsets, _ = sweep.find_onsets(FMU, [row(4000.0, False), lost | {"rpm": 5000.0}, row(6000.0, True)], params,
+                                  0.5, 5e-4, 0)
+    o = onsets[0]
+    check(o["missing_rpm"] == "5000" and o["note"].startswith("refined; 1 grid point(s) failed (5000 rpm)")
+          and "may lie" not in o["note"], f"a failed point inside the bisection bracket is named: {o}")
+    onsets, _ = sweep.find_onsets(FMU, [row(4000.0, False), row(6000.0, True)], params, 0.5, 5e-4, 0)
+    check(onsets[0]["missing_rpm"] == "" and onsets[0]["note"] == "refined", f"no point missing: {onsets[0]}")
 
 
 def standstill_is_a_valid_row():
@@ -176,7 +259,10 @@ def empty_stability_map_says_why():
 def main():
     empty_stability_map_says_why()
     synthetic()
+    cluster_first_from_an_empty_temporary_directory()
     cluster_equals_serial_and_failures_are_rows()
+    failures_outside_the_solver_are_reported()
+    missing_grid_points_are_marked()
     standstill_is_a_valid_row()
     short_runs_are_flagged()
     onsets_match_the_linear_thresholds()

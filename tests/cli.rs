@@ -778,3 +778,92 @@ fn simulate_says_which_rotor_runs_and_reduces_on_request() {
     assert!(stderr.contains("full rotor: 28 DOFs"), "{stderr}");
     assert_eq!(forced, full);
 }
+
+/// Issue 22: a size no machine has (a disk 1e300 m wide) stops every command
+/// with the file, line, field, value and range, and a non-zero exit; none
+/// prints a NaN (`rotor static` printed a table of NaN and exited 0).
+#[test]
+fn absurd_sizes_stop_every_command() {
+    let dir = out_dir("absurd");
+    let path = dir.join("wide.toml");
+    let text = std::fs::read_to_string(models().join("jeffcott.toml")).unwrap();
+    let text = format!(
+        "{text}\n[[disks]]\nname = \"ring\"\nnode = 3\nmaterial = \"steel\"\nouter_diameter = 0.3\nwidth = 1e300\n"
+    );
+    let line = text.lines().position(|l| l == "width = 1e300").unwrap() + 1;
+    std::fs::write(&path, text).unwrap();
+    let model = path.to_str().unwrap();
+    let file = |name: &str| dir.join(name).to_str().unwrap().to_string();
+    let (png, csv, html, stage) = (file("x.png"), file("x.csv"), file("x.html"), file("stage"));
+    let commands: [&[&str]; 13] = [
+        &["info", model],
+        &["draw", model, "--png", &png],
+        &["static", model],
+        &["modes", model, "--rpm", "3000"],
+        &["campbell", model, "--steps", "2"],
+        &["coefficients", model, "--points", "3"],
+        &["simulate", model, "--rpm", "3000", "--duration", "0.01"],
+        &["unbalance", model, "--points", "3"],
+        &["operating-point", model, "--rpm", "3000", "--csv", &csv],
+        &["ucs", model, "--points", "3"],
+        &["stability", model, "--rpm", "3000", "--points", "3"],
+        &["report", model, "--rpm", "3000", "--out", &html],
+        &["fmu-stage", model, &stage],
+    ];
+    let expected = format!("{model}:{line}: disks[1].width = 1e300: must lie in [1e-6, 1000] m");
+    for args in commands {
+        let out = rotor().args(args).output().unwrap();
+        let (stdout, stderr) = (
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr),
+        );
+        assert!(!out.status.success(), "{args:?} exited 0: {stdout}");
+        assert!(stderr.contains(&expected), "{args:?}: {stderr}");
+        assert!(!stdout.to_lowercase().contains("nan"), "{args:?}: {stdout}");
+    }
+}
+
+/// Issue 22: a reduced run says how far it is from the full rotor at its top
+/// speed, and warns when the speed leaves the validated range (a tenth of
+/// the highest kept mode). The hydro unit on one mode (22.2 Hz) at 2.4 times
+/// that mode ran silently, 210 % off.
+#[test]
+fn simulate_on_a_reduced_rotor_estimates_its_error_and_warns_outside_its_range() {
+    let dir = out_dir("reduced_range");
+    let hydro = models().join("hydro_unit.toml");
+    let run = |rpm: &str, modes: &str| {
+        let out = rotor()
+            .args(["simulate", hydro.to_str().unwrap(), "--rpm", rpm])
+            .args([
+                "--duration",
+                "0.05",
+                "--step",
+                "1e-3",
+                "--reduced-modes",
+                modes,
+            ])
+            .args(["--csv", dir.join("x.csv").to_str().unwrap()])
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        String::from_utf8_lossy(&out.stderr).to_string()
+    };
+    let stderr = run("150", "10");
+    assert!(
+        stderr.contains("reduced rotor at the top speed 150 rpm: at 2.5 Hz its response at the kept nodes differs from the full rotor's by")
+            && !stderr.contains("warning"),
+        "{stderr}"
+    );
+    let stderr = run("3197", "1");
+    assert!(
+        stderr.contains("warning: hydro_unit: top speed 3197 rpm: the running speed 3197 rpm (53.3 Hz) is above the 2.2 Hz (133 rpm) the reduced rotor is validated for"),
+        "{stderr}"
+    );
+    let estimate: f64 = stderr
+        .split("differs from the full rotor's by ")
+        .nth(1)
+        .and_then(|s| s.split_whitespace().next())
+        .and_then(|s| s.parse().ok())
+        .unwrap();
+    assert!(estimate > 0.1, "{stderr}");
+}

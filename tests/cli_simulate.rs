@@ -281,3 +281,63 @@ fn a_failed_run_keeps_its_rows() {
     );
     assert!(stderr.contains("did not converge"), "{stderr}");
 }
+
+/// A reduced run that fails still warns about the motion that left the range
+/// the reduced rotor is validated for (the watch runs in the same progress
+/// callback that keeps the rows): the damped classic rotor on 4 modes (valid
+/// up to 11.1 Hz) with a stiff seal rub chatters at the rub (RMS frequency
+/// above 1 kHz) while spinning at 334 rpm, then fails on the run-up to
+/// 3000 rpm; the warning comes before the error and the rows are kept.
+#[test]
+fn a_failed_reduced_run_still_warns_about_its_motion() {
+    let d = dir("simulate_reduced_failure");
+    let model = d.join("rub.toml");
+    let text_in = std::fs::read_to_string(root().join("models/classic_disk_rotor_damped.toml"))
+        .unwrap()
+        .replace("magnitude = 0.001 ", "magnitude = 0.1 ");
+    assert!(text_in.contains("magnitude = 0.1 "));
+    std::fs::write(
+        &model,
+        format!(
+            "{text_in}\n[[rubs]]\nname = \"seal\"\nnode = 4\ngap = 1e-4\ncontact_stiffness = 1e12\n"
+        ),
+    )
+    .unwrap();
+    let speeds = d.join("speeds.csv");
+    std::fs::write(
+        &speeds,
+        "time_s,speed_rpm\n0,334\n0.45,334\n0.6,3000\n1,3000\n",
+    )
+    .unwrap();
+    let path = d.join("partial.csv");
+    let _ = std::fs::remove_file(&path);
+    let out = rotor()
+        .arg("simulate")
+        .arg(&model)
+        .arg("--speed-csv")
+        .arg(&speeds)
+        .args(["--no-gravity", "--duration", "1", "--step", "1e-3"])
+        .args(["--reduced-modes", "4", "--csv"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    let (_, stderr) = text(&out);
+    assert!(!out.status.success(), "{stderr}");
+    let warning = stderr
+        .find("the motion at the kept nodes (RMS frequency")
+        .unwrap_or_else(|| panic!("{stderr}"));
+    let failure = stderr.find("did not converge").unwrap();
+    assert!(warning < failure, "{stderr}");
+    assert!(stderr.contains("above the 11.1 Hz (668 rpm)"), "{stderr}");
+    let (_, rows) = csv(&path);
+    let reached = rows.last().unwrap()[0];
+    assert!(reached > 0.45 && reached < 1.0, "{reached}");
+    assert!(
+        stderr.contains(&format!(
+            "(failed after t = {} s of 1 s; the {} rows",
+            rotor_bearing::report::text::short(reached),
+            rows.len()
+        )),
+        "{stderr}"
+    );
+}

@@ -159,3 +159,99 @@ fn restored_states_are_validated() {
     assert_eq!(fmu.last_successful_time(), Ok(0.01));
     assert_eq!(fmu.do_step(0.01, 0.01), Status::Ok);
 }
+
+/// Issue 22: a communication step too short to advance the time by what the
+/// integrator resolves is refused at once with fmi2Error (it was fmi2Discard
+/// "non-finite value" below 1e-154 s, with h printed in hundreds of digits,
+/// and steps of 1e-10 to 1e-13 s returned fmi2OK and silently corrupted the
+/// orbit). A step of the shortest span left is harmless.
+#[test]
+fn steps_too_short_to_advance_time_are_refused_upfront() {
+    let m = model("jeffcott");
+    let start = |t0: f64| {
+        let mut fmu = Instance::new("short", m.clone()).unwrap();
+        assert_eq!(
+            fmu.set(vr(&m, "shaft.speed"), Kind::Real, 314.0),
+            Status::Ok
+        );
+        assert_eq!(fmu.setup_experiment(t0, None), Status::Ok);
+        assert_eq!(fmu.enter_initialization_mode(), Status::Ok);
+        assert_eq!(fmu.exit_initialization_mode(), Status::Ok);
+        fmu
+    };
+    for t0 in [0.0, 0.01, 1e9] {
+        for h in [
+            1e-300, 1e-200, 1e-154, 1e-100, 1e-20, 1e-13, 1e-11, 1e-9, 9.9e-9,
+        ] {
+            let mut fmu = start(t0);
+            let begun = Instant::now();
+            assert_eq!(fmu.do_step(t0, h), Status::Error, "t = {t0} s, h = {h:e} s");
+            assert!(
+                begun.elapsed() < Duration::from_millis(200),
+                "refused before stepping"
+            );
+            let text = fmu.drain_messages().pop().unwrap().2;
+            assert!(
+                text.contains(&format!("communication step {h:e} s from")),
+                "{text}"
+            );
+            let why = if t0 + h == t0 {
+                "does not advance the time"
+            } else {
+                "shorter than the 1e-8 s the integrator resolves"
+            };
+            assert!(text.contains(why) && text.len() < 240, "{text}");
+            assert_eq!(fmu.phase(), rotor_bearing::fmi2::instance::Phase::Error);
+        }
+    }
+    // At 1e9 s the time resolves 1.2e-7 s: a 1e-6 s step advances by eight of them.
+    let mut fmu = start(1e9);
+    assert_eq!(fmu.do_step(1e9, 1e-6), Status::Ok);
+    // The shortest step allowed leaves the orbit where it would have been.
+    let x = vr(&m, "bearings.left.x");
+    let orbit = |tiny: f64| {
+        let mut fmu = start(0.0);
+        let mut t = 0.0;
+        for k in 0..30 {
+            if k == 10 && tiny > 0.0 {
+                assert_eq!(fmu.do_step(t, tiny), Status::Ok);
+                t += tiny;
+            }
+            assert_eq!(fmu.do_step(t, 1e-3), Status::Ok);
+            t += 1e-3;
+        }
+        fmu.get(x, Kind::Real).unwrap()
+    };
+    let (plain, with_tiny) = (orbit(0.0), orbit(SolverOptions::MIN_SPAN));
+    assert!(
+        (plain - with_tiny).abs() < 1e-5 * plain.abs(),
+        "{plain:e} against {with_tiny:e}"
+    );
+}
+
+/// Messages print numbers in their short form: an absurd value is a few
+/// characters, never hundreds of digits.
+#[test]
+fn messages_print_numbers_short() {
+    let m = model("jeffcott");
+    for (name, kind, value, shown) in [
+        ("shaft.speed", Kind::Real, 1e300, "1e300"),
+        ("solver.time_step", Kind::Real, 1e-300, "1e-300"),
+        ("unbalance_ramp_time", Kind::Real, 1e200, "1e200"),
+    ] {
+        let mut fmu = Instance::new("short", m.clone()).unwrap();
+        assert_eq!(fmu.set(vr(&m, name), kind, value), Status::Error);
+        let text = fmu.drain_messages().pop().unwrap().2;
+        assert!(
+            text.contains(&format!("{name} = {shown}:")) && text.len() < 200,
+            "{text}"
+        );
+    }
+    let mut fmu = Instance::new("short", m.clone()).unwrap();
+    assert_eq!(fmu.setup_experiment(0.0, Some(-1e250)), Status::Error);
+    let text = fmu.drain_messages().pop().unwrap().2;
+    assert!(
+        text.contains("stop time -1e250") && text.len() < 200,
+        "{text}"
+    );
+}

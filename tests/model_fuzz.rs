@@ -1,9 +1,11 @@
 //! Model-file mutation fuzzer: mutants of every shipped model are loaded and
-//! assembled by `rotor info` in a child process with a timeout. A mutant may be
-//! accepted or refused, but the run fails on a panic, a crash, a hang, a refusal
-//! that does not name the file, or nonsense accepted silently: a non-finite
-//! number anywhere, a non-positive size or property where physics needs a
-//! positive one, a duplicated name.
+//! assembled by `rotor info`, and solved by `rotor static`, in child processes
+//! with a timeout. A mutant may be accepted or refused, but the run fails on a
+//! panic, a crash, a hang, a refusal that does not name the file, a NaN or
+//! infinity printed by a command that succeeds, or nonsense accepted silently:
+//! a non-finite number anywhere, a non-positive size or property where physics
+//! needs a positive one, a size or mass absurd by twenty orders of magnitude
+//! (issue 22: a diameter of 1e300 m passed), a duplicated name.
 //!
 //! `ROTOR_MODEL_FUZZ_MUTANTS` sets the mutants per model (default 100),
 //! `ROTOR_FUZZ_SEED` the first seed (default 1); each failure prints its seed
@@ -36,6 +38,21 @@ const POSITIVE: &[&str] = &[
     "pads",
 ];
 
+/// Keys of sizes and masses: a value of 1e20 or 1e-20 (in SI units) is no
+/// machine and must be refused, naming the field.
+const SIZES: &[&str] = &[
+    "length",
+    "outer_diameter",
+    "width",
+    "radius",
+    "clearance",
+    "gap",
+    "mass",
+    "polar_inertia",
+    "diametral_inertia",
+    "density",
+];
+
 /// Replacement values: nonsense, edge cases and wrong types.
 const VALUES: &[&str] = &[
     "0",
@@ -44,6 +61,10 @@ const VALUES: &[&str] = &[
     "-1e-3",
     "1e308",
     "1e-300",
+    "1e300",
+    "1e20",
+    "1e-20",
+    "1e-200",
     "nan",
     "inf",
     "-inf",
@@ -89,6 +110,9 @@ impl Mutation {
                     Some(x) if !x.is_finite() => Some(format!("{key} = {value} is not finite")),
                     Some(x) if x <= 0.0 && POSITIVE.contains(&key.as_str()) => {
                         Some(format!("{key} = {value} must be positive"))
+                    }
+                    Some(x) if !(1e-20..1e20).contains(&x) && SIZES.contains(&key.as_str()) => {
+                        Some(format!("{key} = {value} is no machine"))
                     }
                     _ => None,
                 }
@@ -207,12 +231,13 @@ fn mutate(text: &str, rng: &mut Rng) -> (String, Mutation) {
     }
 }
 
-/// Run `rotor info FILE` with a timeout: `None` on a hang, else exit code and stderr.
-fn rotor_info(file: &Path, timeout: Duration) -> Option<(Option<i32>, String)> {
+/// Run `rotor COMMAND FILE` with a timeout: `None` on a hang, else exit code
+/// and stderr, or the first line of stdout with a NaN or infinity.
+fn rotor(command: &str, file: &Path, timeout: Duration) -> Option<(Option<i32>, String)> {
     let mut child = Command::new(env!("CARGO_BIN_EXE_rotor"))
-        .arg("info")
+        .arg(command)
         .arg(file)
-        .stdout(Stdio::null())
+        .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .unwrap();
@@ -220,10 +245,15 @@ fn rotor_info(file: &Path, timeout: Duration) -> Option<(Option<i32>, String)> {
     loop {
         if child.try_wait().unwrap().is_some() {
             let out = child.wait_with_output().unwrap();
-            return Some((
-                out.status.code(),
-                String::from_utf8_lossy(&out.stderr).into_owned(),
-            ));
+            let stdout = String::from_utf8_lossy(&out.stdout);
+            let not_finite = stdout.lines().find(|l| {
+                l.split(|c: char| !c.is_ascii_alphanumeric())
+                    .any(|w| w.eq_ignore_ascii_case("nan") || w.eq_ignore_ascii_case("inf"))
+            });
+            return Some(match (out.status.code(), not_finite) {
+                (Some(0), Some(line)) => (Some(-1), format!("printed {line:?}")),
+                (code, _) => (code, String::from_utf8_lossy(&out.stderr).into_owned()),
+            });
         }
         if start.elapsed() > timeout {
             let _ = child.kill();
@@ -265,8 +295,21 @@ fn mutated_models_are_refused_cleanly_or_accepted_sensibly() {
             std::fs::write(&file, &mutant).unwrap();
             tried += 1;
             let what = format!("{} seed {seed} ({})", file.display(), mutation.describe());
-            match rotor_info(&file, Duration::from_secs(20)) {
+            let outcome = rotor("info", &file, Duration::from_secs(20));
+            // An accepted model is solved too: a success must print no NaN.
+            let outcome = match outcome {
+                // (`static` may refuse what `info` accepts, e.g. a rotor with no support.)
+                Some((Some(0), _)) => {
+                    rotor("static", &file, Duration::from_secs(20)).map(|(code, err)| match code {
+                        Some(1) => (Some(0), err),
+                        other => (other, err),
+                    })
+                }
+                other => other,
+            };
+            match outcome {
                 None => failures.push(format!("hang: {what}")),
+                Some((Some(-1), line)) => failures.push(format!("NaN printed: {what}: {line}")),
                 Some((None, err)) => failures.push(format!("killed by a signal: {what}\n{err}")),
                 Some((Some(101), err)) => failures.push(format!("panic: {what}\n{err}")),
                 Some((Some(0), _)) => {

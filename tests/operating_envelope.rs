@@ -188,7 +188,7 @@ fn ramp(
         to,
         duration: ramp,
     };
-    record(&mut sim, &profile, ramp + hold, 37.0 * step, |_| {})
+    record(&mut sim, &profile, ramp + hold, 37.0 * step, |_, _| {})
         .unwrap_or_else(|e| panic!("ramp {from} → {to} rad/s: {e}"))
 }
 
@@ -277,8 +277,14 @@ fn a_rub_continues_in_contact_with_the_orbit_at_the_contact_radius_plus_the_pene
         let speed = 3000.0 * std::f64::consts::PI / 30.0;
         sim.set_speed(speed, 0.0).unwrap();
         sim.settle_static().unwrap();
-        let records = record(&mut sim, &SpeedProfile::Constant(speed), 1.0, 1e-4, |_| {})
-            .unwrap_or_else(|e| panic!("{label}: {e}"));
+        let records = record(
+            &mut sim,
+            &SpeedProfile::Constant(speed),
+            1.0,
+            1e-4,
+            |_, _| {},
+        )
+        .unwrap_or_else(|e| panic!("{label}: {e}"));
         for (k, b) in model.bearings.iter().enumerate() {
             let BearingKind::Plain(plain) = &b.kind else {
                 continue;

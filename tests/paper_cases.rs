@@ -28,7 +28,7 @@ fn run(
     let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
     sim.set_speed(profile.at(0.0).0, 0.0).unwrap();
     sim.settle_static().unwrap();
-    record(&mut sim, profile, seconds, dt_out, |_| {}).unwrap()
+    record(&mut sim, profile, seconds, dt_out, |_, _| {}).unwrap()
 }
 
 /// Orbit `(t, x, y)` of probe `k` over the records in `[from, to)`, relative to its mean.

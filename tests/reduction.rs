@@ -1,7 +1,8 @@
 //! Reduced-order (Craig–Bampton) rotor against the full model.
 
 use rotor_bearing::model::RotorModel;
-use rotor_bearing::rotor::{DEFAULT_REDUCED_MODES, Rotor};
+use rotor_bearing::rotor::{DEFAULT_REDUCED_MODES, Rotor, VALIDITY_FACTOR};
+use rotor_bearing::solver::reduction_check::receptance_errors;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
 fn model(name: &str) -> RotorModel {
@@ -91,25 +92,15 @@ const SHIPPED: [(&str, f64, f64, [f64; 4]); 6] = [
     ),
 ];
 
-/// Acceptance of issue 17: on every shipped model, whose spin speed lies
-/// below the highest kept fixed-interface mode, the orbits (journals and
+/// Acceptance of issue 17: on every shipped model the orbits (journals and
 /// probes, from the static equilibrium on) converge to the full model's as
-/// modes are added, and are within 1 % with the documented default count.
+/// modes are added, and are within 1 % with 10 modes, whose validated range
+/// (a tenth of the highest kept mode) holds the nominal speed.
 /// Each error is docs/solver.md's, as printed there to two digits (the last,
 /// round-off-sized entry of the vertical rotor only in order of magnitude).
 #[test]
 fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
-    let shipped: Vec<String> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/models"))
-        .unwrap()
-        .map(|e| {
-            e.unwrap()
-                .path()
-                .file_stem()
-                .unwrap()
-                .to_string_lossy()
-                .into_owned()
-        })
-        .collect();
+    let shipped = shipped();
     assert_eq!(
         shipped.len(),
         SHIPPED.len(),
@@ -121,7 +112,7 @@ fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
         assert!(speed > 0.0, "{name}");
         let full = run(Rotor::new(m.clone()).unwrap(), speed, step, duration);
         let mut errors = Vec::new();
-        for modes in [1, 4, DEFAULT_REDUCED_MODES, 20] {
+        for modes in [1, 4, 10, 20] {
             let rotor = Rotor::for_transients(m.clone(), modes).unwrap();
             let r = rotor.reduction.clone().unwrap();
             let error = orbit_error(&full, &run(rotor, speed, step, duration));
@@ -129,10 +120,10 @@ fn reduced_orbits_converge_to_the_full_model_on_every_shipped_model() {
                 "{name}, {modes} modes: orbit error {error:.2e}; {}",
                 r.describe()
             );
-            if modes == DEFAULT_REDUCED_MODES {
+            if modes == 10 {
                 assert!(
-                    speed < r.highest_frequency(),
-                    "{name}: excitation above the kept modes"
+                    speed <= r.validated_frequency(),
+                    "{name}: speed outside the validated range"
                 );
                 assert!(
                     error < 0.01,
@@ -208,12 +199,202 @@ fn static_equilibrium_on_the_bearings_is_exact() {
     }
 }
 
+/// The shipped models: their file stems.
+fn shipped() -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/models"))
+        .unwrap()
+        .map(|e| {
+            e.unwrap()
+                .path()
+                .file_stem()
+                .unwrap()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect();
+    names.sort();
+    names
+}
+
+/// Issue 22: the rule that holds. The receptance between the kept nodes'
+/// translations (every force acts there and every output is read there) of
+/// the reduced rotor against the full one, bearings linearized at the static
+/// equilibrium, on every shipped model with 1 to 24 fixed-interface modes:
+/// within 1 % while the excitation stays below a tenth of the highest kept
+/// mode ([`VALIDITY_FACTOR`]), at the running speed itself and at any
+/// frequency while spinning at the nominal speed; beyond, the error grows to
+/// over 50 % at half the highest mode, where the old rule of docs/solver.md (modes
+/// above the excitation) still called the rotor valid. Prints the table of
+/// the worst errors docs/solver.md gives.
+#[test]
+fn the_validity_rule_is_the_measured_one() {
+    let ratios = [0.02, 0.05, 0.1, 0.2, 0.3, 0.5];
+    let mut worst = vec![(0.0f64, String::new()); ratios.len()];
+    for name in shipped() {
+        let m = model(&name);
+        let full = Rotor::new(m.clone()).unwrap();
+        for modes in 1..=24 {
+            let reduced = full.reduced(modes).unwrap();
+            let r = reduced.reduction.as_ref().unwrap();
+            if r.modes < modes {
+                break;
+            }
+            let top = r.highest_frequency();
+            for (k, ratio) in ratios.iter().enumerate() {
+                let w = ratio * top;
+                if w > m.max_speed {
+                    continue;
+                }
+                let synchronous = receptance_errors(&full, &reduced, w, &[w]).unwrap()[0];
+                let at_speed =
+                    receptance_errors(&full, &reduced, m.nominal_speed, &[w]).unwrap()[0];
+                let e = synchronous.max(at_speed);
+                if e > worst[k].0 {
+                    worst[k] = (e, format!("{name}, {modes} modes"));
+                }
+            }
+        }
+    }
+    println!("frequency / highest kept mode | worst receptance error (shipped models, 1–24 modes)");
+    for (r, (e, at)) in ratios.iter().zip(&worst) {
+        println!("{r} | {e:.1e} ({at})");
+    }
+    for (r, (e, at)) in ratios.iter().zip(&worst) {
+        if *r <= 1.0 / VALIDITY_FACTOR {
+            assert!(*e < 1e-2, "{e:.2e} at {r} × the highest mode ({at})");
+        }
+    }
+    assert!(worst[5].0 > 0.5, "half the highest mode: {:?}", worst[5]);
+    assert!(
+        worst[3].0 > 0.05,
+        "a fifth of the highest mode: {:?}",
+        worst[3]
+    );
+}
+
+/// The time domain agrees: the hydro unit on 4 modes (highest 70.4 Hz) run to
+/// a steady unbalance response at a tenth of the highest mode stays within
+/// 1 % of the full rotor's orbits, at 0.3× it is several per cent off, and
+/// the receptance error at the speed says so.
+#[test]
+fn transient_orbits_follow_the_rule() {
+    let m = model("hydro_unit");
+    let full = Rotor::new(m.clone()).unwrap();
+    let top = full
+        .reduced(4)
+        .unwrap()
+        .reduction
+        .unwrap()
+        .highest_frequency();
+    let steady = |rotor: Rotor, speed: f64| {
+        let opts = SolverOptions {
+            time_step: 2e-3,
+            unbalance_ramp_time: 1.0,
+            ..SolverOptions::default()
+        };
+        let mut sim = Simulator::new(rotor, opts).unwrap();
+        sim.set_speed(speed, 0.0).unwrap();
+        sim.settle_static().unwrap();
+        let end = 60.0 * std::f64::consts::TAU / speed;
+        let steps = (end / 2e-3).round() as usize;
+        let mut out: Vec<Vec<(f64, f64)>> = Vec::new();
+        for k in 1..=steps {
+            sim.advance_to(k as f64 * 2e-3).unwrap();
+            if k > steps / 2 {
+                let o = sim.outputs().unwrap();
+                let p: Vec<(f64, f64)> = o.bearings.iter().map(|b| (b.x, b.y)).collect();
+                if out.is_empty() {
+                    out = vec![Vec::new(); p.len()];
+                }
+                for (s, q) in out.iter_mut().zip(p) {
+                    s.push(q);
+                }
+            }
+        }
+        out
+    };
+    for (ratio, inside) in [(0.1, true), (0.3, false)] {
+        let w = ratio * top;
+        let reference = steady(Rotor::new(m.clone()).unwrap(), w);
+        let reduced = full.reduced(4).unwrap();
+        let estimate = receptance_errors(&full, &reduced, w, &[w]).unwrap()[0];
+        let error = orbit_error(&reference, &steady(reduced, w));
+        println!(
+            "{ratio} × the highest mode: orbit error {error:.2e}, receptance error {estimate:.2e}"
+        );
+        if inside {
+            assert!(error < 1e-2 && estimate < 1e-2, "{error:e} {estimate:e}");
+        } else {
+            assert!(error > 2e-2 && estimate > 2e-2, "{error:e} {estimate:e}");
+        }
+    }
+}
+
+/// Without `modes`, `[reduction]` keeps as many modes as the speed range
+/// needs by the rule: the smallest count (a degenerate pair kept whole)
+/// whose highest mode reaches ten times the top speed (the model's
+/// `max_speed_rpm` if stated, else `speed_rpm`); on every shipped model the
+/// orbits are then within 1 % of the full rotor's. A model with no speed
+/// keeps the fixed default.
+#[test]
+fn the_default_mode_count_follows_the_speed_range() {
+    for name in shipped() {
+        let path = format!("{}/models/{name}.toml", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(path).unwrap();
+        let m = RotorModel::from_toml(&format!("{text}\n[reduction]\n"), "r.toml").unwrap();
+        let modes = Rotor::transient_modes(&m).unwrap();
+        let full = Rotor::new(m.clone()).unwrap();
+        let f = full.fixed_interface_frequencies(modes + 1).unwrap();
+        let target = VALIDITY_FACTOR * m.nominal_speed;
+        // The first mode to reach the target, and its degenerate partners.
+        let first = f.iter().position(|&w| w >= target).unwrap();
+        let group = f[first..]
+            .iter()
+            .take_while(|&&w| w <= f[first] * (1.0 + 1e-6))
+            .count();
+        assert_eq!(modes, first + group, "{name}: {f:?} against {target}");
+        let (step, duration) = SHIPPED
+            .iter()
+            .find(|s| s.0 == name)
+            .map(|s| (s.1, s.2))
+            .unwrap();
+        let reduced = Rotor::for_transients(m.clone(), modes).unwrap();
+        let error = orbit_error(
+            &run(full, m.nominal_speed, step, duration),
+            &run(reduced, m.nominal_speed, step, duration),
+        );
+        println!("{name}: {modes} modes by the speed range, orbit error {error:.2e}");
+        assert!(error < 1e-2, "{name}: {error:.2e} with {modes} modes");
+    }
+    // A stated max_speed_rpm sets the range: more modes for a faster machine.
+    let text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/models/jeffcott.toml"))
+            .unwrap();
+    let fast = RotorModel::from_toml(
+        &format!("max_speed_rpm = 30000\n{text}\n[reduction]\n"),
+        "f.toml",
+    )
+    .unwrap();
+    let modes = Rotor::transient_modes(&fast).unwrap();
+    let f = Rotor::new(fast.clone())
+        .unwrap()
+        .fixed_interface_frequencies(modes)
+        .unwrap();
+    assert!(
+        modes > 4 && f[modes - 1] >= VALIDITY_FACTOR * fast.max_speed,
+        "{modes}: {f:?}"
+    );
+    let still = text.replace("speed_rpm = 3000", "");
+    let still = RotorModel::from_toml(&format!("{still}\n[reduction]\n"), "s.toml").unwrap();
+    assert_eq!(Rotor::transient_modes(&still), Ok(DEFAULT_REDUCED_MODES));
+}
+
 /// Journals of linear bearings stay in the matrices and off the kept nodes;
 /// their outputs come through the basis and agree with the full model's.
 #[test]
 fn linear_bearing_outputs_come_through_the_basis() {
     let m = model("classic_disk_rotor_damped");
-    let rotor = Rotor::for_transients(m.clone(), DEFAULT_REDUCED_MODES).unwrap();
+    let rotor = Rotor::for_transients(m.clone(), 10).unwrap();
     assert_eq!(rotor.kept_nodes(), vec![3]);
     let speed = m.nominal_speed;
     let full = run(Rotor::new(m).unwrap(), speed, 1e-4, 0.2);

@@ -60,7 +60,10 @@ static equilibrium under gravity at the start speed.</p>
 Craig–Bampton reduced rotor: the nodes of nonlinear bearings, rubs, probes and unbalance planes stay physical
 coordinates, the rest of the shaft follows them statically plus that many fixed-interface modes. Bearing forces act
 exactly as in the full model and static equilibria are the full model's; the orbits converge to the full model's as
-modes are added. The FMU logs which rotor runs (<code>logAll</code>).</p>
+modes are added. The FMU logs which rotor runs (<code>logAll</code>) and up to which frequency it is valid: the kept
+modes must reach ten times the highest frequency of the motion. When the running speed or the motion at the kept nodes
+leaves that range, the step returns fmi2Warning once per excursion, with the error estimate there against the full
+rotor. A state saved with another mode count is restored onto the rotor it was saved on.</p>
 <h2>Bearings</h2><ul>{bearings}</ul>
 <h2>Conventions and assumptions</h2>
 <ul>

@@ -11,11 +11,19 @@ use crate::model::RotorModel;
 pub const MODEL_FILE: &str = "model.toml";
 
 /// The folder a `file` URI names: `file:///path`, `file:/path` and
-/// `file://localhost/path`, percent-decoded (RFC 8089). Any other host or scheme,
-/// a bad escape or a path that is not UTF-8 gives an error.
+/// `file://localhost/path`, percent-decoded (RFC 8089). The scheme and the host
+/// are case-insensitive (`FILE:///path`, RFC 3986 §3.1, §3.2.2); a `?query` or
+/// `#fragment` ends the path (§3.3) and is ignored (an escaped `%3F` or `%23`
+/// stays part of it). Any other host or scheme, a bad escape or a path that is
+/// not UTF-8 gives an error.
 pub fn resource_dir(uri: &str) -> Result<PathBuf, String> {
     let not_file = || format!("fmuResourceLocation {uri:?} is not a local file URI");
-    let rest = uri.strip_prefix("file:").ok_or_else(not_file)?;
+    let scheme = uri.get(..5).ok_or_else(not_file)?;
+    if !scheme.eq_ignore_ascii_case("file:") {
+        return Err(not_file());
+    }
+    let rest = &uri[5..];
+    let rest = rest.find(['?', '#']).map_or(rest, |end| &rest[..end]);
     let path = match rest.strip_prefix("//") {
         // An authority: empty or "localhost", then the absolute path.
         Some(authority_and_path) => {
@@ -88,6 +96,13 @@ mod tests {
         assert_eq!(p("file://LOCALHOST/tmp/x%2Fy").unwrap(), "/tmp/x/y");
         assert_eq!(p("file:///tmp/%C3%A9t%C3%A9").unwrap(), "/tmp/été");
         assert_eq!(p("file:///end%41").unwrap(), "/endA");
+        // Issue 22: the scheme is case-insensitive, query and fragment are not the path.
+        assert_eq!(p("FILE:///tmp/x").unwrap(), "/tmp/x");
+        assert_eq!(p("File://LocalHost/tmp/x").unwrap(), "/tmp/x");
+        assert_eq!(p("file:///tmp/res?version=2").unwrap(), "/tmp/res");
+        assert_eq!(p("file:///tmp/res#top").unwrap(), "/tmp/res");
+        assert_eq!(p("file:///tmp/a%20b?x#y").unwrap(), "/tmp/a b");
+        assert_eq!(p("file:///tmp/what%3F%23").unwrap(), "/tmp/what?#");
     }
 
     #[test]
@@ -101,6 +116,11 @@ mod tests {
             "file:///tmp/%zz",
             "file:///tmp/%4",
             "file:///tmp/%FF",
+            "files:///tmp/x",
+            "fil",
+            "é:///tmp",
+            "file://?/tmp",
+            "file:?x",
         ] {
             assert!(resource_dir(uri).is_err(), "{uri}");
         }

@@ -11,7 +11,9 @@
 //! of all bytes before it. A state of another model, another format version, a
 //! truncated or altered buffer is refused with a message, never a panic.
 
+use crate::model::MAX_REDUCED_MODES;
 use crate::solver::SimState;
+use crate::units::Short;
 
 use super::instance::Params;
 use super::states::Phase;
@@ -119,7 +121,7 @@ const SCALARS: [Scalar; 14] = [
         "reduced_modes",
         |s| f64::from(s.params.reduced_modes),
         |s, v| {
-            let ok = v.fract() == 0.0 && (0.0..=f64::from(i32::MAX)).contains(&v);
+            let ok = v.fract() == 0.0 && (0.0..=MAX_REDUCED_MODES as f64).contains(&v);
             if ok {
                 s.params.reduced_modes = v as i32;
             }
@@ -222,27 +224,32 @@ impl Reader<'_> {
     }
 }
 
+/// The vector fields sized by the rotor's coordinates, which depend on the
+/// mode count of the reduced rotor (`solver.reduced_modes`).
+const ROTOR_VECTORS: [&str; 3] = ["u", "ud", "udd"];
+
 impl Snapshot {
     /// `Ok` if this state fits an instance whose current state is `current`:
-    /// same model fingerprint and the same length of every vector field.
-    pub fn fits(&self, current: &Snapshot) -> Result<(), String> {
+    /// the same model fingerprint, the rotor vectors of the `coordinates` the
+    /// state's own `solver.reduced_modes` builds, every other vector as long as
+    /// `current`'s.
+    pub fn fits(&self, current: &Snapshot, coordinates: usize) -> Result<(), String> {
         if self.fingerprint != current.fingerprint {
             return Err(format!(
                 "the state belongs to another model (fingerprint {:016x}, this model {:016x})",
                 self.fingerprint, current.fingerprint
             ));
         }
-        let (saved, running) = (self.params.reduced_modes, current.params.reduced_modes);
-        if saved != running {
-            return Err(format!(
-                "the state was saved with solver.reduced_modes = {saved}, this instance runs {running} (a fixed parameter: set it before restoring)"
-            ));
-        }
         for (name, get, _) in VECTORS {
-            let (n, m) = (get(self).len(), get(current).len());
+            let (n, m) = if ROTOR_VECTORS.contains(&name) {
+                (get(self).len(), coordinates)
+            } else {
+                (get(self).len(), get(current).len())
+            };
             if n != m {
                 return Err(format!(
-                    "the state belongs to another model ({name} has {n} values, this model {m})"
+                    "the state does not fit this model ({name} has {n} values, this model {m} with solver.reduced_modes = {})",
+                    self.params.reduced_modes
                 ));
             }
         }
@@ -271,8 +278,13 @@ impl Snapshot {
 
     /// The state in a byte image (`fmi2DeSerializeFMUstate`), checked against
     /// `current`, the state of the instance reading it (model fingerprint and
-    /// vector lengths).
-    pub fn from_bytes(bytes: &[u8], current: &Snapshot) -> Result<Snapshot, String> {
+    /// vector lengths); `coordinates` gives the rotor coordinates a mode count
+    /// builds on this model (`None`: that count cannot reduce it).
+    pub fn from_bytes(
+        bytes: &[u8],
+        current: &Snapshot,
+        coordinates: impl Fn(i32) -> Option<usize>,
+    ) -> Result<Snapshot, String> {
         if bytes.len() < HEADER + TRAILER || bytes[..MAGIC.len()] != MAGIC[..] {
             return Err("not a serialized state of this FMU".into());
         }
@@ -291,20 +303,33 @@ impl Snapshot {
         }
         let mut snap = current.clone();
         snap.fingerprint = r.u64()?;
-        snap.fits(current)?;
+        if snap.fingerprint != current.fingerprint {
+            return Err(format!(
+                "the state belongs to another model (fingerprint {:016x}, this model {:016x})",
+                snap.fingerprint, current.fingerprint
+            ));
+        }
         for (name, _, set) in SCALARS {
             let v = r.f64()?;
             if !set(&mut snap, v) {
-                return Err(format!("corrupt state ({name} = {v})"));
+                return Err(format!("corrupt state ({name} = {})", Short(v)));
             }
         }
-        snap.fits(current)?;
+        let modes = snap.params.reduced_modes;
+        let n = coordinates(modes).ok_or_else(|| {
+            format!("the state was saved with solver.reduced_modes = {modes}, which cannot reduce this model")
+        })?;
+        for (name, _, get_mut) in VECTORS {
+            if ROTOR_VECTORS.contains(&name) {
+                get_mut(&mut snap).resize(n, 0.0);
+            }
+        }
         for (name, _, get_mut) in VECTORS {
             let n = r.u64()?;
             let expected = get_mut(&mut snap).len();
             if n != expected as u64 {
                 return Err(format!(
-                    "the state belongs to another model ({name} has {n} values, this model {expected})"
+                    "the state does not fit this model ({name} has {n} values, this model {expected} with solver.reduced_modes = {modes})"
                 ));
             }
             for x in get_mut(&mut snap).iter_mut() {
@@ -369,15 +394,18 @@ mod tests {
         for (_, _, get_mut) in VECTORS {
             get_mut(&mut z).iter_mut().for_each(|x| *x = -1.0);
         }
-        // The mode count must match the reading instance's (tested apart).
-        z.params.reduced_modes = s.params.reduced_modes;
         z
+    }
+
+    /// The rotor coordinates of the sample's model: 8 whatever the mode count.
+    fn eight(_: i32) -> Option<usize> {
+        Some(8)
     }
 
     #[test]
     fn image_round_trips_bit_for_bit() {
         let s = sample();
-        let back = Snapshot::from_bytes(&s.to_bytes(), &zeroed(&s)).unwrap();
+        let back = Snapshot::from_bytes(&s.to_bytes(), &zeroed(&s), eight).unwrap();
         assert_eq!(back, s);
         assert_eq!(back.to_bytes(), s.to_bytes());
     }
@@ -387,13 +415,19 @@ mod tests {
         let s = sample();
         let bytes = s.to_bytes();
         for n in 0..bytes.len() {
-            assert!(Snapshot::from_bytes(&bytes[..n], &s).is_err(), "{n} bytes");
+            assert!(
+                Snapshot::from_bytes(&bytes[..n], &s, eight).is_err(),
+                "{n} bytes"
+            );
         }
         for i in 0..bytes.len() {
             for bit in 0..8 {
                 let mut b = bytes.clone();
                 b[i] ^= 1 << bit;
-                assert!(Snapshot::from_bytes(&b, &s).is_err(), "byte {i} bit {bit}");
+                assert!(
+                    Snapshot::from_bytes(&b, &s, eight).is_err(),
+                    "byte {i} bit {bit}"
+                );
             }
         }
     }
@@ -403,28 +437,56 @@ mod tests {
         let s = sample();
         let mut other = s.clone();
         other.fingerprint = fingerprint("{another}");
-        let e = Snapshot::from_bytes(&other.to_bytes(), &s).unwrap_err();
+        let e = Snapshot::from_bytes(&other.to_bytes(), &s, eight).unwrap_err();
         assert!(e.contains("another model"), "{e}");
-        assert!(other.fits(&s).is_err());
+        assert!(other.fits(&s, 8).is_err());
         let mut longer = s.clone();
         longer.sim.u.push(0.0);
-        let e = Snapshot::from_bytes(&longer.to_bytes(), &s).unwrap_err();
-        assert!(e.contains("u has 9 values, this model 8"), "{e}");
-        assert!(longer.fits(&s).is_err());
+        let e = Snapshot::from_bytes(&longer.to_bytes(), &s, eight).unwrap_err();
+        assert!(
+            e.contains("u has 9 values, this model 8 with solver.reduced_modes = 6"),
+            "{e}"
+        );
+        assert!(longer.fits(&s, 8).is_err());
+        let mut shorter_pads = s.clone();
+        shorter_pads.sim.p.pop();
+        assert!(shorter_pads.fits(&s, 8).is_err());
 
         let mut v5 = s.to_bytes();
         v5[MAGIC.len()..MAGIC.len() + 8].copy_from_slice(&5u64.to_le_bytes());
-        let e = Snapshot::from_bytes(&v5, &s).unwrap_err();
+        let e = Snapshot::from_bytes(&v5, &s, eight).unwrap_err();
         assert!(e.contains("version 5"), "{e}");
+    }
 
+    /// A state saved with another mode count is read with the rotor vectors
+    /// of the rotor that count builds, and refused where it cannot fit.
+    #[test]
+    fn states_of_other_mode_counts_are_read_at_their_size() {
+        let s = sample();
         let mut reduced = s.clone();
         reduced.params.reduced_modes = 12;
-        let e = Snapshot::from_bytes(&reduced.to_bytes(), &s).unwrap_err();
+        for v in [
+            &mut reduced.sim.u,
+            &mut reduced.sim.ud,
+            &mut reduced.sim.udd,
+        ] {
+            v.extend([0.5, 0.25]);
+        }
+        let ten = |m: i32| Some(if m == 12 { 10 } else { 8 });
+        let back = Snapshot::from_bytes(&reduced.to_bytes(), &s, ten).unwrap();
+        assert_eq!(back, reduced);
+        assert!(reduced.fits(&s, 10).is_ok() && reduced.fits(&s, 8).is_err());
+        let e = Snapshot::from_bytes(&reduced.to_bytes(), &s, eight).unwrap_err();
         assert!(
-            e.contains("reduced_modes = 12, this instance runs 6"),
+            e.contains("u has 10 values, this model 8 with solver.reduced_modes = 12"),
             "{e}"
         );
-        assert!(reduced.fits(&s).is_err());
+        let e = Snapshot::from_bytes(&reduced.to_bytes(), &s, |_| None).unwrap_err();
+        assert!(e.contains("reduced_modes = 12, which cannot reduce"), "{e}");
+        let mut too_many = s.clone();
+        too_many.params.reduced_modes = MAX_REDUCED_MODES as i32 + 1;
+        let e = Snapshot::from_bytes(&too_many.to_bytes(), &s, eight).unwrap_err();
+        assert!(e.contains("corrupt state (reduced_modes = 1001)"), "{e}");
     }
 
     #[test]
@@ -437,7 +499,7 @@ mod tests {
         let body = bytes.len() - TRAILER;
         let sum = fnv1a(&bytes[..body]);
         bytes[body..].copy_from_slice(&sum.to_le_bytes());
-        let e = Snapshot::from_bytes(&bytes, &s).unwrap_err();
+        let e = Snapshot::from_bytes(&bytes, &s, eight).unwrap_err();
         assert!(e.contains("phase = 9"), "{e}");
     }
 }

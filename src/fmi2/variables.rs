@@ -6,7 +6,7 @@
 //! (packing) and inside the FMU (from the model file in `resources/`), so the
 //! two can never drift apart; a GUID hashed from the description ties them.
 
-use crate::model::RotorModel;
+use crate::model::{DEFAULT_REDUCED_MODES, RotorModel};
 use crate::solver::SolverOptions;
 use crate::solver::time_step::default_time_step;
 
@@ -123,8 +123,12 @@ pub struct Variable {
     pub max: Option<f64>,
 }
 
-/// Allowed oil viscosities (Pa·s): positive, from a gas film to a heavy grease.
-pub const VISCOSITY_RANGE: (f64, f64) = (1e-6, 1e3);
+/// Allowed oil viscosities (Pa·s): positive, from a gas film to a heavy grease
+/// (the model file's range, [`crate::model::limits::VISCOSITY`]).
+pub const VISCOSITY_RANGE: (f64, f64) = (
+    crate::model::limits::VISCOSITY.min,
+    crate::model::limits::VISCOSITY.max,
+);
 
 /// The declared `[min, max]` of a settable variable: the solver's option
 /// ranges, the model's largest speed, physical signs. The FMU checks every set
@@ -508,7 +512,7 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
         Fixed,
         None,
         None,
-        Some(model.reduced_modes.unwrap_or(0) as f64),
+        Some(crate::rotor::Rotor::transient_modes(model).unwrap_or(DEFAULT_REDUCED_MODES) as f64),
         Binding::ReducedModes,
     );
     out

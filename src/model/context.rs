@@ -6,7 +6,9 @@ use std::collections::HashSet;
 
 use super::ModelError;
 use super::error::FieldPath;
+use super::limits::Limit;
 use super::source_map::line_of_field;
+use crate::units::Short;
 
 /// The model text and its name, for error messages.
 pub(crate) struct Ctx<'a> {
@@ -38,7 +40,7 @@ impl Ctx<'_> {
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(self.err(path, v, "must be a finite number"))
+            Err(self.err(path, Short(v), "must be a finite number"))
         }
     }
 
@@ -47,7 +49,7 @@ impl Ctx<'_> {
         if v.is_finite() && v > 0.0 {
             Ok(v)
         } else {
-            Err(self.err(path, v, "must be a finite number greater than zero"))
+            Err(self.err(path, Short(v), "must be a finite number greater than zero"))
         }
     }
 
@@ -56,7 +58,34 @@ impl Ctx<'_> {
         if v.is_finite() && v >= 0.0 {
             Ok(v)
         } else {
-            Err(self.err(path, v, "must be a finite number not less than zero"))
+            Err(self.err(path, Short(v), "must be a finite number not less than zero"))
+        }
+    }
+
+    /// `v` if finite and within `limit` (its range and the reason in the
+    /// message); a value of the wrong sign gets the sign's message first.
+    pub(crate) fn within(&self, path: FieldPath, v: f64, limit: &Limit) -> Result<f64, ModelError> {
+        if limit.min > 0.0 {
+            self.positive(path.clone(), v)?;
+        } else if limit.min == 0.0 {
+            self.non_negative(path.clone(), v)?;
+        } else {
+            self.finite(path.clone(), v)?;
+        }
+        if limit.holds(v) {
+            Ok(v)
+        } else {
+            Err(self.err(
+                path,
+                Short(v),
+                &format!(
+                    "must lie in [{}, {}] {} ({})",
+                    Short(limit.min),
+                    Short(limit.max),
+                    limit.unit,
+                    limit.why
+                ),
+            ))
         }
     }
 

@@ -70,8 +70,8 @@ pub struct ModelFile {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ReductionEntry {
-    /// Fixed-interface modes kept; default
-    /// [`crate::model::DEFAULT_REDUCED_MODES`].
+    /// Fixed-interface modes kept; default: as many as the model's speed
+    /// range needs ([`crate::rotor::Rotor::transient_modes`]).
     pub modes: Option<i64>,
 }
 

@@ -9,6 +9,7 @@ mod build;
 mod context;
 mod error;
 pub mod file;
+pub mod limits;
 mod plausibility;
 mod source_map;
 pub mod speed_table;
@@ -31,7 +32,8 @@ use source_map::{culprit_in_entry, field_at, line_of, line_of_field};
 pub const DEFAULT_MAX_SPEED_RPM: f64 = 60_000.0;
 
 /// Fixed-interface modes a reduced rotor keeps when the model's `[reduction]`
-/// gives no `modes` (see [`crate::rotor::Rotor::reduced`]).
+/// gives no `modes` and the model no speed (neither `speed_rpm` nor
+/// `max_speed_rpm`) to choose them by (see [`crate::rotor::Rotor::transient_modes`]).
 pub const DEFAULT_REDUCED_MODES: usize = 10;
 
 /// Most fixed-interface modes a reduced rotor may keep (its matrices are dense).
@@ -146,9 +148,19 @@ pub struct RotorModel {
     /// Whether the file states `max_speed_rpm` (else `max_speed` is
     /// [`DEFAULT_MAX_SPEED_RPM`]).
     pub max_speed_stated: bool,
-    /// Fixed-interface modes of the reduced rotor transients run on
-    /// (`[reduction]`, see [`crate::rotor::Rotor::reduced`]); `None`: the full rotor.
-    pub reduced_modes: Option<usize>,
+    /// The reduced rotor transients run on (`[reduction]`, see
+    /// [`crate::rotor::Rotor::reduced`]); `None`: the full rotor.
+    pub reduction: Option<ReductionRequest>,
+}
+
+/// What a model's `[reduction]` asks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ReductionRequest {
+    /// `modes = m`: that many fixed-interface modes.
+    Modes(usize),
+    /// No `modes`: as many as the model's speed range needs
+    /// ([`crate::rotor::Rotor::transient_modes`]).
+    FromSpeedRange,
 }
 
 impl RotorModel {
@@ -264,6 +276,18 @@ impl RotorModel {
     pub fn total_mass(&self) -> f64 {
         self.elements.iter().map(|e| e.element.mass()).sum::<f64>()
             + self.disks.iter().map(|d| d.disk.mass).sum::<f64>()
+    }
+
+    /// The top speed (rad/s) transients of this model are prepared for (the
+    /// default time step, the modes a reduced rotor keeps): its
+    /// `max_speed_rpm` when the file states it, else its `speed_rpm` when not
+    /// zero.
+    pub fn transient_top_speed(&self) -> Option<f64> {
+        if self.max_speed_stated {
+            Some(self.max_speed.abs())
+        } else {
+            (self.nominal_speed != 0.0).then_some(self.nominal_speed.abs())
+        }
     }
 }
 

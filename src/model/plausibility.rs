@@ -5,6 +5,7 @@
 use std::fmt;
 
 use super::RotorModel;
+use crate::units::Short;
 
 /// Plausible dynamic viscosity of a lubricant (Pa·s): water (≈ 1e-3) to heavy
 /// oils at low temperature.
@@ -16,6 +17,18 @@ pub const CLEARANCE_RATIO_RANGE: (f64, f64) = (1e-4, 1e-2);
 /// Largest relative difference between a bearing's radius and the shaft's outer
 /// radius at its node.
 pub const RADIUS_TOLERANCE: f64 = 0.01;
+
+/// Largest plausible rotating mass of a whole model (kg): the heaviest
+/// hydro-generator rotors with their turbines weigh 2 000–4 000 t.
+pub const MAX_PLAUSIBLE_MASS: f64 = 1e7;
+
+/// Largest plausible length of a whole shaft line (m): turbine-generator
+/// trains reach about 70 m, ship shafting about 150 m.
+pub const MAX_PLAUSIBLE_LENGTH: f64 = 200.0;
+
+/// Largest plausible outer diameter of a shaft section (m): hydro-unit shafts
+/// reach about 2.5 m.
+pub const MAX_PLAUSIBLE_SHAFT_DIAMETER: f64 = 10.0;
 
 /// A value that passed validation but is probably a unit or typing slip.
 #[derive(Debug, Clone, PartialEq)]
@@ -35,12 +48,65 @@ impl fmt::Display for ModelWarning {
         write!(
             f,
             "{}: {} = {}: {}",
-            self.file, self.field, self.value, self.problem
+            self.file,
+            self.field,
+            Short(self.value),
+            self.problem
         )
     }
 }
 
 impl RotorModel {
+    /// Warnings for a whole model that looks drawn in millimetres: each size
+    /// may be valid alone, but the rotating mass above [`MAX_PLAUSIBLE_MASS`],
+    /// the shaft line longer than [`MAX_PLAUSIBLE_LENGTH`] or a shaft section
+    /// thicker than [`MAX_PLAUSIBLE_SHAFT_DIAMETER`] is no machine.
+    fn millimetre_warnings(&self) -> Vec<ModelWarning> {
+        let mut warnings = Vec::new();
+        let mut warn = |field: String, value: f64, problem: String| {
+            warnings.push(ModelWarning {
+                file: self.source.clone(),
+                field,
+                value,
+                problem,
+            })
+        };
+        let slip = "are the lengths in millimetres instead of metres?";
+        let mass = self.total_mass();
+        if mass > MAX_PLAUSIBLE_MASS {
+            warn(
+                "rotating mass (shaft and disks, kg)".into(),
+                mass,
+                format!(
+                    "above the {} kg of the heaviest machines: {slip}",
+                    Short(MAX_PLAUSIBLE_MASS)
+                ),
+            );
+        }
+        let length = self.node_z[self.node_z.len() - 1] - self.node_z[0];
+        if length > MAX_PLAUSIBLE_LENGTH {
+            warn(
+                "shaft length (sum of shaft[*].length, m)".into(),
+                length,
+                format!(
+                    "longer than the {MAX_PLAUSIBLE_LENGTH} m of the longest shaft lines: {slip}"
+                ),
+            );
+        }
+        let thickest = self
+            .elements
+            .iter()
+            .position(|e| e.element.section.outer_diameter > MAX_PLAUSIBLE_SHAFT_DIAMETER);
+        if let Some(k) = thickest {
+            warn(
+                format!("shaft outer_diameter (element {})", k + 1),
+                self.elements[k].element.section.outer_diameter,
+                format!("thicker than the {MAX_PLAUSIBLE_SHAFT_DIAMETER} m of any shaft: {slip}"),
+            );
+        }
+        warnings
+    }
+
     /// Outer radii (m) of the shaft elements that meet at `node` (0-based).
     fn shaft_radii_at(&self, node: usize) -> Vec<f64> {
         let mut radii: Vec<f64> = self
@@ -76,7 +142,7 @@ impl RotorModel {
     /// assert!(RotorModel::default_model().plausibility_warnings().is_empty());
     /// ```
     pub fn plausibility_warnings(&self) -> Vec<ModelWarning> {
-        let mut warnings = Vec::new();
+        let mut warnings = self.millimetre_warnings();
         for (i, b) in self.bearings.iter().enumerate() {
             let Some(g) = b.kind.film_geometry() else {
                 continue;

@@ -494,8 +494,10 @@ fn viscosity_in_centistokes_is_warned_with_file_field_value_and_range() {
         );
         let text = w[0].to_string();
         assert!(
-            text.starts_with(&format!("m.toml: bearings[0].viscosity = {mu}: "))
-                && text.contains("1e-4 to 1 Pa·s"),
+            text.starts_with(&format!(
+                "m.toml: bearings[0].viscosity = {}: ",
+                crate::units::Short(mu)
+            )) && text.contains("1e-4 to 1 Pa·s"),
             "{text}"
         );
     }
@@ -655,11 +657,11 @@ fn stated_maximum_speed_is_told_from_the_default() {
 #[test]
 fn reduction_section_sets_the_mode_count() {
     let m = RotorModel::from_toml(BASE, "m.toml").unwrap();
-    assert_eq!(m.reduced_modes, None);
+    assert_eq!(m.reduction, None);
     let m = RotorModel::from_toml(&format!("{BASE}\n[reduction]\n"), "m.toml").unwrap();
-    assert_eq!(m.reduced_modes, Some(DEFAULT_REDUCED_MODES));
+    assert_eq!(m.reduction, Some(ReductionRequest::FromSpeedRange));
     let m = RotorModel::from_toml(&format!("{BASE}\n[reduction]\nmodes = 4\n"), "m.toml").unwrap();
-    assert_eq!(m.reduced_modes, Some(4));
+    assert_eq!(m.reduction, Some(ReductionRequest::Modes(4)));
     for bad in ["0", "-3", "1001"] {
         let e = err_of(&format!("\n[reduction]\nmodes = {bad}\n"));
         assert!(e.contains("reduction.modes") && e.contains(bad), "{e}");

@@ -16,7 +16,7 @@ use crate::model::RotorModel;
 mod reduction;
 
 pub use crate::model::DEFAULT_REDUCED_MODES;
-pub use reduction::Reduction;
+pub use reduction::{Reduction, VALIDITY_FACTOR};
 
 /// Map between the full DOF numbering (`4·node + k`) and the free DOFs left
 /// after ideal supports are removed. A [reduced](Rotor::reduced) rotor's map

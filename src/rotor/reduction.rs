@@ -23,6 +23,14 @@ use nalgebra::{DMatrix, SymmetricEigen};
 use super::{AssemblyError, DofMap, Rotor};
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
+use crate::model::{DEFAULT_REDUCED_MODES, MAX_REDUCED_MODES, ReductionRequest, RotorModel};
+
+/// The kept fixed-interface modes must reach this multiple of the highest
+/// frequency of the motion (running speed, whirl): then the receptance at
+/// the kept nodes is within 1 % of the full rotor's (measured on every
+/// shipped model with 1 to 24 modes, worst 7.1e-3 at a tenth of the highest
+/// mode; `tests/reduction.rs`); at a fifth it reaches 8 %, at half 150 %.
+pub const VALIDITY_FACTOR: f64 = 10.0;
 
 /// Relative change of the kept eigenvalues at which subspace iteration stops.
 const EIGEN_TOL: f64 = 1e-12;
@@ -65,6 +73,12 @@ impl Reduction {
         self.mode_frequencies.last().copied().unwrap_or(0.0)
     }
 
+    /// Highest frequency of motion (rad/s) the reduction is valid for: the
+    /// highest kept mode over [`VALIDITY_FACTOR`] (0 without modes).
+    pub fn validated_frequency(&self) -> f64 {
+        self.highest_frequency() / VALIDITY_FACTOR
+    }
+
     /// One line for logs and the CLI: what is kept and how far the modes reach.
     pub fn describe(&self) -> String {
         let nodes: Vec<String> = self
@@ -78,13 +92,15 @@ impl Reduction {
             String::new()
         };
         format!(
-            "reduced rotor (Craig–Bampton): {} coordinates for {} DOFs — {} physical at nodes {} + {} fixed-interface modes{clamped} up to {:.1} Hz",
+            "reduced rotor (Craig–Bampton): {} coordinates for {} DOFs — {} physical at nodes {} + {} fixed-interface modes{clamped} up to {:.1} Hz, valid for motion up to {:.1} Hz ({} rpm)",
             self.physical + self.modes,
             self.full_map.free_count(),
             self.physical,
             nodes.join(", "),
             self.modes,
             self.highest_frequency() / std::f64::consts::TAU,
+            self.validated_frequency() / std::f64::consts::TAU,
+            (self.validated_frequency() * 30.0 / std::f64::consts::PI).round(),
         )
     }
 }
@@ -110,6 +126,137 @@ impl Rotor {
         nodes
     }
 
+    /// Coordinates of the rotor [`Rotor::for_transients`] builds from this
+    /// one's model with `modes` fixed-interface modes, without building it:
+    /// every free DOF for 0 (the full rotor), else the free DOFs of the kept
+    /// nodes plus `min(modes, interior DOFs)`; `None` when the model has no
+    /// node to keep. Two counts build the same rotor exactly when both or
+    /// neither are 0 and their coordinates agree (999 and 1000 modes on a rotor
+    /// with fewer interior DOFs are both all of them).
+    pub fn transient_coordinates(&self, modes: usize) -> Option<usize> {
+        let kept = self.kept_nodes();
+        let (free, physical) = match &self.reduction {
+            Some(r) => (r.full_map.free_count(), r.physical),
+            None => {
+                let at_kept = |&node: &usize| {
+                    (0..DOF_PER_NODE)
+                        .filter(|&k| self.dofs.free(node, k).is_some())
+                        .count()
+                };
+                (self.dof_count(), kept.iter().map(at_kept).sum())
+            }
+        };
+        match modes {
+            0 => Some(free),
+            _ if kept.is_empty() => None,
+            _ => Some(physical + modes.min(free - physical)),
+        }
+    }
+
+    /// An [`AssemblyError::Reduction`] of this model.
+    fn reduction_error(&self, message: String) -> AssemblyError {
+        AssemblyError::Reduction {
+            model: self.model.name.clone(),
+            message,
+        }
+    }
+
+    /// The free DOFs split into the kept nodes' and the interior, and the
+    /// interior's stiffness (factored) and mass.
+    fn interior(&self) -> Result<Interior, AssemblyError> {
+        if self.reduction.is_some() {
+            return Err(self.reduction_error("the rotor is already reduced".into()));
+        }
+        let kept_nodes = self.kept_nodes();
+        if kept_nodes.is_empty() {
+            return Err(self.reduction_error(
+                "no node to keep: the model has no nonlinear bearing, rub, probe or unbalance"
+                    .into(),
+            ));
+        }
+        let n = self.dof_count();
+        let mut is_kept = vec![false; n];
+        for &node in &kept_nodes {
+            for k in 0..DOF_PER_NODE {
+                if let Some(i) = self.dofs.free(node, k) {
+                    is_kept[i] = true;
+                }
+            }
+        }
+        let boundary: Vec<usize> = (0..n).filter(|&i| is_kept[i]).collect();
+        let interior: Vec<usize> = (0..n).filter(|&i| !is_kept[i]).collect();
+        let k_ii = sub_band(&self.stiffness, &interior);
+        let m_ii = sub_band(&self.mass, &interior);
+        let lu = k_ii.lu().map_err(|e| {
+            self.reduction_error(format!(
+                "the interior is not held by the kept nodes and linear bearings (K_ii: {e})"
+            ))
+        })?;
+        Ok(Interior {
+            kept_nodes,
+            boundary,
+            interior,
+            k_ii,
+            m_ii,
+            lu,
+        })
+    }
+
+    /// The `count` lowest fixed-interface natural frequencies (rad/s,
+    /// ascending; fewer when the interior has fewer DOFs), those a reduction
+    /// with `count` modes keeps.
+    pub fn fixed_interface_frequencies(&self, count: usize) -> Result<Vec<f64>, AssemblyError> {
+        let i = self.interior()?;
+        let m = count.min(i.interior.len());
+        let (omega_sq, _) = fixed_interface_modes(&i.k_ii, &i.m_ii, &i.lu, m)
+            .map_err(|e| self.reduction_error(e))?;
+        Ok(omega_sq.iter().map(|w2| w2.sqrt()).collect())
+    }
+
+    /// Fixed-interface modes a reduced rotor needs to be valid for motion
+    /// up to `frequency` (rad/s): the smallest count whose highest mode
+    /// reaches [`VALIDITY_FACTOR`] × `frequency`, with the partner of a
+    /// degenerate pair (the x and y modes of a round shaft) kept together;
+    /// every mode the interior has when none reaches it (at most
+    /// [`MAX_REDUCED_MODES`]).
+    pub fn modes_for(&self, frequency: f64) -> Result<usize, AssemblyError> {
+        let target = VALIDITY_FACTOR * frequency.abs();
+        let interior = self.interior()?.interior.len();
+        let cap = interior.clamp(1, MAX_REDUCED_MODES);
+        let mut count = 8.min(cap);
+        let frequencies = loop {
+            let f = self.fixed_interface_frequencies(count)?;
+            if f.last().is_some_and(|&w| w >= target) || count >= cap {
+                break f;
+            }
+            count = (2 * count).min(cap);
+        };
+        let Some(k) = frequencies.iter().position(|&w| w >= target) else {
+            return Ok(cap);
+        };
+        let pair = frequencies[k + 1..]
+            .iter()
+            .take_while(|&&w| w <= frequencies[k] * (1.0 + 1e-6))
+            .count();
+        Ok((k + 1 + pair).clamp(1, cap))
+    }
+
+    /// The mode count transients of `model` run with: 0 (the full rotor)
+    /// without `[reduction]`, its `modes`, or without them as many as the
+    /// speed range needs ([`Rotor::modes_for`] the model's `max_speed_rpm`
+    /// if it states one, else its `speed_rpm`; [`DEFAULT_REDUCED_MODES`]
+    /// when it states neither).
+    pub fn transient_modes(model: &RotorModel) -> Result<usize, AssemblyError> {
+        match model.reduction {
+            None => Ok(0),
+            Some(ReductionRequest::Modes(m)) => Ok(m),
+            Some(ReductionRequest::FromSpeedRange) => match model.transient_top_speed() {
+                Some(top) => Rotor::new(model.clone())?.modes_for(top),
+                None => Ok(DEFAULT_REDUCED_MODES),
+            },
+        }
+    }
+
     /// This rotor reduced to its [kept nodes](Rotor::kept_nodes) and `modes`
     /// fixed-interface modes (clamped to the interior DOF count), for the
     /// transient [`Simulator`](crate::solver::Simulator).
@@ -128,45 +275,22 @@ impl Rotor {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn reduced(&self, modes: usize) -> Result<Rotor, AssemblyError> {
-        let fail = |message: String| AssemblyError::Reduction {
-            model: self.model.name.clone(),
-            message,
-        };
-        if self.reduction.is_some() {
-            return Err(fail("the rotor is already reduced".into()));
-        }
         if modes == 0 {
-            return Err(fail("reduced_modes = 0: ask for at least one mode".into()));
+            return Err(self.reduction_error("reduced_modes = 0: ask for at least one mode".into()));
         }
-        let kept_nodes = self.kept_nodes();
-        if kept_nodes.is_empty() {
-            return Err(fail(
-                "no node to keep: the model has no nonlinear bearing, rub, probe or unbalance"
-                    .into(),
-            ));
-        }
+        let Interior {
+            kept_nodes,
+            boundary,
+            interior,
+            k_ii,
+            m_ii,
+            lu,
+        } = self.interior()?;
         let n = self.dof_count();
-        let mut is_kept = vec![false; n];
-        for &node in &kept_nodes {
-            for k in 0..DOF_PER_NODE {
-                if let Some(i) = self.dofs.free(node, k) {
-                    is_kept[i] = true;
-                }
-            }
-        }
-        let boundary: Vec<usize> = (0..n).filter(|&i| is_kept[i]).collect();
-        let interior: Vec<usize> = (0..n).filter(|&i| !is_kept[i]).collect();
         let (nb, ni) = (boundary.len(), interior.len());
         let m = modes.min(ni);
-
-        let k_ii = sub_band(&self.stiffness, &interior);
-        let m_ii = sub_band(&self.mass, &interior);
-        let lu = k_ii.lu().map_err(|e| {
-            fail(format!(
-                "the interior is not held by the kept nodes and linear bearings (K_ii: {e})"
-            ))
-        })?;
-        let (omega_sq, phi) = fixed_interface_modes(&k_ii, &m_ii, &lu, m).map_err(&fail)?;
+        let (omega_sq, phi) =
+            fixed_interface_modes(&k_ii, &m_ii, &lu, m).map_err(|e| self.reduction_error(e))?;
 
         // T = [[I, 0], [Ψ, Φ]] in the full free numbering.
         let r = nb + m;
@@ -236,6 +360,16 @@ impl Rotor {
             }),
         })
     }
+}
+
+/// The free DOFs of a rotor split for its reduction, and the interior's matrices.
+struct Interior {
+    kept_nodes: Vec<usize>,
+    boundary: Vec<usize>,
+    interior: Vec<usize>,
+    k_ii: BandMatrix<f64>,
+    m_ii: BandMatrix<f64>,
+    lu: crate::linalg::BandLu<f64>,
 }
 
 /// The rows and columns `keep` (ascending) of a banded matrix, as a banded

@@ -53,6 +53,7 @@ mod dense;
 mod factor;
 mod newmark;
 mod newton;
+pub mod reduction_check;
 pub mod run;
 mod simulator;
 mod sites;

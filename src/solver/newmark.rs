@@ -5,6 +5,7 @@
 
 use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
+use crate::units::Short;
 
 use super::simulator::{Simulator, SolverError, SolverOptions, inf_norm};
 
@@ -183,28 +184,40 @@ impl Simulator {
     }
 
     /// Advance to time `t_end` (s) in equal internal steps no longer than the
-    /// configured time step.
+    /// configured time step; a span shorter than [`SolverOptions::MIN_SPAN`]
+    /// is refused.
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), SolverError> {
         if !t_end.is_finite() {
             return Err(SolverError::Input(format!(
-                "target time {t_end} is not finite"
+                "target time {} is not finite",
+                Short(t_end)
             )));
         }
         let span = t_end - self.state.time;
         if span < 0.0 {
             return Err(SolverError::Input(format!(
-                "cannot step backwards from {} s to {t_end} s",
-                self.state.time
+                "cannot step backwards from {} s to {} s",
+                Short(self.state.time),
+                Short(t_end)
             )));
         }
         if span == 0.0 {
             return Ok(());
         }
+        if span < SolverOptions::MIN_SPAN * (1.0 - 1e-6) {
+            return Err(SolverError::Input(format!(
+                "a step of {} s is shorter than the {} s the integrator resolves (round-off in the Newmark accelerations grows as 1/h²)",
+                Short(span),
+                Short(SolverOptions::MIN_SPAN)
+            )));
+        }
         let steps = (span / self.options.time_step - 1e-9).ceil().max(1.0);
         if steps > SolverOptions::MAX_STEPS_PER_CALL as f64 {
             return Err(SolverError::Budget(format!(
-                "advancing {span} s in internal steps of at most {} s takes {steps} steps, more than the {} one call may take: advance in shorter spans or raise the time step",
-                self.options.time_step,
+                "advancing {} s in internal steps of at most {} s takes {} steps, more than the {} one call may take: advance in shorter spans or raise the time step",
+                Short(span),
+                Short(self.options.time_step),
+                Short(steps),
                 SolverOptions::MAX_STEPS_PER_CALL
             )));
         }
@@ -212,7 +225,9 @@ impl Simulator {
         let end_speed = self.speed_at(t_end);
         if end_speed.abs() > max {
             return Err(SolverError::Budget(format!(
-                "the speed ramp reaches {end_speed} rad/s at {t_end} s, beyond the model's max_speed_rpm ({max} rad/s)"
+                "the speed ramp reaches {} rad/s at {} s, beyond the model's max_speed_rpm ({max} rad/s)",
+                Short(end_speed),
+                Short(t_end)
             )));
         }
         let count = steps as usize;

@@ -47,6 +47,15 @@ impl SpeedProfile {
         }
     }
 
+    /// The largest |speed| (rad/s) the profile reaches.
+    pub fn top_speed(&self) -> f64 {
+        match self {
+            SpeedProfile::Constant(w) => w.abs(),
+            SpeedProfile::Ramp { from, to, .. } => from.abs().max(to.abs()),
+            SpeedProfile::Table(points) => points.iter().fold(0.0, |m, p| m.max(p.1.abs())),
+        }
+    }
+
     /// Check the profile's numbers.
     pub fn validate(&self) -> Result<(), String> {
         match self {
@@ -90,13 +99,14 @@ impl SpeedProfile {
 
 /// Run `sim` from its current time for `duration` s, following `profile`,
 /// recording outputs every `output_step` s (the first record at the start).
-/// `progress` is called with the fraction done after every record.
+/// `progress` is called with the fraction done and the simulator after
+/// every record.
 pub fn record(
     sim: &mut Simulator,
     profile: &SpeedProfile,
     duration: f64,
     output_step: f64,
-    progress: impl FnMut(f64),
+    progress: impl FnMut(f64, &Simulator),
 ) -> Result<Vec<Outputs>, SolverError> {
     let mut out = Vec::new();
     record_into(sim, profile, duration, output_step, &mut out, progress)?;
@@ -111,7 +121,7 @@ pub fn record_into(
     duration: f64,
     output_step: f64,
     out: &mut Vec<Outputs>,
-    mut progress: impl FnMut(f64),
+    mut progress: impl FnMut(f64, &Simulator),
 ) -> Result<(), SolverError> {
     profile.validate().map_err(SolverError::Input)?;
     if !(duration.is_finite() && duration >= 0.0 && output_step.is_finite() && output_step > 0.0) {
@@ -131,7 +141,27 @@ pub fn record_into(
         let (w, rate) = profile.at(t);
         sim.set_speed(w, rate)?;
         out.push(sim.outputs()?);
-        progress(k as f64 / count as f64);
+        progress(k as f64 / count as f64, sim);
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn top_speed_is_the_largest_absolute_speed() {
+        let ramp = SpeedProfile::Ramp {
+            from: -10.0,
+            to: 5.0,
+            duration: 1.0,
+        };
+        assert_eq!(ramp.top_speed(), 10.0);
+        assert_eq!(
+            SpeedProfile::Table(vec![(0.0, 1.0), (1.0, -7.0)]).top_speed(),
+            7.0
+        );
+        assert_eq!(SpeedProfile::Constant(-3.0).top_speed(), 3.0);
+    }
 }

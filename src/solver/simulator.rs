@@ -4,6 +4,7 @@ use crate::bearing::{Bearing, BearingError, BearingEval, BearingReport};
 use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::LinalgError;
 use crate::rotor::Rotor;
+use crate::units::Short;
 
 use super::factor::{Factor, FactorWork};
 use super::newmark::NewmarkWork;
@@ -47,6 +48,16 @@ impl SolverOptions {
     /// Most step halvings one [`Simulator::advance_to`] may spend in all; past
     /// it the call stops with [`SolverError::Budget`].
     pub const MAX_CUTS_PER_CALL: usize = 2_000;
+    /// Shortest span (s) [`Simulator::advance_to`] integrates; a shorter one is
+    /// refused ([`SolverError::Input`]). Newmark's acceleration
+    /// `ü = 4(u − uₙ)/h² − 4u̇ₙ/h − üₙ` divides the round-off and the Newton
+    /// tolerance of `u` by `h²`: on the Jeffcott rotor one step of 1e-9 s
+    /// moved the orbit 30 ms later by 1e-4 of its size, 1e-10 s by 7 %,
+    /// 1e-11 s by more than its size, and 1e-13 s made Newton fail (1e-8 s:
+    /// 1e-7 of it). Below about 1e-154 s, `4/h²` overflows. (A span of
+    /// `MIN_SPAN` on a time grid, `(t + h) − t`, may fall short of it by
+    /// round-off: up to 1e-6 of it is let through.)
+    pub const MIN_SPAN: f64 = 1e-8;
 }
 
 impl Default for SolverOptions {
@@ -316,7 +327,9 @@ impl Simulator {
         let step_ok = step == 0.0 || (smallest..=SolverOptions::TIME_STEP_RANGE.1).contains(&step);
         if !(step_ok && speed.is_finite() && speed.abs() <= self.rotor.model.max_speed) {
             return Err(SolverError::Input(format!(
-                "state factorization step {step} s or speed {speed} rad/s is invalid"
+                "state factorization step {} s or speed {} rad/s is invalid",
+                Short(step),
+                Short(speed)
             )));
         }
         let held = self.factor.as_ref().map(|f| (f.step, f.speed));
@@ -358,7 +371,9 @@ impl Simulator {
         let now = self.state.time;
         if !(t.is_finite() && (t - now).abs() <= 1e-9 * now.abs().max(1.0)) {
             return Err(SolverError::Input(format!(
-                "time {t} s is not the simulator's time {now} s"
+                "time {} s is not the simulator's time {} s",
+                Short(t),
+                Short(now)
             )));
         }
         self.state.time = t;
@@ -385,13 +400,16 @@ impl Simulator {
     pub fn set_speed(&mut self, speed: f64, rate: f64) -> Result<(), SolverError> {
         if !speed.is_finite() || !rate.is_finite() {
             return Err(SolverError::Input(format!(
-                "speed {speed} rad/s and its rate {rate} rad/s² must be finite"
+                "speed {} rad/s and its rate {} rad/s² must be finite",
+                Short(speed),
+                Short(rate)
             )));
         }
         let max = self.rotor.model.max_speed;
         if speed.abs() > max {
             return Err(SolverError::Input(format!(
-                "speed {speed} rad/s exceeds the model's max_speed_rpm ({max} rad/s)"
+                "speed {} rad/s exceeds the model's max_speed_rpm ({max} rad/s)",
+                Short(speed)
             )));
         }
         self.rebase_inputs();
@@ -414,7 +432,9 @@ impl Simulator {
     ) -> Result<(), SolverError> {
         if !(magnitude.is_finite() && magnitude >= 0.0 && rate.is_finite()) {
             return Err(SolverError::Input(format!(
-                "unbalance {magnitude} kg·m must be finite and not negative, its rate {rate} kg·m/s finite"
+                "unbalance {} kg·m must be finite and not negative, its rate {} kg·m/s finite",
+                Short(magnitude),
+                Short(rate)
             )));
         }
         self.rebase_inputs();
@@ -431,7 +451,8 @@ impl Simulator {
     ) -> Result<(), SolverError> {
         if !(viscosity.is_finite() && viscosity > 0.0) {
             return Err(SolverError::Input(format!(
-                "viscosity {viscosity} Pa·s must be finite and positive"
+                "viscosity {} Pa·s must be finite and positive",
+                Short(viscosity)
             )));
         }
         let placed = self
@@ -458,7 +479,8 @@ impl Simulator {
     pub fn set_unbalance_phase(&mut self, plane: usize, phase: f64) -> Result<(), SolverError> {
         if !phase.is_finite() {
             return Err(SolverError::Input(format!(
-                "unbalance phase {phase} must be finite"
+                "unbalance phase {} must be finite",
+                Short(phase)
             )));
         }
         *plane_slot(&mut self.state.unbalance_phase, plane)? = phase;
@@ -603,7 +625,8 @@ fn check_options(o: &SolverOptions) -> Result<(), SolverError> {
             Ok(())
         } else {
             Err(SolverError::Input(format!(
-                "solver option {what} = {v} {unit} is outside [{lo}, {hi}] {unit}"
+                "solver option {what} = {} {unit} is outside [{lo}, {hi}] {unit}",
+                Short(v)
             )))
         }
     };

@@ -2,6 +2,7 @@
 //! the solver holds) and its validation when a front end restores it.
 
 use super::simulator::SolverError;
+use crate::units::Short;
 
 /// The complete dynamic state: restoring it reproduces a run bit for bit.
 #[derive(Debug, Clone, PartialEq)]
@@ -75,18 +76,20 @@ impl SimState {
             });
         if let Some((name, v)) = bad {
             return Err(SolverError::Input(format!(
-                "state field {name} = {v} is not finite"
+                "state field {name} = {} is not finite",
+                Short(v)
             )));
         }
         if let Some(m) = self.unbalance.iter().find(|m| **m < 0.0) {
             return Err(SolverError::Input(format!(
-                "state field unbalance = {m} kg·m is negative"
+                "state field unbalance = {} kg·m is negative",
+                Short(*m)
             )));
         }
         if self.speed.abs() > max_speed {
             return Err(SolverError::Input(format!(
                 "state field speed = {} rad/s exceeds the model's max_speed_rpm ({max_speed} rad/s)",
-                self.speed
+                Short(self.speed)
             )));
         }
         Ok(())

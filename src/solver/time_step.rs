@@ -7,39 +7,19 @@
 
 use crate::model::RotorModel;
 
-use super::run::SpeedProfile;
-
 /// Steps per revolution at the top speed.
 pub const STEPS_PER_REVOLUTION: f64 = 60.0;
 
 /// The largest default step (s), for slow machines and standstill.
 pub const MAX_DEFAULT_TIME_STEP: f64 = 1e-3;
 
-/// The top speed (rad/s) of `model` for time stepping: its `max_speed_rpm`
-/// when the file states it, else its `speed_rpm` when not zero.
-pub fn model_top_speed(model: &RotorModel) -> Option<f64> {
-    if model.max_speed_stated {
-        Some(model.max_speed.abs())
-    } else {
-        (model.nominal_speed != 0.0).then_some(model.nominal_speed.abs())
-    }
-}
-
-/// The largest speed (rad/s, absolute) `profile` reaches.
-pub fn peak_speed(profile: &SpeedProfile) -> f64 {
-    match profile {
-        SpeedProfile::Constant(w) => w.abs(),
-        SpeedProfile::Ramp { from, to, .. } => from.abs().max(to.abs()),
-        SpeedProfile::Table(points) => points.iter().map(|(_, w)| w.abs()).fold(0.0, f64::max),
-    }
-}
-
 /// The default time step (s) for a run of `model` whose speed reaches
 /// `run_peak` (rad/s; `None` when unknown in advance, as in an FMU): the
 /// larger of the model's top speed and `run_peak` at
 /// [`STEPS_PER_REVOLUTION`], at most [`MAX_DEFAULT_TIME_STEP`].
 pub fn default_time_step(model: &RotorModel, run_peak: Option<f64>) -> f64 {
-    let top = model_top_speed(model)
+    let top = model
+        .transient_top_speed()
         .unwrap_or(0.0)
         .max(run_peak.unwrap_or(0.0));
     if top > 0.0 {
@@ -69,15 +49,5 @@ mod tests {
         m.max_speed_stated = false;
         m.nominal_speed = 0.0;
         assert_eq!(default_time_step(&m, None), MAX_DEFAULT_TIME_STEP);
-        let ramp = SpeedProfile::Ramp {
-            from: -10.0,
-            to: 5.0,
-            duration: 1.0,
-        };
-        assert_eq!(peak_speed(&ramp), 10.0);
-        assert_eq!(
-            peak_speed(&SpeedProfile::Table(vec![(0.0, 1.0), (1.0, -7.0)])),
-            7.0
-        );
     }
 }

@@ -597,17 +597,23 @@ fn run(cli: Cli) -> Result<(), String> {
             let rotor = load(&model)?;
             simulate::check_speeds(&rotor.model, &profile)?;
             let step = step.unwrap_or_else(|| {
-                let peak = rotor_bearing::solver::time_step::peak_speed(&profile);
+                let peak = profile.top_speed();
                 let h =
                     rotor_bearing::solver::time_step::default_time_step(&rotor.model, Some(peak));
                 eprintln!("{}", simulate::describe_default_step(&rotor.model, peak, h));
                 h
             });
-            let modes = reduced_modes.unwrap_or(rotor.model.reduced_modes.unwrap_or(0));
-            let rotor = if modes == 0 {
-                rotor
+            let modes = match reduced_modes {
+                Some(m) => m,
+                None => Rotor::transient_modes(&rotor.model).map_err(|e| e.to_string())?,
+            };
+            let (rotor, full) = if modes == 0 {
+                (rotor, None)
             } else {
-                rotor.reduced(modes).map_err(|e| e.to_string())?
+                (
+                    rotor.reduced(modes).map_err(|e| e.to_string())?,
+                    Some(rotor),
+                )
             };
             let options = rotor_bearing::solver::SolverOptions {
                 time_step: step,
@@ -625,7 +631,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 plots,
                 amplitude,
             };
-            simulate::simulate(rotor, options, run)
+            simulate::simulate(rotor, full, options, run)
         }
     }
 }

@@ -13,9 +13,10 @@ use rotor_bearing::plot::{
 use rotor_bearing::report::text::{self, short};
 use rotor_bearing::report::{csv as report_csv, series};
 use rotor_bearing::rotor::Rotor;
-use rotor_bearing::solver::time_step::{
-    MAX_DEFAULT_TIME_STEP, STEPS_PER_REVOLUTION, model_top_speed, peak_speed,
+use rotor_bearing::solver::reduction_check::{
+    Excursion, ValidityWatch, error_estimate, excursion_report,
 };
+use rotor_bearing::solver::time_step::{MAX_DEFAULT_TIME_STEP, STEPS_PER_REVOLUTION};
 use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record_into};
 use rotor_bearing::units::Amplitude;
 
@@ -67,7 +68,7 @@ pub fn speed_profile(
 /// Refuse, before the run, a speed profile that reaches past the model's
 /// `max_speed_rpm`, in rpm (the simulator would stop there mid-run).
 pub fn check_speeds(model: &RotorModel, profile: &SpeedProfile) -> Result<(), String> {
-    let peak = peak_speed(profile);
+    let peak = profile.top_speed();
     if peak > model.max_speed {
         let stated = if model.max_speed_stated {
             format!(
@@ -92,7 +93,7 @@ pub fn check_speeds(model: &RotorModel, profile: &SpeedProfile) -> Result<(), St
 
 /// Where the default time step `h` of a run reaching `peak` (rad/s) came from.
 pub fn describe_default_step(model: &RotorModel, peak: f64, h: f64) -> String {
-    let top = model_top_speed(model).unwrap_or(0.0).max(peak);
+    let top = model.transient_top_speed().unwrap_or(0.0).max(peak);
     if h < MAX_DEFAULT_TIME_STEP {
         format!(
             "time step {} s ({} steps per revolution at {} rpm; --step to choose)",
@@ -109,6 +110,37 @@ pub fn describe_default_step(model: &RotorModel, peak: f64, h: f64) -> String {
     }
 }
 
+/// The motion's excursions from the reduced rotor's validated range in a run:
+/// how many records were outside, and the highest (time, speed, excursion).
+#[derive(Default)]
+struct Excursions {
+    count: usize,
+    highest: Option<(f64, f64, Excursion)>,
+}
+
+impl Excursions {
+    fn note(&mut self, t: f64, speed: f64, e: Excursion) {
+        if self
+            .highest
+            .is_none_or(|(_, _, x)| e.frequency() > x.frequency())
+        {
+            self.highest = Some((t, speed, e));
+        }
+        self.count += 1;
+    }
+
+    /// The warning for the highest excursion when there were several (the
+    /// first was reported as it happened).
+    fn warn(&self, name: &str, full: Option<&Rotor>, rotor: &Rotor) {
+        if let (Some(full), count @ 2.., Some((t, speed, e))) = (full, self.count, self.highest) {
+            let report = excursion_report(full, rotor, speed, e);
+            eprintln!(
+                "warning: {name}: the motion left the validated range {count} times; the highest, at t = {t:.4} s: {report}"
+            );
+        }
+    }
+}
+
 /// What `rotor simulate` records and writes.
 pub struct Run {
     pub profile: SpeedProfile,
@@ -120,7 +152,15 @@ pub struct Run {
     pub amplitude: Amplitude,
 }
 
-pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), String> {
+/// The run of `rotor` (reduced from `full` when that is given): the reduced
+/// rotor says how far it is from the full one at the top speed, and warns
+/// when the speed or the motion leaves the range it is validated for.
+pub fn simulate(
+    rotor: Rotor,
+    full: Option<Rotor>,
+    options: SolverOptions,
+    run: Run,
+) -> Result<(), String> {
     let Run {
         profile,
         duration,
@@ -133,6 +173,18 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
     let profile = &profile;
     let model = rotor.model.clone();
     eprintln!("{}", rotor.coordinates());
+    let mut watch = ValidityWatch::new(&rotor);
+    let top = profile.top_speed();
+    if let Some(full) = &full {
+        let rpm = top * RAD_S_TO_RPM;
+        let estimate = error_estimate(full, &rotor, top, top);
+        if top > watch.limit() {
+            let report = excursion_report(full, &rotor, top, Excursion::Speed(top));
+            eprintln!("warning: {}: top speed {rpm:.0} rpm: {report}", model.name);
+        } else {
+            eprintln!("reduced rotor at the top speed {rpm:.0} rpm: {estimate}");
+        }
+    }
     let mut sim = Simulator::new(rotor, options).map_err(|e| e.to_string())?;
     let (w0, _) = profile.at(0.0);
     sim.set_speed(w0, 0.0).map_err(|e| e.to_string())?;
@@ -149,6 +201,9 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
     let started = std::time::Instant::now();
     let mut shown = 0;
     let terminal = std::io::IsTerminal::is_terminal(&std::io::stderr());
+    // The first excursion of the motion is reported as it happens, the
+    // highest at the end, also of a failed run.
+    let mut excursions = Excursions::default();
     let mut records = Vec::new();
     let outcome = record_into(
         &mut sim,
@@ -156,7 +211,18 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         duration,
         output_step,
         &mut records,
-        |f| {
+        |f, sim| {
+            let speed = sim.speed_at(sim.time());
+            // The speed was judged before the run: here the motion's frequency.
+            let motion = watch.check(speed, sim.state());
+            if let (Some(e @ Excursion::Motion(_)), Some(full)) = (motion, &full) {
+                let t = sim.time();
+                if excursions.count == 0 {
+                    let report = excursion_report(full, sim.rotor(), speed, e);
+                    eprintln!("warning: {}: at t = {t:.4} s {report}", model.name);
+                }
+                excursions.note(t, speed, e);
+            }
             let pct = (f * 100.0) as usize;
             if terminal && pct >= shown + 5 {
                 shown = pct - pct % 5;
@@ -165,6 +231,10 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         },
     );
     if let Err(e) = outcome {
+        if terminal {
+            eprintln!();
+        }
+        excursions.warn(&model.name, full.as_ref(), sim.rotor());
         // Keep what was computed: the rows up to the last converged output.
         let reached = records.last().map_or(0.0, |o| o.time);
         let kept = match &csv {
@@ -180,8 +250,7 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
             _ => String::new(),
         };
         return Err(format!(
-            "{}{}: {e} (failed after t = {} s of {} s{kept})",
-            if terminal { "\n" } else { "" },
+            "{}: {e} (failed after t = {} s of {} s{kept})",
             model.name,
             short(reached),
             short(duration)
@@ -195,6 +264,7 @@ pub fn simulate(rotor: Rotor, options: SolverOptions, run: Run) -> Result<(), St
         started.elapsed().as_secs_f64(),
         sim.stats()
     );
+    excursions.warn(&model.name, full.as_ref(), sim.rotor());
     match &csv {
         Some(path) => write_file(path, &report_csv::simulation(&model, &records))?,
         None if plots.is_none() => print!("{}", text::run_summary(&model, &records)),

@@ -4,7 +4,10 @@
 use super::super::snapshot::Snapshot;
 use super::super::states::Call;
 use super::super::variables::VISCOSITY_RANGE;
-use super::{Instance, Status};
+use super::{Instance, Status, category, model_viscosity};
+use crate::solver::Simulator;
+use crate::solver::reduction_check::ValidityWatch;
+use crate::units::Short;
 
 impl Instance {
     /// The state `fmi2GetFMUstate` would save now.
@@ -24,13 +27,38 @@ impl Instance {
         Ok(self.current_snapshot())
     }
 
-    /// fmi2SetFMUstate.
+    /// Rotor coordinates `modes` fixed-interface modes build on this model
+    /// (`None`: a negative count, or a model with no node to keep).
+    fn coordinates_for(&self, modes: i32) -> Option<usize> {
+        let modes = usize::try_from(modes).ok()?;
+        self.sim.rotor().transient_coordinates(modes)
+    }
+
+    /// Whether mode counts `a` and `b` build the same rotor (both full, or
+    /// both reduced to the same coordinates: 999 and 1000 modes on a rotor
+    /// with fewer interior DOFs are one rotor).
+    fn same_rotor(&self, a: i32, b: i32) -> bool {
+        (a == 0) == (b == 0) && self.coordinates_for(a) == self.coordinates_for(b)
+    }
+
+    /// fmi2SetFMUstate. The FMU state includes the parameters (FMI 2.0
+    /// §2.1.8), `solver.reduced_modes` among them: a state saved with another
+    /// mode count brings its own rotor, rebuilt here when it is not the one
+    /// running, as `solver.time_step` and `solver.tolerance` come back with it.
+    /// A state that does not fit is refused before anything changes.
     pub fn restore(&mut self, snap: &Snapshot) -> Status {
         let call = Call::SetFmuState;
         if let Err(s) = self.check(call) {
             return s;
         }
-        if let Err(why) = snap.fits(&self.current_snapshot()) {
+        let modes = snap.params.reduced_modes;
+        let fits = match self.coordinates_for(modes) {
+            Some(n) => snap.fits(&self.current_snapshot(), n),
+            None => Err(format!(
+                "the state was saved with solver.reduced_modes = {modes}, which cannot reduce this model"
+            )),
+        };
+        if let Err(why) = fits {
             return self.report(Status::Error, format!("{}: {why}", call.name()));
         }
         let film = |k: usize| self.model.bearings[k].kind.viscosity().is_some();
@@ -45,37 +73,61 @@ impl Instance {
             return self.report(
                 Status::Error,
                 format!(
-                    "{}: viscosity {mu} Pa·s of bearing {} in the state is outside [{lo}, {hi}] Pa·s",
+                    "{}: viscosity {} Pa·s of bearing {} in the state is outside [{lo}, {hi}] Pa·s",
                     call.name(),
+                    Short(*mu),
                     self.model.bearings[k].name
                 ),
             );
         }
-        for (k, (&mu, &now)) in snap
-            .viscosity
-            .iter()
-            .zip(self.viscosity.clone().iter())
-            .enumerate()
-        {
-            if mu != now && film(k) {
-                if let Err(e) = self.sim.set_bearing_viscosity(k, mu) {
-                    return self.report(Status::Error, format!("{}: {e}", call.name()));
+        let rebuild = !self.same_rotor(modes, self.params.reduced_modes);
+        let result = if rebuild {
+            // The state's rotor, built aside: the running one stays until it is ready.
+            match Self::fresh_simulator(&self.model, modes) {
+                Ok(mut sim) => {
+                    let given = model_viscosity(&self.model);
+                    Self::load_state(&mut sim, snap, &given, film).map(|()| Some(sim))
                 }
+                Err(e) => Err(e),
             }
-        }
-        let options = snap.params.options();
-        if let Err(e) = self
-            .sim
-            .set_options(options)
-            .and_then(|()| self.sim.set_state(snap.sim.clone()))
-        {
-            return self.report(Status::Error, format!("{}: {e}", call.name()));
+        } else {
+            let now = self.viscosity.clone();
+            Self::load_state(&mut self.sim, snap, &now, film).map(|()| None)
+        };
+        match result {
+            Ok(Some(sim)) => {
+                self.watch = ValidityWatch::new(sim.rotor());
+                self.sim = sim;
+                let line = self.sim.rotor().coordinates();
+                self.messages.push((Status::Ok, category(Status::Ok), line));
+            }
+            Ok(None) => self.watch.reset(),
+            Err(e) => return self.report(Status::Error, format!("{}: {e}", call.name())),
         }
         self.params = snap.params;
         self.viscosity = snap.viscosity.clone();
         self.phase = snap.phase;
         self.outputs = None;
         Status::Ok
+    }
+
+    /// Put `snap`'s viscosities (where they differ from `held`, those `sim`
+    /// runs with), options and simulator state into `sim`.
+    fn load_state(
+        sim: &mut Simulator,
+        snap: &Snapshot,
+        held: &[f64],
+        film: impl Fn(usize) -> bool,
+    ) -> Result<(), String> {
+        for (k, (&mu, &now)) in snap.viscosity.iter().zip(held).enumerate() {
+            if mu != now && film(k) {
+                sim.set_bearing_viscosity(k, mu)
+                    .map_err(|e| e.to_string())?;
+            }
+        }
+        sim.set_options(snap.params.options())
+            .and_then(|()| sim.set_state(snap.sim.clone()))
+            .map_err(|e| e.to_string())
     }
 
     /// fmi2SerializedFMUstateSize: the length of the byte image of `snap`.
@@ -95,7 +147,7 @@ impl Instance {
     pub fn deserialize(&mut self, bytes: &[u8]) -> Result<Snapshot, Status> {
         let call = Call::DeSerializeFmuState;
         self.check(call)?;
-        Snapshot::from_bytes(bytes, &self.current_snapshot())
+        Snapshot::from_bytes(bytes, &self.current_snapshot(), |m| self.coordinates_for(m))
             .map_err(|why| self.report(Status::Error, format!("{}: {why}", call.name())))
     }
 }

@@ -28,9 +28,11 @@
 //! assert_eq!(fmu.get(speed, Kind::Real), Ok(100.0));
 //! ```
 
-use crate::model::RotorModel;
+use crate::model::{DEFAULT_REDUCED_MODES, RotorModel};
 use crate::rotor::Rotor;
+use crate::solver::reduction_check::ValidityWatch;
 use crate::solver::{Outputs, Simulator, SolverError, SolverOptions};
+use crate::units::Short;
 
 use super::snapshot::fingerprint;
 use super::states::Call;
@@ -42,6 +44,7 @@ use super::variables::{
 use super::xml::model_description;
 
 mod fmu_state;
+mod step;
 
 /// FMI status codes (the subset an instance returns).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -105,7 +108,7 @@ impl Params {
             max_iterations: DEFAULT_MAX_ITERATIONS as i32,
             ramp_time: 0.0,
             gravity: true,
-            reduced_modes: model.reduced_modes.unwrap_or(0) as i32,
+            reduced_modes: Rotor::transient_modes(model).unwrap_or(DEFAULT_REDUCED_MODES) as i32,
         }
     }
 }
@@ -127,6 +130,8 @@ pub struct Instance {
     outputs: Option<Outputs>,
     messages: Vec<LogMessage>,
     step_statistics: bool,
+    /// Whether the reduced rotor runs inside its validated range.
+    watch: ValidityWatch,
 }
 
 fn category(status: Status) -> &'static str {
@@ -168,7 +173,9 @@ impl Instance {
         let sim = Self::fresh_simulator(&model, params.reduced_modes)?;
         let mut messages: Vec<LogMessage> = messages;
         messages.push((Status::Ok, category(Status::Ok), sim.rotor().coordinates()));
+        let watch = ValidityWatch::new(sim.rotor());
         Ok(Self {
+            watch,
             name: name.to_string(),
             model,
             fingerprint: fingerprint(&guid),
@@ -219,6 +226,7 @@ impl Instance {
                 sim.set_bearing_viscosity(k, mu)?;
             }
         }
+        self.watch = ValidityWatch::new(sim.rotor());
         self.sim = sim;
         self.params.reduced_modes = modes;
         let line = self.sim.rotor().coordinates();
@@ -275,7 +283,14 @@ impl Instance {
             return s;
         }
         if !start.is_finite() || stop.is_some_and(|t| !(t.is_finite() && t >= start)) {
-            return self.report(Status::Error, format!("fmi2SetupExperiment: start time {start} and stop time {stop:?} must be finite, stop ≥ start"));
+            let stop = stop.map_or("none".to_string(), |t| Short(t).to_string());
+            return self.report(
+                Status::Error,
+                format!(
+                    "fmi2SetupExperiment: start time {} and stop time {stop} must be finite, stop ≥ start",
+                    Short(start)
+                ),
+            );
         }
         self.start_time = start;
         self.stop_time = stop;
@@ -408,7 +423,7 @@ impl Instance {
         } else {
             Err(self.report(
                 Status::Error,
-                format!("{call}: {} is not finite ({value})", v.name),
+                format!("{call}: {} is not finite ({})", v.name, Short(value)),
             ))
         }
     }
@@ -445,13 +460,13 @@ impl Instance {
         if !value.is_finite() {
             return self.report(
                 Status::Error,
-                format!("{call}: {} = {value} is not finite", v.name),
+                format!("{call}: {} = {} is not finite", v.name, Short(value)),
             );
         }
         let bad = |this: &mut Self, why: &str| {
             this.report(
                 Status::Error,
-                format!("{call}: {} = {value}: {why}", v.name),
+                format!("{call}: {} = {}: {why}", v.name, Short(value)),
             )
         };
         if let Some(min) = v.min.filter(|&m| value < m) {
@@ -524,7 +539,11 @@ impl Instance {
         if !value.is_finite() {
             return self.report(
                 Status::Error,
-                format!("{call}: derivative of {} = {value} is not finite", v.name),
+                format!(
+                    "{call}: derivative of {} = {} is not finite",
+                    v.name,
+                    Short(value)
+                ),
             );
         }
         let s = self.sim.state();
@@ -552,79 +571,6 @@ impl Instance {
         }
     }
 
-    /// fmi2DoStep.
-    pub fn do_step(&mut self, current: f64, step: f64) -> Status {
-        if let Err(s) = self.check(Call::DoStep) {
-            return s;
-        }
-        let call = Call::DoStep.name();
-        let now = self.sim.time();
-        if self.sim.align_time(current).is_err() {
-            return self.report(
-                Status::Error,
-                format!(
-                    "{call}: communication point {current} s differs from the FMU time {now} s"
-                ),
-            );
-        }
-        if !(step.is_finite() && step > 0.0) {
-            return self.report(
-                Status::Error,
-                format!("{call}: communication step {step} s must be positive"),
-            );
-        }
-        let end = current + step;
-        if let Some(stop) = self
-            .stop_time
-            .filter(|&t| end > t + STOP_SLACK * t.abs().max(1.0))
-        {
-            return self.report(
-                Status::Error,
-                format!(
-                    "{call}: the step from {current} s by {step} s ends at {end} s, past the stop time {stop} s of fmi2SetupExperiment"
-                ),
-            );
-        }
-        self.outputs = None;
-        let before = self.sim.stats();
-        let result = self.sim.advance_to(current + step);
-        if self.step_statistics {
-            let after = self.sim.stats();
-            self.messages.push((
-                Status::Ok,
-                category(Status::Ok),
-                format!(
-                    "{call} from {current} s by {step} s: {} internal steps, {} Newton iterations, {} step cuts ({} Jacobian refreshes, {} factorizations)",
-                    after.steps - before.steps,
-                    after.iterations - before.iterations,
-                    after.step_cuts - before.step_cuts,
-                    after.refreshes - before.refreshes,
-                    after.factorizations - before.factorizations,
-                ),
-            ));
-        }
-        match result {
-            Ok(()) => match self.current_outputs() {
-                Ok(_) => Status::Ok,
-                Err(s) => s,
-            },
-            Err(e) => {
-                self.phase = Phase::StepFailed;
-                let reached = self.sim.time();
-                self.report(
-                    Status::Discard,
-                    format!("{call} from {current} s by {step} s discarded at {reached} s: {e}. Roll back with fmi2SetFMUstate or reset."),
-                )
-            }
-        }
-    }
-
-    /// fmi2GetRealStatus(fmi2LastSuccessfulTime).
-    pub fn last_successful_time(&mut self) -> Result<f64, Status> {
-        self.check(Call::GetRealStatus)?;
-        Ok(self.sim.time())
-    }
-
     /// fmi2Terminate.
     pub fn terminate(&mut self) -> Status {
         if let Err(s) = self.check(Call::Terminate) {
@@ -642,6 +588,7 @@ impl Instance {
         let params = Params::start(&self.model);
         match Self::fresh_simulator(&self.model, params.reduced_modes) {
             Ok(sim) => {
+                self.watch = ValidityWatch::new(sim.rotor());
                 self.sim = sim;
                 self.params = params;
                 self.viscosity = model_viscosity(&self.model);

@@ -8,11 +8,16 @@ use crate::bearing::{BearingKind, PlainBearing, RubElement, TiltingPadBearing};
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{BearingEntry, RubEntry};
+use crate::model::limits::{
+    CLEARANCE, CONTACT_STIFFNESS, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, RADIUS, STIFFNESS,
+    VISCOSITY,
+};
 use crate::model::{ModelError, PlacedBearing, PlacedElement, RADIUS_TOLERANCE};
 
 /// The radial clearance (m) of a film bearing from `clearance` (radial) or
 /// `diametral_clearance` (bore diameter less journal diameter, twice the
-/// radial one): exactly one of them, positive.
+/// radial one): exactly one of them, within its range ([`CLEARANCE`],
+/// [`DIAMETRAL_CLEARANCE`]).
 fn radial_clearance(
     ctx: &Ctx,
     p: &FieldPath,
@@ -20,8 +25,11 @@ fn radial_clearance(
     diametral: Option<f64>,
 ) -> Result<f64, ModelError> {
     match (clearance, diametral) {
-        (Some(c), None) => ctx.positive(p.key("clearance"), c),
-        (None, Some(d)) => Ok(0.5 * ctx.positive(p.key("diametral_clearance"), d)?),
+        (Some(c), None) => ctx.within(p.key("clearance"), c, &CLEARANCE),
+        (None, Some(d)) => {
+            let d = ctx.within(p.key("diametral_clearance"), d, &DIAMETRAL_CLEARANCE)?;
+            Ok(0.5 * d)
+        }
         (Some(c), Some(_)) => Err(ctx.err(
             p.key("diametral_clearance"),
             "both",
@@ -50,7 +58,7 @@ fn journal_radius(
     node: usize,
     elements: &[PlacedElement],
 ) -> Result<f64, ModelError> {
-    let radius = ctx.positive(p.key("radius"), radius)?;
+    let radius = ctx.within(p.key("radius"), radius, &RADIUS)?;
     let shaft = elements
         .iter()
         .filter(|e| e.node == node || e.node + 1 == node)
@@ -114,14 +122,15 @@ pub(super) fn bearings(
                 cyy,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
-                let f = |key: &str, v: f64| ctx.finite(p.key(key), v);
+                let k = |key: &str, v: f64| ctx.within(p.key(key), v, &STIFFNESS);
+                let c = |key: &str, v: f64| ctx.within(p.key(key), v, &DAMPING);
                 let k = [
-                    [f("kxx", kxx)?, f("kxy", kxy)?],
-                    [f("kyx", kyx)?, f("kyy", kyy)?],
+                    [k("kxx", kxx)?, k("kxy", kxy)?],
+                    [k("kyx", kyx)?, k("kyy", kyy)?],
                 ];
                 let c = [
-                    [f("cxx", cxx)?, f("cxy", cxy)?],
-                    [f("cyx", cyx)?, f("cyy", cyy)?],
+                    [c("cxx", cxx)?, c("cxy", cxy)?],
+                    [c("cyx", cyx)?, c("cyy", cyy)?],
                 ];
                 for (key, v) in [
                     ("kxx", k[0][0]),
@@ -157,9 +166,9 @@ pub(super) fn bearings(
                 let node = ctx.location(&p, node, z, node_z)?;
                 let mut bearing = PlainBearing {
                     radius: journal_radius(ctx, &p, radius, journal_collar, node, elements)?,
-                    length: ctx.positive(p.key("length"), length)?,
+                    length: ctx.within(p.key("length"), length, &LENGTH)?,
                     clearance: radial_clearance(ctx, &p, clearance, diametral_clearance)?,
-                    viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
+                    viscosity: ctx.within(p.key("viscosity"), viscosity, &VISCOSITY)?,
                     contact: None,
                 };
                 bearing.contact = contact_law(
@@ -270,9 +279,9 @@ pub(super) fn bearings(
                 }
                 let mut bearing = TiltingPadBearing {
                     radius,
-                    length: ctx.positive(p.key("length"), length)?,
+                    length: ctx.within(p.key("length"), length, &LENGTH)?,
                     clearance,
-                    viscosity: ctx.positive(p.key("viscosity"), viscosity)?,
+                    viscosity: ctx.within(p.key("viscosity"), viscosity, &VISCOSITY)?,
                     pads: pivots
                         .iter()
                         .map(|d| Pad::new(d.to_radians(), arc.to_radians(), offset, preload))
@@ -297,14 +306,14 @@ pub(super) fn bearings(
     for (i, r) in rubs.into_iter().enumerate() {
         let p = root.key("rubs").index(i);
         let node = ctx.location(&p, r.node, r.z, node_z)?;
-        let gap = ctx.positive(p.key("gap"), r.gap)?;
+        let gap = ctx.within(p.key("gap"), r.gap, &CLEARANCE)?;
         // The shaft's outer radius at the node: the larger of its elements'.
         let shaft_radius = elements
             .iter()
             .filter(|e| e.node == node || e.node + 1 == node)
             .map(|e| 0.5 * e.element.section.outer_diameter)
             .fold(0.0, f64::max);
-        let radius = ctx.positive(p.key("radius"), r.radius.unwrap_or(shaft_radius))?;
+        let radius = ctx.within(p.key("radius"), r.radius.unwrap_or(shaft_radius), &RADIUS)?;
         let default = ContactLaw::steel(gap, radius, RUB_WIDTH);
         let law = contact_law(
             ctx,
@@ -345,11 +354,12 @@ fn contact_law(
     }
     let mut law = default;
     if let Some(k) = stiffness {
-        law.stiffness = ctx.positive(p.key("contact_stiffness"), k)?;
+        law.stiffness = ctx.within(p.key("contact_stiffness"), k, &CONTACT_STIFFNESS)?;
         law.damping = ContactLaw::DAMPING_TIME * law.stiffness;
     }
     if let Some(c) = damping {
         law.damping = ctx.non_negative(p.key("contact_damping"), c)?;
+        ctx.within(p.key("contact_damping"), c, &DAMPING)?;
     }
     if let Some(mu) = friction {
         law.friction = ctx.non_negative(p.key("friction_coefficient"), mu)?;

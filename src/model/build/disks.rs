@@ -7,6 +7,7 @@ use super::materials::Materials;
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::DiskEntry;
+use crate::model::limits::{DIAMETER, INERTIA, LENGTH, Limit, MASS};
 use crate::model::{ModelError, PlacedDisk};
 
 /// Check each disk: unique name, its node, and either `mass`, `polar_inertia`,
@@ -32,17 +33,17 @@ pub(super) fn disks(
             || d.width.is_some();
         let disk = match (by_inertia, by_geometry) {
             (true, false) => {
-                let need = |key: &'static str, v: Option<f64>| match v {
-                    Some(v) => ctx.positive(p.key(key), v),
+                let need = |key: &'static str, v: Option<f64>, limit: &Limit| match v {
+                    Some(v) => ctx.within(p.key(key), v, limit),
                     None => Err(ctx.err(
                         p.key(key),
                         "(missing)",
                         "needed with mass-and-inertia disks",
                     )),
                 };
-                let mass = need("mass", d.mass)?;
-                let polar_inertia = need("polar_inertia", d.polar_inertia)?;
-                let diametral_inertia = need("diametral_inertia", d.diametral_inertia)?;
+                let mass = need("mass", d.mass, &MASS)?;
+                let polar_inertia = need("polar_inertia", d.polar_inertia, &INERTIA)?;
+                let diametral_inertia = need("diametral_inertia", d.diametral_inertia, &INERTIA)?;
                 Disk {
                     mass,
                     polar_inertia,
@@ -61,7 +62,7 @@ pub(super) fn disks(
                     }
                 };
                 let outer = match d.outer_diameter {
-                    Some(v) => ctx.positive(p.key("outer_diameter"), v)?,
+                    Some(v) => ctx.within(p.key("outer_diameter"), v, &DIAMETER)?,
                     None => {
                         return Err(ctx.err(
                             p.key("outer_diameter"),
@@ -80,7 +81,7 @@ pub(super) fn disks(
                     ));
                 }
                 let width = match d.width {
-                    Some(v) => ctx.positive(p.key("width"), v)?,
+                    Some(v) => ctx.within(p.key("width"), v, &LENGTH)?,
                     None => {
                         return Err(ctx.err(
                             p.key("width"),

@@ -4,6 +4,7 @@
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{ProbeEntry, UnbalanceEntry};
+use crate::model::limits::{GRAVITY, UNBALANCE};
 use crate::model::{ModelError, Probe, UnbalancePlane};
 
 /// Check each unbalance plane: unique name, node, `m·e ≥ 0` (kg·m), finite
@@ -19,7 +20,7 @@ pub(super) fn unbalances(
     for (i, u) in entries.into_iter().enumerate() {
         let p = root.key("unbalance").index(i);
         let node = ctx.location(&p, u.node, u.z, node_z)?;
-        let magnitude = ctx.non_negative(p.key("magnitude"), u.magnitude)?;
+        let magnitude = ctx.within(p.key("magnitude"), u.magnitude, &UNBALANCE)?;
         let phase = ctx.finite(p.key("phase_deg"), u.phase_deg)?.to_radians();
         unbalances.push(UnbalancePlane {
             name: names.claim(ctx, &p, default_name(u.name, "unbalance", i), "unbalance")?,
@@ -58,7 +59,7 @@ pub(super) fn gravity(
 ) -> Result<[f64; 3], ModelError> {
     let gravity = given.unwrap_or([0.0; 3]);
     for (k, g) in gravity.iter().enumerate() {
-        ctx.finite(root.key("gravity").index(k), *g)?;
+        ctx.within(root.key("gravity").index(k), *g, &GRAVITY)?;
     }
 
     Ok(gravity)

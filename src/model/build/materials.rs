@@ -7,6 +7,7 @@ use crate::model::ModelError;
 use crate::model::context::Ctx;
 use crate::model::error::FieldPath;
 use crate::model::file::MaterialEntry;
+use crate::model::limits::{DENSITY, MODULUS};
 
 /// The checked materials of a model, in file order.
 pub(super) struct Materials(Vec<Material>);
@@ -47,11 +48,11 @@ pub(super) fn materials(
         if materials.iter().any(|x| x.name == m.name) {
             return Err(ctx.err(p.key("name"), &m.name, "duplicate material name"));
         }
-        let youngs_modulus = ctx.positive(p.key("youngs_modulus"), m.youngs_modulus)?;
-        let density = ctx.positive(p.key("density"), m.density)?;
+        let youngs_modulus = ctx.within(p.key("youngs_modulus"), m.youngs_modulus, &MODULUS)?;
+        let density = ctx.within(p.key("density"), m.density, &DENSITY)?;
         let shear_modulus = match (m.shear_modulus, m.poisson_ratio) {
             (Some(g), None) => {
-                let g = ctx.positive(p.key("shear_modulus"), g)?;
+                let g = ctx.within(p.key("shear_modulus"), g, &MODULUS)?;
                 let nu = youngs_modulus / (2.0 * g) - 1.0;
                 if !(-1.0..0.5).contains(&nu) {
                     return Err(ctx.err(

@@ -38,9 +38,10 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     let nominal_speed = ctx.finite(root.key("speed_rpm"), raw.speed_rpm.unwrap_or(0.0))?
         * std::f64::consts::PI
         / 30.0;
-    let max_speed = ctx.positive(
+    let max_speed = ctx.within(
         root.key("max_speed_rpm"),
         raw.max_speed_rpm.unwrap_or(super::DEFAULT_MAX_SPEED_RPM),
+        &super::limits::MAX_SPEED_RPM,
     )? * std::f64::consts::PI
         / 30.0;
     if nominal_speed.abs() > max_speed {
@@ -50,11 +51,13 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
             "must not exceed max_speed_rpm",
         ));
     }
-    let reduced_modes = match raw.reduction {
+    let reduction = match raw.reduction {
         None => None,
         Some(r) => Some(match r.modes {
-            None => super::DEFAULT_REDUCED_MODES,
-            Some(m) if (1..=super::MAX_REDUCED_MODES as i64).contains(&m) => m as usize,
+            None => super::ReductionRequest::FromSpeedRange,
+            Some(m) if (1..=super::MAX_REDUCED_MODES as i64).contains(&m) => {
+                super::ReductionRequest::Modes(m as usize)
+            }
             Some(m) => {
                 return Err(ctx.err(
                     root.key("reduction").key("modes"),
@@ -68,7 +71,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         }),
     };
     Ok(RotorModel {
-        reduced_modes,
+        reduction,
         nominal_speed,
         max_speed,
         max_speed_stated: raw.max_speed_rpm.is_some(),

@@ -8,6 +8,7 @@ use super::materials::Materials;
 use crate::model::context::Ctx;
 use crate::model::error::FieldPath;
 use crate::model::file::ModelFile;
+use crate::model::limits::{AXIAL_FORCE, DIAMETER, LENGTH, POSITION};
 use crate::model::{ModelError, PlacedElement};
 
 /// The shaft: node positions (m, increasing) and elements in node order.
@@ -30,8 +31,12 @@ pub(super) fn shaft(
         shear_deformation: raw.shear_deformation.unwrap_or(true),
         rotary_inertia: raw.rotary_inertia.unwrap_or(true),
     };
-    let default_axial = ctx.finite(root.key("axial_force"), raw.axial_force.unwrap_or(0.0))?;
-    let start_z = ctx.finite(root.key("start_z"), raw.start_z.unwrap_or(0.0))?;
+    let default_axial = ctx.within(
+        root.key("axial_force"),
+        raw.axial_force.unwrap_or(0.0),
+        &AXIAL_FORCE,
+    )?;
+    let start_z = ctx.within(root.key("start_z"), raw.start_z.unwrap_or(0.0), &POSITION)?;
 
     if raw.shaft.is_empty() {
         return Err(ctx.err(
@@ -72,8 +77,8 @@ pub(super) fn shaft(
     let mut elements = Vec::with_capacity(total);
     for (i, s) in raw.shaft.iter().enumerate() {
         let p = root.key("shaft").index(i);
-        let length = ctx.positive(p.key("length"), s.length)?;
-        let outer = ctx.positive(p.key("outer_diameter"), s.outer_diameter)?;
+        let length = ctx.within(p.key("length"), s.length, &LENGTH)?;
+        let outer = ctx.within(p.key("outer_diameter"), s.outer_diameter, &DIAMETER)?;
         let inner = ctx.non_negative(p.key("inner_diameter"), s.inner_diameter)?;
         if inner >= outer {
             return Err(ctx.err(
@@ -85,7 +90,7 @@ pub(super) fn shaft(
         let material = materials.find(ctx, p.key("material"), &s.material)?;
         let count = s.elements.unwrap_or(1);
         let axial_force = match s.axial_force {
-            Some(f) => ctx.finite(p.key("axial_force"), f)?,
+            Some(f) => ctx.within(p.key("axial_force"), f, &AXIAL_FORCE)?,
             None => default_axial,
         };
         let element = ShaftElement {

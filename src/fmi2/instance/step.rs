@@ -1,0 +1,139 @@
+//! fmi2DoStep of an [`Instance`]: the step's checks before anything
+//! moves (state, clock, a step too short to advance the time, the stop time),
+//! the step statistics for the log, and on a reduced rotor the warning when
+//! the running speed or the motion leaves the range it is validated for.
+
+use super::super::states::Call;
+use super::{Instance, Phase, STOP_SLACK, Status, category};
+use crate::rotor::Rotor;
+use crate::solver::SolverOptions;
+use crate::solver::reduction_check::excursion_report;
+use crate::units::Short;
+
+impl Instance {
+    /// fmi2DoStep.
+    pub fn do_step(&mut self, current: f64, step: f64) -> Status {
+        if let Err(s) = self.check(Call::DoStep) {
+            return s;
+        }
+        let call = Call::DoStep.name();
+        let now = self.sim.time();
+        let (t, h) = (Short(current), Short(step));
+        if !(step.is_finite() && step > 0.0) {
+            return self.report(
+                Status::Error,
+                format!("{call}: communication step {h} s must be positive"),
+            );
+        }
+        if self.sim.align_time(current).is_err() {
+            return self.report(
+                Status::Error,
+                format!(
+                    "{call}: communication point {t} s differs from the FMU time {} s",
+                    Short(now)
+                ),
+            );
+        }
+        let end = current + step;
+        // The step the integrator would take: what t + h adds to t in floating point.
+        let advance = end - current;
+        if advance < SolverOptions::MIN_SPAN * (1.0 - 1e-6) {
+            let why = if advance == 0.0 {
+                format!(
+                    "does not advance the time {t} s at all (below its floating-point resolution)"
+                )
+            } else {
+                format!(
+                    "is shorter than the {} s the integrator resolves (round-off in the Newmark accelerations grows as 1/h²)",
+                    Short(SolverOptions::MIN_SPAN)
+                )
+            };
+            return self.report(
+                Status::Error,
+                format!("{call}: the communication step {h} s from {t} s {why}"),
+            );
+        }
+        if let Some(stop) = self
+            .stop_time
+            .filter(|&t| end > t + STOP_SLACK * t.abs().max(1.0))
+        {
+            return self.report(
+                Status::Error,
+                format!(
+                    "{call}: the step from {t} s by {h} s ends at {} s, past the stop time {} s of fmi2SetupExperiment",
+                    Short(end),
+                    Short(stop)
+                ),
+            );
+        }
+        self.outputs = None;
+        let before = self.sim.stats();
+        let result = self.sim.advance_to(current + step);
+        if self.step_statistics {
+            let after = self.sim.stats();
+            self.messages.push((
+                Status::Ok,
+                category(Status::Ok),
+                format!(
+                    "{call} from {t} s by {h} s: {} internal steps, {} Newton iterations, {} step cuts ({} Jacobian refreshes, {} factorizations)",
+                    after.steps - before.steps,
+                    after.iterations - before.iterations,
+                    after.step_cuts - before.step_cuts,
+                    after.refreshes - before.refreshes,
+                    after.factorizations - before.factorizations,
+                ),
+            ));
+        }
+        match result {
+            Ok(()) => match self.current_outputs() {
+                Ok(_) => self.watch_reduction(call),
+                Err(s) => s,
+            },
+            Err(e) => {
+                self.phase = Phase::StepFailed;
+                let reached = self.sim.time();
+                self.report(
+                    Status::Discard,
+                    format!(
+                        "{call} from {t} s by {h} s discarded at {} s: {e}. Roll back with fmi2SetFMUstate or reset.",
+                        Short(reached)
+                    ),
+                )
+            }
+        }
+    }
+
+    /// fmi2GetRealStatus(fmi2LastSuccessfulTime).
+    pub fn last_successful_time(&mut self) -> Result<f64, Status> {
+        self.check(Call::GetRealStatus)?;
+        Ok(self.sim.time())
+    }
+
+    /// After a step on a reduced rotor: fmi2Warning, once per excursion, when
+    /// the running speed or the frequency of the motion at the kept nodes
+    /// has left the range the rotor is validated for, with the error
+    /// estimate there (against the full rotor with this instance's
+    /// viscosities) and the mode count that would reach it.
+    fn watch_reduction(&mut self, call: &str) -> Status {
+        let (t, speed) = (self.sim.time(), self.sim.speed_at(self.sim.time()));
+        let Some(excursion) = self.watch.check(speed, self.sim.state()) else {
+            return Status::Ok;
+        };
+        let mut model = self.model.clone();
+        for (b, &mu) in model.bearings.iter_mut().zip(&self.viscosity) {
+            b.kind.set_viscosity(mu);
+        }
+        let report = match Rotor::new(model) {
+            Ok(full) => excursion_report(&full, self.sim.rotor(), speed, excursion),
+            Err(e) => format!("no error estimate ({e})"),
+        };
+        let text = format!(
+            "{call} at {} s: {report}; solver.reduced_modes = {} (0 runs the full rotor)",
+            Short(t),
+            self.params.reduced_modes
+        );
+        self.messages
+            .push((Status::Warning, category(Status::Warning), text));
+        Status::Warning
+    }
+}

@@ -1,0 +1,171 @@
+//! The physical range every size, mass and stiffness of a model file must lie
+//! in. A value outside is not a machine but a unit slip or a typo (a diameter
+//! of 1e300 m, a disk of 1e12 kg), and would reach the solver as an infinite
+//! mass or a NaN: it is refused with the field, file, line, value and range.
+//! The ranges are wide on purpose: from micro-turbines to the largest hydro
+//! generators, and the idealizations models use (a "rigid" shaft of
+//! E = 1e15 Pa, a "massless" one of 1e-6 kg/m³).
+
+/// A closed range `[min, max]` in `unit`, and why it is where it is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Limit {
+    /// Smallest value allowed.
+    pub min: f64,
+    /// Largest value allowed.
+    pub max: f64,
+    /// SI unit, for the message.
+    pub unit: &'static str,
+    /// What lies at the ends, for the message.
+    pub why: &'static str,
+}
+
+impl Limit {
+    /// Whether `v` is finite and within the range.
+    pub fn holds(&self, v: f64) -> bool {
+        v.is_finite() && (self.min..=self.max).contains(&v)
+    }
+}
+
+/// Shaft section lengths, bearing lengths, disk widths (m).
+pub const LENGTH: Limit = Limit {
+    min: 1e-6,
+    max: 1e3,
+    unit: "m",
+    why: "from a micrometre to a kilometre: the longest shaft lines are about 100 m",
+};
+
+/// Outer diameters of shaft sections and disks (m).
+pub const DIAMETER: Limit = Limit {
+    min: 1e-5,
+    max: 100.0,
+    unit: "m",
+    why: "from 10 µm to 100 m: the largest hydro-generator rotors are about 20 m across",
+};
+
+/// Journal radii of fluid-film bearings and rotor radii of rubs (m).
+pub const RADIUS: Limit = Limit {
+    min: 5e-6,
+    max: 50.0,
+    unit: "m",
+    why: "half of the diameter range",
+};
+
+/// Radial clearances of fluid-film bearings and gaps of rubs (m).
+pub const CLEARANCE: Limit = Limit {
+    min: 1e-7,
+    max: 1.0,
+    unit: "m",
+    why: "from 0.1 µm, the roughness of a lapped journal, to 1 m",
+};
+
+/// Diametral clearances of fluid-film bearings (m): twice [`CLEARANCE`].
+pub const DIAMETRAL_CLEARANCE: Limit = Limit {
+    min: 2e-7,
+    max: 2.0,
+    unit: "m",
+    why: "twice the radial clearance's range, from 0.1 µm to 1 m",
+};
+
+/// Disk masses (kg).
+pub const MASS: Limit = Limit {
+    min: 1e-6,
+    max: 1e7,
+    unit: "kg",
+    why: "from a milligram to 10 000 t: the heaviest generator rotors weigh 2 000–4 000 t",
+};
+
+/// Polar and diametral inertias of disks (kg·m²).
+pub const INERTIA: Limit = Limit {
+    min: 1e-18,
+    max: 1e10,
+    unit: "kg·m²",
+    why: "a milligram at 1 µm to 10 000 t at 30 m",
+};
+
+/// Density of a material (kg/m³).
+pub const DENSITY: Limit = Limit {
+    min: 1e-9,
+    max: 1e5,
+    unit: "kg/m³",
+    why: "up to 4 × osmium; down to the near-zero density of a massless-shaft idealization",
+};
+
+/// Young's and shear moduli of a material (Pa).
+pub const MODULUS: Limit = Limit {
+    min: 1e3,
+    max: 1e17,
+    unit: "Pa",
+    why: "from soft foam to 1e5 × steel, which holds rigid-shaft idealizations",
+};
+
+/// Stiffness of linear bearings, entry by entry (N/m).
+pub const STIFFNESS: Limit = Limit {
+    min: -1e15,
+    max: 1e15,
+    unit: "N/m",
+    why: "the stiffest supports are about 1e10 N/m; 1e15 N/m is rigid",
+};
+
+/// Damping of linear bearings, entry by entry, and contact damping (N·s/m).
+pub const DAMPING: Limit = Limit {
+    min: -1e12,
+    max: 1e12,
+    unit: "N·s/m",
+    why: "squeeze-film dampers reach about 1e7 N·s/m",
+};
+
+/// Contact stiffness of journal–stator contacts and rubs (N/m).
+pub const CONTACT_STIFFNESS: Limit = Limit {
+    min: 1.0,
+    max: 1e15,
+    unit: "N/m",
+    why: "a steel line contact is about 1e9–1e11 N/m",
+};
+
+/// Oil viscosity of fluid-film bearings (Pa·s), also the FMU's declared range.
+pub const VISCOSITY: Limit = Limit {
+    min: 1e-6,
+    max: 1e3,
+    unit: "Pa·s",
+    why: "from a gas film to a heavy grease",
+};
+
+/// Unbalance of a plane (kg·m).
+pub const UNBALANCE: Limit = Limit {
+    min: 0.0,
+    max: 1e6,
+    unit: "kg·m",
+    why: "10 000 t a tenth of a metre off its axis",
+};
+
+/// Axial force of the shaft (N, compression negative).
+pub const AXIAL_FORCE: Limit = Limit {
+    min: -1e10,
+    max: 1e10,
+    unit: "N",
+    why: "the thrust of the largest hydro units is about 5e7 N",
+};
+
+/// Axial position of the first node (m).
+pub const POSITION: Limit = Limit {
+    min: -1e4,
+    max: 1e4,
+    unit: "m",
+    why: "within ten kilometres of the origin",
+};
+
+/// Each gravity component (m/s²).
+pub const GRAVITY: Limit = Limit {
+    min: -1e3,
+    max: 1e3,
+    unit: "m/s²",
+    why: "up to 100 g",
+};
+
+/// Largest spin speed (rpm).
+pub const MAX_SPEED_RPM: Limit = Limit {
+    min: 1e-3,
+    max: 1e7,
+    unit: "rpm",
+    why: "the fastest micro-turbines spin at about 1e6 rpm",
+};
