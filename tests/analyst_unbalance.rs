@@ -484,3 +484,52 @@ fn amplitudes_are_stated_zero_to_peak_or_peak_to_peak() {
         assert!((y / x - 2.0).abs() < 1e-3, "{x} vs {y}");
     }
 }
+
+/// A grid whose golden-section refinement lands on the undamped resonance
+/// itself (the default classic rotor over 0 … 6000 rpm in 201 points, as `rotor
+/// report` at 3000 rpm sweeps it): the singular dynamic stiffness there is the
+/// peak, unbounded, at the speed another grid's refinement converges to.
+#[test]
+fn a_refinement_that_meets_the_undamped_resonance_reports_it_unbounded() {
+    let rotor = Rotor::new(RotorModel::default_model()).unwrap();
+    let rpm = std::f64::consts::PI / 30.0;
+    let points = response_points(&rotor);
+    let first_peak = |max_rpm: f64, n: usize| {
+        let grid = sweep(&rotor, &speed_grid(0.0, max_rpm * rpm, n).unwrap(), &points).unwrap();
+        peaks(&rotor, &grid, 0).unwrap()[0]
+    };
+    let exact = first_peak(6000.0, 201);
+    let other = first_peak(4000.0, 401);
+    assert!(
+        exact.is_undamped() && other.is_undamped(),
+        "{exact:?} {other:?}"
+    );
+    assert!(
+        exact.amplitude.is_finite() && exact.amplitude > 0.0,
+        "{exact:?}"
+    );
+    assert!(
+        (exact.speed - other.speed).abs() < 1e-8 * other.speed,
+        "{} vs {} rad/s",
+        exact.speed,
+        other.speed
+    );
+    let out = rotor_cli()
+        .args(["unbalance", "--max-rpm", "6000", "--points", "201"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let row = stdout
+        .lines()
+        .find(|l| l.starts_with("probe disk"))
+        .unwrap();
+    assert!(
+        row.contains("1111.5") && row.contains("unbounded") && row.contains('∞'),
+        "{row}"
+    );
+}

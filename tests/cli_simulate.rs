@@ -241,24 +241,46 @@ fn a_ramp_past_max_speed_is_refused_before_the_run_in_rpm() {
     );
 }
 
-/// A run that fails (a 10⁶ kg·m unbalance drives the Jeffcott journals
-/// through their films) keeps its rows up to the failure in the CSV and says
-/// where they are and when it stopped.
+/// A stiff seal rub (1e15 N/m, 0.1 mm gap) on the damped classic rotor with a
+/// 1 kg·m unbalance at the disk: the model the two tests below fail on.
+/// (A 10⁶ kg·m unbalance on the Jeffcott rotor failed before the damped
+/// Newton of issue 22b; it now runs through.)
+fn rub_model(d: &Path) -> PathBuf {
+    let model = d.join("rub.toml");
+    let text_in = std::fs::read_to_string(root().join("models/classic_disk_rotor_damped.toml"))
+        .unwrap()
+        .replace("magnitude = 0.001 ", "magnitude = 1.0 ");
+    assert!(text_in.contains("magnitude = 1.0 "));
+    std::fs::write(
+        &model,
+        format!(
+            "{text_in}\n[[rubs]]\nname = \"seal\"\nnode = 4\ngap = 1e-4\ncontact_stiffness = 1e15\n"
+        ),
+    )
+    .unwrap();
+    model
+}
+
+/// A run that fails (the rub above at 3000 rpm: Newton does not converge
+/// after 16 halvings) keeps its rows up to the failure in the CSV and says
+/// where they are and when it stopped; the contact warnings come first.
 #[test]
 fn a_failed_run_keeps_its_rows() {
     let d = dir("simulate_failure");
-    let model = d.join("huge_unbalance.toml");
-    let text_in = std::fs::read_to_string(root().join("models/jeffcott.toml"))
-        .unwrap()
-        .replace("magnitude = 2e-5 ", "magnitude = 1e6 ");
-    assert!(text_in.contains("magnitude = 1e6"));
-    std::fs::write(&model, text_in).unwrap();
+    let model = rub_model(&d);
     let path = d.join("partial.csv");
     let _ = std::fs::remove_file(&path);
     let out = rotor()
         .arg("simulate")
         .arg(&model)
-        .args(["--ramp-rpm", "0:3000", "--duration", "0.5", "--csv"])
+        .args([
+            "--rpm",
+            "3000",
+            "--no-gravity",
+            "--duration",
+            "0.5",
+            "--csv",
+        ])
         .arg(&path)
         .output()
         .unwrap();
@@ -279,34 +301,27 @@ fn a_failed_run_keeps_its_rows() {
         )),
         "{stderr}"
     );
-    assert!(stderr.contains("did not converge"), "{stderr}");
+    let failure = stderr
+        .find("did not converge")
+        .unwrap_or_else(|| panic!("{stderr}"));
+    let contact = stderr.find("warning: rub seal: at t = ").unwrap();
+    assert!(contact < failure, "{stderr}");
 }
 
 /// A reduced run that fails still warns about the motion that left the range
 /// the reduced rotor is validated for (the watch runs in the same progress
-/// callback that keeps the rows): the damped classic rotor on 4 modes (valid
-/// up to 11.1 Hz) with a stiff seal rub chatters at the rub (RMS frequency
-/// above 1 kHz) while spinning at 334 rpm, then fails on the run-up to
-/// 3000 rpm; the warning comes before the error and the rows are kept.
+/// callback that keeps the rows): the rub model on 4 modes (valid up to
+/// 11.1 Hz) chatters at the rub (an RMS frequency far above 11.1 Hz) while
+/// spinning at 334 rpm, and fails later in the run (the chattering run is
+/// chaotic: only the order of the messages and the kept rows are checked).
 #[test]
 fn a_failed_reduced_run_still_warns_about_its_motion() {
     let d = dir("simulate_reduced_failure");
-    let model = d.join("rub.toml");
-    let text_in = std::fs::read_to_string(root().join("models/classic_disk_rotor_damped.toml"))
-        .unwrap()
-        .replace("magnitude = 0.001 ", "magnitude = 0.1 ");
-    assert!(text_in.contains("magnitude = 0.1 "));
-    std::fs::write(
-        &model,
-        format!(
-            "{text_in}\n[[rubs]]\nname = \"seal\"\nnode = 4\ngap = 1e-4\ncontact_stiffness = 1e12\n"
-        ),
-    )
-    .unwrap();
+    let model = rub_model(&d);
     let speeds = d.join("speeds.csv");
     std::fs::write(
         &speeds,
-        "time_s,speed_rpm\n0,334\n0.45,334\n0.6,3000\n1,3000\n",
+        "time_s,speed_rpm\n0,334\n0.45,334\n0.5,100\n0.9,100\n0.95,334\n1,334\n",
     )
     .unwrap();
     let path = d.join("partial.csv");
@@ -331,7 +346,7 @@ fn a_failed_reduced_run_still_warns_about_its_motion() {
     assert!(stderr.contains("above the 11.1 Hz (668 rpm)"), "{stderr}");
     let (_, rows) = csv(&path);
     let reached = rows.last().unwrap()[0];
-    assert!(reached > 0.45 && reached < 1.0, "{reached}");
+    assert!(reached > 0.361 && reached < 1.0, "{reached}");
     assert!(
         stderr.contains(&format!(
             "(failed after t = {} s of 1 s; the {} rows",

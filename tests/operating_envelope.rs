@@ -309,6 +309,87 @@ fn a_rub_continues_in_contact_with_the_orbit_at_the_contact_radius_plus_the_pene
     }
 }
 
+/// The Jeffcott rotor with a rub ring at the disk (radial gap 200 µm, steel
+/// ring default) and `unbalance` kg·m at the disk.
+fn jeffcott_with_a_rub(unbalance: f64) -> RotorModel {
+    jeffcott_with(|t| {
+        t.replace("magnitude = 2e-5", &format!("magnitude = {unbalance:e}"))
+            + "\n[[rubs]]\nname = \"seal\"\nnode = 5\ngap = 200e-6\n"
+    })
+}
+
+/// A rub and bearing contact at once (issue 22): 1e3 kg·m at 3000 rpm throws
+/// the disk onto a rub ring of gap 200 µm while the bent shaft presses the
+/// journals into their bushings. It used to end in "Newton–Raphson did not
+/// converge … after 10 halvings" within 2 ms, at the FMU's 1 ms step and at
+/// 0.1 ms: the dry friction drives the disk towards rolling on the ring, where
+/// the sign of the friction turns within `v_ε = 10 mm/s` and plain Newton
+/// cycles from one side of it to the other. It runs 1 s, and the stator holds
+/// the disk: the contact carries the unbalance force `F = m e Ω²` (its peak is
+/// at least `F`) and the penetration stays below that of `2F` (a load applied
+/// at once deflects a spring by at most twice its static deflection; the
+/// shaft's own restoring force only reduces it): orbit ≤ gap + δ₀ + 2F/k.
+#[test]
+fn a_rub_with_the_journals_in_contact_runs_on_with_the_orbit_held_by_the_stator() {
+    let unbalance = 1e3;
+    let model = jeffcott_with_a_rub(unbalance);
+    let seal = model.bearings.iter().position(|b| b.kind.is_rub()).unwrap();
+    let BearingKind::Rub(rub) = &model.bearings[seal].kind else {
+        unreachable!()
+    };
+    let law = rub.contact;
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let force = unbalance * speed * speed;
+    for step in [1e-3, 1e-4] {
+        let options = SolverOptions {
+            time_step: step,
+            ..SolverOptions::default()
+        };
+        let mut sim = Simulator::new(Rotor::new(model.clone()).unwrap(), options).unwrap();
+        sim.set_speed(speed, 0.0).unwrap();
+        sim.settle_static().unwrap();
+        let records = record(
+            &mut sim,
+            &SpeedProfile::Constant(speed),
+            1.0,
+            1e-3,
+            |_, _| {},
+        )
+        .unwrap_or_else(|e| panic!("step {step} s: {e}"));
+        assert_eq!(records.last().unwrap().time, 1.0);
+        let peak_force = records
+            .iter()
+            .map(|o| o.bearings[seal].report.contact_force)
+            .fold(0.0, f64::max);
+        let orbit = largest_orbit(&records, seal);
+        let allowed = law.gap + law.smoothing + 2.0 * force / law.stiffness;
+        eprintln!(
+            "step {step} s: orbit {orbit} m (allowed {allowed} m), peak rub force {peak_force} N (F = {force} N), {:?}",
+            sim.stats()
+        );
+        assert!(
+            peak_force >= force,
+            "step {step} s: peak rub force {peak_force} N < F = {force} N"
+        );
+        assert!(
+            orbit > law.gap && orbit <= allowed,
+            "step {step} s: orbit {orbit} m, gap {} m, allowed {allowed} m",
+            law.gap
+        );
+        let journals = [0, 1].map(|k| {
+            records
+                .iter()
+                .map(|o| o.bearings[k].report.contact_force)
+                .fold(0.0, f64::max)
+        });
+        assert!(
+            journals.iter().all(|&n| n > 0.0),
+            "journals in contact: {journals:?}"
+        );
+        assert!(sim.stats().retries > 0, "{:?}", sim.stats());
+    }
+}
+
 /// `rotor simulate --ramp-rpm 0:N` and `N:0` run from and to standstill without
 /// `--no-settle`: the CSV shows the journals on their bushings at rest (contact
 /// force = the beam reaction, no film) and floating at speed.
@@ -360,4 +441,56 @@ fn the_cli_runs_up_from_rest_and_coasts_down_to_rest() {
         assert_eq!(moving[contact], 0.0, "{ramp}: floating at 3000 rpm");
         assert!(moving[film] > 0.0);
     }
+}
+
+/// `rotor simulate` says when a contact leaves the range of its law (issue
+/// 22): the 1e3 kg·m rub of the Jeffcott rotor throws the disk centimetres
+/// "into" its seal at forces far past yield, and the journals into their
+/// bushings; each contact gets one warning per limit for the whole run. The
+/// shipped rotor at its own unbalance, run up from rest on its bushings,
+/// gets none.
+#[test]
+fn the_cli_warns_once_per_run_when_a_contact_leaves_its_law() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("envelope_contact_cli");
+    std::fs::create_dir_all(&dir).unwrap();
+    let rub = dir.join("jeffcott_seal.toml");
+    std::fs::write(
+        &rub,
+        JEFFCOTT.replace("magnitude = 2e-5", "magnitude = 1e3")
+            + "\n[[rubs]]\nname = \"seal\"\nnode = 5\ngap = 200e-6\n",
+    )
+    .unwrap();
+    let shipped =
+        std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/models/jeffcott.toml"));
+    let run = |model: &std::path::Path, speed: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .arg("simulate")
+            .arg(model)
+            .args(speed)
+            .args(["--duration", "0.05", "--csv"])
+            .arg(dir.join("run.csv"))
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    let stderr = run(&rub, &["--rpm", "3000"]);
+    for contact in ["rub seal", "bearing left", "bearing right"] {
+        let count = |what: &str| {
+            stderr
+                .lines()
+                .filter(|l| {
+                    l.starts_with(&format!("warning: {contact}: at t = ")) && l.contains(what)
+                })
+                .count()
+        };
+        assert_eq!(count("into its stator"), 1, "{contact}:\n{stderr}");
+        assert_eq!(count("yield onset of steel"), 1, "{contact}:\n{stderr}");
+    }
+    let stderr = run(&shipped, &["--ramp-rpm", "0:3000"]);
+    assert!(!stderr.contains("warning"), "{stderr}");
 }

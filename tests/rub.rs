@@ -304,3 +304,177 @@ fn the_operating_point_lists_bearings_not_rubs() {
     let names: Vec<&str> = points.iter().map(|p| p.name.as_str()).collect();
     assert_eq!(names, ["left", "right"]);
 }
+
+/// Dry whip on fluid-film bearings (issue 22): the Jeffcott rotor with 1 kg·m
+/// at its disk, at 3000 rpm, thrown onto a seal of gap 200 µm around the disk.
+/// Friction drives the disk backward until it rolls on the stator: the sliding
+/// velocity `v_s = ṗ·t + Ω R` settles at zero, and the whirl rate `ψ̇` follows
+/// the rolling kinematics `ψ̇ = −Ω R / r` (r the orbit radius). At `v_s ≈ 0`
+/// the friction's sign turns within `v_ε`, and plain Newton cycles between its
+/// two sides: the run used to take over 24 000 step halvings in 0.2 s. The
+/// damped Newton solves every step of 0.1 ms without one.
+#[test]
+fn a_disk_rolling_on_its_seal_whirls_backward_at_the_rolling_rate_without_step_cuts() {
+    let text = include_str!("../models/jeffcott.toml")
+        .replace("magnitude = 2e-5", "magnitude = 1.0")
+        + "\n[[rubs]]\nname = \"seal\"\nnode = 5\ngap = 200e-6\n";
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "jeffcott_seal.toml").unwrap()).unwrap();
+    let (law, node) = rub_of(&rotor);
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let mut sim = Simulator::new(rotor, SolverOptions::default()).unwrap();
+    sim.set_speed(speed, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    // Over the second half: the instantaneous whirl rate (p × ṗ)/r², the
+    // rolling rate −Ω R / r and the sliding velocity.
+    let (mut whirl, mut rolling, mut sliding, mut count) = (0.0, 0.0, 0.0f64, 0);
+    for k in 1..=5000 {
+        sim.advance_to(k as f64 * 1e-4).unwrap();
+        if k <= 2500 {
+            continue;
+        }
+        let ((x, vx), (y, vy)) = rub_position(&sim, node);
+        let (_, report) = law.evaluate(
+            nalgebra::Vector2::new(x, y),
+            nalgebra::Vector2::new(vx, vy),
+            speed,
+        );
+        assert!(
+            report.normal_force > 0.0,
+            "off the seal at t = {} s",
+            sim.time()
+        );
+        let r2 = x * x + y * y;
+        whirl += (x * vy - y * vx) / r2;
+        rolling += -speed * law.radius / r2.sqrt();
+        sliding = sliding.max(report.sliding_velocity.abs());
+        count += 1;
+    }
+    let (whirl, rolling) = (whirl / count as f64, rolling / count as f64);
+    let stats = sim.stats();
+    eprintln!(
+        "whirl {whirl} rad/s, rolling {rolling} rad/s, largest |v_s| {sliding} m/s, {stats:?}"
+    );
+    assert!(
+        sliding < 0.01 * speed * law.radius,
+        "largest sliding velocity {sliding} m/s: not rolling"
+    );
+    assert!(
+        whirl < 0.0 && (whirl - rolling).abs() < 0.01 * rolling.abs(),
+        "whirl {whirl} rad/s, rolling {rolling} rad/s"
+    );
+    assert_eq!(stats.step_cuts, 0, "{stats:?}");
+    assert!(stats.retries > 0, "{stats:?}");
+}
+
+/// What [`thrown_and_watched`] saw: the deepest penetration (m), the first
+/// step (time, value) past 10 % of the gap and past the yield force, and the
+/// warnings the simulator raised.
+struct Watched {
+    deepest: f64,
+    deep: Option<(f64, f64)>,
+    hard: Option<(f64, f64)>,
+    warnings: Vec<rotor_bearing::solver::ContactWarning>,
+}
+
+/// Contact far outside its law is reported (issue 22): the test rotor
+/// (contact `keys`) displaced by `y0` (m) and thrown at the stator at
+/// `speed_in` m/s, its contact checked from the state after every 10 µs step.
+fn thrown_and_watched(keys: &str, y0: f64, speed_in: f64) -> Watched {
+    let rotor = rub_rotor(keys, 0.0);
+    let (law, node) = rub_of(&rotor);
+    let mut sim = thrown(rotor, 0.0, y0, (0.0, -speed_in), 1e-5);
+    let (mut deepest, mut deep, mut hard) = (0.0f64, None, None);
+    let mut warnings = Vec::new();
+    for k in 1..=2000 {
+        sim.advance_to(k as f64 * 1e-5).unwrap();
+        let ((x, vx), (y, vy)) = rub_position(&sim, node);
+        let (_, report) = law.evaluate(
+            nalgebra::Vector2::new(x, y),
+            nalgebra::Vector2::new(vx, vy),
+            0.0,
+        );
+        deepest = deepest.max(report.penetration);
+        if deep.is_none() && report.penetration > 0.1 * law.gap {
+            deep = Some((sim.time(), report.penetration));
+        }
+        if hard.is_none() && report.normal_force > law.yield_force() {
+            hard = Some((sim.time(), report.normal_force));
+        }
+        warnings.extend(sim.take_contact_warnings());
+    }
+    Watched {
+        deepest,
+        deep,
+        hard,
+        warnings,
+    }
+}
+
+/// The limits of the contact law are watched at every step: a rotor thrown
+/// at its seal so hard that it goes seven gaps "into" the stator gets one
+/// warning for the penetration (beyond 10 % of the gap) and one for the force
+/// (beyond the yield onset of the contact, `F_y = π L R* p_y²/E*`), each at the
+/// first step past the limit and never again; a gentle throw that stays within
+/// both gets none.
+#[test]
+fn contact_beyond_the_limits_of_its_law_is_reported_once_per_run() {
+    let keys = "contact_stiffness = 1e8\ncontact_damping = 0.0\nfriction_coefficient = 0.0";
+    // The yield force by hand: L = k / ((π/4) E*), R* = R (R + g)/g.
+    let e_star = 2.1e11 / (2.0 * (1.0 - 0.09));
+    let length = 1e8 / (std::f64::consts::FRAC_PI_4 * e_star);
+    let relative = 0.025 * (0.025 + 100e-6) / 100e-6;
+    let yield_force = std::f64::consts::PI * length * relative * (1.67 * 250e6f64).powi(2) / e_star;
+    let (law, _) = rub_of(&rub_rotor(keys, 0.0));
+    assert!((law.yield_force() - yield_force).abs() < 1e-12 * yield_force);
+
+    let Watched {
+        deepest,
+        deep,
+        hard,
+        warnings,
+    } = thrown_and_watched(keys, 0.0, 2.0);
+    eprintln!("thrown at 2 m/s: deepest {deepest:e} m; {warnings:#?}");
+    let (t_deep, deep) = deep.expect("beyond 10 % of the gap");
+    let (t_hard, hard) = hard.expect("beyond the yield force");
+    assert!(deepest > 1.5 * law.gap, "{deepest:e} m");
+    assert_eq!(warnings.len(), 2, "{warnings:#?}");
+    let by = |limit| warnings.iter().find(|w| w.limit == limit).unwrap();
+    let p = by(rotor_bearing::solver::ContactLimit::Penetration);
+    // The step's time, to the round-off of the time grid.
+    assert!(
+        (p.time - t_deep).abs() < 1e-15,
+        "{} s vs {t_deep} s",
+        p.time
+    );
+    assert_eq!((p.value, p.bound), (deep, 0.1 * law.gap));
+    assert!(
+        p.message.starts_with("rub seal: at t = ") && p.message.contains("10 % of the gap"),
+        "{}",
+        p.message
+    );
+    let f = by(rotor_bearing::solver::ContactLimit::Force);
+    assert!(
+        (f.time - t_hard).abs() < 1e-15,
+        "{} s vs {t_hard} s",
+        f.time
+    );
+    assert_eq!(f.value, hard);
+    assert!((f.bound - yield_force).abs() < 1e-12 * yield_force);
+    assert!(
+        f.message.contains("yield onset of steel (418 MPa)"),
+        "{}",
+        f.message
+    );
+
+    let Watched {
+        deepest,
+        deep,
+        hard,
+        warnings,
+    } = thrown_and_watched(keys, -100e-6, 0.02);
+    assert!(
+        deepest > 0.0 && deep.is_none() && hard.is_none(),
+        "{deepest:e} m"
+    );
+    assert!(warnings.is_empty(), "{warnings:#?}");
+}

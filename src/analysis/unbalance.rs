@@ -486,7 +486,9 @@ pub struct Peak {
     pub amplitude: f64,
     /// Half-power speeds `(N1, N2)` (rad/s), when both lie inside the sweep.
     pub half_power: Option<(f64, f64)>,
-    /// `Nc / (N2 − N1)`, when both half-power speeds were found.
+    /// `Nc / (N2 − N1)`, when both half-power speeds were found; infinite when
+    /// the refinement met the undamped resonance exactly (singular dynamic
+    /// stiffness; `amplitude` is then the grid's largest).
     pub amplification_factor: Option<f64>,
 }
 
@@ -515,6 +517,17 @@ pub fn peaks(rotor: &Rotor, sweep: &UnbalanceSweep, p: usize) -> Result<Vec<Peak
     let amp = |s: f64| -> Result<f64, UnbalanceError> {
         Ok(major_semi_axis(node_xy(&response_at(rotor, s)?, node)))
     };
+    // Inside a bracket whose ends solved, a singular dynamic stiffness is the
+    // undamped resonance itself: the amplitude there is unbounded.
+    let amp_or_resonance = |s: f64| -> Result<f64, UnbalanceError> {
+        match amp(s) {
+            Err(UnbalanceError::Linear(LinearError::Linalg {
+                source: LinalgError::Singular { .. },
+                ..
+            })) => Ok(f64::INFINITY),
+            other => other,
+        }
+    };
     let a = sweep.major(p);
     let s = &sweep.speeds;
     let mut found = Vec::new();
@@ -525,23 +538,35 @@ pub fn peaks(rotor: &Rotor, sweep: &UnbalanceSweep, p: usize) -> Result<Vec<Peak
         let (mut lo, mut hi) = (s[k - 1], s[k + 1]);
         let mut x1 = hi - GOLDEN * (hi - lo);
         let mut x2 = lo + GOLDEN * (hi - lo);
-        let (mut f1, mut f2) = (amp(x1)?, amp(x2)?);
-        while hi - lo > 1e-10 * hi {
+        let (mut f1, mut f2) = (amp_or_resonance(x1)?, amp_or_resonance(x2)?);
+        while hi - lo > 1e-10 * hi && f1.is_finite() && f2.is_finite() {
             if f1 > f2 {
                 hi = x2;
                 x2 = x1;
                 f2 = f1;
                 x1 = hi - GOLDEN * (hi - lo);
-                f1 = amp(x1)?;
+                f1 = amp_or_resonance(x1)?;
             } else {
                 lo = x1;
                 x1 = x2;
                 f1 = f2;
                 x2 = lo + GOLDEN * (hi - lo);
-                f2 = amp(x2)?;
+                f2 = amp_or_resonance(x2)?;
             }
         }
         let (speed, amplitude) = if f1 > f2 { (x1, f1) } else { (x2, f2) };
+        if amplitude.is_infinite() {
+            // Met the resonance exactly: the largest amplitude solved on the
+            // grid stands for it, and the peak has no width.
+            found.push(Peak {
+                point: p,
+                speed,
+                amplitude: a[k],
+                half_power: None,
+                amplification_factor: Some(f64::INFINITY),
+            });
+            continue;
+        }
         let level = amplitude / std::f64::consts::SQRT_2;
         // Nearest grid speeds outside the peak where the amplitude is below the level.
         let below = (0..k).rev().find(|&j| a[j] < level);

@@ -22,6 +22,20 @@
 //!
 //! The elastic part is conservative (potential `k ∫ s dδ`); the damping and the
 //! friction only dissipate (`F·ṗ − T_f Ω ≤ 0` for their part).
+//!
+//! **Where the law means something.** A penalty stands for the elastic
+//! deformation of the two surfaces, so it describes a real contact only while
+//! (1) the penetration stays below [`ContactLaw::PENETRATION_LIMIT`] = 10 % of
+//! the radial gap — no elastic deformation of steel surfaces reaches a tenth
+//! of a bearing clearance or seal gap; a journal deeper "in" its stator is
+//! an artefact of the penalty — and (2) the normal force stays below
+//! [`ContactLaw::yield_force`], where the peak Hertz pressure of the
+//! conformal line contact (journal radius `R` in a bore of radius `R + g`,
+//! `R* = R (R + g)/g`, contact length `L = k / ((π/4) E*)` from the law's
+//! stiffness) reaches the yield onset of steel, `p_y = 1.67 σ_y` with
+//! `σ_y = 250 MPa`: `F_y = π L R* p_y² / E*` (Johnson, *Contact Mechanics*,
+//! §4.2 and §6.2). Beyond either the surfaces yield or the journal would be
+//! through the stator; the simulator reports it ([`ContactExtent`]).
 
 use nalgebra::{Matrix2, Vector2};
 
@@ -69,6 +83,47 @@ impl ContactReport {
     }
 }
 
+/// How deep and how hard a contact is, against the limits of the law (see the
+/// module docs): the worst over a bearing's contacts.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactExtent {
+    /// Penetration `δ` (m).
+    pub penetration: f64,
+    /// The largest penetration the law stands for, `PENETRATION_LIMIT · g` (m).
+    pub penetration_limit: f64,
+    /// Normal force `N` (N).
+    pub force: f64,
+    /// The force where the surfaces start to yield, [`ContactLaw::yield_force`] (N).
+    pub force_limit: f64,
+}
+
+impl ContactExtent {
+    /// The worse of two extents, limit by limit (relative to its limit).
+    pub fn worst(self, other: Self) -> Self {
+        let deeper =
+            other.penetration * self.penetration_limit > self.penetration * other.penetration_limit;
+        let harder = other.force * self.force_limit > self.force * other.force_limit;
+        Self {
+            penetration: if deeper {
+                other.penetration
+            } else {
+                self.penetration
+            },
+            penetration_limit: if deeper {
+                other.penetration_limit
+            } else {
+                self.penetration_limit
+            },
+            force: if harder { other.force } else { self.force },
+            force_limit: if harder {
+                other.force_limit
+            } else {
+                self.force_limit
+            },
+        }
+    }
+}
+
 /// Zero force and Jacobians (no contact).
 fn no_force() -> BearingForce {
     BearingForce {
@@ -97,6 +152,16 @@ impl ContactLaw {
     pub const SLIP_VELOCITY: f64 = 1e-2;
     /// Default contact time constant `c/k` (s) of the contact damping.
     pub const DAMPING_TIME: f64 = 1e-5;
+    /// Largest penetration, as a fraction of the gap, for which the law stands
+    /// for an elastic contact (see the module docs).
+    pub const PENETRATION_LIMIT: f64 = 0.1;
+    /// Yield onset of the peak Hertz pressure, `1.67 σ_y` with `σ_y = 250 MPa`
+    /// (structural steel) (Pa).
+    pub const YIELD_PRESSURE: f64 = 1.67 * 250e6;
+    /// Plane-strain modulus of steel on steel, `E* = E / (2 (1 − ν²))` with
+    /// `E = 210 GPa`, `ν = 0.3` (Pa): the modulus the default stiffness and the
+    /// yield force use.
+    pub const STEEL_MODULUS: f64 = 2.1e11 / (2.0 * (1.0 - 0.3 * 0.3));
 
     /// The documented default law of a steel journal of radius `radius` and
     /// length `length` (m) touching a steel bore at radial gap `gap` (m): the
@@ -105,10 +170,7 @@ impl ContactLaw {
     /// constant [`Self::DAMPING_TIME`]; friction `μ = 0.2` (dry steel on steel /
     /// babbitt); smoothing `δ₀ = 1e-3 g`.
     pub fn steel(gap: f64, radius: f64, length: f64) -> Self {
-        const YOUNG: f64 = 2.1e11;
-        const POISSON: f64 = 0.3;
-        let e_star = YOUNG / (2.0 * (1.0 - POISSON * POISSON));
-        let stiffness = std::f64::consts::FRAC_PI_4 * e_star * length;
+        let stiffness = std::f64::consts::FRAC_PI_4 * Self::STEEL_MODULUS * length;
         Self {
             gap,
             stiffness,
@@ -195,6 +257,28 @@ impl ContactLaw {
         } else {
             (1.0, 0.0)
         }
+    }
+
+    /// The normal force at which the surfaces start to yield (N):
+    /// `F_y = π L R* p_y² / E*` with `R* = R (R + g)/g`, `L = k / ((π/4) E*)`
+    /// (see the module docs).
+    pub fn yield_force(&self) -> f64 {
+        let e = Self::STEEL_MODULUS;
+        let length = self.stiffness / (std::f64::consts::FRAC_PI_4 * e);
+        let relative = self.radius * (self.radius + self.gap) / self.gap;
+        std::f64::consts::PI * length * relative * Self::YIELD_PRESSURE.powi(2) / e
+    }
+
+    /// The extent of a contact of penetration `report.penetration` and normal
+    /// force `report.normal_force` against this law's limits; `None` while
+    /// the surfaces are apart.
+    pub fn extent(&self, report: &ContactReport) -> Option<ContactExtent> {
+        (report.penetration > 0.0).then(|| ContactExtent {
+            penetration: report.penetration,
+            penetration_limit: Self::PENETRATION_LIMIT * self.gap,
+            force: report.normal_force,
+            force_limit: self.yield_force(),
+        })
     }
 
     /// Elastic energy stored at penetration `δ` (J): `k ∫₀^δ s`.
@@ -570,5 +654,50 @@ mod tests {
         bad = l;
         bad.gap = f64::NAN;
         assert!(bad.validate().unwrap_err().to_string().contains("gap"));
+    }
+
+    /// The limits of the law: 10 % of the gap, and the force where the peak
+    /// Hertz pressure of the conformal line contact reaches 1.67 σ_y. For the
+    /// steel law of a 50 mm journal, 30 mm long, in a 0.1 mm clearance:
+    /// `R* = 0.05 · 0.0501 / 1e-4 = 25.05 m`, `F_y = π L R* p_y² / E*`
+    /// = π · 0.03 · 25.05 · (417.5 MPa)² / 115.4 GPa = 3.57 MN.
+    #[test]
+    fn the_limits_of_the_law_are_a_tenth_of_the_gap_and_the_yield_force() {
+        let l = ContactLaw::steel(1e-4, 0.05, 0.03);
+        let e_star = 2.1e11 / 1.82;
+        let hand = std::f64::consts::PI * 0.03 * 25.05 * 417.5e6f64.powi(2) / e_star;
+        assert!(
+            (l.yield_force() - hand).abs() < 1e-12 * hand,
+            "{}",
+            l.yield_force()
+        );
+        assert!((hand - 3.57e6).abs() < 0.01e6, "{hand}");
+        let apart = l.evaluate(at(0.3, 0.9e-4), Vector2::zeros(), 100.0).1;
+        assert_eq!(l.extent(&apart), None);
+        let pressed = l.evaluate(at(0.3, 1.2e-4), Vector2::zeros(), 100.0).1;
+        let extent = l.extent(&pressed).unwrap();
+        assert!((extent.penetration - 0.2e-4).abs() < 1e-15);
+        assert_eq!(extent.penetration_limit, 1e-5);
+        assert_eq!(
+            (extent.force, extent.force_limit),
+            (pressed.normal_force, l.yield_force())
+        );
+        // The worst of two contacts, limit by limit relative to each limit.
+        let deep = ContactExtent {
+            penetration: 3e-5,
+            penetration_limit: 1e-5,
+            force: 1.0,
+            force_limit: 100.0,
+        };
+        let hard = ContactExtent {
+            penetration: 1e-6,
+            penetration_limit: 1e-6,
+            force: 90.0,
+            force_limit: 10.0,
+        };
+        let worst = deep.worst(hard);
+        assert_eq!((worst.penetration, worst.penetration_limit), (3e-5, 1e-5));
+        assert_eq!((worst.force, worst.force_limit), (90.0, 10.0));
+        assert_eq!(hard.worst(deep), worst);
     }
 }

@@ -51,7 +51,17 @@ pub enum EquilibriumError {
 /// internal coordinate (a pad's tilt) at the bearing's own guess
 /// ([`Bearing::guess_internal`]: the tilt of zero pivot moment); when Newton
 /// stalls from there, the load is applied in eight increments, each solved from
-/// the previous equilibrium (continuation in load).
+/// the previous equilibrium (continuation in load). The centre can be a
+/// degenerate start — pads without preload around a centred journal have a
+/// uniform film and carry nothing at any small tilt — so when that fails too,
+/// the continuation starts again from the journal a tenth of its clearance
+/// along the load, the pads at their zero-moment tilts there, and every
+/// Newton step re-seats a pad left carrying nothing where a loaded tilt exists
+/// ([`Bearing::reseat_internal`]). A heavy load at low speed can still defeat
+/// that path (a pad's loaded branch folds away on the way up in load): the
+/// last attempt solves the bearing at 1.25, 1.56, 1.95 or 2.44 times the speed
+/// the same way and steps the speed back down in eight geometric steps, each
+/// solved from the one before (continuation in speed).
 pub fn journal_equilibrium(
     bearing: &dyn Bearing,
     load: Vector2<f64>,
@@ -61,13 +71,79 @@ pub fn journal_equilibrium(
     let n = 2 + bearing.internal_dofs();
     let mut start = vec![0.0; n];
     bearing.guess_internal([0.0, 0.0], speed, &mut start[2..]);
-    let direct = newton(bearing, load, speed, scale, start.clone());
+    let direct = newton(bearing, load, speed, scale, start.clone(), false);
     if direct.is_ok() || n == 2 {
         return direct;
     }
-    let mut q = start;
+    let continued = continuation(bearing, load, speed, scale, start, false);
+    if continued.is_ok() {
+        return continued;
+    }
+    if load.norm() == 0.0 {
+        return continued;
+    }
+    let off_centre = off_centre_continuation(bearing, load, speed, scale);
+    if off_centre.is_ok() || speed == 0.0 {
+        return off_centre.or(continued);
+    }
+    for k in 1..=4 {
+        let higher = speed * 1.25f64.powi(k);
+        let Ok(mut eq) = off_centre_continuation(bearing, load, higher, scale) else {
+            continue;
+        };
+        let steps = 8;
+        let mut walked = true;
+        for i in 1..=steps {
+            let at = higher * (speed / higher).powf(i as f64 / steps as f64);
+            let at = if i == steps { speed } else { at };
+            match newton(bearing, load, at, scale, eq.q.clone(), true) {
+                Ok(next) => eq = next,
+                Err(_) => {
+                    walked = false;
+                    break;
+                }
+            }
+        }
+        if walked {
+            return Ok(eq);
+        }
+    }
+    off_centre.or(continued)
+}
+
+/// Continuation in load from the journal a tenth of its clearance along the
+/// load, the pads at their zero-moment tilts there, re-seating pads left on
+/// the unloaded branch (see [`journal_equilibrium`]).
+fn off_centre_continuation(
+    bearing: &dyn Bearing,
+    load: Vector2<f64>,
+    speed: f64,
+    scale: f64,
+) -> Result<Equilibrium, EquilibriumError> {
+    let n = 2 + bearing.internal_dofs();
+    let direction = load / load.norm();
+    let reach = bearing
+        .resting_contact([direction.x, direction.y])
+        .map_or(scale, |(gap, _)| gap.min(scale));
+    let mut offset = vec![0.0; n];
+    offset[0] = 0.1 * reach * direction.x;
+    offset[1] = 0.1 * reach * direction.y;
+    bearing.guess_internal([offset[0], offset[1]], speed, &mut offset[2..]);
+    continuation(bearing, load, speed, scale, offset, true)
+}
+
+/// The load applied in eight increments from `q`, each solved from the
+/// previous equilibrium (see [`journal_equilibrium`]).
+fn continuation(
+    bearing: &dyn Bearing,
+    load: Vector2<f64>,
+    speed: f64,
+    scale: f64,
+    mut q: Vec<f64>,
+    reseat: bool,
+) -> Result<Equilibrium, EquilibriumError> {
     let steps = 8;
-    let mut last = direct;
+    let mut last = Err(EquilibriumError::Singular);
     for k in 1..=steps {
         last = newton(
             bearing,
@@ -75,6 +151,7 @@ pub fn journal_equilibrium(
             speed,
             scale,
             q.clone(),
+            reseat,
         );
         match &last {
             Ok(eq) => q.clone_from(&eq.q),
@@ -84,13 +161,16 @@ pub fn journal_equilibrium(
     last
 }
 
-/// Newton's method with backtracking from `q` (see [`journal_equilibrium`]).
+/// Newton's method with backtracking from `q` (see [`journal_equilibrium`]);
+/// `reseat`: after every step, pads left on the unloaded branch are re-seated
+/// ([`Bearing::reseat_internal`]) and the residual taken there.
 fn newton(
     bearing: &dyn Bearing,
     load: Vector2<f64>,
     speed: f64,
     scale: f64,
     mut q: Vec<f64>,
+    reseat: bool,
 ) -> Result<Equilibrium, EquilibriumError> {
     let n = q.len();
     let zero = vec![0.0; n];
@@ -141,6 +221,10 @@ fn newton(
         }
         if !accepted {
             break;
+        }
+        if reseat && bearing.reseat_internal(&mut q, speed) {
+            bearing.evaluate(&q, &zero, speed, &mut eval)?;
+            r = residual_of(&eval);
         }
     }
     Err(EquilibriumError::NotConverged {
@@ -220,7 +304,7 @@ pub fn coefficient_points(
             let load = Vector2::new(0.0, -w);
             let continued = previous
                 .take()
-                .map(|q| newton(bearing, load, speed, scale, q));
+                .map(|q| newton(bearing, load, speed, scale, q, false));
             let eq = match continued {
                 Some(Ok(eq)) => Ok(eq),
                 _ => journal_equilibrium(bearing, load, speed, scale),

@@ -235,11 +235,32 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
         internal.fill(0.0);
     }
 
+    /// Move internal coordinates that sit on a branch a static solve must not
+    /// end on (a tilting pad that carries nothing where a loaded zero-moment
+    /// tilt exists) to the right one, with the journal held at `q[..2]`;
+    /// returns whether any moved. Nothing to do for other kinds.
+    fn reseat_internal(&self, _q: &mut [f64], _speed: f64) -> bool {
+        false
+    }
+
     /// Where a journal pushed along the unit vector `direction` comes to rest
     /// when its film carries nothing: the distance (m) from the bearing centre
     /// at which it touches and the contact stiffness (N/m) there; `None` for a
     /// bearing without contact (a linear one).
     fn resting_contact(&self, _direction: [f64; 2]) -> Option<(f64, f64)> {
+        None
+    }
+
+    /// How deep and how hard the journal touches its stator at `q`, `q̇` and
+    /// spin `speed`, against the limits of the contact law (the worst over
+    /// its contacts, [`contact::ContactExtent`]); `None` out of contact, and
+    /// for a bearing without contact.
+    fn contact_extent(
+        &self,
+        _q: &[f64],
+        _qdot: &[f64],
+        _speed: f64,
+    ) -> Option<contact::ContactExtent> {
         None
     }
 

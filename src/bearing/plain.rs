@@ -33,7 +33,7 @@ use std::f64::consts::PI;
 
 use nalgebra::{Matrix2, Vector2};
 
-use super::contact::{ContactLaw, ContactReport};
+use super::contact::{ContactExtent, ContactLaw, ContactReport};
 use super::film::FilmIntegrals;
 use super::{
     Bearing, BearingError, BearingEval, BearingForce, BearingReport, JournalState, check_state,
@@ -344,6 +344,13 @@ impl Bearing for PlainBearing {
     fn resting_contact(&self, _direction: [f64; 2]) -> Option<(f64, f64)> {
         let law = self.contact_law();
         Some((law.gap, law.stiffness))
+    }
+
+    fn contact_extent(&self, q: &[f64], qdot: &[f64], speed: f64) -> Option<ContactExtent> {
+        let law = self.contact_law();
+        let state = JournalState::from_coordinates(q, qdot);
+        let (_, report) = law.evaluate(state.position, state.velocity, speed);
+        law.extent(&report)
     }
 
     fn report(&self, q: &[f64], qdot: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {

@@ -21,7 +21,7 @@
 
 use nalgebra::Vector2;
 
-use super::contact::ContactLaw;
+use super::contact::{ContactExtent, ContactLaw};
 use super::plain::contact_friction_torque;
 use super::{Bearing, BearingError, BearingEval, BearingReport, check_state};
 
@@ -54,6 +54,15 @@ impl Bearing for RubElement {
 
     fn is_linear(&self) -> bool {
         false
+    }
+
+    fn contact_extent(&self, q: &[f64], qdot: &[f64], speed: f64) -> Option<ContactExtent> {
+        let (_, report) = self.contact.evaluate(
+            Vector2::new(q[0], q[1]),
+            Vector2::new(qdot[0], qdot[1]),
+            speed,
+        );
+        self.contact.extent(&report)
     }
 
     fn report(&self, q: &[f64], qdot: &[f64], speed: f64, _eval: &BearingEval) -> BearingReport {

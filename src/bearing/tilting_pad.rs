@@ -34,7 +34,7 @@ use std::f64::consts::PI;
 use nalgebra::Vector2;
 
 use super::BearingForce;
-use super::contact::{ContactLaw, ContactReport};
+use super::contact::{ContactExtent, ContactLaw, ContactReport};
 use super::plain::{FilmWindow, ShortFilm, attitude_angle, contact_friction_torque};
 use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, check_state};
 
@@ -210,6 +210,58 @@ impl TiltingPadBearing {
         thinnest.max(0.0)
     }
 
+    /// Pivot rest damping `c_r` (N·s/m) and stiffness `k_r` (N/m) at spin
+    /// `speed` (see the module docs).
+    fn pivot_rest(&self, speed: f64) -> (f64, f64) {
+        let c_rest = PIVOT_REST * self.viscosity * self.radius * self.length.powi(3)
+            / self.clearance.powi(3);
+        (c_rest, c_rest * speed.abs().max(1.0))
+    }
+
+    /// The stable zero-moment tilt of pad `k` with the journal held at
+    /// `journal` (m), no rates: the first sign change of the film's pivot
+    /// moment from + to − on a scan of 65 tilts over ±0.98 C, refined by
+    /// bisection; `None` when the film's moment never changes sign that way
+    /// (a pad that carries nothing at any tilt).
+    pub fn stable_tilt(&self, k: usize, journal: [f64; 2], speed: f64) -> Option<f64> {
+        let pad = &self.pads[k];
+        let film = self.film();
+        let (s, c) = pad.pivot_sc;
+        let moment = |eta: f64| -> Option<f64> {
+            let state = JournalState {
+                position: self.pad_position(k, journal[0], journal[1], eta),
+                velocity: Vector2::zeros(),
+            };
+            let f = film.force(&state, speed, Some(&pad.window)).ok()?.force;
+            Some(c * f.y - s * f.x)
+        };
+        let reach = self.clearance * 0.98;
+        let samples = 64;
+        let mut prev: Option<(f64, f64)> = None;
+        for i in 0..=samples {
+            let eta = -reach + 2.0 * reach * i as f64 / samples as f64;
+            let Some(m) = moment(eta) else {
+                prev = None;
+                continue;
+            };
+            if let Some((e0, m0)) = prev {
+                if m0 > 0.0 && m <= 0.0 {
+                    let (mut lo, mut hi) = (e0, eta);
+                    for _ in 0..60 {
+                        let mid = 0.5 * (lo + hi);
+                        match moment(mid) {
+                            Some(v) if v > 0.0 => lo = mid,
+                            _ => hi = mid,
+                        }
+                    }
+                    return Some(0.5 * (lo + hi));
+                }
+            }
+            prev = Some((eta, m));
+        }
+        None
+    }
+
     /// Film force on pad `k` alone at `q`, `q̇`: the force on the journal (N).
     pub fn pad_force(
         &self,
@@ -242,9 +294,7 @@ impl Bearing for TiltingPadBearing {
         check_state(n, q, qdot, speed, out)?;
         out.clear();
         let film = self.film();
-        let c_rest = PIVOT_REST * self.viscosity * self.radius * self.length.powi(3)
-            / self.clearance.powi(3);
-        let k_rest = c_rest * speed.abs().max(1.0);
+        let (c_rest, k_rest) = self.pivot_rest(speed);
         let law = self.contact_law();
         for (k, pad) in self.pads.iter().enumerate() {
             let (s, c, state) = self.pad_state(k, q, qdot);
@@ -262,6 +312,16 @@ impl Bearing for TiltingPadBearing {
 
     fn is_linear(&self) -> bool {
         false
+    }
+
+    fn contact_extent(&self, q: &[f64], qdot: &[f64], speed: f64) -> Option<ContactExtent> {
+        let law = self.contact_law();
+        (0..self.pads.len())
+            .filter_map(|k| {
+                let (_, _, state) = self.pad_state(k, q, qdot);
+                law.extent(&self.pad_contact(&law, k, &state, speed).1)
+            })
+            .reduce(ContactExtent::worst)
     }
 
     /// Pads free to tilt carry a journal where it reaches a pad's pivot:
@@ -287,55 +347,60 @@ impl Bearing for TiltingPadBearing {
 
     /// Each pad's stable zero-moment tilt with the journal held (pads alone, no
     /// rates): the first sign change of `Q_η` from + to − on a scan of tilts that
-    /// keep the pad film open, refined by bisection. A pad with none (unloaded)
-    /// starts at zero. Newton from zero tilts can otherwise run to the unloaded
-    /// root, where the film vanishes.
+    /// keep the pad film open, refined by bisection ([`TiltingPadBearing::stable_tilt`]).
+    /// A pad with none (unloaded) starts at zero. Newton from zero tilts can
+    /// otherwise run to the unloaded root, where the film vanishes.
     fn guess_internal(&self, journal: [f64; 2], speed: f64, internal: &mut [f64]) {
-        let film = self.film();
         for (k, pad) in self.pads.iter().enumerate() {
             let (s, c) = pad.pivot_sc;
             // A journal pressed onto the pad's pivot line (at rest on the pad):
             // the tilt that puts the contact at the pivot, `η = −p·t_k`.
             let pressed = journal[0] * c + journal[1] * s >= self.clearance * (1.0 - pad.preload);
-            internal[k] = if pressed {
+            let resting = if pressed {
                 journal[0] * s - journal[1] * c
             } else {
                 0.0
             };
-            let moment = |eta: f64| -> Option<f64> {
-                let state = JournalState {
-                    position: self.pad_position(k, journal[0], journal[1], eta),
-                    velocity: Vector2::zeros(),
-                };
-                let f = film.force(&state, speed, Some(&pad.window)).ok()?.force;
-                Some(c * f.y - s * f.x)
+            internal[k] = self.stable_tilt(k, journal, speed).unwrap_or(resting);
+        }
+    }
+
+    /// A pad on the unloaded branch — its film carries nothing (less than the
+    /// pivot's rest moment makes at one clearance, `k_r C`) although a stable
+    /// zero-moment tilt where it carries load exists at this journal position —
+    /// is set to that tilt: the pad the journal moves towards takes up load, as
+    /// a free pad does. Loaded pads, and unloaded pads without a loaded tilt,
+    /// are left alone.
+    fn reseat_internal(&self, q: &mut [f64], speed: f64) -> bool {
+        let film = self.film();
+        let unloaded = self.pivot_rest(speed).1 * self.clearance;
+        let rest = vec![0.0; q.len()];
+        let mut changed = false;
+        for k in 0..self.pads.len() {
+            let force = |q: &[f64]| -> Option<f64> {
+                let (_, _, state) = self.pad_state(k, q, &rest);
+                Some(
+                    film.force(&state, speed, Some(&self.pads[k].window))
+                        .ok()?
+                        .force
+                        .norm(),
+                )
             };
-            let reach = self.clearance * 0.98;
-            let samples = 64;
-            let mut prev: Option<(f64, f64)> = None;
-            for i in 0..=samples {
-                let eta = -reach + 2.0 * reach * i as f64 / samples as f64;
-                let Some(m) = moment(eta) else {
-                    prev = None;
-                    continue;
-                };
-                if let Some((e0, m0)) = prev {
-                    if m0 > 0.0 && m <= 0.0 {
-                        let (mut lo, mut hi) = (e0, eta);
-                        for _ in 0..60 {
-                            let mid = 0.5 * (lo + hi);
-                            match moment(mid) {
-                                Some(v) if v > 0.0 => lo = mid,
-                                _ => hi = mid,
-                            }
-                        }
-                        internal[k] = 0.5 * (lo + hi);
-                        break;
-                    }
-                }
-                prev = Some((eta, m));
+            if force(q).is_none_or(|f| f > unloaded) {
+                continue;
+            }
+            let Some(tilt) = self.stable_tilt(k, [q[0], q[1]], speed) else {
+                continue;
+            };
+            let previous = q[2 + k];
+            q[2 + k] = tilt;
+            if force(q).is_some_and(|f| f > unloaded) {
+                changed = true;
+            } else {
+                q[2 + k] = previous;
             }
         }
+        changed
     }
 
     fn report(&self, q: &[f64], qdot: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
@@ -362,5 +427,67 @@ impl Bearing for TiltingPadBearing {
             power_loss: friction_torque * speed,
             contact_force: contact_resultant.norm(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Four pads without preload, load on the bottom pad: with the journal low
+    /// in the bearing and moved sideways, the side pad it moves towards has a
+    /// loaded zero-moment tilt. Left at zero tilt its film diverges everywhere
+    /// and carries nothing; `reseat_internal` puts it on the loaded tilt, where
+    /// it pushes the journal back, and leaves the loaded bottom pad and the
+    /// side pad the journal moves away from alone.
+    #[test]
+    fn a_side_pad_left_on_its_unloaded_branch_is_reseated_on_the_loaded_one() {
+        let pads = (0..4)
+            .map(|k| {
+                Pad::new(
+                    (270.0 + 90.0 * k as f64).to_radians(),
+                    80f64.to_radians(),
+                    0.5,
+                    0.0,
+                )
+            })
+            .collect();
+        let b = TiltingPadBearing {
+            radius: 0.05,
+            length: 0.03,
+            clearance: 1e-4,
+            viscosity: 0.02,
+            pads,
+            contact: None,
+        };
+        let speed = 314.16;
+        let journal = [0.3e-4, -0.5e-4];
+        let mut q = vec![journal[0], journal[1], 0.0, 0.0, 0.0, 0.0];
+        b.guess_internal(journal, speed, &mut q[2..]);
+        let bottom = q[2];
+        q[3] = 0.0; // the side pad at 0°, which the journal moves towards
+        q[5] = 0.0; // the side pad at 180°, which it moves away from
+        let rates = vec![0.0; 6];
+        let force = |q: &[f64], k: usize| b.pad_force(k, q, &rates, speed).unwrap();
+        assert_eq!(force(&q, 1).norm(), 0.0, "unloaded at zero tilt");
+        assert!(force(&q, 0).y > 0.0, "the bottom pad carries");
+        let before = q.clone();
+        assert!(b.reseat_internal(&mut q, speed));
+        assert_eq!(q[2], bottom, "the loaded pad is left alone");
+        assert_eq!(
+            q[5], before[5],
+            "no loaded tilt for the pad the journal leaves"
+        );
+        assert_eq!(Some(q[3]), b.stable_tilt(1, journal, speed));
+        assert!(
+            force(&q, 1).x < 0.0,
+            "the re-seated pad pushes the journal back"
+        );
+        let mut again = q.clone();
+        assert!(
+            !b.reseat_internal(&mut again, speed),
+            "nothing left to move"
+        );
+        assert_eq!(again, q);
     }
 }

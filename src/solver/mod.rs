@@ -44,13 +44,22 @@
 //! equations exactly. Stale path: the residual is below `tolerance` times the
 //! largest force term and the increment below `tolerance` times the displacement
 //! scale; the bearing Jacobian is refreshed when the residual stops contracting
-//! (ratio > 0.7). A step that fails within `max_iterations` (or takes a journal
-//! beyond the clearance) is cut in half, down to `2^-max_step_cuts`. A step that
-//! still fails is an error: an unconverged state is never returned.
+//! (ratio > 0.7). Plain Newton gives up early on a step whose increments keep
+//! failing to shrink (a cycle). A step it fails is solved again from the
+//! predictor by the damped Newton (`line_search.rs`: Armijo backtracking on the
+//! condensed residual, on a factorization exact for the step); a step that
+//! fails that too (or takes a journal beyond the clearance) is cut in half,
+//! down to `2^-max_step_cuts` (16 by default) and never below
+//! [`SolverOptions::MIN_SPAN`]. A step that still fails is an error: an
+//! unconverged state is never returned. Every accepted step is checked against
+//! the limits of the contact law ([`contact_watch`]).
 
 mod condense;
+pub mod contact_watch;
 mod dense;
 mod factor;
+mod film_start;
+mod line_search;
 mod newmark;
 mod newton;
 pub mod reduction_check;
@@ -61,6 +70,7 @@ mod state;
 pub mod statics;
 pub mod time_step;
 
+pub use contact_watch::{ContactLimit, ContactWarning};
 pub use run::{SpeedProfile, record, record_into};
 pub use simulator::{
     BearingOutput, Outputs, ProbeOutput, Simulator, SolverError, SolverOptions, StepStats,

@@ -251,12 +251,14 @@ impl Simulator {
     }
 
     /// A step of size `h` (s), halved recursively on failure down to
-    /// `max_step_cuts` halvings (`depth` counts the halvings so far).
+    /// `max_step_cuts` halvings (`depth` counts the halvings so far), and
+    /// never below [`SolverOptions::MIN_SPAN`].
     fn step_with_cuts(&mut self, h: f64, depth: usize) -> Result<(), SolverError> {
         match self.try_step(h)? {
             None => Ok(()),
             Some(residual) => {
-                if depth >= self.options.max_step_cuts {
+                // Never below the shortest span the integrator resolves.
+                if depth >= self.options.max_step_cuts || 0.5 * h < SolverOptions::MIN_SPAN {
                     return Err(SolverError::NotConverged {
                         time: self.state.time,
                         step: h,
@@ -268,6 +270,26 @@ impl Simulator {
                 self.step_with_cuts(h / 2.0, depth + 1)?;
                 self.step_with_cuts(h / 2.0, depth + 1)
             }
+        }
+    }
+
+    /// Predictor `u + h u̇ + h²/2 ü` into `newmark.u` and `newmark.p`: the
+    /// condensed Newton only needs it on the journal and pad coordinates
+    /// (`journals_only`).
+    pub(super) fn predict(&mut self, h: f64, journals_only: bool) {
+        let (s, w) = (&self.state, &mut self.newmark);
+        let predict = |i: usize| s.u[i] + h * s.ud[i] + 0.5 * h * h * s.udd[i];
+        if journals_only {
+            for &i in &self.sites.journal_dofs {
+                w.u[i] = predict(i);
+            }
+        } else {
+            for (i, u) in w.u.iter_mut().enumerate() {
+                *u = predict(i);
+            }
+        }
+        for i in 0..s.p.len() {
+            w.p[i] = s.p[i] + h * s.pd[i] + 0.5 * h * h * s.pdd[i];
         }
     }
 
@@ -291,31 +313,19 @@ impl Simulator {
         self.external_force(t1, spin1);
         let mut factor = self.factor.take();
         let exact = self.prepare_factor(h, speed1, &mut factor);
-        // Predictor `u + h u̇ + h²/2 ü`: the condensed Newton only needs it on the
-        // journal and pad coordinates.
-        {
-            let (s, w) = (&self.state, &mut self.newmark);
-            let predict = |i: usize| s.u[i] + h * s.ud[i] + 0.5 * h * h * s.udd[i];
-            if matches!(exact, Ok(true)) {
-                for &i in &self.sites.journal_dofs {
-                    w.u[i] = predict(i);
-                }
-            } else {
-                for (i, u) in w.u.iter_mut().enumerate() {
-                    *u = predict(i);
-                }
-            }
-            for i in 0..s.p.len() {
-                w.p[i] = s.p[i] + h * s.pd[i] + 0.5 * h * h * s.pdd[i];
-            }
-        }
+        self.predict(h, matches!(exact, Ok(true)));
         let outcome = match exact {
             Ok(true) => match factor.as_ref() {
-                Some(f) => self.newton_condensed(h, t1, speed1, f),
+                Some(f) => self.newton_condensed(h, t1, speed1, f, false),
                 None => Err(SolverError::Input("internal: no factorization".into())),
             },
             Ok(false) => self.newton(h, t1, speed1, &mut factor),
             Err(e) => Err(e),
+        };
+        // Plain Newton failed: the damped Newton gets the step before it is cut.
+        let outcome = match outcome {
+            Ok(Some(_)) => self.retry_damped(h, t1, speed1, &mut factor),
+            other => other,
         };
         self.factor = factor;
         self.record_factor();
@@ -331,6 +341,7 @@ impl Simulator {
             s.time = t1;
             s.spin_angle = spin1;
             self.stats.steps += 1;
+            self.watch_contacts(t1, speed1);
         }
         Ok(outcome)
     }

@@ -9,6 +9,7 @@ use crate::linalg::LinalgError;
 use super::condense::condense_internal;
 use super::dense::{lu_in_place, lu_solve};
 use super::factor::Factor;
+use super::line_search::{Backtrack, Trial, condensed_residual, retreat};
 use super::newmark::Displacement;
 use super::simulator::{Simulator, SolverError};
 use super::sites::Sites;
@@ -164,12 +165,16 @@ pub(super) struct CondensedWork {
     cj: Vec<f64>,
     cj_piv: Vec<usize>,
     cj_rhs: Vec<f64>,
+    /// The last increment, its line search and the stall count.
+    search: Backtrack,
 }
 
 impl CondensedWork {
-    /// Buffers for `n_journal` journal DOFs.
-    pub fn new(n_journal: usize) -> Self {
+    /// Buffers for the journal and pad DOFs of `sites`.
+    pub fn new(sites: &Sites) -> Self {
+        let n_journal = sites.n_journal;
         Self {
+            search: Backtrack::new(n_journal, sites.n_internal),
             fj: vec![0.0; n_journal],
             wv: vec![0.0; n_journal],
             kc: vec![0.0; 2 * n_journal],
@@ -196,12 +201,17 @@ impl Simulator {
     /// taken to first order, `F_j − K_c δj + K_jp K_pp⁻¹ (−F_p)`, which satisfies
     /// the condensed equation exactly. A step costs two banded mat-vecs and two
     /// banded solves whatever the number of iterations.
+    ///
+    /// `damped`: Armijo backtracking on the condensed residual
+    /// ([`super::line_search`]); plain Newton instead gives up once its
+    /// increments keep failing to shrink.
     pub(super) fn newton_condensed(
         &mut self,
         h: f64,
         t1: f64,
         speed1: f64,
         f: &Factor,
+        damped: bool,
     ) -> Result<Option<f64>, SolverError> {
         let (a0, a1, a2) = (4.0 / (h * h), 2.0 / h, 4.0 / h);
         let sj = self.sites.n_journal;
@@ -225,6 +235,7 @@ impl Simulator {
         let singular = || SolverError::Linalg(LinalgError::Singular { column: 0 });
         let length_scale = self.sites.length_scale;
         let mut last = f64::INFINITY;
+        self.condensed.search.reset();
         for _ in 0..self.options.max_iterations {
             self.stats.iterations += 1;
             let (s, w, c) = (&self.state, &mut self.newmark, &mut self.condensed);
@@ -270,15 +281,27 @@ impl Simulator {
                     }
                 }
             }
+            let residual = if damped {
+                condensed_residual(&self.sites, &c.cj_rhs)
+            } else {
+                0.0
+            };
+            if damped && let Trial::Retreat(back) = c.search.judge(residual) {
+                retreat(&self.sites, &c.search, back, &mut w.u, &mut w.p);
+                continue;
+            }
             if !lu_in_place(&mut c.cj, sj, &mut c.cj_piv) {
                 return Err(singular());
             }
             lu_solve(&c.cj, sj, &c.cj_piv, &mut c.cj_rhs);
             let (mut inc, mut mag): (f64, f64) = (0.0, 0.0);
-            for (&dof, d) in self.sites.journal_dofs.iter().zip(&c.cj_rhs) {
+            for ((&dof, d), step) in
+                (self.sites.journal_dofs.iter().zip(&c.cj_rhs)).zip(c.search.journal.iter_mut())
+            {
                 inc = inc.max(d.abs());
                 mag = mag.max(w.u[dof].abs());
                 w.u[dof] += d;
+                *step = *d;
             }
             for (k, site) in self.sites.list.iter().enumerate() {
                 let mi = site.internal;
@@ -290,8 +313,10 @@ impl Simulator {
                     inc = inc.max(d.abs());
                     mag = mag.max(p.abs());
                     *p += d;
+                    c.search.internal[site.offset + m] = d;
                 }
             }
+            c.search.stepped(residual);
             let scale = mag.max(length_scale);
             if inc <= tol * scale {
                 // u = u_lin + A⁻¹ E F_j with the first-order journal forces.
@@ -318,6 +343,9 @@ impl Simulator {
                 return Ok(None);
             }
             last = inc / scale;
+            if !damped && c.search.stalled(inc) {
+                break;
+            }
         }
         Ok(Some(last))
     }

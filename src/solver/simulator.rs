@@ -6,6 +6,7 @@ use crate::linalg::LinalgError;
 use crate::rotor::Rotor;
 use crate::units::Short;
 
+use super::contact_watch::ContactWatch;
 use super::factor::{Factor, FactorWork};
 use super::newmark::NewmarkWork;
 use super::newton::{CondensedWork, SchurSolve};
@@ -66,7 +67,7 @@ impl Default for SolverOptions {
             time_step: 1e-4,
             tolerance: 1e-8,
             max_iterations: 50,
-            max_step_cuts: 10,
+            max_step_cuts: 16,
             unbalance_ramp_time: 0.0,
             gravity: true,
         }
@@ -84,6 +85,8 @@ pub struct StepStats {
     pub refreshes: usize,
     /// Step halvings.
     pub step_cuts: usize,
+    /// Steps solved again by the damped Newton after plain Newton failed.
+    pub retries: usize,
     /// Factorizations of the linear part.
     pub factorizations: usize,
 }
@@ -204,6 +207,8 @@ pub struct Simulator {
     pub(super) schur: SchurSolve,
     pub(super) condensed: CondensedWork,
     pub(super) stats: StepStats,
+    /// Contacts reported beyond the limits of their law ([`super::contact_watch`]).
+    pub(super) contact_watch: ContactWatch,
 }
 
 impl Simulator {
@@ -260,8 +265,9 @@ impl Simulator {
             refactor_journal_limit: 8,
             newmark: NewmarkWork::new(n, n_internal),
             schur: SchurSolve::new(n, &sites),
-            condensed: CondensedWork::new(sites.n_journal),
+            condensed: CondensedWork::new(&sites),
             stats: StepStats::default(),
+            contact_watch: ContactWatch::new(sites.list.len()),
             rotor,
             options,
             state,

@@ -9,6 +9,7 @@ use crate::bearing::BearingEval;
 use crate::rotor::Rotor;
 
 use super::factor::make_factor;
+use super::film_start::{film_start, reseat_pads};
 use super::newton::SchurSolve;
 use super::simulator::{SolverError, SolverOptions, inf_norm};
 use super::sites::Sites;
@@ -146,9 +147,12 @@ const JOURNAL_REST: f64 = 1e-9;
 /// tilts. `time` (s) only labels bearing errors.
 ///
 /// At standstill a fluid film carries nothing and the journals rest on their
-/// bushings or pads: Newton then starts from [`resting_start`]; at any other
-/// speed it falls back to that start when the given one fails (a film too weak
-/// to lift the journal off).
+/// bushings or pads: Newton then starts from [`resting_start`]. At any other
+/// speed, when Newton from the given start fails or ends with a tilting pad on
+/// its unloaded branch where a loaded tilt exists ([`reseat_pads`]), a rotor
+/// with tilting pads starts again from the bearings' own equilibria
+/// ([`film_start`]), re-seating such pads after every step; then Newton starts
+/// from [`resting_start`] (a film too weak to lift the journal off).
 pub(super) fn settle(
     rotor: &Rotor,
     sites: &mut Sites,
@@ -166,15 +170,44 @@ pub(super) fn settle(
     // The resting start costs a banded factorization: build it only when used.
     if speed == 0.0 {
         if let Some(u) = resting_start(rotor, sites, &f_ext) {
-            return newton_static(rotor, sites, speed, options, time, u, None);
+            return newton_static(rotor, sites, speed, options, time, u, None, false);
         }
     }
-    match newton_static(rotor, sites, speed, options, time, u0, p0) {
+    let direct = newton_static(rotor, sites, speed, options, time, u0, p0, false);
+    let settled = |sites: &Sites, (u, p): &(Vec<f64>, Vec<f64>)| {
+        !reseat_pads(sites, u, &mut p.clone(), speed)
+    };
+    if direct.as_ref().is_ok_and(|e| settled(sites, e)) {
+        return direct;
+    }
+    let pads = sites.n_internal > 0;
+    if let Some((u, p)) = pads
+        .then(|| film_start(rotor, sites, &f_ext, speed))
+        .flatten()
+    {
+        let outcome = newton_static(rotor, sites, speed, options, time, u, Some(p), true);
+        if outcome.as_ref().is_ok_and(|e| settled(sites, e)) {
+            return outcome;
+        }
+    }
+    let unsettled = || {
+        SolverError::Static(
+            "Newton ended with a tilting pad carrying nothing where a loaded tilt exists, and no start found the equilibrium with every pad on its loaded branch".into(),
+        )
+    };
+    match direct {
         Err(e) => match resting_start(rotor, sites, &f_ext) {
-            Some(u) => newton_static(rotor, sites, speed, options, time, u, None),
+            Some(u) => {
+                let outcome = newton_static(rotor, sites, speed, options, time, u, None, false);
+                match outcome {
+                    Ok(found) if !pads || settled(sites, &found) => Ok(found),
+                    Ok(_) => Err(unsettled()),
+                    Err(_) => outcome,
+                }
+            }
             None => Err(e),
         },
-        outcome => outcome,
+        Ok(_) => Err(unsettled()),
     }
 }
 
@@ -219,7 +252,10 @@ fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>
     Some(rhs)
 }
 
-/// Newton with backtracking on the static residual from `u0`, `p0`.
+/// Newton with backtracking on the static residual from `u0`, `p0`; with
+/// `reseat`, pads left on their unloaded branch are re-seated after every
+/// accepted step ([`reseat_pads`]) and the residual is taken there.
+#[allow(clippy::too_many_arguments)]
 fn newton_static(
     rotor: &Rotor,
     sites: &mut Sites,
@@ -228,6 +264,7 @@ fn newton_static(
     time: f64,
     u0: Vec<f64>,
     p0: Option<Vec<f64>>,
+    reseat: bool,
 ) -> Result<(Vec<f64>, Vec<f64>), SolverError> {
     let n = rotor.dof_count();
     let tol = options.tolerance;
@@ -318,6 +355,10 @@ fn newton_static(
         }
         if !accepted {
             break;
+        }
+        if reseat && reseat_pads(sites, &u, &mut p, speed) {
+            residual = work.residual(rotor, sites, (&u, &p), speed, time)?;
+            absolute = work.absolute();
         }
     }
     Err(SolverError::Static(format!(

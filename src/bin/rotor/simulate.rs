@@ -230,8 +230,14 @@ pub fn simulate(
             }
         },
     );
+    // Contact beyond its law's limits is reported whether or not the run ended.
+    let contact = sim.take_contact_warnings();
+    for w in &contact {
+        eprintln!("{}warning: {}", if terminal { "\r" } else { "" }, w.message);
+    }
     if let Err(e) = outcome {
-        if terminal {
+        // End the progress line unless a warning already did.
+        if terminal && contact.is_empty() {
             eprintln!();
         }
         excursions.warn(&model.name, full.as_ref(), sim.rotor());

@@ -1,7 +1,8 @@
 //! fmi2DoStep of an [`Instance`]: the step's checks before anything
 //! moves (state, clock, a step too short to advance the time, the stop time),
-//! the step statistics for the log, and on a reduced rotor the warning when
-//! the running speed or the motion leaves the range it is validated for.
+//! the step statistics for the log, the warning when a contact leaves the
+//! range of its law, and on a reduced rotor the warning when the running
+//! speed or the motion leaves the range it is validated for.
 
 use super::super::states::Call;
 use super::{Instance, Phase, STOP_SLACK, Status, category};
@@ -75,18 +76,30 @@ impl Instance {
                 Status::Ok,
                 category(Status::Ok),
                 format!(
-                    "{call} from {t} s by {h} s: {} internal steps, {} Newton iterations, {} step cuts ({} Jacobian refreshes, {} factorizations)",
+                    "{call} from {t} s by {h} s: {} internal steps, {} Newton iterations, {} step cuts, {} damped retries ({} Jacobian refreshes, {} factorizations)",
                     after.steps - before.steps,
                     after.iterations - before.iterations,
                     after.step_cuts - before.step_cuts,
+                    after.retries - before.retries,
                     after.refreshes - before.refreshes,
                     after.factorizations - before.factorizations,
                 ),
             ));
         }
+        // Contact beyond its law's limits: each contact and limit once per
+        // episode, as fmi2Warning.
+        let warnings = self.sim.take_contact_warnings();
+        let warned = !warnings.is_empty();
+        for w in warnings {
+            self.messages
+                .push((Status::Warning, category(Status::Warning), w.message));
+        }
         match result {
             Ok(()) => match self.current_outputs() {
-                Ok(_) => self.watch_reduction(call),
+                Ok(_) => match self.watch_reduction(call) {
+                    Status::Ok if warned => Status::Warning,
+                    status => status,
+                },
                 Err(s) => s,
             },
             Err(e) => {

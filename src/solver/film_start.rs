@@ -1,0 +1,91 @@
+//! The static solve's second start, from the bearings' own equilibria, and the
+//! check that a static equilibrium has every tilting pad on its loaded branch
+//! (see [`super::statics`]).
+//!
+//! Newton on the whole rotor from the undeflected shaft starts every journal
+//! at its bearing centre. Pads without preload around a centred journal have a
+//! uniform film and carry nothing at any small tilt, so the first steps are
+//! taken on a degenerate Jacobian; a side pad can then be left on its unloaded
+//! branch — tilted so that its film diverges everywhere — while the journal
+//! drifts sideways with nothing to hold it, to a false equilibrium or a stall.
+//! The bearing-level solver has neither problem: it continues in load from a
+//! journal off the centre along the load, the pads at their stable zero-moment
+//! tilts ([`crate::bearing::equilibrium::journal_equilibrium`]). This start
+//! solves each fluid-film bearing that way under its share of the load — the
+//! reactions of the rotor on rigid supports at the journals, exact for two
+//! bearings — and puts the rotor on the journals it finds.
+
+use crate::bearing::equilibrium::journal_equilibrium;
+use crate::rotor::Rotor;
+use nalgebra::Vector2;
+
+use super::sites::Sites;
+
+/// The rotor on its fluid-film bearings' own equilibria at spin `speed`
+/// (rad/s) under `f_ext`: each film journal held by its contact stiffness `k`
+/// (from [`crate::bearing::Bearing::resting_contact`]), `A = K + Σ k E Eᵀ`;
+/// the reactions `R = k Eᵀ A⁻¹ f` load the bearings, whose equilibria `q*`
+/// under `R` give the journal positions and pad tilts; the rotor deflection
+/// solves `A u = f + Σ E (k j* − R)`, which puts every journal on its `j*`
+/// when the reactions are exact. `None` without a fluid-film bearing, or when
+/// a bearing has no equilibrium under its reaction.
+pub(super) fn film_start(
+    rotor: &Rotor,
+    sites: &Sites,
+    f_ext: &[f64],
+    speed: f64,
+) -> Option<(Vec<f64>, Vec<f64>)> {
+    let mut a = rotor.stiffness.clone();
+    let mut held = Vec::new();
+    for site in &sites.list {
+        let kind = &rotor.model.bearings[site.index].kind;
+        let (Some(_), Some(clearance)) = (kind.film_geometry(), kind.journal_clearance()) else {
+            continue;
+        };
+        let (_, k) = site.bearing.resting_contact([0.0, -1.0])?;
+        a.add(site.journal[0], site.journal[0], k);
+        a.add(site.journal[1], site.journal[1], k);
+        held.push((site, k, clearance));
+    }
+    if held.is_empty() {
+        return None;
+    }
+    let lu = a.lu().ok()?;
+    let mut u = f_ext.to_vec();
+    lu.solve_in_place(&mut u);
+    let mut rhs = f_ext.to_vec();
+    let mut p = vec![0.0; sites.n_internal];
+    for &(site, k, clearance) in &held {
+        let [ix, iy] = site.journal;
+        let reaction = Vector2::new(k * u[ix], k * u[iy]);
+        let eq = journal_equilibrium(site.bearing.as_ref(), reaction, speed, clearance).ok()?;
+        rhs[ix] += k * eq.q[0] - reaction.x;
+        rhs[iy] += k * eq.q[1] - reaction.y;
+        p[site.offset..site.offset + site.internal].copy_from_slice(&eq.q[2..]);
+    }
+    lu.solve_in_place(&mut rhs);
+    Some((rhs, p))
+}
+
+/// Re-seat, at the journal positions of `u`, every pad of `sites` left on its
+/// unloaded branch where a loaded zero-moment tilt exists
+/// ([`crate::bearing::Bearing::reseat_internal`]), in `p`; returns whether any
+/// moved (an equilibrium where none moves has every pad on its branch).
+pub(super) fn reseat_pads(sites: &Sites, u: &[f64], p: &mut [f64], speed: f64) -> bool {
+    let mut moved = false;
+    for site in &sites.list {
+        if site.internal == 0 {
+            continue;
+        }
+        let mut q = vec![0.0; 2 + site.internal];
+        q[0] = u[site.journal[0]];
+        q[1] = u[site.journal[1]];
+        let range = site.offset..site.offset + site.internal;
+        q[2..].copy_from_slice(&p[range.clone()]);
+        if site.bearing.reseat_internal(&mut q, speed) {
+            p[range].copy_from_slice(&q[2..]);
+            moved = true;
+        }
+    }
+    moved
+}
