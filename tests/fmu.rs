@@ -23,9 +23,6 @@ use fmi2_functions::FMI2_CS_FUNCTIONS;
 /// Every message logged, by every test's instances (never cleared: tests run
 /// in parallel and read the part logged since they started).
 static LOG: Mutex<Vec<(u32, String)>> = Mutex::new(Vec::new());
-/// Every message logged, never cleared (tests that clear [`LOG`] run
-/// concurrently with those that read a stretch of messages).
-static HISTORY: Mutex<Vec<(u32, String)>> = Mutex::new(Vec::new());
 
 /// Logger with the fixed arguments of the variadic `fmi2CallbackLogger` (the
 /// messages carry no format arguments; extra variadic slots are ignored by the C ABI).
@@ -39,7 +36,6 @@ extern "C" fn logger(
     let text = unsafe { CStr::from_ptr(message) }
         .to_string_lossy()
         .replace("%%", "%");
-    HISTORY.lock().unwrap().push((status, text.clone()));
     LOG.lock().unwrap().push((status, text));
 }
 
@@ -758,7 +754,7 @@ fn a_rub_with_the_journals_in_contact_is_not_discarded_and_its_contact_is_flagge
         + "\n[[rubs]]\nname = \"seal\"\nnode = 5\ngap = 200e-6\n";
     std::fs::write(&path, text).unwrap();
     let rub_warnings = |from: usize| -> Vec<(u32, String)> {
-        HISTORY.lock().unwrap()[from..]
+        LOG.lock().unwrap()[from..]
             .iter()
             .filter(|(_, m)| m.starts_with("rub seal: "))
             .cloned()
@@ -766,7 +762,7 @@ fn a_rub_with_the_journals_in_contact_is_not_discarded_and_its_contact_is_flagge
     };
     let fmu = Fmu::of_model("rub_contact", &path);
     for (time_step, duration) in [(None, 1.0), (Some(1e-4), 0.2)] {
-        let logged = HISTORY.lock().unwrap().len();
+        let logged = LOG.lock().unwrap().len();
         if time_step.is_some() {
             unsafe { fmu.lib.fmi2Reset(fmu.c) };
         }
