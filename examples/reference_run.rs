@@ -9,7 +9,7 @@
 
 use std::path::Path;
 
-use rotor_bearing::fmi2::variables::DEFAULT_TIME_STEP;
+use rotor_bearing::fmi2::variables::default_fmu_time_step;
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
@@ -31,7 +31,7 @@ fn main() -> Result<(), String> {
     let stop: f64 = args[3].parse().map_err(|e| format!("{e}"))?;
     let h: f64 = args[4].parse().map_err(|e| format!("{e}"))?;
     let options = SolverOptions {
-        time_step: DEFAULT_TIME_STEP,
+        time_step: default_fmu_time_step(&model),
         ..SolverOptions::default()
     };
     let mut sim = Simulator::new(Rotor::new(model).map_err(|e| e.to_string())?, options)

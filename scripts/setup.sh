@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Idempotent set-up of a fresh machine: system packages for the build (bindgen's
 # libclang, fontconfig/freetype and a font for the PNG plots), the Rust
-# toolchain's components, and the Windows (win64) cross toolchain of the FMU:
-# Debian's rustc-web/cargo-web/rust-web-src, MinGW-w64 and Wine from Debian's
-# packages, the standard library for x86_64-pc-windows-gnu built once into a
-# cache outside the work tree, and the Wine prefix of the tests
-# (docs/platforms.md). Safe to run again: it does only what is missing, and says
-# what it did and how long it took.
+# toolchain's components, headless Chromium for the report test, and the
+# Windows (win64) cross toolchain of the FMU: Debian's rustc-web/cargo-web/
+# rust-web-src, MinGW-w64 and Wine from Debian's packages, the standard library
+# for x86_64-pc-windows-gnu built once into a cache outside the work tree, and
+# the Wine prefix of the tests (docs/platforms.md). Safe to run again: it does
+# only what is missing, and says what it did and how long it took.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/win64_env.sh
@@ -65,6 +65,20 @@ if [ ${#need[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
   rust_pkgs_ok || { echo "setup: rustc-web, cargo-web and rust-web-src differ in version after the install" >&2; exit 1; }
   echo "setup: installed ${#need[@]} packages in $((SECONDS - start)) s"
+fi
+
+# Headless Chromium (Debian's package) for the test that renders the HTML
+# report in a real browser (tests/analyst_report.rs), with a font for its text.
+chromium=()
+for pkg in chromium fonts-dejavu-core; do
+  dpkg -s "$pkg" >/dev/null 2>&1 || chromium+=("$pkg")
+done
+if [ ${#chromium[@]} -gt 0 ]; then
+  start=$SECONDS
+  echo "setup: installing ${chromium[*]}"
+  apt_update
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${chromium[@]}" >/dev/null
+  echo "setup: installed ${#chromium[@]} packages in $((SECONDS - start)) s"
 fi
 
 if ! command -v rustup >/dev/null 2>&1; then

@@ -448,6 +448,20 @@ def write_table(rows, path):
         w.writerows(rows)
 
 
+def missing_onsets(onsets, first):
+    """The stability map's words for the parameter sets without an onset of
+    whirl (no whirl in the range, whirl from the lowest speed), one line each
+    with the swept value and the reason; headed "no onset of whirl found" when
+    no set has one, so the map is never blank axes. None when every set has one."""
+    missing = [o for o in onsets if not np.isfinite(o["onset_rpm"])]
+    if not missing:
+        return None
+    lines = [f"{first} = {o[first]:g}: {o['note']}" for o in missing]
+    if len(missing) == len(onsets):
+        lines.insert(0, "no onset of whirl found:")
+    return "\n".join(lines)
+
+
 def plot(rows, prefix, params, onsets, fmu_name):
     import matplotlib
     matplotlib.use("Agg")
@@ -500,15 +514,29 @@ def plot(rows, prefix, params, onsets, fmu_name):
     if params and onsets:
         first = keys[0]
         fig, ax = plt.subplots(figsize=(7, 5))
-        xs = [o[first] for o in onsets]
-        ys = [o["onset_rpm"] for o in onsets]
-        es = [o["bracket_rpm"] if np.isfinite(o["bracket_rpm"]) else 0.0 for o in onsets]
-        ax.errorbar(xs, ys, yerr=es, fmt="o-", capsize=4, label="onset of whirl")
+        found = [o for o in onsets if np.isfinite(o["onset_rpm"])]
+        xs = [o[first] for o in found]
+        ys = [o["onset_rpm"] for o in found]
+        es = [o["bracket_rpm"] if np.isfinite(o["bracket_rpm"]) else 0.0 for o in found]
+        if found:
+            ax.errorbar(xs, ys, yerr=es, fmt="o-", capsize=4, label="onset of whirl")
         # Grid points that failed, where they would have been judged.
         lost = [(r[first], r["rpm"]) for r in rows if r["status"].startswith("error") and not r.get("refinement")]
         if lost:
             ax.plot(*zip(*lost), "rx", ms=9, mew=2, label=f"grid point failed ({len(lost)}, see the table)")
-        ax.legend(fontsize=8)
+        # Sets without an onset are named on the map, never left as blank axes.
+        text = missing_onsets(onsets, first)
+        if found or lost:
+            # Clear of the words on the sets without an onset (top left).
+            ax.legend(fontsize=8, loc="lower right" if text else "best")
+        if text:
+            where = (0.5, 0.5) if not found else (0.02, 0.98)
+            ax.text(*where, text, transform=ax.transAxes, ha="center" if not found else "left",
+                    va="center" if not found else "top", fontsize=9)
+            if not found:
+                ax.set_xlim(min(o[first] for o in onsets) * 0.9, max(o[first] for o in onsets) * 1.1)
+                if not lost:
+                    ax.set_ylim(0, 1)
         ax.set_xlabel(first)
         ax.set_ylabel("onset of whirl (rpm), bisection bracket as error bar")
         ax.set_title(f"{fmu_name}: stability map")

@@ -16,7 +16,9 @@ known answer:
   whirl;
 - the onset of whirl found by bisection agrees within 1 % with the threshold of
   the linearized modes (`rotor modes`: the least damped mode's damping ratio
-  crosses zero) at three viscosities.
+  crosses zero) at three viscosities;
+- a stability map without onsets says so in words (never blank axes), and
+  the drawn map of such a sweep is written.
 """
 import os
 import re
@@ -203,7 +205,9 @@ def linear_threshold(viscosity):
         def zeta(rpm):
             out = subprocess.run([ROTOR, "modes", model, "--rpm", str(rpm), "--modes", "6"],
                                  capture_output=True, text=True, check=True).stdout
-            return min(float(line.split()[3]) for line in out.splitlines()[2:] if line.strip())
+            # The modes' rows (a number first); overdamped roots follow apart.
+            rows = [line.split() for line in out.splitlines()[2:]]
+            return min(float(r[3]) for r in rows if r and r[0].isdigit())
 
         lo, hi = 4000.0, 10000.0
         assert zeta(lo) > 0 > zeta(hi)
@@ -230,7 +234,30 @@ def onsets_match_the_linear_thresholds():
     check(len(set(round(x) for x in found)) == 3, "the three viscosities give three different onsets")
 
 
+def empty_stability_map_says_why():
+    nan = float("nan")
+    onsets = [{"mu": 0.01, "onset_rpm": nan, "bracket_rpm": nan, "note": "no whirl up to 16000 rpm"},
+              {"mu": 0.02, "onset_rpm": nan, "bracket_rpm": nan, "note": "no whirl up to 16000 rpm"}]
+    text = sweep.missing_onsets(onsets, "mu")
+    check(text == "no onset of whirl found:\nmu = 0.01: no whirl up to 16000 rpm\nmu = 0.02: no whirl up to 16000 rpm",
+          f"an empty stability map names every set and why: {text!r}")
+    onsets[0].update(onset_rpm=9000.0, bracket_rpm=20.0, note="refined")
+    text = sweep.missing_onsets(onsets, "mu")
+    check(text == "mu = 0.02: no whirl up to 16000 rpm", f"a partial map names the missing set: {text!r}")
+    onsets[1].update(onset_rpm=9500.0, bracket_rpm=20.0, note="refined")
+    check(sweep.missing_onsets(onsets, "mu") is None, "a full map has no note")
+    out = tempfile.mkdtemp()
+    rows = [{"rpm": r, "mu": m, "status": "ok", "whirl": False, "left.peak_radius_m": 1e-6}
+            for r in (4000, 8000) for m in (0.01, 0.02)]
+    for o in onsets:
+        o.update(onset_rpm=nan, bracket_rpm=nan, note="no whirl up to 8000 rpm")
+    sweep.plot(rows, os.path.join(out, "s"), ["mu"], onsets, "synthetic")
+    check(os.path.getsize(os.path.join(out, "s_stability.png")) > 5000, "the empty map is drawn with its words")
+    shutil.rmtree(out)
+
+
 def main():
+    empty_stability_map_says_why()
     synthetic()
     cluster_first_from_an_empty_temporary_directory()
     cluster_equals_serial_and_failures_are_rows()

@@ -321,3 +321,64 @@ fn tilting_pad_operating_point_matches_the_pad_reference() {
         assert!(b.stiffness[i][1 - i].abs() < 1e-3 * k[(i, i)]);
     }
 }
+
+/// A vertical rotor's journals carry no lateral load: the pad forces of the
+/// hydro unit's centred tilting-pad journals sum to 1e-10 N (round-off of
+/// forces of 10⁵ N), and the coefficients' cross terms to 1e-8 of the direct
+/// ones. They print as an unloaded journal with no attitude angle and zero
+/// cross-coupling, never as `9.8e-11 N` at some angle.
+#[test]
+fn centred_vertical_journals_print_as_unloaded() {
+    let model = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/hydro_unit.toml");
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("operating-point")
+        .arg(&model)
+        .args(["--rpm", "150"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for bearing in ["generator_guide", "turbine_guide"] {
+        let block = stdout
+            .split(&format!("bearing {bearing} at 150 rpm:\n"))
+            .nth(1)
+            .expect(&stdout);
+        let lines: Vec<&str> = block.lines().take(5).collect();
+        assert_eq!(
+            lines[0],
+            "  static load 0 N (unloaded), journal at x = 0 µm, y = 0 µm"
+        );
+        assert!(
+            lines[1].starts_with("  eccentricity ratio 0, attitude angle —, "),
+            "{}",
+            lines[1]
+        );
+        assert!(
+            lines[3].starts_with("  K = [[2.06697e9, 0], [0, 2.06697e9]]"),
+            "{}",
+            lines[3]
+        );
+        assert!(
+            lines[4].starts_with("  C = [[1.65541e8, 0], [0, 1.65541e8]]"),
+            "{}",
+            lines[4]
+        );
+    }
+    // The library's numbers are the round-off the text hides.
+    let rotor = Rotor::new(rotor_bearing::model::RotorModel::from_file(&model).unwrap()).unwrap();
+    let points = operating_point(&rotor, 150.0 / RAD_S_TO_RPM).unwrap();
+    for p in &points {
+        assert!(p.is_unloaded() && p.load < 1e-9, "{}: {}", p.name, p.load);
+        assert!(p.stiffness[0][1].abs() < 1e-7 * p.stiffness[0][0]);
+    }
+    // A loaded journal is not: the horizontal Jeffcott rotor.
+    let jeffcott = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml");
+    let rotor =
+        Rotor::new(rotor_bearing::model::RotorModel::from_file(&jeffcott).unwrap()).unwrap();
+    let points = operating_point(&rotor, 3000.0 / RAD_S_TO_RPM).unwrap();
+    assert!(points.iter().all(|p| !p.is_unloaded() && p.load > 100.0));
+}

@@ -1,6 +1,10 @@
-//! `rotor report`: one self-contained HTML page. Parsed as XML (well-formed),
-//! every section present, every figure an inline PNG, and its tables equal to
-//! what the single commands print.
+//! `rotor report`: one self-contained page to sign. Parsed as XML
+//! (well-formed), its stamp checked against independent tools (`sha256sum`,
+//! `date`, `git describe`), its summary's verdicts and its tables against the
+//! single commands' output, and rendered in a real headless Chromium (Debian's
+//! package, installed by `scripts/setup.sh`): every figure decodes at its
+//! PNG's own size, no table runs off the page, and print to PDF gives one
+//! page per section at least.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -9,11 +13,13 @@ use std::process::Command;
 use quick_xml::Reader;
 use quick_xml::events::Event;
 
-fn rotor(args: &[&str], model: &Path) -> String {
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn rotor(args: &[&str]) -> String {
     let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
-        .arg(args[0])
-        .arg(model)
-        .args(&args[1..])
+        .args(args)
         .output()
         .unwrap();
     assert!(
@@ -50,55 +56,120 @@ fn decode_base64(text: &str) -> Vec<u8> {
     out
 }
 
-/// Section id → (its `<pre>` text, the decoded bytes of its images).
-type Sections = BTreeMap<String, (String, Vec<Vec<u8>>)>;
+/// A table: headings and rows of `(text, class)` cells.
+#[derive(Debug, Default, Clone)]
+struct Table {
+    headers: Vec<String>,
+    rows: Vec<Vec<(String, String)>>,
+}
 
-fn parse(html: &str) -> Sections {
+impl Table {
+    fn column(&self, name: &str) -> usize {
+        self.headers
+            .iter()
+            .position(|h| h == name)
+            .unwrap_or_else(|| panic!("no column {name} in {:?}", self.headers))
+    }
+}
+
+#[derive(Debug, Default)]
+struct Section {
+    tables: BTreeMap<String, Table>,
+    images: Vec<Vec<u8>>,
+    failures: Vec<String>,
+    text: String,
+}
+
+#[derive(Debug, Default)]
+struct Page {
+    stamp: BTreeMap<String, String>,
+    sections: BTreeMap<String, Section>,
+    order: Vec<String>,
+}
+
+fn attributes(e: &quick_xml::events::BytesStart) -> BTreeMap<String, String> {
+    e.attributes()
+        .map(|a| {
+            let a = a.unwrap();
+            (
+                String::from_utf8(a.key.as_ref().to_vec()).unwrap(),
+                a.normalized_value(quick_xml::XmlVersion::Implicit1_0)
+                    .unwrap()
+                    .into_owned(),
+            )
+        })
+        .collect()
+}
+
+/// The page parsed as XML: a malformed page panics.
+fn parse(html: &str) -> Page {
     let mut reader = Reader::from_str(html);
-    let mut sections = Sections::new();
-    let mut current: Option<String> = None;
-    let mut in_pre = false;
+    let mut page = Page::default();
+    let mut section: Option<String> = None;
+    let mut table: Option<(String, Table)> = None;
+    let mut cell: Option<(String, String)> = None;
+    let mut in_header = false;
+    let mut row: Vec<(String, String)> = Vec::new();
+    let mut failure: Option<String> = None;
+    let mut paragraph = false;
+    let mut stamp_cells: Vec<String> = Vec::new();
     loop {
-        match reader
+        let event = reader
             .read_event()
-            .unwrap_or_else(|e| panic!("not well-formed at {}: {e}", reader.buffer_position()))
-        {
+            .unwrap_or_else(|e| panic!("not well-formed at {}: {e}", reader.buffer_position()));
+        match event {
             Event::Start(e) | Event::Empty(e) => {
-                let attrs: BTreeMap<String, String> = e
-                    .attributes()
-                    .map(|a| {
-                        let a = a.unwrap();
-                        (
-                            String::from_utf8(a.key.as_ref().to_vec()).unwrap(),
-                            a.normalized_value(quick_xml::XmlVersion::Implicit1_0)
-                                .unwrap()
-                                .into_owned(),
-                        )
-                    })
-                    .collect();
+                let attrs = attributes(&e);
                 match e.name().as_ref() {
                     b"section" => {
                         let id = attrs["id"].clone();
-                        sections.insert(id.clone(), (String::new(), Vec::new()));
-                        current = Some(id);
+                        page.order.push(id.clone());
+                        page.sections.insert(id.clone(), Section::default());
+                        section = Some(id);
                     }
-                    b"pre" => in_pre = true,
+                    b"table" => {
+                        table = Some((
+                            attrs.get("id").cloned().unwrap_or_default(),
+                            Table::default(),
+                        ))
+                    }
+                    b"thead" => in_header = true,
+                    b"tr" => row.clear(),
+                    b"th" | b"td" => {
+                        cell = Some((
+                            String::new(),
+                            attrs.get("class").cloned().unwrap_or_default(),
+                        ))
+                    }
+                    b"p" if attrs.get("class").is_some_and(|c| c == "failure") => {
+                        failure = Some(String::new())
+                    }
+                    b"p" => paragraph = true,
                     b"img" => {
                         let src = &attrs["src"];
                         let data = src.strip_prefix("data:image/png;base64,").unwrap();
-                        let id = current.clone().expect("image outside a section");
-                        sections.get_mut(&id).unwrap().1.push(decode_base64(data));
+                        let id = section.clone().expect("image outside a section");
+                        page.sections
+                            .get_mut(&id)
+                            .unwrap()
+                            .images
+                            .push(decode_base64(data));
                     }
                     _ => {}
                 }
             }
-            Event::Text(t) if in_pre => {
-                let id = current.clone().unwrap();
+            Event::Text(t) => {
                 let text = t.decode().unwrap().into_owned();
-                sections.get_mut(&id).unwrap().0.push_str(&text);
+                push_text(
+                    &mut cell,
+                    &mut failure,
+                    paragraph,
+                    &section,
+                    &mut page,
+                    &text,
+                );
             }
-            Event::GeneralRef(r) if in_pre => {
-                let id = current.clone().unwrap();
+            Event::GeneralRef(r) => {
                 let c = match r.resolve_char_ref().unwrap() {
                     Some(c) => c,
                     None => match r.decode().unwrap().as_ref() {
@@ -109,128 +180,456 @@ fn parse(html: &str) -> Sections {
                         other => panic!("unknown entity &{other};"),
                     },
                 };
-                sections.get_mut(&id).unwrap().0.push(c);
+                push_text(
+                    &mut cell,
+                    &mut failure,
+                    paragraph,
+                    &section,
+                    &mut page,
+                    &c.to_string(),
+                );
             }
             Event::End(e) => match e.name().as_ref() {
-                b"pre" => in_pre = false,
-                b"section" => current = None,
+                b"th" | b"td" => {
+                    let c = cell.take().unwrap();
+                    if table.as_ref().is_some_and(|(id, _)| id == "stamp") {
+                        stamp_cells.push(c.0.clone());
+                    }
+                    row.push(c);
+                }
+                b"tr" => {
+                    if let Some((id, t)) = table.as_mut() {
+                        if id == "stamp" {
+                            page.stamp
+                                .insert(stamp_cells[0].clone(), stamp_cells[1].clone());
+                            stamp_cells.clear();
+                        } else if in_header {
+                            t.headers = row.iter().map(|c| c.0.clone()).collect();
+                        } else {
+                            t.rows.push(row.clone());
+                        }
+                    }
+                }
+                b"thead" => in_header = false,
+                b"table" => {
+                    let (id, t) = table.take().unwrap();
+                    if let Some(s) = &section {
+                        page.sections.get_mut(s).unwrap().tables.insert(id, t);
+                    }
+                }
+                b"p" => {
+                    paragraph = false;
+                    if let (Some(f), Some(s)) = (failure.take(), &section) {
+                        page.sections.get_mut(s).unwrap().failures.push(f);
+                    }
+                }
+                b"section" => section = None,
                 _ => {}
             },
             Event::Eof => break,
             _ => {}
         }
     }
-    sections
+    page
 }
 
-#[test]
-fn report_of_the_damped_classic_rotor_is_complete_and_well_formed() {
-    let model =
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor_damped.toml");
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("report");
-    std::fs::create_dir_all(&dir).unwrap();
-    let out = dir.join("report.html");
-    let out_text = out.to_str().unwrap();
-    rotor(&["report", "--rpm", "3000", "--out", out_text], &model);
-    let html = std::fs::read_to_string(&out).unwrap();
-    assert!(html.starts_with("<!DOCTYPE html>"));
-    let sections = parse(&html);
-    let ids: Vec<&str> = sections.keys().map(String::as_str).collect();
-    assert_eq!(
-        ids,
-        [
-            "model",
-            "modes",
-            "operating-point",
-            "stability",
-            "ucs",
-            "unbalance"
-        ]
-    );
-    for (id, (_, images)) in &sections {
-        let want = usize::from(id != "operating-point");
-        assert_eq!(images.len(), want, "{id}");
-        for png in images {
-            assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n", "{id}");
-            assert!(png.len() > 10_000, "{id}: {} bytes", png.len());
+fn push_text(
+    cell: &mut Option<(String, String)>,
+    failure: &mut Option<String>,
+    paragraph: bool,
+    section: &Option<String>,
+    page: &mut Page,
+    text: &str,
+) {
+    if let Some(c) = cell.as_mut() {
+        c.0.push_str(text);
+    } else if let Some(f) = failure.as_mut() {
+        f.push_str(text);
+    } else if paragraph {
+        if let Some(s) = section {
+            page.sections.get_mut(s).unwrap().text.push_str(text);
         }
     }
-    // The tables are those of the single commands.
-    assert_eq!(sections["model"].0, rotor(&["info"], &model));
-    assert_eq!(
-        sections["operating-point"].0,
-        rotor(&["operating-point", "--rpm", "3000"], &model)
-    );
-    assert_eq!(
-        sections["stability"].0,
-        rotor(&["stability", "--rpm", "3000"], &model)
-    );
-    assert_eq!(
-        sections["modes"].0,
-        rotor(&["modes", "--rpm", "3000", "--modes", "8"], &model)
-    );
-    let unbalance = rotor(
-        &[
-            "unbalance",
-            "--max-rpm",
-            "6000",
-            "--points",
-            "201",
-            "--operating-rpm",
-            "3000:3000",
-        ],
-        &model,
-    );
-    let table = unbalance.lines().skip(2).collect::<Vec<_>>().join("\n");
-    assert!(
-        sections["unbalance"].0.ends_with(&format!("{table}\n")),
-        "{}",
-        sections["unbalance"].0
-    );
 }
 
+/// Width and height from a PNG's IHDR chunk.
+fn png_size(png: &[u8]) -> (u32, u32) {
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    assert_eq!(&png[12..16], b"IHDR");
+    let be = |b: &[u8]| u32::from_be_bytes([b[0], b[1], b[2], b[3]]);
+    (be(&png[16..20]), be(&png[20..24]))
+}
+
+fn write_report(args: &[&str], name: &str) -> (PathBuf, Page) {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("report");
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join(format!("{name}.html"));
+    let _ = std::fs::remove_file(&out);
+    let mut all: Vec<&str> = args.to_vec();
+    let out_text = out.to_str().unwrap().to_string();
+    all.extend(["--out", &out_text]);
+    rotor(&all);
+    let html = std::fs::read_to_string(&out).unwrap();
+    assert!(html.starts_with("<!DOCTYPE html>"));
+    (out, parse(&html))
+}
+
+const SECTIONS: [&str; 8] = [
+    "summary",
+    "model",
+    "campbell",
+    "unbalance",
+    "operating-point",
+    "modes",
+    "stability",
+    "ucs",
+];
+
+/// Summary rows of check `check`: (item, value, criterion, verdict text, class).
+fn summary_rows<'a>(page: &'a Page, check: &str) -> Vec<&'a Vec<(String, String)>> {
+    page.sections["summary"].tables["summary-table"]
+        .rows
+        .iter()
+        .filter(|r| r[0].0 == check)
+        .collect()
+}
+
+/// The verdict column of the margins table `rotor campbell` prints.
+fn campbell_verdicts(stdout: &str) -> Vec<String> {
+    let table = stdout
+        .split("separation margins (API 684, AF = 1/(2ζ))")
+        .nth(1)
+        .unwrap_or_else(|| panic!("{stdout}"));
+    table
+        .lines()
+        .skip(2)
+        .take_while(|l| l.starts_with("  "))
+        .map(|l| l.split_whitespace().last().unwrap().to_string())
+        .collect()
+}
+
+/// The pump with its stage data: every section, figure and table; the stamp
+/// against independent tools; the summary's verdicts those of the single
+/// commands, coloured.
+#[test]
+fn report_of_the_pump_is_complete_and_agrees_with_the_commands() {
+    let pump = root().join("examples/my_pump.toml");
+    let pump_s = pump.to_str().unwrap();
+    let stage = [
+        "--power",
+        "150e3",
+        "--impeller-diameter",
+        "0.3",
+        "--flow-width",
+        "0.02",
+    ];
+    let mut args = vec!["report", pump_s];
+    args.extend(stage);
+    let (_, page) = write_report(&args, "pump");
+    assert_eq!(page.order, SECTIONS);
+    for id in SECTIONS {
+        let s = &page.sections[id];
+        assert!(s.failures.is_empty(), "{id}: {:?}", s.failures);
+        let want = usize::from(!matches!(id, "summary" | "operating-point"));
+        assert_eq!(s.images.len(), want, "{id}");
+        for png in &s.images {
+            let (w, h) = png_size(png);
+            assert!(w >= 800 && h >= 500, "{id}: {w}×{h}");
+        }
+    }
+    // The stamp: the file, its SHA-256 (sha256sum), today (date -u), the build.
+    assert_eq!(page.stamp["model file"], pump_s);
+    let sum = Command::new("sha256sum").arg(&pump).output().unwrap();
+    let sum = String::from_utf8(sum.stdout).unwrap();
+    assert_eq!(
+        page.stamp["model SHA-256"],
+        sum.split_whitespace().next().unwrap()
+    );
+    let today = Command::new("date")
+        .args(["-u", "+%Y-%m-%d"])
+        .output()
+        .unwrap();
+    let today = String::from_utf8(today.stdout).unwrap();
+    assert!(
+        page.stamp["date"].starts_with(today.trim()),
+        "{:?}",
+        page.stamp
+    );
+    assert!(page.stamp["date"].ends_with(" UTC"));
+    let commit = Command::new("git")
+        .args(["describe", "--always", "--tags"])
+        .current_dir(root())
+        .output()
+        .unwrap();
+    let commit = String::from_utf8(commit.stdout).unwrap();
+    let software = &page.stamp["software"];
+    assert!(
+        software.starts_with(&format!("rotor_bearing {} (", env!("CARGO_PKG_VERSION")))
+            && software.contains(commit.trim()),
+        "{software} vs {commit}"
+    );
+    assert_eq!(page.stamp["operating speed"], "3600 rpm");
+
+    // Campbell: the summary's verdicts are `rotor campbell`'s, in order.
+    let campbell = rotor(&["campbell", pump_s, "--operating-rpm", "3600:3600"]);
+    let expected = campbell_verdicts(&campbell);
+    let rows = summary_rows(&page, "critical speed (Campbell)");
+    assert_eq!(rows.len(), expected.len());
+    for (row, v) in rows.iter().zip(&expected) {
+        assert_eq!(&row[4].0, v);
+        assert_eq!(row[4].1, if v == "pass" { "pass" } else { "fail" });
+    }
+    let table = &page.sections["campbell"].tables["critical-speeds"];
+    let speeds: Vec<&str> = campbell
+        .lines()
+        .filter(|l| l.contains(" rpm (") && l.contains("ζ = "))
+        .take(table.rows.len())
+        .map(|l| l.split_whitespace().next().unwrap())
+        .collect();
+    let col = table.column("speed (rpm)");
+    assert_eq!(
+        table
+            .rows
+            .iter()
+            .map(|r| r[col].0.as_str())
+            .collect::<Vec<_>>(),
+        speeds
+    );
+
+    // Unbalance: the table is the command's, cell for cell; verdicts too.
+    let unbalance = rotor(&["unbalance", pump_s, "--operating-rpm", "3600:3600"]);
+    let printed: Vec<Vec<&str>> = unbalance
+        .lines()
+        .skip_while(|l| !l.starts_with("point "))
+        .skip(1)
+        .map(|l| l.split_whitespace().collect())
+        .collect();
+    let table = &page.sections["unbalance"].tables["unbalance-peaks"];
+    assert_eq!(table.rows.len(), printed.len());
+    for (row, words) in table.rows.iter().zip(&printed) {
+        let cells: Vec<&str> = row.iter().flat_map(|c| c.0.split_whitespace()).collect();
+        assert_eq!(&cells, words);
+    }
+    let rows = summary_rows(&page, "unbalance response peak");
+    assert_eq!(rows.len(), printed.len());
+    for (row, words) in rows.iter().zip(&printed) {
+        assert_eq!(row[4].0, *words.last().unwrap());
+    }
+
+    // Stability: Level I verdict as `rotor stability` prints it.
+    let mut st = vec!["stability", pump_s, "--rpm", "3600"];
+    st.extend(stage);
+    let stability = rotor(&st);
+    let level = stability
+        .lines()
+        .find(|l| l.starts_with("  Level I: "))
+        .unwrap_or_else(|| panic!("{stability}"));
+    let rows = summary_rows(&page, "stability margin (API 617 Level I)");
+    assert_eq!(rows.len(), 1);
+    let verdict = if level.contains("FAIL") {
+        "FAIL"
+    } else {
+        "pass"
+    };
+    assert_eq!(rows[0][4].0, verdict);
+    let qa = stability
+        .lines()
+        .find(|l| l.contains("anticipated cross-coupling"))
+        .unwrap();
+    assert!(
+        qa.ends_with(&format!("= {}", rows[0][1].0.trim_start_matches("Q_A = "))),
+        "{qa} vs {}",
+        rows[0][1].0
+    );
+
+    // Modes: the table is `rotor modes`'s.
+    let modes = rotor(&["modes", pump_s, "--rpm", "3600", "--modes", "8"]);
+    let table = &page.sections["modes"].tables["modes"];
+    for (row, line) in table.rows.iter().zip(modes.lines().skip(2)) {
+        let w: Vec<&str> = line.split_whitespace().collect();
+        // mode, ω_d, f_d, ζ, δ, whirl in the command; mode, f_d, ω_d, … here.
+        assert_eq!(
+            [
+                &row[0].0, &row[2].0, &row[1].0, &row[3].0, &row[4].0, &row[5].0
+            ],
+            [w[0], w[1], w[2], w[3], w[4], w[5]]
+        );
+    }
+
+    // Bearings: h_min and power loss are the operating point's.
+    let op = rotor(&["operating-point", pump_s, "--rpm", "3600"]);
+    for row in summary_rows(&page, "bearing film") {
+        let block = op
+            .split(&format!("bearing {} at 3600 rpm:", row[1].0))
+            .nth(1)
+            .unwrap();
+        let h = block
+            .split("minimum film thickness ")
+            .nth(1)
+            .unwrap()
+            .split(' ')
+            .next()
+            .unwrap();
+        let p = block
+            .split("power loss ")
+            .nth(1)
+            .unwrap()
+            .split(' ')
+            .next()
+            .unwrap();
+        assert!(
+            row[2]
+                .0
+                .contains(&format!("h_min = {h} µm, power loss {p} W")),
+            "{}",
+            row[2].0
+        );
+        assert_eq!(row[4].0, "pass");
+    }
+}
+
+/// The built-in classic rotor at 3000 rpm stopped with "matrix is singular"
+/// (its grid landed on an undamped critical); now the page is written, and
+/// the undamped resonance is "unbounded", as `rotor unbalance` says.
+#[test]
+fn report_never_fails_on_the_undamped_classic_rotor() {
+    let (_, page) = write_report(&["report", "--rpm", "3000"], "classic");
+    assert_eq!(page.order, SECTIONS);
+    for id in SECTIONS {
+        assert!(page.sections[id].failures.is_empty(), "{id}");
+    }
+    assert_eq!(page.stamp["model file"], "built-in classic_disk_rotor.toml");
+    let unbalance = rotor(&["unbalance", "--operating-rpm", "3000:3000"]);
+    let table = &page.sections["unbalance"].tables["unbalance-peaks"];
+    assert!(!table.rows.is_empty());
+    for row in &table.rows {
+        assert_eq!(row[2].0, "unbounded");
+        assert_eq!(row[3].0, "∞");
+    }
+    let printed: Vec<&str> = unbalance
+        .lines()
+        .filter(|l| l.contains("unbounded"))
+        .collect();
+    assert_eq!(printed.len(), table.rows.len(), "{unbalance}");
+    // No damping: the stability check fails, and says why.
+    let rows = summary_rows(&page, "stability without cross-coupling");
+    assert_eq!(rows[0][2].0, "log dec 0 (no damping)");
+    assert_eq!(
+        (rows[0][4].0.as_str(), rows[0][4].1.as_str()),
+        ("FAIL", "fail")
+    );
+    // Critical speeds of an undamped rotor: AF unbounded, never 3.9e27.
+    for row in summary_rows(&page, "critical speed (Campbell)") {
+        assert!(row[2].0.ends_with("AF ∞"), "{}", row[2].0);
+    }
+}
+
+/// A malformed page is caught by the parser the tests use.
 #[test]
 fn a_broken_page_is_caught() {
-    let html = "<!DOCTYPE html>\n<html><body><section id=\"a\"><pre>x</section></body></html>";
+    let html = "<!DOCTYPE html>\n<html><body><section id=\"a\"><p>x</section></body></html>";
     assert!(std::panic::catch_unwind(|| parse(html)).is_err());
 }
 
-/// The page renders in a browser: a headless Chromium screenshot of it is a
-/// non-trivial PNG. Skipped (with a message) where `/usr/bin/chromium` is not
-/// installed; the test never installs it.
-#[test]
-fn page_renders_in_headless_chromium_when_available() {
-    let chromium = Path::new("/usr/bin/chromium");
-    if !chromium.exists() {
-        eprintln!("skipped: /usr/bin/chromium not installed");
-        return;
-    }
-    let model = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor.toml");
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("report_chromium");
-    std::fs::create_dir_all(&dir).unwrap();
-    let (page, shot) = (dir.join("report.html"), dir.join("shot.png"));
-    let _ = std::fs::remove_file(&shot);
-    rotor(
-        &["report", "--rpm", "3000", "--out", page.to_str().unwrap()],
-        &model,
+/// The installed Chromium (Debian's `chromium`, from `scripts/setup.sh`).
+fn chromium() -> &'static Path {
+    let path = Path::new("/usr/bin/chromium");
+    assert!(
+        path.exists(),
+        "/usr/bin/chromium is missing: scripts/setup.sh installs it (scripts/test.sh runs that)"
     );
-    let out = Command::new(chromium)
+    path
+}
+
+fn headless(extra: &[String], page: &Path) -> std::process::Output {
+    let out = Command::new(chromium())
         .args([
             "--headless",
-            "--disable-gpu",
             "--no-sandbox",
-            "--window-size=1400,4000",
+            "--disable-gpu",
+            "--hide-scrollbars",
+            "--window-size=1280,4000",
+            "--virtual-time-budget=20000",
         ])
-        .arg(format!("--screenshot={}", shot.display()))
+        .args(extra)
         .arg(format!("file://{}", page.display()))
         .output()
         .unwrap();
     assert!(
         out.status.success(),
-        "{}",
+        "chromium: {}",
         String::from_utf8_lossy(&out.stderr)
     );
+    out
+}
+
+/// The page in a real browser: after load every figure has decoded to its
+/// PNG's own width and height, nothing overflows sideways at 1280 px, every
+/// table of the file is in the browser's DOM, the screenshot is a PNG of the
+/// window, and print to PDF gives a page per section at least.
+#[test]
+fn page_renders_in_headless_chromium() {
+    let pump = root().join("examples/my_pump.toml");
+    let (path, page) = write_report(&["report", pump.to_str().unwrap()], "chromium");
+    let dom = headless(&["--dump-dom".into()], &path);
+    let dom = String::from_utf8(dom.stdout).unwrap();
+    let images: Vec<&Vec<u8>> = page.sections.values().flat_map(|s| &s.images).collect();
+    let decoded: Vec<&str> = dom
+        .split("data-decoded=\"")
+        .skip(1)
+        .map(|s| s.split('"').next().unwrap())
+        .collect();
+    assert_eq!(
+        decoded.len(),
+        images.len(),
+        "every figure reported by the page script"
+    );
+    // Figures in document order: each decoded at its PNG's size.
+    let order: Vec<(u32, u32)> = page
+        .order
+        .iter()
+        .flat_map(|id| page.sections[id].images.iter().map(|p| png_size(p)))
+        .collect();
+    for (d, (w, h)) in decoded.iter().zip(order) {
+        assert_eq!(*d, format!("{w}x{h}"), "a figure did not render");
+    }
+    let overflow: i64 = dom
+        .split("data-overflow=\"")
+        .nth(1)
+        .expect("the page script ran")
+        .split('"')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(overflow <= 0, "the page runs {overflow} px off the side");
+    let tables_in_file: usize = page
+        .sections
+        .values()
+        .map(|s| s.tables.len())
+        .sum::<usize>()
+        + 1;
+    assert_eq!(dom.matches("<table").count(), tables_in_file);
+    assert!(dom.contains("<td class=\"pass\">pass</td>"));
+
+    let dir = path.parent().unwrap();
+    let (shot, pdf) = (dir.join("shot.png"), dir.join("page.pdf"));
+    let _ = std::fs::remove_file(&shot);
+    let _ = std::fs::remove_file(&pdf);
+    headless(&[format!("--screenshot={}", shot.display())], &path);
     let bytes = std::fs::read(&shot).unwrap();
-    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    assert_eq!(png_size(&bytes), (1280, 4000));
     assert!(bytes.len() > 50_000, "screenshot of {} bytes", bytes.len());
+    headless(
+        &[
+            format!("--print-to-pdf={}", pdf.display()),
+            "--no-pdf-header-footer".into(),
+        ],
+        &path,
+    );
+    let pdf = std::fs::read(&pdf).unwrap();
+    assert!(pdf.starts_with(b"%PDF-"));
+    let text = String::from_utf8_lossy(&pdf);
+    let pages = text.matches("/Type /Page").count() - text.matches("/Type /Pages").count();
+    assert!(pages >= SECTIONS.len(), "{pages} pages");
 }

@@ -114,7 +114,8 @@ fn command_threshold_on_the_damped_classic_rotor_is_where_the_log_dec_crosses_ze
         rows += 1;
     }
     assert_eq!(rows, 8);
-    assert!(stdout.contains("at node 4 (mid-span"), "{stdout}");
+    // The damped classic rotor's disk sits at mid-span, node 4.
+    assert!(stdout.contains("at node 4 (disk disk)"), "{stdout}");
     let line = stdout
         .lines()
         .find(|l| l.starts_with("threshold Q = "))
@@ -171,4 +172,224 @@ fn a_standstill_or_a_bad_range_is_refused_by_name() {
             "{args:?}: {stderr}"
         );
     }
+}
+
+/// The pump with its plain bearings replaced by linear bearings of their
+/// synchronous K and C at `rpm` (the library's operating point, written into
+/// a model file): the rotor the stability analysis adds its cross-coupling
+/// to, assembled on an independent path.
+fn pump_on_linear_bearings(rpm: f64) -> String {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/my_pump.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "pump.toml").unwrap()).unwrap();
+    let points =
+        rotor_bearing::analysis::operating_point::operating_point(&rotor, rpm * PI / 30.0).unwrap();
+    let (head, rest) = text.split_once("[[bearings]]").unwrap();
+    let tail = &rest[rest.find("\n# The unbalance").unwrap()..];
+    let mut bearings = String::new();
+    for (p, b) in points.iter().zip(&rotor.model.bearings) {
+        let (k, c) = (p.stiffness, p.damping);
+        bearings.push_str(&format!(
+            "[[bearings]]\nname = \"{}\"\ntype = \"linear\"\nnode = {}\nkxx = {:?}\nkxy = {:?}\nkyx = {:?}\nkyy = {:?}\ncxx = {:?}\ncxy = {:?}\ncyx = {:?}\ncyy = {:?}\n\n",
+            b.name, b.node + 1, k[0][0], k[0][1], k[1][0], k[1][1], c[0][0], c[0][1], c[1][0], c[1][1]
+        ));
+    }
+    format!("{head}{bearings}{tail}")
+}
+
+fn run(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+fn number_after(text: &str, key: &str) -> f64 {
+    let at = text.find(key).unwrap_or_else(|| panic!("{key} in {text}")) + key.len();
+    text[at..]
+        .split(|c: char| c.is_whitespace() || c == ':')
+        .find(|w| !w.is_empty())
+        .unwrap()
+        .parse()
+        .unwrap_or_else(|e| panic!("{key} in {text}: {e}"))
+}
+
+/// Acceptance (issue 27): the Level I screening of the documented example —
+/// the quick start's pump at 3600 rpm, 150 kW through one impeller of
+/// D = 0.3 m with a 20 mm restrictive width, liquid (ρd/ρs = 1), centrifugal
+/// (B = 3) — against a hand calculation from the stated formula, in SI and in
+/// API 617's US form, and its verdict from the criteria.
+#[test]
+fn level_one_of_the_documented_pump_matches_the_hand_calculation() {
+    let pump = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/my_pump.toml");
+    let stdout = run(&[
+        "stability",
+        pump,
+        "--rpm",
+        "3600",
+        "--power",
+        "150e3",
+        "--impeller-diameter",
+        "0.3",
+        "--flow-width",
+        "0.02",
+    ]);
+    // Hand calculation: Q_A = B P (ρd/ρs) / (D H Ω), Ω = 3600 · 2π/60.
+    let omega = 3600.0 * PI / 30.0;
+    let qa = 3.0 * 150e3 * 1.0 / (0.3 * 0.02 * omega);
+    assert!((qa - 198_943.678_9).abs() < 1e-3, "{qa}");
+    // API 617's US form, q_A = B_c C HP / (D_c H_c N) in klbf/in with C = 63.
+    let (hp, inch) = (150e3 / 745.699_872, 0.0254);
+    let us = 3.0 * 63.0 * hp / ((0.3 / inch) * (0.02 / inch) * 3600.0); // klbf/in
+    let us_si = us * 4_448.221_615 / inch; // N/m
+    assert!((us_si / qa - 1.0).abs() < 2e-3, "{us_si} vs {qa}");
+    let printed = number_after(
+        &stdout,
+        "= 3 × 150000 W × 1 / (0.3 m × 0.02 m × 376.991 rad/s) = ",
+    );
+    assert!((printed / qa - 1.0).abs() < 5e-6, "{stdout}");
+    // Q0 and δ at Q_A, each checked independently: the cross-coupling
+    // written as a linear bearing at the impeller (node 6).
+    let q0 = number_after(&stdout, "threshold Q = ");
+    let text = pump_on_linear_bearings(3600.0);
+    let delta_at = |q: f64| least_forward_log_dec(&with_cross_coupled_bearing(&text, 6, q), omega);
+    assert!(delta_at(0.99 * q0) > 0.0 && delta_at(1.01 * q0) < 0.0);
+    let delta_a = number_after(&stdout, "log dec at Q_A = ");
+    assert!(
+        (delta_at(qa) - delta_a).abs() < 5e-5 + 1e-4 * delta_a.abs(),
+        "{stdout}"
+    );
+    let ratio = number_after(&stdout, "stability margin Q0/Q_A = ");
+    assert!((ratio - q0 / qa).abs() < 0.006, "{ratio} vs {}", q0 / qa);
+    let pass = q0 / qa >= 2.0 && delta_a >= 0.1;
+    let verdict = stdout
+        .lines()
+        .find(|l| l.starts_with("  Level I: "))
+        .unwrap();
+    assert_eq!(verdict == "  Level I: pass", pass, "{stdout}");
+    // The criteria lines carry their own verdicts.
+    assert!(stdout.contains(&format!(
+        "(at least 2 required): {}",
+        if q0 / qa >= 2.0 { "pass" } else { "FAIL" }
+    )));
+    assert!(stdout.contains(&format!(
+        "(at least 0.1 required): {}",
+        if delta_a >= 0.1 { "pass" } else { "FAIL" }
+    )));
+    // Default range with stage data: 0 … 10 Q_A.
+    let csv_dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("level_one");
+    std::fs::create_dir_all(&csv_dir).unwrap();
+    let csv = csv_dir.join("q.csv");
+    run(&[
+        "stability",
+        pump,
+        "--rpm",
+        "3600",
+        "--power",
+        "150e3",
+        "--impeller-diameter",
+        "0.3",
+        "--flow-width",
+        "0.02",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    let last: f64 = std::fs::read_to_string(&csv)
+        .unwrap()
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!((last / (10.0 * qa) - 1.0).abs() < 1e-12);
+}
+
+/// `--at` places the cross-coupling at named nodes, split equally: two
+/// linear bearings of Q/2 each at nodes 3 and 9 cross zero at the printed
+/// threshold; a disk's name means its node; bad names are refused.
+#[test]
+fn cross_coupling_at_named_nodes() {
+    let pump = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/my_pump.toml");
+    let stdout = run(&[
+        "stability",
+        pump,
+        "--rpm",
+        "3600",
+        "--at",
+        "3,9",
+        "--cross-coupling-max",
+        "3e6",
+    ]);
+    assert!(
+        stdout.contains("split equally over node 3, node 9"),
+        "{stdout}"
+    );
+    let q0 = number_after(&stdout, "threshold Q = ");
+    let text = pump_on_linear_bearings(3600.0);
+    let omega = 3600.0 * PI / 30.0;
+    let two = |q: f64| {
+        let extra = |name: &str, node: usize| {
+            format!(
+                "\n[[bearings]]\nname = \"{name}\"\ntype = \"linear\"\nnode = {node}\nkxy = {:?}\nkyx = {:?}\n",
+                q / 2.0,
+                -q / 2.0
+            )
+        };
+        let model = format!("{text}{}{}", extra("q3", 3), extra("q9", 9));
+        least_forward_log_dec(
+            &Rotor::new(RotorModel::from_toml(&model, "q.toml").unwrap()).unwrap(),
+            omega,
+        )
+    };
+    assert!(two(0.99 * q0) > 0.0 && two(1.01 * q0) < 0.0, "{q0}");
+    let named = run(&["stability", pump, "--rpm", "3600", "--at", "impeller"]);
+    assert!(named.contains("at node 6 (disk impeller)"), "{named}");
+    let default = run(&["stability", pump, "--rpm", "3600"]);
+    assert_eq!(named, default, "the disks are the default sites");
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["stability", pump, "--rpm", "3600", "--at", "runner"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success()
+            && stderr.contains(
+                "--at \"runner\": not a node number or a disk name (disks: [\"impeller\"])"
+            ),
+        "{stderr}"
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["stability", pump, "--rpm", "3600", "--power", "1e5"])
+        .output()
+        .unwrap();
+    assert!(
+        String::from_utf8_lossy(&out.stderr)
+            .contains("needs --power, --impeller-diameter and --flow-width together")
+    );
+}
+
+/// Seals are where swirling leakage drives whirl: the default cross-coupling
+/// sites are the disks' and the seals' nodes, each named in messages.
+#[test]
+fn seals_are_default_cross_coupling_sites() {
+    use rotor_bearing::analysis::stability::{default_sites, site_label};
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/models/classic_disk_rotor_damped.toml"
+    ))
+    .unwrap()
+        + "\n[[seals]]\nname = \"labyrinth\"\nnode = 2\nspeeds_rpm = [0.0, 5000.0]\nkxx = 1e5\nkyy = 1e5\nkxy = 2e4\nkyx = -2e4\n";
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "sealed.toml").unwrap()).unwrap();
+    assert_eq!(default_sites(&rotor), [1, 3]);
+    assert_eq!(site_label(&rotor, 1), "node 2 (seal labyrinth)");
+    assert_eq!(site_label(&rotor, 3), "node 4 (disk disk)");
 }

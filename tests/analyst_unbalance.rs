@@ -11,6 +11,7 @@ use rotor_bearing::analysis::unbalance::{
 };
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::units::RAD_S_TO_RPM;
 
 #[path = "common/sdof.rs"]
 mod sdof;
@@ -133,7 +134,18 @@ fn command_csv_equals_the_library_solve_on_the_classic_rotor() {
     assert_eq!(header.len(), 2 + 5 * nodes.len());
     assert_eq!(header[2], "probe_disk_x_amplitude_m");
     assert_eq!(header[12], "bearing_non_drive_end_x_amplitude_m");
-    assert_eq!(rows.len(), 31);
+    // The 31 evenly spaced speeds, and more where the grid was refined around
+    // the undamped resonance at 1111 rpm.
+    assert!(rows.len() > 31, "{} rows", rows.len());
+    for k in 0..31 {
+        let rpm = 100.0 * k as f64;
+        assert!(
+            rows.iter()
+                .any(|r| (r[0] - rpm).abs() < 1e-9 * rpm.max(1.0)),
+            "{rpm} rpm missing"
+        );
+    }
+    assert!(rows.windows(2).all(|w| w[1][1] > w[0][1]));
     for row in &rows {
         let q = unbalance_response(&rotor, row[1]).unwrap();
         for (k, &node) in nodes.iter().enumerate() {
@@ -279,16 +291,19 @@ fn jeffcott_rotor_on_plain_bearings_with_a_unit_unbalance() {
         String::from_utf8_lossy(&out.stderr)
     );
     let (_, rows) = read_csv(&csv);
-    assert_eq!(rows.len(), 8);
+    // The grid skips 0 rpm on fluid films and starts at 1000 rpm; refined
+    // between the 8 evenly spaced speeds where the response turns fast.
+    assert!(rows.len() >= 8);
     assert_eq!(rows[0][0], 1000.0);
     // Linear in the unbalance: 1e-4 kg·m is 5× the model's 2e-5 kg·m plane at node 5.
     let rotor = Rotor::new(RotorModel::from_file(&model).unwrap()).unwrap();
-    let q = rotor_bearing::analysis::unbalance::response_at(&rotor, rows[3][1]).unwrap();
+    let row = rows.iter().find(|r| (r[0] - 4000.0).abs() < 1e-9).unwrap();
+    let q = rotor_bearing::analysis::unbalance::response_at(&rotor, row[1]).unwrap();
     let (x, _) = node_xy(&q, 4);
     assert!(
-        (rows[3][2] / x.norm() - 5.0).abs() < 1e-9,
+        (row[2] / x.norm() - 5.0).abs() < 1e-9,
         "{} vs {}",
-        rows[3][2],
+        row[2],
         x.norm()
     );
 }
@@ -317,6 +332,157 @@ fn an_undamped_resonance_is_reported_as_unbounded() {
         .find(|l| l.starts_with("probe disk"))
         .unwrap();
     assert!(!row.contains("unbounded") && !row.contains('∞'), "{row}");
+}
+
+/// Acceptance (issue 27): the polar plot's grid resolves the resonance loop.
+/// On the damped classic rotor from 0 to 3000 rpm in 31 evenly spaced speeds
+/// (100 rpm apart; the half-power band of its 1110 rpm peak is 47 rpm wide)
+/// the phase of x jumps by tens of degrees between neighbours around the
+/// peak; the refined grid the command plots keeps every step within the
+/// half-power band and its neighbourhood below 10°.
+#[test]
+fn refined_grid_resolves_the_resonance_loop_of_the_polar_plot() {
+    use rotor_bearing::analysis::unbalance::{
+        REFINE_ANGLE_DEG, peaks, refined_sweep, response_points, speed_grid, sweep,
+    };
+    let model = RotorModel::from_file(
+        &PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor_damped.toml"),
+    )
+    .unwrap();
+    let rotor = Rotor::new(model).unwrap();
+    let base = speed_grid(0.0, 3000.0 / RAD_S_TO_RPM, 31).unwrap();
+    let points = response_points(&rotor);
+    let probe = 0; // probe disk
+    let largest_step =
+        |s: &rotor_bearing::analysis::unbalance::UnbalanceSweep, lo: f64, hi: f64| {
+            s.speeds
+                .windows(2)
+                .zip(s.response.windows(2))
+                .filter(|(w, _)| w[1] >= lo && w[0] <= hi)
+                .map(|(_, r)| {
+                    (r[1][probe].0 * r[0][probe].0.conj())
+                        .arg()
+                        .abs()
+                        .to_degrees()
+                })
+                .fold(0.0, f64::max)
+        };
+    let coarse = sweep(&rotor, &base, &points).unwrap();
+    let fine = refined_sweep(&rotor, &base, &points).unwrap();
+    let peak = peaks(&rotor, &fine, probe).unwrap()[0];
+    let (n1, n2) = peak.half_power.unwrap();
+    // Around the peak: the half-power band widened by its own width each side.
+    let (lo, hi) = (n1 - (n2 - n1), n2 + (n2 - n1));
+    let before = largest_step(&coarse, lo, hi);
+    let after = largest_step(&fine, lo, hi);
+    eprintln!(
+        "largest phase step around the {:.1} rpm peak: {before:.1}° on 31 speeds, {after:.2}° on the {} refined",
+        peak.speed * RAD_S_TO_RPM,
+        fine.speeds.len()
+    );
+    assert!(
+        before > 10.0,
+        "the even grid already resolves it: the test proves nothing"
+    );
+    // The acceptance bar is 10°; the refinement's own bound is tighter.
+    assert!(after < 10.0, "{after}°");
+    assert!(after <= REFINE_ANGLE_DEG + 1e-9, "{after}°");
+    // The whole sweep, not only the peak, within the refinement's bound, and
+    // every refined speed's response the library's solve there.
+    assert!(largest_step(&fine, 0.0, f64::INFINITY) <= REFINE_ANGLE_DEG + 1e-9);
+    for (s, r) in fine.speeds.iter().zip(&fine.response).step_by(7) {
+        let q = unbalance_response(&rotor, *s).unwrap();
+        assert_eq!(node_xy(&q, 3).0, r[probe].0);
+    }
+}
+
+/// `--amplitude pk-pk` states every amplitude as twice the orbit's
+/// semi-axis, and the heading says which convention the numbers are in; the
+/// transient's window table does the same.
+#[test]
+fn amplitudes_are_stated_zero_to_peak_or_peak_to_peak() {
+    let model =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor_damped.toml");
+    let table = |convention: &str| {
+        let out = rotor_cli()
+            .arg("unbalance")
+            .arg(&model)
+            .args(["--max-rpm", "3000", "--amplitude", convention])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let (zero, peak) = (table("0-pk"), table("pk-pk"));
+    let heading = |t: &str| {
+        t.lines()
+            .find(|l| l.starts_with("point "))
+            .unwrap()
+            .to_string()
+    };
+    assert!(heading(&zero).contains("µm 0-pk"), "{zero}");
+    assert!(heading(&peak).contains("µm pk-pk"), "{peak}");
+    let amplitudes = |t: &str| -> Vec<f64> {
+        t.lines()
+            .skip_while(|l| !l.starts_with("point "))
+            .skip(1)
+            .map(|l| l.split_whitespace().nth(3).unwrap().parse().unwrap())
+            .collect()
+    };
+    let (a, b) = (amplitudes(&zero), amplitudes(&peak));
+    assert!(!a.is_empty() && a.len() == b.len());
+    for (x, y) in a.iter().zip(&b) {
+        // Six significant digits each.
+        assert!((y / x - 2.0).abs() < 1e-5, "{x} vs {y}");
+    }
+    let bad = rotor_cli()
+        .args(["unbalance", "--amplitude", "rms"])
+        .output()
+        .unwrap();
+    assert!(
+        String::from_utf8_lossy(&bad.stderr)
+            .contains("expected 0-pk (the orbit's semi-axis) or pk-pk")
+    );
+    // The transient: the window table's amplitude column doubles as well.
+    let dir = out_dir("amplitude_windows");
+    let run = |convention: &str| {
+        let prefix = dir.join(convention);
+        let out = rotor_cli()
+            .args([
+                "simulate",
+                "--rpm",
+                "3000",
+                "--duration",
+                "0.5",
+                "--amplitude",
+                convention,
+                "--plots",
+            ])
+            .arg(&prefix)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let (zero, peak) = (run("0-pk"), run("pk-pk"));
+    assert!(zero.contains("amplitude_um_0-pk") && peak.contains("amplitude_um_pk-pk"));
+    let column = |t: &str| -> Vec<f64> {
+        t.lines()
+            .skip(2)
+            .map(|l| l.split_whitespace().nth(7).unwrap().parse().unwrap())
+            .collect()
+    };
+    for (x, y) in column(&zero).iter().zip(column(&peak)) {
+        assert!((y / x - 2.0).abs() < 1e-3, "{x} vs {y}");
+    }
 }
 
 /// A grid whose golden-section refinement lands on the undamped resonance

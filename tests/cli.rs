@@ -176,7 +176,7 @@ fn coefficients_of_a_tilting_pad_bearing_in_a_model() {
     let dir = out_dir("tilting_model");
     let path = dir.join("tp.toml");
     let text = rotor_bearing::model::DEFAULT_MODEL_TOML.to_string()
-        + "\n[[bearings]]\nname = \"guide\"\ntype = \"tilting_pad\"\nnode = 4\nradius = 0.05\nlength = 0.03\nclearance = 1e-4\nviscosity = 0.02\npads = 4\nfirst_pivot_deg = 45.0\npad_arc_deg = 80.0\n";
+        + "\n[[bearings]]\nname = \"guide\"\ntype = \"tilting_pad\"\nnode = 4\nradius = 0.05\njournal_collar = true\nlength = 0.03\nclearance = 1e-4\nviscosity = 0.02\npads = 4\nfirst_pivot_deg = 45.0\npad_arc_deg = 80.0\n";
     std::fs::write(&path, text).unwrap();
     let out = rotor()
         .arg("coefficients")
@@ -451,6 +451,10 @@ fn simulate_reports_oil_whirl_at_half_speed_with_the_sweeps_share() {
             "9000",
             "--duration",
             "0.6",
+            // Outputs on a 0.1 ms grid: the windows' six-decimal times
+            // select the same samples in sweep.py.
+            "--step",
+            "1e-4",
             "--csv",
             csv.to_str().unwrap(),
         ],

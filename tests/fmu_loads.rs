@@ -176,7 +176,7 @@ fn load_inputs_give_the_simulators_run() {
     // Built as the FMU builds its simulator: default options, then its own.
     let mut sim = Simulator::new(Rotor::new(m.clone()).unwrap(), SolverOptions::default()).unwrap();
     sim.set_options(SolverOptions {
-        time_step: rotor_bearing::fmi2::variables::DEFAULT_TIME_STEP,
+        time_step: rotor_bearing::fmi2::variables::default_fmu_time_step(&m),
         ..SolverOptions::default()
     })
     .unwrap();
@@ -371,7 +371,7 @@ fn a_torque_driven_fmu_accelerates_as_its_net_torque_over_its_inertia() {
     let mut sim = Simulator::new(
         Rotor::new(m.clone()).unwrap(),
         SolverOptions {
-            time_step: rotor_bearing::fmi2::variables::DEFAULT_TIME_STEP,
+            time_step: rotor_bearing::fmi2::variables::default_fmu_time_step(&m),
             ..SolverOptions::default()
         },
     )

@@ -97,7 +97,7 @@ fn pedestal_outputs_equal_the_simulator() {
     let mut sim = Simulator::new(
         Rotor::new(m.clone()).unwrap(),
         SolverOptions {
-            time_step: rotor_bearing::fmi2::variables::DEFAULT_TIME_STEP,
+            time_step: rotor_bearing::fmi2::variables::default_fmu_time_step(&m),
             ..SolverOptions::default()
         },
     )

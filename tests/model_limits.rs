@@ -149,6 +149,36 @@ fn every_size_is_bounded_with_field_file_line_value_and_range() {
     }
 }
 
+/// A bearing's `diametral_clearance` (issue 27) lies in twice the radial
+/// clearance's range: just beyond either end, and 1e300, refused with file,
+/// line, field, value and range; the ends themselves pass that check.
+#[test]
+fn the_diametral_clearance_is_bounded_like_the_radial_one() {
+    let (text, _) = with(&base(), "clearance", 0, "100e-6");
+    let text = text.replacen("clearance = 100e-6", "diametral_clearance = 200e-6", 1);
+    assert!(RotorModel::from_toml(&text, "m.toml").is_ok());
+    let limit = limits::DIAMETRAL_CLEARANCE;
+    assert_eq!(
+        (limit.min, limit.max),
+        (2.0 * limits::CLEARANCE.min, 2.0 * limits::CLEARANCE.max)
+    );
+    for value in [limit.max * 1.01, 1e300, limit.min * 0.99] {
+        let shown = format!("{value:e}");
+        let (mutant, line) = with(&text, "diametral_clearance", 0, &shown);
+        let e = RotorModel::from_toml(&mutant, "m.toml")
+            .err()
+            .unwrap_or_else(|| panic!("diametral_clearance = {shown} accepted"))
+            .to_string();
+        let short = rotor_bearing::units::Short(value).to_string();
+        assert!(
+            e.starts_with(&format!(
+                "m.toml:{line}: bearings[0].diametral_clearance = {short}: must lie in [2e-7, 2] m"
+            )),
+            "{e}"
+        );
+    }
+}
+
 /// Idealizations the test suite and users rely on stay inside the ranges: a
 /// "rigid" shaft (E = 2e15 Pa), a "massless" one (1e-6 kg/m³), a 4 000 t
 /// generator rotor with 4.5e6 kg·m² of polar inertia, a 1 µm gas-bearing

@@ -499,7 +499,7 @@ fn campbell_log_decrements_include_the_seal() {
     let free = campbell(&plain, &speeds, &options).unwrap();
     for ((point, free), &speed) in diagram.iter().zip(&free).zip(&speeds) {
         let coupled =
-            with_cross_coupling(&linearized(&plain, speed, speed).unwrap(), 3, q).unwrap();
+            with_cross_coupling(&linearized(&plain, speed, speed).unwrap(), &[3], q).unwrap();
         let want = modes(&coupled, speed, &options).unwrap();
         for (m, w) in point.modes.iter().zip(&want) {
             assert!(

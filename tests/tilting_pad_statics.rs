@@ -7,8 +7,9 @@
 //! `tests/data/tilting_pad_speed_grid.json`).
 //!
 //! The rotor: a 1 m, 50 mm steel shaft on two identical bearings at its ends
-//! and a disk at mid-span whose mass makes each bearing carry the oracle's
-//! load `W`: symmetric, so each reaction is exactly `W`.
+//! (their journals, of the oracle's radius `R`, collars on the shaft:
+//! `journal_collar = true`) and a disk at mid-span whose mass makes each
+//! bearing carry the oracle's load `W`: symmetric, so each reaction is exactly `W`.
 
 use serde_json::Value;
 
@@ -37,7 +38,7 @@ fn model_text(case: &Value) -> String {
     let disk = 2.0 * num(&case["W"]) / GRAVITY - SHAFT_MASS;
     let bearing = |name: &str, node: u32| {
         format!(
-            "[[bearings]]\nname = \"{name}\"\ntype = \"tilting_pad\"\nnode = {node}\nradius = {}\nlength = {}\nclearance = {}\nviscosity = {}\npivots_deg = [{}]\npad_arc_deg = {}\npivot_offset = {}\npreload = {}\n\n",
+            "[[bearings]]\nname = \"{name}\"\ntype = \"tilting_pad\"\nnode = {node}\nradius = {}\njournal_collar = true\nlength = {}\nclearance = {}\nviscosity = {}\npivots_deg = [{}]\npad_arc_deg = {}\npivot_offset = {}\npreload = {}\n\n",
             num(&case["R"]),
             num(&case["L"]),
             num(&case["C"]),

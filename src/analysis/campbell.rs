@@ -6,34 +6,17 @@
 //! so the response has no peak there (rigid-body modes on fluid films at low
 //! speed cross the 1× line with ζ ≈ 0.8).
 
-use crate::model::RotorModel;
+use nalgebra::Complex;
+
 use crate::rotor::Rotor;
-use crate::units::RAD_S_TO_RPM;
 
 /// Damping ratio from which a crossing of an excitation line is overdamped,
 /// not a critical speed: the amplification `1/(2ζ)` is at most 1.
 pub const OVERDAMPED_DAMPING_RATIO: f64 = 0.5;
 
-/// Top speed (rpm) of a Campbell diagram of a model that states neither
-/// `max_speed_rpm` nor `speed_rpm`.
-pub const FALLBACK_TOP_RPM: f64 = 4000.0;
-
 /// Start of the speed grid of a model with fluid-film bearings, as a fraction
 /// of the top speed: a film carries load only when turning.
 pub const FILM_START_FRACTION: f64 = 0.01;
-
-/// Default top speed (rad/s) of a Campbell diagram of `model`: 1.25 × its
-/// `max_speed_rpm` when the file states it, else 1.25 × its `speed_rpm` when
-/// not zero, else [`FALLBACK_TOP_RPM`].
-pub fn default_top_speed(model: &RotorModel) -> f64 {
-    if model.max_speed_stated {
-        1.25 * model.max_speed
-    } else if model.nominal_speed != 0.0 {
-        1.25 * model.nominal_speed.abs()
-    } else {
-        FALLBACK_TOP_RPM / RAD_S_TO_RPM
-    }
-}
 
 /// The `steps + 1` speeds (rad/s) of a Campbell diagram up to `top` (rad/s):
 /// evenly spaced from 0 for linear bearings, from [`FILM_START_FRACTION`] ×
@@ -50,15 +33,22 @@ pub fn speed_grid(rotor: &Rotor, top: f64, steps: usize) -> Vec<f64> {
         .collect()
 }
 
-use super::modal::{ModalError, ModalOptions, Mode, Whirl, modes_at};
+use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis_at};
+use super::mode_tracking::{link, mac, translations};
+use super::unbalance::{OperatingRange, SeparationMargin, separation_margin};
 
-/// One speed of a Campbell diagram: the modes sorted by damped frequency.
+type Complex64 = Complex<f64>;
+
+/// One speed of a Campbell diagram: the modes sorted by damped frequency, each
+/// with the branch it belongs to, and the non-oscillating roots apart.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CampbellPoint {
     /// Spin speed (rad/s).
     pub speed: f64,
     /// Modes at that speed, by increasing damped frequency (shapes dropped).
     pub modes: Vec<ModeSummary>,
+    /// Non-oscillating (overdamped) roots at that speed: never a branch.
+    pub overdamped: Vec<OverdampedRoot>,
 }
 
 /// A mode without its shape.
@@ -72,28 +62,34 @@ pub struct ModeSummary {
     pub log_decrement: f64,
     /// Whirl direction.
     pub whirl: Whirl,
+    /// The branch of the diagram the mode lies on (0-based), tracked from
+    /// speed to speed by its shape ([`super::mode_tracking`]).
+    pub branch: usize,
 }
 
-impl From<&Mode> for ModeSummary {
-    fn from(m: &Mode) -> Self {
+impl ModeSummary {
+    fn of(m: &Mode, branch: usize) -> Self {
         Self {
             damped_frequency: m.damped_frequency,
             damping_ratio: m.damping_ratio,
             log_decrement: m.log_decrement,
             whirl: m.whirl,
+            branch,
         }
     }
 }
 
-/// A critical speed: branch `rank` (0-based, by frequency) meets `ω = harmonic·Ω`.
+/// A critical speed: branch `branch` meets `ω = harmonic·Ω`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CriticalSpeed {
     /// Spin speed (rad/s).
     pub speed: f64,
     /// Excitation order (1 for unbalance).
     pub harmonic: f64,
-    /// Branch rank at that speed.
+    /// Rank of the mode by frequency at that speed (0-based).
     pub rank: usize,
+    /// The tracked branch (0-based, as [`ModeSummary::branch`]).
+    pub branch: usize,
     /// Whirl of the mode there.
     pub whirl: Whirl,
     /// Damping ratio there.
@@ -108,57 +104,172 @@ impl CriticalSpeed {
     }
 }
 
+/// A critical speed judged by API 684 (§2.6.2.10, as for unbalance response
+/// peaks) with the amplification factor of its mode, `AF = 1/(2ζ)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CriticalMargin {
+    /// The critical speed.
+    pub critical: CriticalSpeed,
+    /// `AF = 1/(2ζ)` of the mode at the crossing (∞ for ζ ≤ 0 or round-off).
+    pub amplification_factor: f64,
+    /// Separation margin from the operating range, when one is known.
+    pub margin: Option<SeparationMargin>,
+    /// `(Nc − N_max)/N_max` from the maximum (trip or runaway) speed, when the
+    /// model states one: positive when the critical lies above it.
+    pub from_max_speed: Option<f64>,
+}
+
+/// The critical speeds of `criticals` that are not overdamped crossings,
+/// each with its separation margin from `range` (rad/s) and its distance
+/// from `max_speed` (rad/s).
+pub fn critical_margins(
+    criticals: &[CriticalSpeed],
+    range: Option<&OperatingRange>,
+    max_speed: Option<f64>,
+) -> Vec<CriticalMargin> {
+    criticals
+        .iter()
+        .filter(|c| !c.is_overdamped())
+        .map(|c| {
+            // An undamped or unstable mode has an unbounded resonance.
+            let af = if c.damping_ratio >= super::modal::ROUND_OFF_DAMPING_RATIO {
+                1.0 / (2.0 * c.damping_ratio)
+            } else {
+                f64::INFINITY
+            };
+            CriticalMargin {
+                critical: *c,
+                amplification_factor: af,
+                margin: range.map(|r| separation_margin(c.speed, af, r)),
+                from_max_speed: max_speed.map(|m| (c.speed - m) / m),
+            }
+        })
+        .collect()
+}
+
 /// Modes at every speed of `speeds` (rad/s, increasing); nonlinear bearings are
-/// linearized about the static equilibrium at each speed.
+/// linearized about the static equilibrium at each speed. The modes of each
+/// speed are linked to those of the previous one by their shapes (largest
+/// total MAC, [`super::mode_tracking::link`]), so a branch follows one mode
+/// through crossings and veering; a mode entering the listed range starts a
+/// new branch. Non-oscillating roots are kept apart and start no branch.
 pub fn campbell(
     rotor: &Rotor,
     speeds: &[f64],
     options: &ModalOptions,
 ) -> Result<Vec<CampbellPoint>, ModalError> {
-    speeds
+    let mut diagram = Vec::with_capacity(speeds.len());
+    let mut previous: Vec<(usize, Vec<Complex64>)> = Vec::new();
+    let mut branches = 0;
+    for &speed in speeds {
+        let result = modal_analysis_at(rotor, speed, options)?;
+        let shapes: Vec<Vec<Complex64>> = result
+            .modes
+            .iter()
+            .map(|m| translations(&m.shape))
+            .collect();
+        let earlier: Vec<Vec<Complex64>> = previous.iter().map(|(_, s)| s.clone()).collect();
+        let links = link(&earlier, &shapes);
+        let mut ids = Vec::with_capacity(shapes.len());
+        for l in links {
+            ids.push(match l {
+                Some(j) => previous[j].0,
+                None => {
+                    branches += 1;
+                    branches - 1
+                }
+            });
+        }
+        diagram.push(CampbellPoint {
+            speed,
+            modes: result
+                .modes
+                .iter()
+                .zip(&ids)
+                .map(|(m, &b)| ModeSummary::of(m, b))
+                .collect(),
+            overdamped: result.overdamped,
+        });
+        previous = ids.into_iter().zip(shapes).collect();
+    }
+    Ok(diagram)
+}
+
+/// Number of branches of a diagram.
+pub fn branch_count(diagram: &[CampbellPoint]) -> usize {
+    diagram
         .iter()
-        .map(|&speed| {
-            Ok(CampbellPoint {
-                speed,
-                modes: modes_at(rotor, speed, options)?
-                    .iter()
-                    .map(ModeSummary::from)
-                    .collect(),
-            })
+        .flat_map(|p| p.modes.iter().map(|m| m.branch + 1))
+        .max()
+        .unwrap_or(0)
+}
+
+/// The points `(speed, mode)` of branch `b`, by increasing speed.
+pub fn branch(diagram: &[CampbellPoint], b: usize) -> Vec<(f64, ModeSummary)> {
+    diagram
+        .iter()
+        .filter_map(|p| {
+            p.modes
+                .iter()
+                .find(|m| m.branch == b)
+                .map(|m| (p.speed, *m))
         })
         .collect()
 }
 
-/// Critical speeds within the range of `diagram`: roots of `ω_k(Ω) − h Ω` for every
-/// branch rank `k`, bracketed on the grid and refined by the secant/bisection
-/// (Illinois) method to `1e-8` relative.
+/// The mode of `analysis` whose shape is nearest `shape` (largest MAC), with
+/// its rank.
+fn nearest(modes: &[Mode], shape: &[Complex64]) -> Option<(usize, Mode)> {
+    modes
+        .iter()
+        .enumerate()
+        .map(|(k, m)| (k, mac(shape, &translations(&m.shape)), m))
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(k, _, m)| (k, m.clone()))
+}
+
+/// Critical speeds within the range of `diagram`: roots of `ω_b(Ω) − h Ω` along
+/// every tracked branch `b`, bracketed between neighbouring speeds where the
+/// branch is present and refined by the secant/bisection (Illinois) method to
+/// `1e-8` relative, each iterate's mode the one whose shape continues the
+/// branch (largest MAC with the branch's mode at the bracket's start).
 pub fn critical_speeds(
     rotor: &Rotor,
     diagram: &[CampbellPoint],
     harmonic: f64,
     options: &ModalOptions,
 ) -> Result<Vec<CriticalSpeed>, ModalError> {
-    let ranks = diagram.iter().map(|p| p.modes.len()).min().unwrap_or(0);
     let mut found = Vec::new();
-    for rank in 0..ranks {
-        let g = |p: &CampbellPoint| p.modes[rank].damped_frequency - harmonic * p.speed;
-        for pair in diagram.windows(2) {
+    for b in 0..branch_count(diagram) {
+        let points = branch(diagram, b);
+        let g = |(s, m): &(f64, ModeSummary)| m.damped_frequency - harmonic * s;
+        for pair in points.windows(2) {
             let (ga, gb) = (g(&pair[0]), g(&pair[1]));
             if ga == 0.0 || ga.signum() == gb.signum() {
                 continue;
             }
-            let branch = |speed: f64| -> Result<(f64, Mode), ModalError> {
-                let ms = modes_at(rotor, speed, options)?;
-                let m = ms.get(rank).cloned().ok_or_else(|| {
-                    ModalError::Options(format!("branch {rank} vanished at {speed} rad/s"))
+            // The branch's shape at the start of the bracket.
+            let start = pair[0].0;
+            let at_start = modal_analysis_at(rotor, start, options)?.modes;
+            let rank = diagram
+                .iter()
+                .find(|p| p.speed == start)
+                .and_then(|p| p.modes.iter().position(|m| m.branch == b))
+                .unwrap_or(0);
+            let shape = translations(&at_start[rank].shape);
+            let follow = |speed: f64| -> Result<(f64, (usize, Mode)), ModalError> {
+                let ms = modal_analysis_at(rotor, speed, options)?.modes;
+                let (k, m) = nearest(&ms, &shape).ok_or_else(|| {
+                    ModalError::Options(format!("branch {} vanished at {speed} rad/s", b + 1))
                 })?;
-                Ok((m.damped_frequency - harmonic * speed, m))
+                Ok((m.damped_frequency - harmonic * speed, (k, m)))
             };
-            let (speed, mode) = illinois(branch, (pair[0].speed, ga), (pair[1].speed, gb))?;
+            let (speed, (rank, mode)) = illinois(follow, (start, ga), (pair[1].0, gb))?;
             found.push(CriticalSpeed {
                 speed,
                 harmonic,
                 rank,
+                branch: b,
                 whirl: mode.whirl,
                 damping_ratio: mode.damping_ratio,
             });
@@ -168,12 +279,108 @@ pub fn critical_speeds(
     Ok(found)
 }
 
+/// What a Campbell study sweeps (speeds in rad/s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CampbellRequest {
+    /// Top speed; `None` for the model's default
+    /// ([`default_top_speed`](super::speed_range::default_top_speed) with the
+    /// operating range).
+    pub max: Option<f64>,
+    /// Speed steps (the grid has `steps + 1` speeds, [`speed_grid`]).
+    pub steps: usize,
+    /// Oscillating modes per speed.
+    pub modes: usize,
+    /// Operating range of the separation margins.
+    pub operating: Option<OperatingRange>,
+}
+
+impl CampbellRequest {
+    /// The defaults of `rotor campbell`: the model's top speed, 40 steps, 8
+    /// modes, margins from `operating`.
+    pub fn default_for(operating: Option<OperatingRange>) -> Self {
+        Self {
+            max: None,
+            steps: 40,
+            modes: 8,
+            operating,
+        }
+    }
+}
+
+/// A Campbell study: the diagram, its 1× critical speeds (overdamped
+/// crossings among them, [`CriticalSpeed::is_overdamped`]) and their API 684
+/// margins from the operating range and distance from the maximum speed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CampbellStudy {
+    /// The tracked diagram.
+    pub diagram: Vec<CampbellPoint>,
+    /// Every crossing of the 1× line, by speed.
+    pub criticals: Vec<CriticalSpeed>,
+    /// The critical speeds (not overdamped) with their margins.
+    pub margins: Vec<CriticalMargin>,
+    /// The top speed (rad/s).
+    pub top: f64,
+    /// Where the top speed came from (`None` when given).
+    pub top_origin: Option<super::speed_range::TopSpeedOrigin>,
+    /// The operating range of the margins.
+    pub operating: Option<OperatingRange>,
+    /// The model's maximum speed, when the file states it (rad/s).
+    pub max_speed: Option<f64>,
+    /// Wall-clock time (s) of the diagram alone (the modes at every speed,
+    /// tracked), without the critical speeds' refinement: what the
+    /// benchmarks time.
+    pub diagram_seconds: f64,
+}
+
+/// The Campbell study `rotor campbell` and the report run.
+pub fn campbell_study(
+    rotor: &Rotor,
+    request: &CampbellRequest,
+) -> Result<CampbellStudy, ModalError> {
+    let (top, top_origin) = match request.max {
+        Some(m) => (m, None),
+        None => {
+            let (t, o) =
+                super::speed_range::default_top_speed(&rotor.model, request.operating.as_ref());
+            (t, Some(o))
+        }
+    };
+    if !(top.is_finite() && top > 0.0) || request.steps == 0 {
+        return Err(ModalError::Options(format!(
+            "--max-rpm must be positive (got {} rpm) and --steps at least 1 (got {})",
+            top * crate::units::RAD_S_TO_RPM,
+            request.steps
+        )));
+    }
+    let options = ModalOptions {
+        modes: request.modes,
+        ..ModalOptions::default()
+    };
+    let clock = std::time::Instant::now();
+    let diagram = campbell(rotor, &speed_grid(rotor, top, request.steps), &options)?;
+    let diagram_seconds = clock.elapsed().as_secs_f64();
+    let criticals = critical_speeds(rotor, &diagram, 1.0, &options)?;
+    let model = &rotor.model;
+    let max_speed = model.max_speed_stated.then_some(model.max_speed);
+    let margins = critical_margins(&criticals, request.operating.as_ref(), max_speed);
+    Ok(CampbellStudy {
+        diagram,
+        criticals,
+        margins,
+        top,
+        top_origin,
+        operating: request.operating,
+        max_speed,
+        diagram_seconds,
+    })
+}
+
 /// Illinois regula falsi on a bracket `(a, f(a))`, `(b, f(b))` with a sign change.
-fn illinois(
-    mut f: impl FnMut(f64) -> Result<(f64, Mode), ModalError>,
+fn illinois<T>(
+    mut f: impl FnMut(f64) -> Result<(f64, T), ModalError>,
     (mut a, mut fa): (f64, f64),
     (mut b, mut fb): (f64, f64),
-) -> Result<(f64, Mode), ModalError> {
+) -> Result<(f64, T), ModalError> {
     let mut side = 0;
     let mut last = None;
     for _ in 0..60 {

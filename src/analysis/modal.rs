@@ -27,6 +27,7 @@ use crate::linalg::{
 use crate::rotor::Rotor;
 
 use super::linearize::linearized;
+use super::polish::Polisher;
 
 type C64 = Complex<f64>;
 
@@ -73,6 +74,61 @@ pub struct Mode {
     pub residual: f64,
 }
 
+/// Damping ratio from which an eigenvalue is a non-oscillating (overdamped)
+/// root, not a mode: `|Im λ| ≤ √(1 − 0.999²) |λ| ≈ 0.045 |λ|`, a log
+/// decrement above 140 (the amplitude falls by e¹⁴⁰ within one period).
+/// Such roots (journal and pad-tilt film roots on tilting pads,
+/// `λ ≈ −K/C`) are reported apart ([`ModalResult::overdamped`]), never
+/// counted among the requested modes and never given a whirl direction.
+pub const NON_OSCILLATING_DAMPING_RATIO: f64 = 0.999;
+
+/// Damping ratios smaller than this are the eigen-solver's round-off, not
+/// damping: it resolves ζ to about 1e-11 (`tests/modal_reference.rs`), and an
+/// undamped rotor's modes come out with |ζ| of 1e-24 … 1e-13. Tables print
+/// them as 0; an amplification factor `1/(2ζ)` is then unbounded.
+pub const ROUND_OFF_DAMPING_RATIO: f64 = 1e-9;
+
+impl Mode {
+    /// Whether the mode has no damping beyond round-off
+    /// ([`ROUND_OFF_DAMPING_RATIO`]).
+    pub fn is_undamped(&self) -> bool {
+        self.damping_ratio.abs() < ROUND_OFF_DAMPING_RATIO
+    }
+}
+
+/// A non-oscillating root of the linearized rotor: `x(t) ∝ e^{λt}` decays
+/// (or grows, `Re λ > 0`) without completing an oscillation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OverdampedRoot {
+    /// Eigenvalue `λ` (1/s); `|Im λ| ≤ 0.045 |λ|`.
+    pub eigenvalue: C64,
+}
+
+impl OverdampedRoot {
+    /// Decay rate `−Re λ` (1/s); negative for a growing root.
+    pub fn decay_rate(&self) -> f64 {
+        -self.eigenvalue.re
+    }
+
+    /// Time constant `1/|Re λ|` (s).
+    pub fn time_constant(&self) -> f64 {
+        1.0 / self.eigenvalue.re.abs()
+    }
+}
+
+/// The modes of one modal analysis and the non-oscillating roots found with
+/// them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModalResult {
+    /// The requested number of oscillating modes, by increasing damped
+    /// frequency (fewer only when the rotor has no more).
+    pub modes: Vec<Mode>,
+    /// The non-oscillating roots (ζ ≥ [`NON_OSCILLATING_DAMPING_RATIO`]) no
+    /// farther from the shift than the last listed mode, by increasing `|λ|`;
+    /// rigid-body roots (`λ = 0` of a free rotor) excluded.
+    pub overdamped: Vec<OverdampedRoot>,
+}
+
 /// Options of a modal analysis.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ModalOptions {
@@ -116,11 +172,21 @@ pub fn modes_at(
     speed: f64,
     options: &ModalOptions,
 ) -> Result<Vec<Mode>, ModalError> {
+    Ok(modal_analysis_at(rotor, speed, options)?.modes)
+}
+
+/// [`modal_analysis`] of a rotor whose nonlinear bearings are first
+/// linearized about the static equilibrium at `speed` (as [`modes_at`]).
+pub fn modal_analysis_at(
+    rotor: &Rotor,
+    speed: f64,
+    options: &ModalOptions,
+) -> Result<ModalResult, ModalError> {
     if rotor.nonlinear_bearings.is_empty() {
-        return modes(rotor, speed, options);
+        return modal_analysis(rotor, speed, options);
     }
     let linear = linearized(rotor, speed, speed)?;
-    modes(&linear, speed, options)
+    modal_analysis(&linear, speed, options)
 }
 
 /// `D = C + Ω G` as a band matrix.
@@ -284,6 +350,17 @@ impl ShiftInvert {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mode>, ModalError> {
+    Ok(modal_analysis(rotor, speed, options)?.modes)
+}
+
+/// The lowest (or nearest-target) `options.modes` oscillating modes of a
+/// linear rotor at `speed` (rad/s), as [`modes`], and the non-oscillating
+/// roots found with them (see [`ModalResult`]).
+pub fn modal_analysis(
+    rotor: &Rotor,
+    speed: f64,
+    options: &ModalOptions,
+) -> Result<ModalResult, ModalError> {
     if let Some(b) = rotor.nonlinear_bearings.first() {
         return Err(ModalError::NonlinearBearing(b.name.clone()));
     }
@@ -323,9 +400,10 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
     }
     .map_err(lin)?;
     // Oscillating modes come as conjugate pairs; non-oscillating eigenvalues
-    // (rigid-body motion, overdamped modes) take slots too: widen until enough
+    // (rigid-body motion, overdamped roots) take slots too: widen until enough
     // oscillating ones are found or the whole spectrum is in hand.
-    let oscillating = |l: &C64| l.im > 1e-6 * l.norm() + 1e-9 * scale;
+    let real_part = (1.0 - NON_OSCILLATING_DAMPING_RATIO.powi(2)).sqrt();
+    let oscillating = |l: &C64| l.im > real_part * l.norm() + 1e-9 * scale;
     let mut nev = (2 * options.modes + 4).min(2 * n);
     let mut eigen = loop {
         let (found, per_pair) = solver.eigenpairs(nev).map_err(lin)?;
@@ -336,6 +414,19 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
         let not_oscillating = found.len() - per_pair * kept;
         nev = (nev + 2 * (options.modes - kept) + not_oscillating).min(2 * n);
     };
+    // Non-oscillating roots: one of each conjugate pair (Im λ ≥ 0, or real to
+    // round-off), not the rigid-body roots λ = 0 of a free rotor.
+    let mut overdamped: Vec<OverdampedRoot> = eigen
+        .iter()
+        .map(|(l, _)| *l)
+        .filter(|l| {
+            !oscillating(l)
+                && l.im.abs() <= real_part * l.norm() + 1e-9 * scale
+                && (l.im >= 0.0 || l.im.abs() <= 1e-9 * scale)
+                && l.norm() > 1e-9 * scale
+        })
+        .map(|eigenvalue| OverdampedRoot { eigenvalue })
+        .collect();
     eigen.retain(|(l, _)| oscillating(l));
     // Only the modes that can be listed are polished: those ranked within
     // `options.modes` by the Arnoldi values, or close enough to the last of
@@ -375,114 +466,27 @@ pub fn modes(rotor: &Rotor, speed: f64, options: &ModalOptions) -> Result<Vec<Mo
     } else {
         out.truncate(options.modes);
     }
-    Ok(out)
-}
-
-/// Steps of nonlinear inverse iteration that polish a mode.
-const POLISH_STEPS: usize = 2;
-
-/// Relative distance from `λ` of the second point where a polishing step
-/// tries to factor `Q` when `Q(λ)` is singular to working precision.
-const POLISH_OFFSET: f64 = 1e-10;
-
-/// Polishes modes by nonlinear inverse iteration on the quadratic problem
-/// `Q(λ) x = (K + λD + λ²M) x = 0` (A. Ruhe, SIAM J. Numer. Anal. 10, 1973):
-/// `u = Q(λ)⁻¹ Q'(λ) x`, `λ ← λ − cᴴx / cᴴu`, `x ← u / cᴴu` with `c` the
-/// first `x`; quadratically convergent. The first-order shift-invert leaves
-/// modes far from the shift with relative errors up to 2e-8 (its operator's
-/// rounding grows with their distance); two steps bring them to the accuracy
-/// of the quadratic problem. The mode keeps the Arnoldi vector: the iterates
-/// at a nearly singular `Q(λ)` mix in neighbouring modes of a tight cluster
-/// (residuals 3× larger on a 16 000-DOF rotor train).
-///
-/// A pivot below the factorization's threshold means `λ` is exact to working
-/// precision: the step is taken from a point 1e-10 away ([`POLISH_OFFSET`]),
-/// which still refines the vector and lands within (1e-10)² of `λ`; when that
-/// point is singular too, polishing stops. (Trying the offset point first
-/// would save the factorization that fails at an accurate `λ`, but leaves a
-/// tilting-pad mode 3.5e-11 short of convergence.) `Q` is built in place
-/// from the real `K`, `D`, `M` into factor storage reused by every step and
-/// mode.
-struct Polisher<'a> {
-    k: &'a BandMatrix<f64>,
-    d: &'a BandMatrix<f64>,
-    m: &'a BandMatrix<f64>,
-    lu: crate::linalg::BandLu<C64>,
-    /// Real and imaginary parts of `x`, and `D x_r`, `D x_i`, `M x_r`, `M x_i`.
-    parts: [Vec<f64>; 6],
-}
-
-impl<'a> Polisher<'a> {
-    fn new(rotor: &'a Rotor, d: &'a BandMatrix<f64>) -> Self {
-        let n = rotor.dof_count();
-        Self {
-            k: &rotor.stiffness,
-            d,
-            m: &rotor.mass,
-            lu: Default::default(),
-            parts: std::array::from_fn(|_| vec![0.0; n]),
+    // Only the roots no farther from the shift than the last listed mode:
+    // the Krylov process found every eigenvalue that near, none beyond.
+    let distance = |l: C64| {
+        if t > 0.0 {
+            (l - C64::new(0.0, t)).norm()
+        } else {
+            l.norm()
         }
+    };
+    if out.len() == options.modes {
+        let reach = out
+            .iter()
+            .map(|m| distance(m.eigenvalue))
+            .fold(0.0, f64::max);
+        overdamped.retain(|r| distance(r.eigenvalue) <= reach);
     }
-
-    /// Whether `Q(at)` is factored into `self.lu` (not singular).
-    fn factored(&mut self, at: C64) -> bool {
-        self.lu
-            .factor_real_combination(&[
-                (C64::new(1.0, 0.0), self.k),
-                (at, self.d),
-                (at * at, self.m),
-            ])
-            .is_ok()
-    }
-
-    /// `λ` polished with the Arnoldi vector `x` (see [`Polisher`]).
-    fn polished(&mut self, lambda: C64, x: &[C64]) -> C64 {
-        let dot = |a: &[C64], b: &[C64]| {
-            a.iter()
-                .zip(b)
-                .fold(C64::new(0.0, 0.0), |s, (p, q)| s + p.conj() * q)
-        };
-        let c = x.to_vec();
-        let (mut lambda, mut x) = (lambda, x.to_vec());
-        let mut u = vec![C64::new(0.0, 0.0); x.len()];
-        for _ in 0..POLISH_STEPS {
-            let offset = C64::new(POLISH_OFFSET * lambda.norm(), 0.0);
-            let Some(at) = [lambda, lambda + offset]
-                .into_iter()
-                .find(|&at| self.factored(at))
-            else {
-                break;
-            };
-            let lu = &self.lu;
-            // u = Q'(at) x = D x + 2 at M x, with real products.
-            let [xr, xi, dr, di, mr, mi] = &mut self.parts;
-            for ((r, i), z) in xr.iter_mut().zip(xi.iter_mut()).zip(&x) {
-                (*r, *i) = (z.re, z.im);
-            }
-            self.d.mul_vec(xr, dr);
-            self.d.mul_vec(xi, di);
-            self.m.mul_vec(xr, mr);
-            self.m.mul_vec(xi, mi);
-            let two_at = 2.0 * at;
-            for (k, uk) in u.iter_mut().enumerate() {
-                *uk = C64::new(dr[k], di[k]) + two_at * C64::new(mr[k], mi[k]);
-            }
-            lu.solve_in_place(&mut u);
-            let cu = dot(&c, &u);
-            if !(cu.norm() > 0.0 && cu.re.is_finite() && cu.im.is_finite()) {
-                break;
-            }
-            let step = dot(&c, &x) / cu;
-            lambda = at - step;
-            for (xi, ui) in x.iter_mut().zip(&u) {
-                *xi = ui / cu;
-            }
-            if step.norm() <= 1e-15 * lambda.norm() {
-                break;
-            }
-        }
-        lambda
-    }
+    overdamped.sort_by(|a, b| a.eigenvalue.norm().total_cmp(&b.eigenvalue.norm()));
+    Ok(ModalResult {
+        modes: out,
+        overdamped,
+    })
 }
 
 /// `√(max K_ii / M_ii)`: the scale of the highest frequencies (rad/s).

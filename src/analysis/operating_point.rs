@@ -44,9 +44,16 @@ pub struct PadState {
     pub min_film_thickness: f64,
 }
 
+/// Fraction of the force a bearing's stiffness makes over one clearance,
+/// `max|K_ij| C`, below which a static load is round-off (the pad forces of a
+/// centred tilting-pad journal sum to 1e-16 of it): the journal is unloaded.
+pub const ROUND_OFF_LOAD: f64 = 1e-9;
+
 /// The film state of a fluid-film bearing at the operating point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FilmState {
+    /// Radial clearance `C` (m): the assembled clearance for tilting pads.
+    pub clearance: f64,
     /// Eccentricity ratio `ε = e/C` (`C` the assembled clearance for tilting pads).
     pub eccentricity: f64,
     /// Attitude angle (rad): from the load line to the eccentricity vector, in the spin direction.
@@ -86,6 +93,21 @@ pub struct BearingOperatingPoint {
     pub stiffness: [[f64; 2]; 2],
     /// Damping `C = −∂F/∂q̇` (N·s/m), row-major.
     pub damping: [[f64; 2]; 2],
+}
+
+impl BearingOperatingPoint {
+    /// Whether the static load is round-off ([`ROUND_OFF_LOAD`] of
+    /// `max|K_ij| C`; exactly zero for a linear bearing): the journal of a
+    /// vertical rotor sits centred and has no attitude angle.
+    pub fn is_unloaded(&self) -> bool {
+        let k = self
+            .stiffness
+            .iter()
+            .flatten()
+            .fold(0.0f64, |a, v| a.max(v.abs()));
+        let clearance = self.film.as_ref().map_or(0.0, |f| f.clearance);
+        self.load <= ROUND_OFF_LOAD * k * clearance
+    }
 }
 
 /// The housing of a bearing on a pedestal at the operating point.
@@ -273,6 +295,7 @@ pub fn operating_point(
                     force: [f.x, f.y],
                     load: f.norm(),
                     film: Some(FilmState {
+                        clearance: kind.journal_clearance().unwrap_or(0.0),
                         eccentricity: report.eccentricity,
                         attitude_angle: report.attitude_angle,
                         min_film_thickness: report.min_film_thickness,

@@ -1,16 +1,32 @@
 //! Stability at an operating speed and its sensitivity to destabilizing
-//! cross-coupled stiffness (API 684 Level I style).
+//! cross-coupled stiffness: the API 684 / API 617 Level I screening.
 //!
 //! The rotor is linearized at the speed (fluid films: synchronous coefficients
 //! at the static equilibrium, [`linearized`]); a cross-coupled stiffness
-//! `K_Q = [[0, Q], [−Q, 0]]` (N/m, `K = −∂F/∂q` as for bearings) is added at the
-//! node nearest mid-span between the outermost bearings. Its force
+//! `K_Q = [[0, Q], [−Q, 0]]` (N/m, `K = −∂F/∂q` as for bearings) is added
+//! where the destabilizing forces act — by default at the disks (impellers,
+//! runners), split equally among them, else at the node nearest mid-span
+//! between the outermost bearings ([`default_sites`]). Its force
 //! `F = (−Q y, Q x)` is tangential in the spin direction, so it feeds forward
 //! whirl: for a rigid disk of mass `m` on isotropic springs `k` and dampers `c`,
 //! `m z̈ + c ż + (k − iQ) z = 0` (`z = x + iy`) loses stability at
 //! `Q = c √(k/m)`. The threshold `Q` where the logarithmic decrement of the
 //! least stable forward mode ([`least_stable_forward`]) reaches zero is found
 //! by the Illinois method.
+//!
+//! **Level I** (API 617 8th ed. §4.8.5, API 684 2nd ed. §4.2): the anticipated
+//! cross-coupling of the machine's aerodynamic or hydraulic stages,
+//! `Q_A = B P (ρ_d/ρ_s) / (D H Ω)` (Wachel's formula in consistent SI units:
+//! rated power `P` (W), impeller diameter `D` and restrictive flow width `H`
+//! (m), speed `Ω` (rad/s); `B` = 3 for centrifugal impellers, 1.5 for axial
+//! stages after Alford), equal to API 617's `q_A = B_c C P_R / (D_c H_c N)`
+//! with `C` = 63 in its US units (hp, in, rpm → klbf/in) and 9.55 = 60/(2π)
+//! in SI. The rotor passes the screening when the threshold `Q_0` is at least
+//! [`LEVEL_I_MIN_RATIO`] × `Q_A` and the log decrement at `Q_A` is at least
+//! [`LEVEL_I_MIN_LOG_DEC`]; otherwise a Level II analysis is required. (The
+//! third trigger, a critical speed ratio in region B of API 617's
+//! experience chart for `2 ≤ Q_0/Q_A < 10`, needs the gas density and is not
+//! judged here.)
 
 use crate::fe::{DOF_X, DOF_Y};
 use crate::rotor::{AssemblyError, Rotor};
@@ -62,6 +78,135 @@ pub fn mid_span_node(rotor: &Rotor) -> usize {
         .unwrap_or(0)
 }
 
+/// Wachel's stage factor `B` of centrifugal impellers (API 617 `B_c`).
+pub const CENTRIFUGAL_STAGE_FACTOR: f64 = 3.0;
+
+/// Alford's stage factor `B` of axial stages (API 617 `B_t`).
+pub const AXIAL_STAGE_FACTOR: f64 = 1.5;
+
+/// Level I: the smallest acceptable `Q_0 / Q_A`.
+pub const LEVEL_I_MIN_RATIO: f64 = 2.0;
+
+/// Level I: the smallest acceptable log decrement at `Q_A`.
+pub const LEVEL_I_MIN_LOG_DEC: f64 = 0.1;
+
+/// Level I sweeps `Q` from 0 to this multiple of `Q_A`.
+pub const LEVEL_I_RANGE: f64 = 10.0;
+
+/// The machine data of Wachel's anticipated cross-coupling (SI units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StageData {
+    /// Rated power `P` (W) of the stages together.
+    pub power: f64,
+    /// Impeller diameter `D` (m).
+    pub diameter: f64,
+    /// Restrictive flow width `H` (m): the smaller of the impeller discharge
+    /// and diffuser widths (axial stages: the effective blade height).
+    pub width: f64,
+    /// Discharge over suction density `ρ_d/ρ_s` (1 for a liquid).
+    pub density_ratio: f64,
+    /// Stage factor `B` ([`CENTRIFUGAL_STAGE_FACTOR`], [`AXIAL_STAGE_FACTOR`]).
+    pub stage_factor: f64,
+}
+
+impl StageData {
+    /// Anticipated cross-coupling `Q_A = B P (ρ_d/ρ_s) / (D H Ω)` (N/m) at
+    /// `speed` (rad/s).
+    pub fn anticipated(&self, speed: f64) -> f64 {
+        self.stage_factor * self.power * self.density_ratio
+            / (self.diameter * self.width * speed.abs())
+    }
+
+    /// Every value finite and positive, else a message naming the option.
+    pub fn check(&self) -> Result<(), StabilityError> {
+        for (name, v) in [
+            ("--power", self.power),
+            ("--impeller-diameter", self.diameter),
+            ("--flow-width", self.width),
+            ("--density-ratio", self.density_ratio),
+            ("--stage-factor", self.stage_factor),
+        ] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(StabilityError::Options(format!(
+                    "{name} must be a positive number, got {v}"
+                )));
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The Level I verdict.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LevelOne {
+    /// The machine data.
+    pub stages: StageData,
+    /// `Q_A` (N/m).
+    pub anticipated: f64,
+    /// `Q_0 / Q_A`; `None` when no threshold was found up to `Q_max`
+    /// (then it exceeds `Q_max / Q_A`).
+    pub ratio: Option<f64>,
+    /// The least stable forward mode with `Q_A` applied.
+    pub mode_at_anticipated: Mode,
+    /// `Q_0/Q_A ≥ 2` (or no threshold up to `Q_max ≥ 2 Q_A`).
+    pub ratio_pass: bool,
+    /// `δ_A ≥ 0.1`.
+    pub log_dec_pass: bool,
+}
+
+impl LevelOne {
+    /// Both criteria met: the rotor passes the Level I screening.
+    pub fn pass(&self) -> bool {
+        self.ratio_pass && self.log_dec_pass
+    }
+}
+
+/// Where the cross-coupling acts by default: the nodes of the disks
+/// (impellers, runners) and of the seals (labyrinths and wear rings, where
+/// the swirling leakage drives whirl), else the node nearest mid-span
+/// ([`mid_span_node`]).
+pub fn default_sites(rotor: &Rotor) -> Vec<usize> {
+    let seals = rotor.model.bearings.iter().filter(|b| b.kind.is_seal());
+    let mut nodes: Vec<usize> = rotor
+        .model
+        .disks
+        .iter()
+        .map(|d| d.node)
+        .chain(seals.map(|b| b.node))
+        .collect();
+    nodes.sort_unstable();
+    nodes.dedup();
+    if nodes.is_empty() {
+        nodes.push(mid_span_node(rotor));
+    }
+    nodes
+}
+
+/// What is at `node` (0-based), for messages: its disks and seals, else
+/// "mid-span".
+pub fn site_label(rotor: &Rotor, node: usize) -> String {
+    let m = &rotor.model;
+    let parts: Vec<String> = m
+        .disks
+        .iter()
+        .filter(|d| d.node == node)
+        .map(|d| format!("disk {}", d.name))
+        .chain(
+            m.bearings
+                .iter()
+                .filter(|b| b.node == node && b.kind.is_seal())
+                .map(|b| format!("seal {}", b.name)),
+        )
+        .collect();
+    if !parts.is_empty() {
+        format!("node {} ({})", node + 1, parts.join(", "))
+    } else if node == mid_span_node(rotor) {
+        format!("node {} (mid-span between the bearings)", node + 1)
+    } else {
+        format!("node {}", node + 1)
+    }
+}
+
 /// Default largest cross-coupled stiffness (N/m): a tenth of the largest
 /// direct bearing stiffness at `speed` (rad/s) (thresholds are a few ζ times
 /// the support stiffness), or 1e6 N/m without bearings.
@@ -73,21 +218,31 @@ pub fn default_cross_coupling_max(rotor: &Rotor, speed: f64) -> Result<f64, Stab
     Ok(if k > 0.0 { 0.1 * k } else { 1e6 })
 }
 
-/// A copy of the linear rotor `linear` with `[[0, q], [−q, 0]]` (N/m) added to
-/// the stiffness at the x, y DOFs of `node`.
-pub fn with_cross_coupling(linear: &Rotor, node: usize, q: f64) -> Result<Rotor, StabilityError> {
+/// A copy of the linear rotor `linear` with `[[0, q], [−q, 0]]` (N/m), split
+/// equally over `sites` (0-based nodes), added to the stiffness at their x, y
+/// DOFs.
+pub fn with_cross_coupling(
+    linear: &Rotor,
+    sites: &[usize],
+    q: f64,
+) -> Result<Rotor, StabilityError> {
     let mut out = linear.with_bearing_coefficients(&[])?;
-    match (linear.dofs.free(node, DOF_X), linear.dofs.free(node, DOF_Y)) {
-        (Some(ix), Some(iy)) => {
-            out.stiffness.add(ix, iy, q);
-            out.stiffness.add(iy, ix, -q);
-            Ok(out)
+    let share = q / sites.len().max(1) as f64;
+    for &node in sites {
+        match (linear.dofs.free(node, DOF_X), linear.dofs.free(node, DOF_Y)) {
+            (Some(ix), Some(iy)) => {
+                out.stiffness.add(ix, iy, share);
+                out.stiffness.add(iy, ix, -share);
+            }
+            _ => {
+                return Err(StabilityError::Options(format!(
+                    "node {} is fixed by a support: no cross-coupled stiffness can act there",
+                    node + 1
+                )));
+            }
         }
-        _ => Err(StabilityError::Options(format!(
-            "node {} is fixed by a support: no cross-coupled stiffness can act there",
-            node + 1
-        ))),
     }
+    Ok(out)
 }
 
 /// The forward mode of least logarithmic decrement among the first `count`
@@ -119,23 +274,60 @@ pub fn least_stable_forward(
 pub struct Stability {
     /// Spin speed (rad/s).
     pub speed: f64,
-    /// Node of the cross-coupled stiffness (0-based).
-    pub node: usize,
+    /// Nodes of the cross-coupled stiffness (0-based), `Q` split equally.
+    pub sites: Vec<usize>,
     /// The first `count` modes without cross-coupling.
     pub modes: Vec<Mode>,
     /// `(Q, least stable forward mode)` over `0 … Q_max` (N/m).
     pub curve: Vec<(f64, Mode)>,
+    /// The largest `Q` swept (N/m).
+    pub q_max: f64,
     /// `Q` (N/m) where that mode's log decrement is zero: `Some(0)`
     /// when it is unstable already, `None` when stable up to `Q_max`.
     pub threshold: Option<f64>,
     /// That mode at the threshold.
     pub threshold_mode: Option<Mode>,
+    /// The Level I screening, when the machine's stage data were given.
+    pub level_one: Option<LevelOne>,
 }
 
-/// Stability at `speed` (rad/s): the first `count` modes, the least stable
-/// forward mode over `points` values of `Q` from 0 to `q_max` (N/m), and the threshold
-/// `Q`, refined by the Illinois method until `|δ| < 1e-9` or the bracket is
-/// `1e-12` of `Q`.
+/// What a stability study is asked for.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StabilityRequest {
+    /// Spin speed (rad/s).
+    pub speed: f64,
+    /// Nodes of the cross-coupling (0-based); empty for [`default_sites`].
+    pub sites: Vec<usize>,
+    /// Largest `Q` (N/m); `None` for [`LEVEL_I_RANGE`] × `Q_A` with stage
+    /// data, else [`default_cross_coupling_max`].
+    pub q_max: Option<f64>,
+    /// Values of `Q` from 0 to `Q_max`.
+    pub points: usize,
+    /// Modes listed and searched for the least stable forward one.
+    pub modes: usize,
+    /// The machine's stages for the Level I screening.
+    pub stages: Option<StageData>,
+}
+
+impl StabilityRequest {
+    /// The defaults of `rotor stability` at `speed` (rad/s): the default
+    /// sites and range, 21 values of `Q`, 8 modes, no stage data.
+    pub fn at(speed: f64) -> Self {
+        Self {
+            speed,
+            sites: Vec::new(),
+            q_max: None,
+            points: 21,
+            modes: 8,
+            stages: None,
+        }
+    }
+}
+
+/// Stability at `speed` (rad/s) with the cross-coupling at the default
+/// sites: the first `count` modes, the least stable forward mode over
+/// `points` values of `Q` from 0 to `q_max` (N/m), and the threshold `Q`
+/// ([`stability_study`]).
 pub fn stability(
     rotor: &Rotor,
     speed: f64,
@@ -143,20 +335,60 @@ pub fn stability(
     points: usize,
     count: usize,
 ) -> Result<Stability, StabilityError> {
+    stability_study(
+        rotor,
+        &StabilityRequest {
+            q_max: Some(q_max),
+            points,
+            modes: count,
+            ..StabilityRequest::at(speed)
+        },
+    )
+}
+
+/// The stability study `rotor stability` and the report run: the modes at the
+/// speed, the least stable forward mode against `Q` at the sites, the
+/// threshold `Q_0` refined by the Illinois method until `|δ| < 1e-9` or the
+/// bracket is `1e-12` of `Q`, and with stage data the Level I verdict.
+pub fn stability_study(
+    rotor: &Rotor,
+    request: &StabilityRequest,
+) -> Result<Stability, StabilityError> {
+    let (speed, points, count) = (request.speed, request.points, request.modes);
+    if let Some(stages) = &request.stages {
+        stages.check()?;
+    }
+    let anticipated = request.stages.map(|s| s.anticipated(speed));
+    let q_max = match (request.q_max, anticipated) {
+        (Some(q), _) => q,
+        (None, Some(qa)) => LEVEL_I_RANGE * qa,
+        (None, None) => default_cross_coupling_max(rotor, speed)?,
+    };
     if !(q_max.is_finite() && q_max > 0.0) || points < 2 {
         return Err(StabilityError::Options(format!(
             "--cross-coupling-max must be positive (got {q_max} N/m) with at least 2 points (got {points})"
         )));
     }
+    let sites = if request.sites.is_empty() {
+        default_sites(rotor)
+    } else {
+        request.sites.clone()
+    };
+    if let Some(&bad) = sites.iter().find(|&&n| n >= rotor.model.node_count()) {
+        return Err(StabilityError::Options(format!(
+            "--at: node {} is outside the model's nodes 1..{}",
+            bad + 1,
+            rotor.model.node_count()
+        )));
+    }
     let linear = linearized(rotor, speed, speed)?;
-    let node = mid_span_node(rotor);
     let options = ModalOptions {
         modes: count,
         ..ModalOptions::default()
     };
     let at_zero = modes(&linear, speed, &options)?;
     let forward = |q: f64| -> Result<Mode, StabilityError> {
-        least_stable_forward(&with_cross_coupling(&linear, node, q)?, speed, count)
+        least_stable_forward(&with_cross_coupling(&linear, &sites, q)?, speed, count)
     };
     let mut curve = Vec::with_capacity(points);
     for k in 0..points {
@@ -203,12 +435,32 @@ pub fn stability(
         threshold = Some(best.0);
         threshold_mode = Some(best.1);
     }
+    let level_one = match (request.stages, anticipated) {
+        (Some(stages), Some(qa)) => {
+            let mode_at_anticipated = forward(qa)?;
+            let ratio = threshold.map(|q0| q0 / qa);
+            Some(LevelOne {
+                stages,
+                anticipated: qa,
+                ratio,
+                ratio_pass: match ratio {
+                    Some(r) => r >= LEVEL_I_MIN_RATIO,
+                    None => q_max >= LEVEL_I_MIN_RATIO * qa,
+                },
+                log_dec_pass: mode_at_anticipated.log_decrement >= LEVEL_I_MIN_LOG_DEC,
+                mode_at_anticipated,
+            })
+        }
+        _ => None,
+    };
     Ok(Stability {
         speed,
-        node,
+        sites,
         modes: at_zero,
         curve,
+        q_max,
         threshold,
         threshold_mode,
+        level_one,
     })
 }

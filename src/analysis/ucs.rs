@@ -150,6 +150,25 @@ pub fn stiffness_grid(min: f64, max: f64, points: usize) -> Result<Vec<f64>, Ucs
         .collect())
 }
 
+/// The defaults of `rotor ucs`: support stiffness from 1e5 to 1e10 N/m.
+pub const DEFAULT_STIFFNESS_RANGE: (f64, f64) = (1e5, 1e10);
+
+/// The defaults of `rotor ucs`: 31 stiffnesses, 4 critical speeds each, the
+/// bearings at 20 speeds.
+pub const DEFAULT_POINTS: usize = 31;
+
+/// See [`DEFAULT_POINTS`].
+pub const DEFAULT_CRITICALS: usize = 4;
+
+/// See [`DEFAULT_POINTS`].
+pub const DEFAULT_BEARING_SPEEDS: usize = 20;
+
+/// The `count` speeds (rad/s) the bearings' stiffness is drawn at: `top/count`
+/// … `top` (no film at standstill).
+pub fn bearing_speeds(top: f64, count: usize) -> Vec<f64> {
+    (1..=count).map(|k| top * k as f64 / count as f64).collect()
+}
+
 /// The map: the lowest `count` forward critical speeds at every stiffness of
 /// `stiffness` (N/m), and each bearing's kxx, kyy at every speed of `speeds`
 /// (rad/s; skip 0 for fluid films).

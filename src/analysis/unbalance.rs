@@ -102,13 +102,32 @@ pub fn with_unbalance_at(
 /// Steady unbalance response on all DOFs (`4·node + k`, m) at `speed` (rad/s):
 /// [`unbalance_response`] of the rotor, its fluid-film bearings linearized at
 /// that speed with synchronous coefficients.
+///
+/// At an undamped critical speed the dynamic stiffness is singular and the
+/// response unbounded; a speed that lands on one to working precision is
+/// moved by [`UNBOUNDED_NUDGE`] of itself, so the response there is finite
+/// but enormous, and the peak through it is reported as an undamped
+/// resonance ([`Peak::is_undamped`]), as everywhere else near one.
 pub fn response_at(rotor: &Rotor, speed: f64) -> Result<Vec<C64>, UnbalanceError> {
-    if rotor.nonlinear_bearings.is_empty() {
-        return Ok(unbalance_response(rotor, speed)?);
+    let solve = |s: f64| -> Result<Vec<C64>, UnbalanceError> {
+        if rotor.nonlinear_bearings.is_empty() {
+            return Ok(unbalance_response(rotor, s)?);
+        }
+        let linear = linearized(rotor, s, s)?;
+        Ok(unbalance_response(&linear, s)?)
+    };
+    match solve(speed) {
+        Err(UnbalanceError::Linear(LinearError::Linalg {
+            source: LinalgError::Singular { .. },
+            ..
+        })) if speed != 0.0 => solve(speed * (1.0 + UNBOUNDED_NUDGE)),
+        other => other,
     }
-    let linear = linearized(rotor, speed, speed)?;
-    Ok(unbalance_response(&linear, speed)?)
 }
+
+/// Relative move off a speed where the unbalance response is singular (an
+/// undamped critical speed hit to working precision).
+pub const UNBOUNDED_NUDGE: f64 = 1e-9;
 
 /// Response of a set of nodes over a speed grid.
 #[derive(Debug, Clone, PartialEq)]
@@ -178,6 +197,138 @@ pub fn sweep(
     })
 }
 
+/// Largest change (°) of the phase of a point's x or y response between
+/// neighbouring speeds of a [`refined_sweep`].
+pub const REFINE_ANGLE_DEG: f64 = 5.0;
+
+/// Largest ratio of a point's major semi-axis between neighbouring speeds of
+/// a [`refined_sweep`], where it is at least [`REFINE_FLOOR`] of its largest.
+pub const REFINE_AMPLITUDE_RATIO: f64 = 1.2;
+
+/// Amplitudes below this fraction of a point's largest are not refined (the
+/// `Ω²` rise from standstill, a node that hardly moves).
+pub const REFINE_FLOOR: f64 = 0.01;
+
+/// Most speeds a [`refined_sweep`] evaluates.
+pub const REFINE_MAX_SPEEDS: usize = 5000;
+
+/// Narrowest interval (relative to the top speed) a [`refined_sweep`] splits.
+const REFINE_MIN_WIDTH: f64 = 1e-9;
+
+/// Phase change (°, in `[0, 180]`) from `a` to `b`; 0 when either is zero.
+fn angle_step(a: C64, b: C64) -> f64 {
+    if a.norm() == 0.0 || b.norm() == 0.0 {
+        0.0
+    } else {
+        (b * a.conj()).arg().abs().to_degrees()
+    }
+}
+
+/// Whether the interval from `k` to `k + 1` resolves the response of every
+/// point: phase steps of x and y at most [`REFINE_ANGLE_DEG`], amplitude
+/// ratio at most [`REFINE_AMPLITUDE_RATIO`], wherever the amplitude is above
+/// [`REFINE_FLOOR`] of the point's largest.
+fn resolved(sweep: &UnbalanceSweep, largest: &[f64], k: usize) -> bool {
+    (0..sweep.points.len()).all(|p| {
+        let (a, b) = (sweep.response[k][p], sweep.response[k + 1][p]);
+        let (ma, mb) = (major_semi_axis(a), major_semi_axis(b));
+        let floor = REFINE_FLOOR * largest[p];
+        if ma.max(mb) <= floor || largest[p] == 0.0 {
+            return true;
+        }
+        let ratio = ma.max(mb) / ma.min(mb).max(f64::MIN_POSITIVE);
+        let significant = |z: C64| z.norm() > floor;
+        let angle = |za: C64, zb: C64| {
+            if significant(za) && significant(zb) {
+                angle_step(za, zb)
+            } else {
+                0.0
+            }
+        };
+        ratio <= REFINE_AMPLITUDE_RATIO
+            && angle(a.0, b.0) <= REFINE_ANGLE_DEG
+            && angle(a.1, b.1) <= REFINE_ANGLE_DEG
+    })
+}
+
+/// [`sweep`] on `base` (rad/s, increasing), then refined where the response
+/// changes fast: every interval that does not resolve it (phase steps above
+/// [`REFINE_ANGLE_DEG`] or amplitude ratios above [`REFINE_AMPLITUDE_RATIO`])
+/// is halved, again and again, until all do, the interval is
+/// 1e-9 of the top speed, or [`REFINE_MAX_SPEEDS`] speeds are in hand. The
+/// resonance loops of the polar plot and the peaks of the Bode plot are then
+/// drawn from points a few degrees apart, however narrow the resonance.
+pub fn refined_sweep(
+    rotor: &Rotor,
+    base: &[f64],
+    points: &[ResponsePoint],
+) -> Result<UnbalanceSweep, UnbalanceError> {
+    let mut result = sweep(rotor, base, points)?;
+    let top = base
+        .last()
+        .copied()
+        .unwrap_or(0.0)
+        .abs()
+        .max(f64::MIN_POSITIVE);
+    loop {
+        let largest: Vec<f64> = (0..points.len())
+            .map(|p| result.major(p).into_iter().fold(0.0, f64::max))
+            .collect();
+        let split: Vec<usize> = (0..result.speeds.len().saturating_sub(1))
+            .filter(|&k| {
+                result.speeds[k + 1] - result.speeds[k] > REFINE_MIN_WIDTH * top
+                    && !resolved(&result, &largest, k)
+            })
+            .collect();
+        let room = REFINE_MAX_SPEEDS.saturating_sub(result.speeds.len());
+        if split.is_empty() || room == 0 {
+            return Ok(result);
+        }
+        let mids: Vec<f64> = split
+            .iter()
+            .take(room)
+            .map(|&k| 0.5 * (result.speeds[k] + result.speeds[k + 1]))
+            .collect();
+        let added = sweep(rotor, &mids, points)?;
+        let mut merged: Vec<(f64, Vec<(C64, C64)>)> = result
+            .speeds
+            .into_iter()
+            .zip(result.response)
+            .chain(added.speeds.into_iter().zip(added.response))
+            .collect();
+        merged.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let (speeds, response) = merged.into_iter().unzip();
+        result = UnbalanceSweep {
+            speeds,
+            points: points.to_vec(),
+            response,
+        };
+    }
+}
+
+/// The phase (°) of `values` unwrapped along the sweep: the first in
+/// `(−180, 180]`, each next one within 180° of the one before (a jump of
+/// exactly 180°, the sign change through an undamped resonance, as a lag).
+/// Curves of all points are then continuous and comparable.
+pub fn unwrapped_phase(values: &[C64]) -> Vec<f64> {
+    let mut out: Vec<f64> = Vec::with_capacity(values.len());
+    for z in values {
+        let raw = z.arg().to_degrees();
+        let next = match out.last() {
+            None => raw,
+            Some(&prev) => {
+                let mut d = (raw - prev).rem_euclid(360.0);
+                if d > 180.0 - 1e-6 {
+                    d -= 360.0;
+                }
+                prev + d
+            }
+        };
+        out.push(next);
+    }
+    out
+}
+
 /// Operating speed range (rad/s) a separation margin is measured from.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct OperatingRange {
@@ -242,6 +393,90 @@ pub fn separation_margin(nc: f64, af: f64, range: &OperatingRange) -> Separation
         actual,
         pass: required.is_none_or(|r| actual >= r),
     }
+}
+
+/// The operating range of the model: its `speed_rpm` (a single speed), or
+/// none when the file gives none.
+pub fn model_operating_range(rotor: &Rotor) -> Option<OperatingRange> {
+    let s = rotor.model.nominal_speed.abs();
+    (s > 0.0).then_some(OperatingRange { min: s, max: s })
+}
+
+/// What an unbalance study sweeps and judges (speeds in rad/s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct UnbalanceRequest {
+    /// Lowest speed of the grid.
+    pub min: f64,
+    /// Highest speed; `None` for the model's default
+    /// ([`default_top_speed`](super::speed_range::default_top_speed) with the
+    /// operating range).
+    pub max: Option<f64>,
+    /// Speeds of the evenly spaced base grid, both ends included, before
+    /// refinement ([`refined_sweep`]).
+    pub points: usize,
+    /// Operating range the separation margins are measured from.
+    pub operating: Option<OperatingRange>,
+}
+
+/// The default study: 0 to the default top speed, 200 base speeds, margins
+/// from `operating`.
+pub const DEFAULT_POINTS: usize = 200;
+
+/// An unbalance study: the refined sweep, every peak of every point with its
+/// separation margin, and the grid's origin.
+#[derive(Debug, Clone, PartialEq)]
+pub struct UnbalanceStudy {
+    /// The refined sweep (a grid starting at 0 on fluid films skips 0).
+    pub sweep: UnbalanceSweep,
+    /// Every peak with its margin (`None` without an AF or a range).
+    pub rows: Vec<(Peak, Option<SeparationMargin>)>,
+    /// The operating range of the margins.
+    pub operating: Option<OperatingRange>,
+    /// Where the top speed came from (`None` when given).
+    pub top_origin: Option<super::speed_range::TopSpeedOrigin>,
+    /// Speeds of the base grid.
+    pub base_points: usize,
+}
+
+/// The unbalance study `rotor unbalance` and the report run: the response of
+/// every probe and bearing ([`response_points`]) on the refined grid, peaks
+/// with amplification factors, and API 684 margins from the operating range.
+pub fn unbalance_study(
+    rotor: &Rotor,
+    request: &UnbalanceRequest,
+) -> Result<UnbalanceStudy, UnbalanceError> {
+    let (max, top_origin) = match request.max {
+        Some(m) => (m, None),
+        None => {
+            let (top, origin) =
+                super::speed_range::default_top_speed(&rotor.model, request.operating.as_ref());
+            (top, Some(origin))
+        }
+    };
+    let mut speeds = speed_grid(request.min, max, request.points)?;
+    // A fluid film at standstill carries no load: start the grid one step up.
+    if !rotor.nonlinear_bearings.is_empty() && speeds[0] == 0.0 {
+        speeds.remove(0);
+    }
+    let points = response_points(rotor);
+    let sweep = refined_sweep(rotor, &speeds, &points)?;
+    let mut rows = Vec::new();
+    for p in 0..points.len() {
+        for peak in peaks(rotor, &sweep, p)? {
+            let margin = match (peak.amplification_factor, &request.operating) {
+                (Some(af), Some(r)) => Some(separation_margin(peak.speed, af, r)),
+                _ => None,
+            };
+            rows.push((peak, margin));
+        }
+    }
+    Ok(UnbalanceStudy {
+        sweep,
+        rows,
+        operating: request.operating,
+        top_origin,
+        base_points: request.points,
+    })
 }
 
 /// A resonance peak of one response point.

@@ -202,10 +202,14 @@ pub enum BearingEntry {
         pedestal: Option<String>,
         /// Journal radius (m).
         radius: f64,
+        /// The journal is a collar or sleeve larger than the shaft at its node.
+        journal_collar: Option<bool>,
         /// Bearing length (m).
         length: f64,
-        /// Radial clearance (m).
-        clearance: f64,
+        /// Radial clearance (m), or `diametral_clearance` (twice it).
+        clearance: Option<f64>,
+        /// Diametral clearance (m): bore diameter less journal diameter.
+        diametral_clearance: Option<f64>,
         /// Oil dynamic viscosity (Pa·s).
         viscosity: f64,
         /// Contact penalty stiffness (N/m) once the journal touches; default
@@ -253,10 +257,14 @@ pub enum BearingEntry {
         pedestal: Option<String>,
         /// Journal radius (m).
         radius: f64,
+        /// The journal is a collar or sleeve larger than the shaft at its node.
+        journal_collar: Option<bool>,
         /// Pad axial length (m).
         length: f64,
-        /// Pad (machined) radial clearance (m).
-        clearance: f64,
+        /// Pad (machined) radial clearance (m), or `diametral_clearance`.
+        clearance: Option<f64>,
+        /// Pad (machined) diametral clearance (m): twice the radial one.
+        diametral_clearance: Option<f64>,
         /// Oil dynamic viscosity (Pa·s).
         viscosity: f64,
         /// Number of equally spaced pads (3–18), with `first_pivot_deg`.

@@ -58,6 +58,14 @@ pub const CLEARANCE: Limit = Limit {
     why: "from 0.1 µm, the roughness of a lapped journal, to 1 m",
 };
 
+/// Diametral clearances of fluid-film bearings (m): twice [`CLEARANCE`].
+pub const DIAMETRAL_CLEARANCE: Limit = Limit {
+    min: 2e-7,
+    max: 2.0,
+    unit: "m",
+    why: "twice the radial clearance's range, from 0.1 µm to 1 m",
+};
+
 /// Disk masses (kg).
 pub const MASS: Limit = Limit {
     min: 1e-6,

@@ -523,6 +523,18 @@ impl RotorModel {
         self.elements.iter().map(|e| e.element.mass()).sum::<f64>()
             + self.disks.iter().map(|d| d.disk.mass).sum::<f64>()
     }
+
+    /// The top speed (rad/s) transients of this model are prepared for (the
+    /// default time step, the modes a reduced rotor keeps): its
+    /// `max_speed_rpm` when the file states it, else its `speed_rpm` when not
+    /// zero.
+    pub fn transient_top_speed(&self) -> Option<f64> {
+        if self.max_speed_stated {
+            Some(self.max_speed.abs())
+        } else {
+            (self.nominal_speed != 0.0).then_some(self.nominal_speed.abs())
+        }
+    }
 }
 
 #[cfg(test)]

@@ -131,9 +131,9 @@ impl RotorModel {
 
     /// Warnings for plausible-looking slips, per fluid-film bearing:
     /// - viscosity outside [`VISCOSITY_RANGE`] (32 Pa·s is probably 32 cSt);
-    /// - radius differing by more than [`RADIUS_TOLERANCE`] from the outer
-    ///   radius of every shaft element at the bearing's node (30 next to a
-    ///   0.03 m shaft is probably millimetres);
+    /// - radius more than [`RADIUS_TOLERANCE`] below the outer radius of every
+    ///   shaft element at the bearing's node (a larger one is a declared
+    ///   `journal_collar` or an error when the model is read);
     /// - radial clearance / radius outside [`CLEARANCE_RATIO_RANGE`] (a
     ///   diametral clearance or a unit slip).
     ///
@@ -176,19 +176,21 @@ impl RotorModel {
                     ),
                 );
             }
+            // Larger than the shaft is a declared collar or an error (model
+            // build); smaller than every element there is suspicious.
             let radii = self.shaft_radii_at(b.node);
             if !radii.is_empty()
                 && radii
                     .iter()
-                    .all(|r| (g.radius - r).abs() > RADIUS_TOLERANCE * r)
+                    .all(|r| g.radius < r * (1.0 - RADIUS_TOLERANCE))
             {
                 let shaft: Vec<String> = radii.iter().map(|r| format!("{r} m")).collect();
                 warn(
                     "radius",
                     g.radius,
                     format!(
-                        "differs by more than {} % from the shaft radius at node {} ({}) \
-                         (millimetres instead of metres, or a diameter?)",
+                        "is more than {} % below the shaft radius at node {} ({}) \
+                         (a journal smaller than its shaft: a radius in the wrong unit?)",
                         RADIUS_TOLERANCE * 100.0,
                         b.node + 1,
                         shaft.join(", ")

@@ -185,6 +185,7 @@ name = "plain"
 type = "plain"
 node = 1
 radius = 0.05
+journal_collar = true
 length = 0.03
 clearance = 1e-4
 viscosity = 0.02
@@ -194,6 +195,7 @@ name = "tilting"
 type = "tilting_pad"
 node = 7
 radius = 0.05
+journal_collar = true
 length = 0.03
 clearance = 1e-4
 viscosity = 0.02
@@ -220,7 +222,7 @@ preload = 0.1
 
 #[test]
 fn hydrodynamic_bearing_errors() {
-    let tp = "\n[[bearings]]\ntype = \"tilting_pad\"\nnode = 1\nradius = 0.05\nlength = 0.03\nclearance = 1e-4\nviscosity = 0.02\n";
+    let tp = "\n[[bearings]]\ntype = \"tilting_pad\"\nnode = 1\nradius = 0.05\njournal_collar = true\nlength = 0.03\nclearance = 1e-4\nviscosity = 0.02\n";
     let cases = [
         (format!("{tp}pads = 2\npad_arc_deg = 80.0\n"), "bearings[0].pads = 2"),
         (format!("{tp}pads = 4\npad_arc_deg = 100.0\n"), "pads overlap"),
@@ -228,11 +230,11 @@ fn hydrodynamic_bearing_errors() {
         (format!("{tp}pads = 4\npad_arc_deg = 60.0\npreload = 1.0\n"), "bearings[0].preload = 1"),
         (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_offset = 1.5\n"), "pivot_offset = 1.5"),
         (
-            "\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = 0.05\nlength = 0.03\nclearance = 0.01\nviscosity = 0.02\n".to_string(),
+            "\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = 0.05\njournal_collar = true\nlength = 0.03\nclearance = 0.01\nviscosity = 0.02\n".to_string(),
             "bearings[0].clearance = 0.01",
         ),
         (
-            "\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = 0.05\nlength = 0.03\nclearance = 1e-4\nviscosity = -0.02\n".to_string(),
+            "\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = 0.05\njournal_collar = true\nlength = 0.03\nclearance = 1e-4\nviscosity = -0.02\n".to_string(),
             "bearings[0].viscosity = -0.02",
         ),
     ];
@@ -508,27 +510,51 @@ fn viscosity_in_centistokes_is_warned_with_file_field_value_and_range() {
 }
 
 #[test]
-fn bearing_radius_in_millimetres_is_warned() {
-    // 25 (mm) next to the 0.025 m shaft radius; clearance 5e-5 m is then also
-    // implausibly small against it.
-    let w = with_film_bearing(25.0, 0.05, 0.03).plausibility_warnings();
+fn bearing_radius_in_millimetres_is_refused_and_a_collar_is_declared() {
+    // 25 (mm) next to the 0.025 m shaft radius: larger than the shaft, not
+    // declared a collar — an error that names the key to declare it with.
+    let text = |radius: f64, extra: &str| {
+        format!(
+            "{BASE}\n[[bearings]]\nname = \"b\"\ntype = \"plain\"\nnode = 2\nradius = {radius:e}\n\
+             length = 0.02\nclearance = 5e-5\nviscosity = 0.03\n{extra}"
+        )
+    };
+    let err = RotorModel::from_toml(&text(25.0, ""), "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("bearings[0].radius = 25")
+            && err.contains("larger than the shaft's outer radius 0.025 m at node 2")
+            && err.contains("journal_collar = true"),
+        "{err}"
+    );
+    // A declared collar of 40 mm on the 25 mm shaft: accepted, no warning.
+    let m = RotorModel::from_toml(&text(0.04, "journal_collar = true\n"), "m.toml").unwrap();
+    assert!(m.plausibility_warnings().is_empty());
+    // Declared but not larger: refused.
+    let err = RotorModel::from_toml(&text(0.025, "journal_collar = true\n"), "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("bearings[0].journal_collar = true") && err.contains("no collar"),
+        "{err}"
+    );
+    // 2 % larger, undeclared: refused; 2 % smaller: warned.
+    assert!(RotorModel::from_toml(&text(0.0255, ""), "m.toml").is_err());
+    let w = with_film_bearing(0.0245, 5e-5, 0.03).plausibility_warnings();
     assert_eq!(w.len(), 1, "{w:?}");
     assert_eq!(
         (w[0].field.as_str(), w[0].value),
-        ("bearings[0].radius", 25.0)
+        ("bearings[0].radius", 0.0245)
     );
-    let text = w[0].to_string();
     assert!(
-        text.contains("from the shaft radius at node 2 (0.025 m)") && text.contains("1 %"),
-        "{text}"
+        w[0].to_string()
+            .contains("below the shaft radius at node 2 (0.025 m)")
+            && w[0].to_string().contains("1 %"),
+        "{}",
+        w[0]
     );
-    // 2 % off: warned; the radius at a node between two sections matches either.
-    assert_eq!(
-        with_film_bearing(0.0255, 5e-5, 0.03)
-            .plausibility_warnings()
-            .len(),
-        1
-    );
+    // The radius at a node between two sections matches either.
     let stepped = BASE.replace("length = 1.5", "length = 0.5")
         + "\n[[shaft]]\nlength = 1.0\nouter_diameter = 0.06\nmaterial = \"steel\"\nelements = 4\n\
            \n[[bearings]]\ntype = \"plain\"\nnode = 7\nradius = 0.03\nlength = 0.02\nclearance = 6e-5\nviscosity = 0.03\n";
@@ -536,6 +562,53 @@ fn bearing_radius_in_millimetres_is_warned() {
     assert_eq!(m.elements[5].element.section.outer_diameter, 0.05);
     assert_eq!(m.elements[6].element.section.outer_diameter, 0.06);
     assert!(m.plausibility_warnings().is_empty());
+}
+
+#[test]
+fn diametral_clearance_is_twice_the_radial_one() {
+    let text = |keys: &str| {
+        format!(
+            "{BASE}\n[[bearings]]\nname = \"b\"\ntype = \"plain\"\nnode = 2\nradius = 0.025\n\
+             length = 0.02\nviscosity = 0.03\n{keys}\n"
+        )
+    };
+    let radial = RotorModel::from_toml(&text("clearance = 5e-5"), "m.toml").unwrap();
+    let diametral = RotorModel::from_toml(&text("diametral_clearance = 1e-4"), "m.toml").unwrap();
+    assert_eq!(radial.bearings, diametral.bearings);
+    let both = RotorModel::from_toml(
+        &text("clearance = 5e-5\ndiametral_clearance = 1e-4"),
+        "m.toml",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(
+        both.contains("bearings[0].diametral_clearance") && both.contains("not both"),
+        "{both}"
+    );
+    let none = RotorModel::from_toml(&text(""), "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        none.contains("bearings[0].clearance = missing") && none.contains("diametral_clearance"),
+        "{none}"
+    );
+    let bad = RotorModel::from_toml(&text("diametral_clearance = -1e-4"), "m.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        bad.contains("bearings[0].diametral_clearance = -0.0001"),
+        "{bad}"
+    );
+    // Tilting pads take it too.
+    let pads = |keys: &str| {
+        format!(
+            "{BASE}\n[[bearings]]\nname = \"t\"\ntype = \"tilting_pad\"\nnode = 2\nradius = 0.025\n\
+             length = 0.02\nviscosity = 0.03\npads = 4\npad_arc_deg = 70.0\n{keys}\n"
+        )
+    };
+    let a = RotorModel::from_toml(&pads("clearance = 5e-5"), "m.toml").unwrap();
+    let b = RotorModel::from_toml(&pads("diametral_clearance = 1e-4"), "m.toml").unwrap();
+    assert_eq!(a.bearings, b.bearings);
 }
 
 #[test]

@@ -34,6 +34,80 @@ fn largest_diameter(model: &RotorModel) -> f64 {
         .fold(shaft, f64::max)
 }
 
+/// A rectangle in data coordinates: `z` and `y` ranges (m).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Area {
+    /// Axial range.
+    pub z: (f64, f64),
+    /// Radial range.
+    pub y: (f64, f64),
+}
+
+impl Area {
+    fn overlaps(&self, other: &Area) -> bool {
+        self.z.0 < other.z.1 && other.z.0 < self.z.1 && self.y.0 < other.y.1 && other.y.0 < self.y.1
+    }
+
+    fn inside(&self, bounds: &Area) -> bool {
+        self.z.0 >= bounds.z.0
+            && self.z.1 <= bounds.z.1
+            && self.y.0 >= bounds.y.0
+            && self.y.1 <= bounds.y.1
+    }
+}
+
+/// A label of the drawing: its text, where it points (`z`, and `y` the edge
+/// of the text nearest the rotor), which way it goes (`side` +1 above, −1
+/// below) and its colour.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Label {
+    /// Text.
+    pub text: String,
+    /// Axial position it names (m).
+    pub z: f64,
+    /// Radial position of the text's edge nearest the rotor.
+    pub y: f64,
+    /// +1: the text goes upward from `y`; −1: downward.
+    pub side: f64,
+    /// Colour.
+    pub color: RGBColor,
+}
+
+/// Where each label's text goes: centred on its `z` but moved inside
+/// `bounds`, at its `y` or as many text rows further out as it takes to
+/// overlap neither the `obstacles` nor the labels placed before it (`size`:
+/// one character's width and one row's height in data units).
+pub fn place_labels(
+    labels: &[Label],
+    obstacles: &[Area],
+    bounds: Area,
+    size: (f64, f64),
+) -> Vec<Area> {
+    let (cw, row) = size;
+    let mut placed: Vec<Area> = Vec::new();
+    for l in labels {
+        let w = cw * l.text.chars().count() as f64;
+        let lo = (l.z - 0.5 * w).clamp(bounds.z.0, (bounds.z.1 - w).max(bounds.z.0));
+        let at = |k: usize| {
+            let near = l.y + l.side * k as f64 * row;
+            let (y0, y1) = if l.side > 0.0 {
+                (near, near + row)
+            } else {
+                (near - row, near)
+            };
+            Area {
+                z: (lo, lo + w),
+                y: (y0, y1),
+            }
+        };
+        let free =
+            |a: &Area| a.inside(&bounds) && !obstacles.iter().chain(&placed).any(|o| a.overlaps(o));
+        let chosen = (0..40).map(at).find(free).unwrap_or_else(|| at(0));
+        placed.push(chosen);
+    }
+    placed
+}
+
 /// Side view of `model` in the y–z plane: shaft elements as their outer (and
 /// bore) outline, disks as the equivalent solid disk
 /// ([`Disk::equivalent_solid_dimensions`](crate::fe::disk::Disk::equivalent_solid_dimensions)),
@@ -48,13 +122,19 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
     let length = (z1 - z0).max(1e-9);
     let scale = radial_exaggeration(model);
     let r_max = 0.5 * largest_diameter(model) * scale;
-    // Room for labels: 0.9 r_max above and below the rotor, and for the
+    // Room for labels: rows of them above and below the rotor, and for the
     // pedestals below.
-    let half = 1.9 * r_max.max(0.02 * length) + 0.3 * r_max * depth(model) as f64;
+    let half = 2.6 * r_max.max(0.02 * length) + 0.3 * r_max * depth(model) as f64;
     let margin = 0.1 * length;
     let plot_w = f64::from(WIDTH - 120);
-    let height = ((2.0 * half) / (length + 2.0 * margin) * plot_w) as u32 + 140;
-    let root = BitMapBackend::new(path, (WIDTH, height.clamp(300, 1400))).into_drawing_area();
+    let height = (((2.0 * half) / (length + 2.0 * margin) * plot_w) as u32 + 140).clamp(300, 1400);
+    let root = BitMapBackend::new(path, (WIDTH, height)).into_drawing_area();
+    // Text size in data units: about 8.5 px per character and 19 px per
+    // line of the 15 px font over the plotting area.
+    let per_px_z = (length + 2.0 * margin) / f64::from(WIDTH - 100);
+    let per_px_y = 2.0 * half / f64::from(height - 114);
+    let mut labels: Vec<Label> = Vec::new();
+    let mut obstacles: Vec<Area> = Vec::new();
     root.fill(&WHITE).map_err(|e| failed(path, e))?;
     let caption = if scale > 1.0 {
         format!("{title} (radial scale ×{scale:.1})")
@@ -118,13 +198,24 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
                 Rectangle::new([(z - w / 2.0, -r), (z + w / 2.0, r)], BLACK.stroke_width(1)),
             ])
             .map_err(|e| failed(path, e))?;
-        chart
-            .draw_series([Text::new(
-                format!("disk {}", d.name),
-                (z + w, -r - 0.1 * r_max),
-                ("sans-serif", 15),
-            )])
-            .map_err(|e| failed(path, e))?;
+        obstacles.push(Area {
+            z: (z - w / 2.0, z + w / 2.0),
+            y: (-r, r),
+        });
+        labels.push(Label {
+            text: format!("disk {}", d.name),
+            z,
+            y: -r - 0.05 * r_max,
+            side: -1.0,
+            color: BLACK,
+        });
+    }
+    for e in &model.elements {
+        let ro = 0.5 * e.element.section.outer_diameter * scale;
+        obstacles.push(Area {
+            z: (model.node_z[e.node], model.node_z[e.node + 1]),
+            y: (-ro, ro),
+        });
     }
     // Outer radius of the rotor at a node: its shaft sections and disks.
     let radius_at = |node: usize| -> f64 {
@@ -164,26 +255,34 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
                     ))
                     .map_err(|e| failed(path, e))?;
             }
-            chart
-                .draw_series([EmptyElement::at((z, r + 0.2 * r_max))
-                    + Text::new(
-                        format!("{what} {}", b.name),
-                        (-20, -20),
-                        ("sans-serif", 15).into_font().color(&color),
-                    )])
-                .map_err(|e| failed(path, e))?;
+            obstacles.push(Area {
+                z: (z - 4.0 * per_px_z, z + 4.0 * per_px_z),
+                y: (-(r + 0.2 * r_max), r + 0.2 * r_max),
+            });
+            labels.push(Label {
+                text: format!("{what} {}", b.name),
+                z,
+                y: r + 0.25 * r_max,
+                side: 1.0,
+                color,
+            });
             continue;
         }
         let y = -radius_at(b.node) - 0.25 * r_max;
         chart
-            .draw_series([EmptyElement::at((z, y))
-                + TriangleMarker::new((0, 0), 12, red.filled())
-                + Text::new(
-                    format!("bearing {}", b.name),
-                    (-30, 14),
-                    ("sans-serif", 15).into_font().color(&red),
-                )])
+            .draw_series([EmptyElement::at((z, y)) + TriangleMarker::new((0, 0), 12, red.filled())])
             .map_err(|e| failed(path, e))?;
+        obstacles.push(Area {
+            z: (z - 12.0 * per_px_z, z + 12.0 * per_px_z),
+            y: (y - 12.0 * per_px_y, y + 12.0 * per_px_y),
+        });
+        labels.push(Label {
+            text: format!("bearing {}", b.name),
+            z,
+            y: y - 14.0 * per_px_y,
+            side: -1.0,
+            color: red,
+        });
     }
     // Pedestals: each one a bar under the bearings it carries, hung on a
     // spring from them and standing on a spring to ground or to the pedestal
@@ -296,13 +395,44 @@ pub fn rotor_png(path: &Path, title: &str, model: &RotorModel) -> Result<(), Plo
                 green.stroke_width(2),
             ))
             .map_err(|e| failed(path, e))?;
+        obstacles.push(Area {
+            z: (z - 2.0 * per_px_z, z + 2.0 * per_px_z),
+            y: (radius_at(p.node), top),
+        });
+        labels.push(Label {
+            text: format!("probe {}", p.name),
+            z,
+            y: top + 4.0 * per_px_y,
+            side: 1.0,
+            color: green,
+        });
+    }
+    let bounds = Area {
+        z: (z0 - margin, z1 + margin),
+        y: (-half, half),
+    };
+    let text_size = (8.5 * per_px_z, 19.0 * per_px_y);
+    for (label, area) in labels
+        .iter()
+        .zip(place_labels(&labels, &obstacles, bounds, text_size))
+    {
+        // A label moved away from what it names gets a leader line to it.
+        let near = if label.side > 0.0 { area.y.0 } else { area.y.1 };
+        if (near - label.y).abs() > 1.5 * text_size.1 {
+            let mid = 0.5 * (area.z.0 + area.z.1);
+            chart
+                .draw_series(LineSeries::new(
+                    [(label.z, label.y), (mid, near)],
+                    label.color.mix(0.6).stroke_width(1),
+                ))
+                .map_err(|e| failed(path, e))?;
+        }
         chart
-            .draw_series([EmptyElement::at((z, top))
-                + Text::new(
-                    format!("probe {}", p.name),
-                    (-20, -20),
-                    ("sans-serif", 15).into_font().color(&green),
-                )])
+            .draw_series([Text::new(
+                label.text.clone(),
+                (area.z.0, area.y.1),
+                ("sans-serif", 15).into_font().color(&label.color),
+            )])
             .map_err(|e| failed(path, e))?;
     }
     for s in &model.supports {
@@ -368,4 +498,60 @@ fn bar_span(model: &RotorModel, p: usize) -> (f64, f64) {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), z| {
             (a.min(*z), b.max(*z))
         })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The hydro unit's labels used to overlap its generator disk and run
+    /// off the right edge: every label now lies inside the drawing, clear of
+    /// the rotor and of every other label.
+    #[test]
+    fn labels_stay_inside_and_never_overlap() {
+        let bounds = Area {
+            z: (-2.0, 17.9),
+            y: (-9.0, 9.0),
+        };
+        let obstacles = vec![
+            Area {
+                z: (1.9, 4.5),
+                y: (-4.5, 4.5),
+            }, // generator disk
+            Area {
+                z: (16.7, 17.7),
+                y: (-2.5, 2.5),
+            }, // runner
+            Area {
+                z: (0.0, 17.2),
+                y: (-0.5, 0.5),
+            }, // shaft
+        ];
+        let label = |text: &str, z: f64, y: f64, side: f64| Label {
+            text: text.into(),
+            z,
+            y,
+            side,
+            color: BLACK,
+        };
+        let labels = vec![
+            label("disk generator", 3.2, -4.6, -1.0),
+            label("disk runner", 17.2, -2.6, -1.0),
+            label("bearing generator_guide", 4.8, -1.8, -1.0),
+            label("bearing turbine_guide", 14.8, -1.8, -1.0),
+            label("probe pickup_1", 4.0, 2.6, 1.0),
+            label("probe pickup_2", 8.8, 2.6, 1.0),
+        ];
+        let placed = place_labels(&labels, &obstacles, bounds, (0.13, 0.4));
+        for (k, a) in placed.iter().enumerate() {
+            assert!(a.inside(&bounds), "{k}: {a:?}");
+            assert!(!obstacles.iter().any(|o| a.overlaps(o)), "{k}: {a:?}");
+            for b in &placed[..k] {
+                assert!(!a.overlaps(b), "{k}: {a:?} / {b:?}");
+            }
+        }
+        // The runner's label, centred on z = 17.2, would end at 17.915, past
+        // the right edge at 17.9: it is moved left to end inside.
+        assert!(placed[1].z.1 <= 17.9 && placed[1].z.0 < 17.2 - 0.5 * 0.13 * 11.0);
+    }
 }

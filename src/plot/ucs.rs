@@ -6,6 +6,7 @@ use plotters::prelude::*;
 
 use crate::analysis::ucs::CriticalSpeedMap;
 
+use super::legend::{LEGEND_WIDTH, Swatch, draw_legend};
 use super::{PlotError, RAD_S_TO_RPM, SERIES_COLORS, failed};
 
 /// Log–log map: forward critical speeds (rpm) against the isotropic support
@@ -13,8 +14,13 @@ use super::{PlotError, RAD_S_TO_RPM, SERIES_COLORS, failed};
 /// and kyy (dashed) against speed in colour. Where a bearing curve crosses a
 /// critical line the rotor on that bearing has that critical speed.
 pub fn ucs_png(path: &Path, title: &str, map: &CriticalSpeedMap) -> Result<(), PlotError> {
-    let root = BitMapBackend::new(path, (1100, 800)).into_drawing_area();
+    let root = BitMapBackend::new(path, (1100 + LEGEND_WIDTH, 800)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| failed(path, e))?;
+    let root = root
+        .titled(title, ("sans-serif", 24))
+        .map_err(|e| failed(path, e))?;
+    let (plot, side) = root.split_horizontally(1100);
+    let mut legend = Vec::new();
     let k_min = map.stiffness.first().copied().unwrap_or(1.0);
     let k_max = map
         .stiffness
@@ -29,8 +35,7 @@ pub fn ucs_png(path: &Path, title: &str, map: &CriticalSpeedMap) -> Result<(), P
     } else {
         (1.0, 10.0)
     };
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 24))
+    let mut chart = ChartBuilder::on(&plot)
         .margin(16)
         .x_label_area_size(48)
         .y_label_area_size(80)
@@ -53,13 +58,14 @@ pub fn ucs_png(path: &Path, title: &str, map: &CriticalSpeedMap) -> Result<(), P
             .zip(&map.speeds)
             .filter_map(|(k, s)| s.get(j).map(|v| (*k, v * RAD_S_TO_RPM)))
             .collect();
-        let series = chart
+        chart
             .draw_series(LineSeries::new(line, BLACK.stroke_width(2)))
             .map_err(|e| failed(path, e))?;
         if j == 0 {
-            series
-                .label("forward critical speeds")
-                .legend(|(x, y)| PathElement::new([(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+            legend.push((
+                Swatch::Line(BLACK, 2),
+                "forward critical speeds".to_string(),
+            ));
         }
     }
     for (i, b) in map.bearings.iter().enumerate() {
@@ -79,29 +85,23 @@ pub fn ucs_png(path: &Path, title: &str, map: &CriticalSpeedMap) -> Result<(), P
             .collect();
         chart
             .draw_series(LineSeries::new(kxx.clone(), c.stroke_width(3)))
-            .map_err(|e| failed(path, e))?
-            .label(format!("bearing {} kxx", b.name))
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], c.stroke_width(3)));
+            .map_err(|e| failed(path, e))?;
+        legend.push((Swatch::LineDots(c, 3), format!("bearing {} kxx", b.name)));
         chart
             .draw_series(kxx.iter().map(|p| Circle::new(*p, 3, c.filled())))
             .map_err(|e| failed(path, e))?;
         chart
             .draw_series(DashedLineSeries::new(kyy.clone(), 8, 5, c.stroke_width(2)))
-            .map_err(|e| failed(path, e))?
-            .label(format!("bearing {} kyy", b.name))
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], c.stroke_width(1)));
+            .map_err(|e| failed(path, e))?;
+        legend.push((
+            Swatch::DashedTriangles(c, 2),
+            format!("bearing {} kyy", b.name),
+        ));
         chart
             .draw_series(kyy.iter().map(|p| TriangleMarker::new(*p, 4, c.filled())))
             .map_err(|e| failed(path, e))?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .label_font(("sans-serif", 15))
-        .draw()
-        .map_err(|e| failed(path, e))?;
+    draw_legend(&side, path, None, &legend)?;
     root.present().map_err(|e| failed(path, e))?;
     Ok(())
 }

@@ -60,16 +60,17 @@ pub fn modes(rpm: f64, modes: &[Mode]) -> String {
     out
 }
 
-/// A Campbell diagram: one line per speed and mode.
+/// A Campbell diagram: one line per speed and mode; `mode` is the rank by
+/// frequency at that speed, `branch` the tracked branch (both from 1).
 pub fn campbell(diagram: &[CampbellPoint]) -> String {
     let mut out = String::from(
-        "speed_rpm,speed_rad_s,mode,damped_frequency_rad_s,damped_frequency_hz,damping_ratio,log_decrement,whirl\n",
+        "speed_rpm,speed_rad_s,mode,damped_frequency_rad_s,damped_frequency_hz,damping_ratio,log_decrement,whirl,branch\n",
     );
     for p in diagram {
         for (k, m) in p.modes.iter().enumerate() {
             writeln!(
                 out,
-                "{},{},{},{},{},{},{},{}",
+                "{},{},{},{},{},{},{},{},{}",
                 p.speed * RAD_S_TO_RPM,
                 p.speed,
                 k + 1,
@@ -77,7 +78,8 @@ pub fn campbell(diagram: &[CampbellPoint]) -> String {
                 m.damped_frequency / (2.0 * PI),
                 m.damping_ratio,
                 m.log_decrement,
-                m.whirl.label()
+                m.whirl.label(),
+                m.branch + 1
             )
             .ok();
         }
@@ -449,38 +451,40 @@ mod tests {
 
     #[test]
     fn campbell_table_round_trips() {
-        let mode = |f: f64, whirl| ModeSummary {
+        let mode = |f: f64, whirl, branch| ModeSummary {
             damped_frequency: f,
             damping_ratio: 0.01,
             log_decrement: 0.0628,
             whirl,
+            branch,
         };
         let diagram = [
             CampbellPoint {
                 speed: 0.0,
-                modes: vec![mode(100.0, Whirl::Backward), mode(101.0, Whirl::Forward)],
+                modes: vec![
+                    mode(100.0, Whirl::Backward, 0),
+                    mode(101.0, Whirl::Forward, 1),
+                ],
+                overdamped: vec![],
             },
             CampbellPoint {
                 speed: 50.0,
-                modes: vec![mode(98.0, Whirl::Backward)],
+                modes: vec![mode(98.0, Whirl::Backward, 0)],
+                overdamped: vec![],
             },
         ];
         let text = campbell(&diagram);
         let rows = parse(
             &text,
-            "speed_rpm,speed_rad_s,mode,damped_frequency_rad_s,damped_frequency_hz,damping_ratio,log_decrement,whirl",
+            "speed_rpm,speed_rad_s,mode,damped_frequency_rad_s,damped_frequency_hz,damping_ratio,log_decrement,whirl,branch",
         );
         assert_eq!(rows.len(), 3);
         assert_eq!(rows[2][0], 50.0 * RAD_S_TO_RPM);
         assert_eq!(rows[2][1], 50.0);
         assert_eq!((rows[1][2], rows[1][3]), (2.0, 101.0));
         assert_eq!(rows[0][4], 100.0 / (2.0 * PI));
-        assert!(
-            text.lines()
-                .nth(1)
-                .unwrap()
-                .ends_with(Whirl::Backward.label())
-        );
+        assert!(text.lines().nth(1).unwrap().ends_with(",backward,1"));
+        assert!(text.lines().nth(2).unwrap().ends_with(",forward,2"));
     }
 
     #[test]

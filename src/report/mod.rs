@@ -24,5 +24,7 @@
 
 pub mod csv;
 pub mod html;
+pub mod review;
 pub mod series;
+pub mod stamp;
 pub mod text;

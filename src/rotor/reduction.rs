@@ -268,18 +268,10 @@ impl Rotor {
         match model.reduction {
             None => Ok(0),
             Some(ReductionRequest::Modes(m)) => Ok(m),
-            Some(ReductionRequest::FromSpeedRange) => {
-                let top = if model.max_speed_stated {
-                    model.max_speed
-                } else {
-                    model.nominal_speed.abs()
-                };
-                if top > 0.0 {
-                    Rotor::new(model.clone())?.modes_for(top)
-                } else {
-                    Ok(DEFAULT_REDUCED_MODES)
-                }
-            }
+            Some(ReductionRequest::FromSpeedRange) => match model.transient_top_speed() {
+                Some(top) => Rotor::new(model.clone())?.modes_for(top),
+                None => Ok(DEFAULT_REDUCED_MODES),
+            },
         }
     }
 

@@ -74,11 +74,13 @@ pub mod statics;
 mod torsion;
 mod warnings;
 
+pub mod time_step;
+
 pub use contact_watch::{ContactLimit, ContactWarning};
 pub use outputs::{
     BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput, ThrustOutput, TorqueNodeOutput,
 };
-pub use run::{SpeedProfile, record};
+pub use run::{SpeedProfile, record, record_into};
 pub use simulator::{Simulator, SolverError, SolverOptions, StepStats};
 pub use state::SimState;
 pub use statics::{Equilibrium, equilibrium};

@@ -106,8 +106,23 @@ pub fn record(
     profile: &SpeedProfile,
     duration: f64,
     output_step: f64,
-    mut progress: impl FnMut(f64, &Simulator),
+    progress: impl FnMut(f64, &Simulator),
 ) -> Result<Vec<Outputs>, SolverError> {
+    let mut out = Vec::new();
+    record_into(sim, profile, duration, output_step, &mut out, progress)?;
+    Ok(out)
+}
+
+/// [`record`] into `out`, which keeps the records made before a failure (the
+/// run up to the last converged output), so a failed run loses nothing.
+pub fn record_into(
+    sim: &mut Simulator,
+    profile: &SpeedProfile,
+    duration: f64,
+    output_step: f64,
+    out: &mut Vec<Outputs>,
+    mut progress: impl FnMut(f64, &Simulator),
+) -> Result<(), SolverError> {
     profile.validate().map_err(SolverError::Input)?;
     if !(duration.is_finite() && duration >= 0.0 && output_step.is_finite() && output_step > 0.0) {
         return Err(SolverError::Input(format!(
@@ -116,7 +131,7 @@ pub fn record(
     }
     let t0 = sim.time();
     let count = (duration / output_step).round() as usize;
-    let mut out = Vec::with_capacity(count + 1);
+    out.reserve(count + 1);
     let (w, rate) = profile.at(t0);
     sim.set_speed(w, rate)?;
     out.push(sim.outputs()?);
@@ -128,5 +143,25 @@ pub fn record(
         out.push(sim.outputs()?);
         progress(k as f64 / count as f64, sim);
     }
-    Ok(out)
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn top_speed_is_the_largest_absolute_speed() {
+        let ramp = SpeedProfile::Ramp {
+            from: -10.0,
+            to: 5.0,
+            duration: 1.0,
+        };
+        assert_eq!(ramp.top_speed(), 10.0);
+        assert_eq!(
+            SpeedProfile::Table(vec![(0.0, 1.0), (1.0, -7.0)]).top_speed(),
+            7.0
+        );
+        assert_eq!(SpeedProfile::Constant(-3.0).top_speed(), 3.0);
+    }
 }

@@ -73,15 +73,17 @@ pub fn coefficients(
     if curve.len() < 2 {
         return Err(format!("{label}: fewer than two equilibria found"));
     }
-    println!("{label} at {rpm} rpm (load along −y; K̄ = K C/W, C̄ = C ω C/W):");
-    println!("    ε     φ (°)     K̄xx     K̄xy     K̄yx     K̄yy     C̄xx     C̄xy     C̄yx     C̄yy");
+    let mut out = format!("{label} at {rpm} rpm (load along −y; K̄ = K C/W, C̄ = C ω C/W):\n");
+    out.push_str(
+        "    ε     φ (°)     K̄xx     K̄xy     K̄yx     K̄yy     C̄xx     C̄xy     C̄yx     C̄yy\n",
+    );
     let mut eps = Vec::new();
     let mut kbar: Vec<Vec<f64>> = vec![Vec::new(); 4];
     let mut cbar: Vec<Vec<f64>> = vec![Vec::new(); 4];
     for p in &curve {
         let (kv, cv) = (p.stiffness, p.damping);
-        println!(
-            "{:6.3} {:8.2} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3}",
+        out.push_str(&format!(
+            "{:6.3} {:8.2} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3} {:8.3}\n",
             p.eccentricity,
             p.attitude_angle.to_degrees(),
             kv[0],
@@ -92,7 +94,7 @@ pub fn coefficients(
             cv[1],
             cv[2],
             cv[3]
-        );
+        ));
         eps.push(p.eccentricity);
         for i in 0..4 {
             kbar[i].push(kv[i]);
@@ -118,5 +120,8 @@ pub fn coefficients(
         coefficients_png(&path, &title, &eps, &k, &c).map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
     }
+    // Printed last: the files are written even when stdout is a closed pipe
+    // (`rotor coefficients --png X | head`).
+    print!("{out}");
     Ok(())
 }

@@ -3,19 +3,21 @@
 //! ```text
 //! rotor info     [MODEL.toml]
 //! rotor draw     [MODEL.toml] --png FILE
-//! rotor static   [MODEL.toml] [--csv FILE]
+//! rotor static   [MODEL.toml] [--rpm N] [--csv FILE]
 //! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE] [--shapes-csv FILE] [--shapes-png FILE]
-//! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--csv FILE] [--png FILE]
+//! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--operating-rpm A:B] [--csv FILE] [--png FILE]
 //! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--csv FILE] [--png FILE]
 //! rotor simulate [MODEL.toml] (--rpm N | --ramp-rpm A:B | --speed-csv FILE) [--duration S] [--step S]
-//!                [--output-step S] [--ramp-time S] [--no-gravity] [--csv FILE] [--plots PREFIX]
+//!                [--output-step S] [--ramp-time S] [--no-gravity] [--amplitude 0-pk|pk-pk] [--csv FILE] [--plots PREFIX]
 //! rotor unbalance [MODEL.toml] [--min-rpm N] [--max-rpm N] [--points P] [--node N --unbalance KGM]
-//!                 [--operating-rpm A:B] [--csv FILE] [--png FILE]
+//!                 [--operating-rpm A:B] [--amplitude 0-pk|pk-pk] [--csv FILE] [--png FILE]
 //! rotor operating-point [MODEL.toml] --rpm N [--csv FILE] [--pads-csv FILE]
 //! rotor ucs [MODEL.toml] [--min-stiffness K] [--max-stiffness K] [--points P] [--modes K] [--max-rpm N]
 //!           [--speeds S] [--csv FILE] [--bearings-csv FILE] [--png FILE]
-//! rotor report [MODEL.toml] --rpm N --out FILE.html
-//! rotor stability [MODEL.toml] --rpm N [--cross-coupling-max Q] [--points P] [--modes K] [--csv FILE] [--png FILE]
+//! rotor report [MODEL.toml] [--rpm N] [--amplitude 0-pk|pk-pk] [--at NODES] [--power W --impeller-diameter D
+//!              --flow-width H [--density-ratio R] [--stage-factor B]] --out FILE.html
+//! rotor stability [MODEL.toml] --rpm N [--at NODES] [--cross-coupling-max Q] [--points P] [--modes K]
+//!                 [--power W --impeller-diameter D --flow-width H …] [--csv FILE] [--png FILE]
 //! ```
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
 //! `coefficients`, the reference plain short bearing).
@@ -37,6 +39,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand};
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::units::Amplitude;
 
 #[derive(Parser)]
 #[command(
@@ -60,6 +63,43 @@ struct ModelArg {
     excitation: Option<f64>,
 }
 
+/// Where the destabilizing cross-coupling acts and the machine data of its
+/// anticipated size (`rotor stability` and `rotor report`).
+#[derive(Args)]
+struct StageArgs {
+    /// Where the cross-coupling acts: node numbers or disk names, comma-separated,
+    /// Q split equally; default the disks, else mid-span.
+    #[arg(long)]
+    at: Option<String>,
+    /// Rated power of the stages (W), for Wachel's anticipated cross-coupling Q_A.
+    #[arg(long)]
+    power: Option<f64>,
+    /// Impeller diameter D (m).
+    #[arg(long)]
+    impeller_diameter: Option<f64>,
+    /// Restrictive flow width H (m): the smaller of impeller discharge and diffuser widths.
+    #[arg(long)]
+    flow_width: Option<f64>,
+    /// Discharge over suction density (1 for a liquid).
+    #[arg(long, default_value_t = 1.0)]
+    density_ratio: f64,
+    /// Stage factor B: 3 for centrifugal impellers (Wachel), 1.5 for axial stages (Alford).
+    #[arg(long, default_value_t = 3.0)]
+    stage_factor: f64,
+}
+
+impl StageArgs {
+    fn stages(&self) -> Result<Option<rotor_bearing::analysis::stability::StageData>, String> {
+        stability::stages(
+            self.power,
+            self.impeller_diameter,
+            self.flow_width,
+            self.density_ratio,
+            self.stage_factor,
+        )
+    }
+}
+
 #[derive(Subcommand)]
 enum Command {
     /// Summarize a model: nodes, elements, masses, bearings.
@@ -75,7 +115,9 @@ enum Command {
         #[arg(long)]
         png: PathBuf,
     },
-    /// Static deflection under gravity (linear bearings).
+    /// Static deflection under gravity: linear bearings, or fluid films in their
+    /// static equilibrium at --rpm (at standstill the journals rest on their
+    /// bushings or pads).
     Static {
         #[command(flatten)]
         model: ModelArg,
@@ -119,9 +161,12 @@ enum Command {
         /// Number of speed steps (the grid has steps + 1 points).
         #[arg(long, default_value_t = 40)]
         steps: usize,
-        /// Number of modes per speed.
+        /// Number of oscillating modes per speed (overdamped roots are listed apart).
         #[arg(long, default_value_t = 8)]
         modes: usize,
+        /// Operating speed range MIN:MAX (rpm) for the separation margins; default: the model's speed_rpm.
+        #[arg(long)]
+        operating_rpm: Option<String>,
         /// Write the diagram to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
@@ -146,9 +191,12 @@ enum Command {
         /// Simulated time (s).
         #[arg(long, default_value_t = 1.0)]
         duration: f64,
-        /// Internal time step (s).
-        #[arg(long, default_value_t = 1e-4)]
-        step: f64,
+        /// Internal time step (s). Default: 60 steps per revolution at the top
+        /// speed (the larger of the run's and the model's max_speed_rpm, else
+        /// speed_rpm), at most 1 ms — the FMU's solver.time_step follows the
+        /// same rule at the model's top speed.
+        #[arg(long)]
+        step: Option<f64>,
         /// Output interval (s); defaults to the internal step, at least 1/20 000 of the duration.
         #[arg(long)]
         output_step: Option<f64>,
@@ -166,7 +214,8 @@ enum Command {
         /// 0 for the full rotor. Default: the model's `[reduction]`, else full.
         #[arg(long)]
         reduced_modes: Option<usize>,
-        /// Write the outputs to this CSV file.
+        /// Write the outputs to this CSV file (without it the terminal gets a
+        /// summary, not the table); a run that fails keeps the rows up to the failure.
         #[arg(long)]
         csv: Option<PathBuf>,
         /// Write PREFIX_orbits.png and PREFIX_spectrum.png (last half of the run) and
@@ -174,6 +223,10 @@ enum Command {
         /// (a run under 20 revolutions gets no frequency ratio).
         #[arg(long)]
         plots: Option<String>,
+        /// Amplitudes of the spectra and the window table: the orbit's radius (0-pk)
+        /// or twice it (pk-pk).
+        #[arg(long, default_value = "0-pk", value_parser = parse_amplitude)]
+        amplitude: Amplitude,
     },
     /// Write the generated parts of an FMU for MODEL into DIR: modelDescription.xml,
     /// resources/model.toml and documentation/index.html (fmu_pack.sh adds the binary).
@@ -219,15 +272,19 @@ enum Command {
         #[arg(long)]
         pads_csv: Option<PathBuf>,
     },
-    /// Log decrements at a speed and the threshold of cross-coupled stiffness
-    /// at mid-span where the least stable forward mode turns unstable (API 684 Level I).
+    /// Log decrements at a speed, the threshold of cross-coupled stiffness at the
+    /// disks (or --at) where the least stable forward mode turns unstable, and with
+    /// --power/--impeller-diameter/--flow-width the API 617 / API 684 Level I screening.
     Stability {
         #[command(flatten)]
         model: ModelArg,
         /// Spin speed (rpm).
         #[arg(long)]
         rpm: f64,
-        /// Largest cross-coupled stiffness Q (N/m); default a tenth of the largest direct bearing stiffness.
+        #[command(flatten)]
+        stages: StageArgs,
+        /// Largest cross-coupled stiffness Q (N/m); default 10 × Q_A with stage data,
+        /// else a tenth of the largest direct bearing stiffness.
         #[arg(long)]
         cross_coupling_max: Option<f64>,
         /// Number of Q values from 0 to the maximum.
@@ -260,9 +317,10 @@ enum Command {
         /// Number of critical speeds per stiffness.
         #[arg(long, default_value_t = 4)]
         modes: usize,
-        /// Highest speed (rpm) of the bearings' stiffness curves.
-        #[arg(long, default_value_t = 4000.0)]
-        max_rpm: f64,
+        /// Highest speed (rpm) of the bearings' stiffness curves. Default: 1.25 × the
+        /// higher of the model's max_speed_rpm and speed_rpm, else 4000.
+        #[arg(long)]
+        max_rpm: Option<f64>,
         /// Number of speeds of the bearings' stiffness curves.
         #[arg(long, default_value_t = 20)]
         speeds: usize,
@@ -281,9 +339,14 @@ enum Command {
     Report {
         #[command(flatten)]
         model: ModelArg,
-        /// Operating speed (rpm).
+        /// Operating speed (rpm); default the model's speed_rpm.
         #[arg(long)]
-        rpm: f64,
+        rpm: Option<f64>,
+        /// Amplitudes as the orbit's semi-axis (0-pk) or twice it (pk-pk).
+        #[arg(long, default_value = "0-pk", value_parser = parse_amplitude)]
+        amplitude: Amplitude,
+        #[command(flatten)]
+        stages: StageArgs,
         /// HTML file to write.
         #[arg(long)]
         out: PathBuf,
@@ -296,10 +359,11 @@ enum Command {
         /// Lowest spin speed (rpm).
         #[arg(long, default_value_t = 0.0)]
         min_rpm: f64,
-        /// Highest spin speed (rpm).
-        #[arg(long, default_value_t = 4000.0)]
-        max_rpm: f64,
-        /// Number of speeds of the grid (both ends included).
+        /// Highest spin speed (rpm). Default: 1.25 × the highest of the model's
+        /// max_speed_rpm, its speed_rpm and the top of --operating-rpm, else 4000.
+        #[arg(long)]
+        max_rpm: Option<f64>,
+        /// Number of evenly spaced speeds (both ends included), refined near resonances.
         #[arg(long, default_value_t = 200)]
         points: usize,
         /// Excite with one unbalance at this node (numbered from 1) instead of the model's planes.
@@ -311,6 +375,9 @@ enum Command {
         /// Operating speed range MIN:MAX (rpm) for the separation margins; default: the model's speed_rpm.
         #[arg(long)]
         operating_rpm: Option<String>,
+        /// Amplitudes as the orbit's semi-axis (0-pk) or twice it (pk-pk), in tables and on axes.
+        #[arg(long, default_value = "0-pk", value_parser = parse_amplitude)]
+        amplitude: Amplitude,
         /// Write the response to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
@@ -383,6 +450,11 @@ fn load(arg: &ModelArg) -> Result<Rotor, String> {
     Rotor::new(model).map_err(|e| e.to_string())
 }
 
+/// `--amplitude 0-pk|pk-pk`.
+fn parse_amplitude(text: &str) -> Result<Amplitude, String> {
+    Amplitude::parse(text)
+}
+
 fn write_file(path: &Path, text: &str) -> Result<(), String> {
     std::fs::write(path, text).map_err(|e| format!("{}: cannot write: {e}", path.display()))?;
     eprintln!("wrote {}", path.display());
@@ -416,9 +488,20 @@ fn run(cli: Cli) -> Result<(), String> {
             max_rpm,
             steps,
             modes,
+            operating_rpm,
             csv,
             png,
-        } => modal::campbell_diagram(&load(&model)?, max_rpm, steps, modes, csv, png),
+        } => modal::campbell_diagram(
+            &load(&model)?,
+            modal::CampbellRequest {
+                max_rpm,
+                steps,
+                modes,
+                operating_rpm,
+                csv,
+                png,
+            },
+        ),
         Command::Coefficients {
             model,
             bearing,
@@ -435,6 +518,7 @@ fn run(cli: Cli) -> Result<(), String> {
             node,
             unbalance: size,
             operating_rpm,
+            amplitude,
             csv,
             png,
         } => unbalance::unbalance(
@@ -446,6 +530,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 node,
                 unbalance: size,
                 operating_rpm,
+                amplitude,
                 csv,
                 png,
             },
@@ -459,6 +544,7 @@ fn run(cli: Cli) -> Result<(), String> {
         Command::Stability {
             model,
             rpm,
+            stages,
             cross_coupling_max,
             points,
             modes,
@@ -471,6 +557,8 @@ fn run(cli: Cli) -> Result<(), String> {
                 q_max: cross_coupling_max,
                 points,
                 modes,
+                stages: stages.stages()?,
+                at: stages.at,
                 csv,
                 png,
             },
@@ -500,7 +588,26 @@ fn run(cli: Cli) -> Result<(), String> {
                 png,
             },
         ),
-        Command::Report { model, rpm, out } => report::run(&load(&model)?, rpm, out),
+        Command::Report {
+            model,
+            rpm,
+            amplitude,
+            stages,
+            out,
+        } => {
+            let rotor = load(&model)?;
+            report::run(
+                &rotor,
+                report::Request {
+                    source: model.model.clone(),
+                    rpm,
+                    amplitude,
+                    sites: stability::sites(&rotor, stages.at.as_deref())?,
+                    stages: stages.stages()?,
+                    out,
+                },
+            )
+        }
         Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
         Command::Simulate {
             model,
@@ -516,10 +623,19 @@ fn run(cli: Cli) -> Result<(), String> {
             reduced_modes,
             csv,
             plots,
+            amplitude,
         } => {
             let profile =
                 simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
             let rotor = load(&model)?;
+            simulate::check_speeds(&rotor.model, &profile)?;
+            let step = step.unwrap_or_else(|| {
+                let peak = profile.top_speed();
+                let h =
+                    rotor_bearing::solver::time_step::default_time_step(&rotor.model, Some(peak));
+                eprintln!("{}", simulate::describe_default_step(&rotor.model, peak, h));
+                h
+            });
             let modes = match reduced_modes {
                 Some(m) => m,
                 None => Rotor::transient_modes(&rotor.model).map_err(|e| e.to_string())?,
@@ -546,6 +662,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 settle: !no_settle,
                 csv,
                 plots,
+                amplitude,
             };
             simulate::simulate(rotor, full, options, run)
         }

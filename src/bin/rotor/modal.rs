@@ -2,11 +2,9 @@
 
 use std::path::PathBuf;
 
-use rotor_bearing::analysis::campbell::{
-    CriticalSpeed, OVERDAMPED_DAMPING_RATIO, campbell, critical_speeds, default_top_speed,
-    speed_grid,
-};
-use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
+use rotor_bearing::analysis::campbell::{self, campbell_study};
+use rotor_bearing::analysis::modal::{ModalOptions, modal_analysis_at};
+use rotor_bearing::analysis::unbalance::{OperatingRange, model_operating_range};
 use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png, mode_shapes_png};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
@@ -29,127 +27,80 @@ pub fn modes(rotor: &Rotor, rpm: f64, count: usize, files: ModeFiles) -> Result<
         modes: count,
         ..ModalOptions::default()
     };
-    let ms = modes_at(rotor, speed, &options).map_err(|e| e.to_string())?;
-    print!("{}", text::modes(&rotor.model.name, rpm, &ms));
+    let result = modal_analysis_at(rotor, speed, &options).map_err(|e| e.to_string())?;
+    let ms = &result.modes;
+    let mut out = text::modes(&rotor.model.name, rpm, ms);
+    out.push_str(&text::overdamped_roots(&result.overdamped));
     if let Some(path) = files.csv {
-        write_file(&path, &report_csv::modes(rpm, &ms))?;
+        write_file(&path, &report_csv::modes(rpm, ms))?;
     }
     if let Some(path) = files.shapes_csv {
-        write_file(&path, &report_csv::mode_shapes(&rotor.model, &ms))?;
+        write_file(&path, &report_csv::mode_shapes(&rotor.model, ms))?;
     }
     if let Some(path) = files.shapes_png {
         let title = format!(
             "Mode shapes of {} at {rpm} rpm (red forward, blue backward whirl)",
             rotor.model.name
         );
-        mode_shapes_png(&path, &title, &rotor.model, &ms).map_err(|e| e.to_string())?;
+        mode_shapes_png(&path, &title, &rotor.model, ms).map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
     }
+    // Printed last: files are written even when stdout is a closed pipe.
+    print!("{out}");
     Ok(())
 }
 
-/// `rpm` rounded to 1e-6 rpm: the value a model file gave, without the
-/// round-off of its conversion to rad/s and back.
-fn rounded(rpm: f64) -> f64 {
-    (rpm * 1e6).round() / 1e6
+/// What `rotor campbell` was asked for.
+pub struct CampbellRequest {
+    pub max_rpm: Option<f64>,
+    pub steps: usize,
+    pub modes: usize,
+    pub operating_rpm: Option<String>,
+    pub csv: Option<PathBuf>,
+    pub png: Option<PathBuf>,
+}
+
+/// The operating range of `--operating-rpm`, else the model's `speed_rpm`.
+pub fn operating_range(
+    rotor: &Rotor,
+    operating_rpm: Option<&str>,
+) -> Result<Option<OperatingRange>, String> {
+    match operating_rpm {
+        Some(t) => Ok(Some(crate::unbalance::operating_range(t)?)),
+        None => Ok(model_operating_range(rotor)),
+    }
 }
 
 /// `rotor campbell`: the diagram up to `max_rpm` (default from the model, see
-/// [`default_top_speed`]) and the 1× critical speeds, overdamped crossings apart.
-pub fn campbell_diagram(
-    rotor: &Rotor,
-    max_rpm: Option<f64>,
-    steps: usize,
-    count: usize,
-    csv: Option<PathBuf>,
-    png: Option<PathBuf>,
-) -> Result<(), String> {
+/// [`default_top_speed`](rotor_bearing::analysis::speed_range::default_top_speed)),
+/// the 1× critical speeds with their API 684 separation margins, overdamped
+/// crossings apart.
+pub fn campbell_diagram(rotor: &Rotor, req: CampbellRequest) -> Result<(), String> {
     let model = &rotor.model;
-    let (max_rpm, origin) = match max_rpm {
-        Some(rpm) => (rpm, "--max-rpm".to_string()),
-        None => {
-            let origin = if model.max_speed_stated {
-                format!(
-                    "1.25 × the model's max_speed_rpm {}",
-                    rounded(model.max_speed * RAD_S_TO_RPM)
-                )
-            } else if model.nominal_speed != 0.0 {
-                format!(
-                    "1.25 × the model's speed_rpm {}",
-                    rounded(model.nominal_speed.abs() * RAD_S_TO_RPM)
-                )
-            } else {
-                "the model states neither max_speed_rpm nor speed_rpm".to_string()
-            };
-            (default_top_speed(model) * RAD_S_TO_RPM, origin)
-        }
+    let request = campbell::CampbellRequest {
+        max: req.max_rpm.map(|r| r / RAD_S_TO_RPM),
+        steps: req.steps,
+        modes: req.modes,
+        operating: operating_range(rotor, req.operating_rpm.as_deref())?,
     };
-    if !(max_rpm.is_finite() && max_rpm > 0.0) || steps == 0 {
-        return Err(format!(
-            "--max-rpm must be positive (got {max_rpm}) and --steps at least 1 (got {steps})"
-        ));
-    }
-    let options = ModalOptions {
-        modes: count,
-        ..ModalOptions::default()
-    };
-    let speeds = speed_grid(rotor, max_rpm / RAD_S_TO_RPM, steps);
+    let study = campbell_study(rotor, &request).map_err(|e| e.to_string())?;
+    let seconds = study.diagram_seconds;
+    let speeds: Vec<f64> = study.diagram.iter().map(|p| p.speed).collect();
     crate::warn_table_speeds(model, &speeds);
-    println!(
-        "speed grid of {}: {:.2} to {:.2} rpm in {steps} steps (top speed: {origin}{})",
-        model.name,
-        speeds[0] * RAD_S_TO_RPM,
-        max_rpm,
-        if rotor.nonlinear_bearings.is_empty() {
-            ""
-        } else {
-            "; fluid-film bearings: from 1 % of the top speed"
-        }
-    );
-    let clock = std::time::Instant::now();
-    let diagram = campbell(rotor, &speeds, &options).map_err(|e| e.to_string())?;
-    let seconds = clock.elapsed().as_secs_f64();
     eprintln!(
         "campbell diagram: {} speeds in {seconds:.4} s wall-clock ({:.3} ms per speed)",
-        speeds.len(),
-        1e3 * seconds / speeds.len() as f64
+        study.diagram.len(),
+        1e3 * seconds / study.diagram.len() as f64
     );
-    let criticals = critical_speeds(rotor, &diagram, 1.0, &options).map_err(|e| e.to_string())?;
-    let line = |c: &CriticalSpeed| {
-        println!(
-            "  {:10.2} rpm ({:9.3} rad/s)  branch {}  {} whirl  ζ = {:.3e}",
-            c.speed * RAD_S_TO_RPM,
-            c.speed,
-            c.rank + 1,
-            c.whirl.label(),
-            c.damping_ratio
-        )
-    };
-    println!(
-        "critical speeds of {} (1× unbalance excitation, ζ < {OVERDAMPED_DAMPING_RATIO}):",
-        model.name
-    );
-    let (overdamped, critical): (Vec<_>, Vec<_>) =
-        criticals.iter().partition(|c| c.is_overdamped());
-    if critical.is_empty() {
-        println!("  none up to {max_rpm:.2} rpm");
+    let out = text::campbell_study(rotor, &study);
+    if let Some(path) = req.csv {
+        write_file(&path, &report_csv::campbell(&study.diagram))?;
     }
-    critical.into_iter().for_each(line);
-    if !overdamped.is_empty() {
-        println!(
-            "overdamped crossings of the 1× line (ζ ≥ {OVERDAMPED_DAMPING_RATIO}: no resonance peak, not critical speeds):"
-        );
-        overdamped.into_iter().for_each(line);
-    }
-    let out = report_csv::campbell(&diagram);
-    match csv {
-        Some(path) => write_file(&path, &out)?,
-        None => print!("{out}"),
-    }
-    if let Some(path) = png {
+    if let Some(path) = req.png {
         let title = format!("Campbell diagram: {}", model.name);
-        campbell_png(&path, &title, &diagram, &[1.0], &criticals).map_err(|e| e.to_string())?;
+        campbell_png(&path, &title, &study).map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
     }
+    print!("{out}");
     Ok(())
 }

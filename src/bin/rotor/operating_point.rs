@@ -22,15 +22,15 @@ pub fn run(
     crate::warn_table_speeds(&rotor.model, &[rpm / RAD_S_TO_RPM]);
     let points = operating_point(rotor, rpm / RAD_S_TO_RPM)
         .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
-    print!("{}", text::operating_point(rpm, &points));
-    let pedestals = pedestal_operating_points(rotor, rpm / RAD_S_TO_RPM)
-        .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
-    print!("{}", text::pedestals(rpm, &pedestals));
     if let Some(path) = csv {
         write_file(&path, &report_csv::operating_point(rpm, &points))?;
     }
     if let Some(path) = pads_csv {
         write_file(&path, &report_csv::operating_pads(&points))?;
     }
+    print!("{}", text::operating_point(rpm, &points));
+    let pedestals = pedestal_operating_points(rotor, rpm / RAD_S_TO_RPM)
+        .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
+    print!("{}", text::pedestals(rpm, &pedestals));
     Ok(())
 }

@@ -1,184 +1,363 @@
-//! `rotor report`: one self-contained HTML page with the model and its
-//! drawing, the operating point, the unbalance response, the modes and their
-//! shapes, the stability check and the critical speed map at one speed.
+//! `rotor report`: one self-contained HTML page to sign — the stamp (model
+//! file and its SHA-256, software version, date), a first-page summary of
+//! every verdict, then the model and its drawing, the Campbell diagram, the
+//! unbalance response, the bearings' operating point, the modes and their
+//! shapes, the stability screening and the critical speed map. Every section
+//! runs the library study its single command runs, with that command's
+//! defaults; a study that fails is reported in its section and the summary,
+//! and the page is still written.
 
 use std::path::{Path, PathBuf};
 
-use rotor_bearing::analysis::modal::{ModalOptions, modes_at};
+use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
+use rotor_bearing::analysis::modal::{ModalOptions, modal_analysis_at};
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
-use rotor_bearing::analysis::stability::{default_cross_coupling_max, mid_span_node, stability};
-use rotor_bearing::analysis::ucs::{critical_speed_map, stiffness_grid};
+use rotor_bearing::analysis::speed_range::default_top_speed;
+use rotor_bearing::analysis::stability::{
+    StabilityRequest, StageData, mid_span_node, site_label, stability_study,
+};
+use rotor_bearing::analysis::ucs::{
+    DEFAULT_BEARING_SPEEDS, DEFAULT_CRITICALS, DEFAULT_POINTS as UCS_POINTS,
+    DEFAULT_STIFFNESS_RANGE, bearing_speeds, critical_speed_map, stiffness_grid,
+};
 use rotor_bearing::analysis::unbalance::{
-    OperatingRange, peaks, response_points, separation_margin, speed_grid, sweep, with_unbalance_at,
+    DEFAULT_POINTS, OperatingRange, UnbalanceRequest, unbalance_study, with_unbalance_at,
 };
+use rotor_bearing::model::DEFAULT_MODEL_TOML;
 use rotor_bearing::plot::{
-    RAD_S_TO_RPM, mode_shapes_png, rotor_png, stability_png, ucs_png, unbalance_png,
+    PlotError, RAD_S_TO_RPM, campbell_png, mode_shapes_png, rotor_png, stability_png, ucs_png,
+    unbalance_png,
 };
-use rotor_bearing::report::html::{Section, page};
-use rotor_bearing::report::text;
+use rotor_bearing::report::html::{Block, Section, Verdict, page};
+use rotor_bearing::report::review::{self, SummaryInputs};
+use rotor_bearing::report::stamp::{now_utc, sha256_hex, software_version};
+use rotor_bearing::report::text::short;
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::units::Amplitude;
 
 use crate::write_file;
+
+/// What `rotor report` was asked for.
+pub struct Request {
+    /// The model file (`None`: the built-in classic rotor).
+    pub source: Option<PathBuf>,
+    pub rpm: Option<f64>,
+    pub amplitude: Amplitude,
+    /// Nodes of the cross-coupling (0-based), empty for the default.
+    pub sites: Vec<usize>,
+    pub stages: Option<StageData>,
+    pub out: PathBuf,
+}
 
 /// A PNG drawn by `draw` into `dir/name`, read back.
 fn figure(
     dir: &Path,
     name: &str,
-    draw: impl FnOnce(&Path) -> Result<(), rotor_bearing::plot::PlotError>,
+    draw: impl FnOnce(&Path) -> Result<(), PlotError>,
 ) -> Result<Vec<u8>, String> {
     let path = dir.join(name);
     draw(&path).map_err(|e| e.to_string())?;
     std::fs::read(&path).map_err(|e| format!("{}: {e}", path.display()))
 }
 
-fn section(id: &str, title: &str, text: String, images: Vec<(Vec<u8>, String)>) -> Section {
-    Section {
-        id: id.into(),
-        title: title.into(),
-        text,
-        images,
+/// The figure, or the reason it could not be drawn.
+fn figure_block(result: Result<Vec<u8>, String>, caption: &str) -> Block {
+    match result {
+        Ok(png) => Block::Figure(png, caption.to_string()),
+        Err(e) => Block::Failure(format!("{caption}: {e}")),
     }
 }
 
-pub fn run(rotor: &Rotor, rpm: f64, out: PathBuf) -> Result<(), String> {
+fn section(id: &str, title: &str, blocks: Vec<Block>) -> Section {
+    Section {
+        id: id.into(),
+        title: title.into(),
+        blocks,
+    }
+}
+
+pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
+    let model = &rotor.model;
+    let rpm = match req.rpm {
+        Some(r) => r,
+        None if model.nominal_speed != 0.0 => model.nominal_speed.abs() * RAD_S_TO_RPM,
+        None => {
+            return Err(format!(
+                "{}: the model states no speed_rpm: give --rpm",
+                model.source
+            ));
+        }
+    };
     if !(rpm.is_finite() && rpm > 0.0) {
         return Err(format!("--rpm must be a positive speed, got {rpm}"));
     }
     let speed = rpm / RAD_S_TO_RPM;
-    crate::warn_table_speeds(&rotor.model, &[0.0, 2.0 * speed]);
-    let name = rotor.model.name.clone();
-    let dir = std::env::temp_dir().join(format!("rotor-report-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
-    let err = |e: &dyn std::fmt::Display| format!("{name} at {rpm} rpm: {e}");
-    let mut sections = Vec::new();
-
-    let drawing = figure(&dir, "rotor.png", |p| {
-        rotor_png(p, &format!("Rotor {name}"), &rotor.model)
-    })?;
-    sections.push(section(
-        "model",
-        "Model",
-        text::model_summary(rotor),
-        vec![(drawing, "rotor drawing".into())],
-    ));
-
-    let points = operating_point(rotor, speed).map_err(|e| err(&e))?;
-    let pedestals = pedestal_operating_points(rotor, speed).map_err(|e| err(&e))?;
-    sections.push(section(
-        "operating-point",
-        &format!("Operating point at {rpm} rpm"),
-        text::operating_point(rpm, &points) + &text::pedestals(rpm, &pedestals),
-        Vec::new(),
-    ));
-
-    // Unbalance response from 0 to twice the speed, judged against the speed itself.
-    let excited;
-    let (unbalanced, what) = if rotor.model.unbalances.is_empty() {
-        let node = mid_span_node(rotor);
-        excited = with_unbalance_at(rotor, node, 1e-3).map_err(|e| err(&e))?;
-        (&excited, format!("1e-3 kg·m at node {}", node + 1))
-    } else {
-        (rotor, "the model's unbalance planes".to_string())
-    };
-    let mut speeds = speed_grid(0.0, 2.0 * speed, 201).map_err(|e| err(&e))?;
-    if !rotor.nonlinear_bearings.is_empty() {
-        speeds.remove(0);
-    }
-    let result = sweep(unbalanced, &speeds, &response_points(unbalanced)).map_err(|e| err(&e))?;
-    let range = OperatingRange {
+    let name = model.name.clone();
+    let operating = OperatingRange {
         min: speed,
         max: speed,
     };
-    let mut rows = Vec::new();
-    for p in 0..result.points.len() {
-        for peak in peaks(unbalanced, &result, p).map_err(|e| err(&e))? {
-            let margin = peak
-                .amplification_factor
-                .map(|af| separation_margin(peak.speed, af, &range));
-            rows.push((peak, margin));
-        }
-    }
-    let found: Vec<_> = rows.iter().map(|(p, _)| *p).collect();
-    let bode = figure(&dir, "unbalance.png", |p| {
-        unbalance_png(
-            p,
-            &format!("Unbalance response: {name} ({what})"),
-            &result,
-            &found,
-            Some((speed, speed)),
-        )
-    })?;
-    sections.push(section(
-        "unbalance",
-        "Unbalance response",
-        format!(
-            "response to {what}, 0 … {} rpm; separation margins from {rpm} rpm\n{}",
-            2.0 * rpm,
-            text::peak_table(&result, &rows)
-        ),
-        vec![(bode, "Bode and polar plots".into())],
-    ));
+    let amplitude = req.amplitude;
+    let dir = std::env::temp_dir().join(format!("rotor-report-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let err = |e: &dyn std::fmt::Display| e.to_string();
 
+    // The stamp: what was judged, by what, when.
+    let (file, bytes) = match &req.source {
+        Some(p) => (
+            p.display().to_string(),
+            std::fs::read(p).map_err(|e| format!("{}: {e}", p.display()))?,
+        ),
+        None => (
+            "built-in classic_disk_rotor.toml".to_string(),
+            DEFAULT_MODEL_TOML.as_bytes().to_vec(),
+        ),
+    };
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let stamp = vec![
+        ("model file".to_string(), file),
+        ("model SHA-256".to_string(), sha256_hex(&bytes)),
+        (
+            "model".to_string(),
+            format!("{name}: {}", model.description),
+        ),
+        ("operating speed".to_string(), format!("{} rpm", short(rpm))),
+        (
+            "software".to_string(),
+            format!("rotor_bearing {}", software_version()),
+        ),
+        ("date".to_string(), now_utc()),
+        ("command".to_string(), format!("rotor {}", args.join(" "))),
+    ];
+
+    // The studies, each with its command's defaults.
+    let campbell =
+        campbell_study(rotor, &CampbellRequest::default_for(Some(operating))).map_err(|e| err(&e));
+    let excited;
+    let (unbalanced, what) = if model.unbalances.is_empty() {
+        let node = mid_span_node(rotor);
+        excited = with_unbalance_at(rotor, node, 1e-3).map_err(|e| err(&e))?;
+        (
+            &excited,
+            format!(
+                "1e-3 kg·m at node {} (the model has no unbalance planes)",
+                node + 1
+            ),
+        )
+    } else {
+        (rotor, "the model's unbalance planes".to_string())
+    };
+    let unbalance = unbalance_study(
+        unbalanced,
+        &UnbalanceRequest {
+            min: 0.0,
+            max: None,
+            points: DEFAULT_POINTS,
+            operating: Some(operating),
+        },
+    )
+    .map_err(|e| err(&e));
+    let points = operating_point(rotor, speed).map_err(|e| err(&e));
     let options = ModalOptions {
         modes: 8,
         ..ModalOptions::default()
     };
-    let modes = modes_at(rotor, speed, &options).map_err(|e| err(&e))?;
-    let shapes = figure(&dir, "shapes.png", |p| {
-        mode_shapes_png(
-            p,
-            &format!("Mode shapes of {name} at {rpm} rpm (red forward, blue backward whirl)"),
-            &rotor.model,
-            &modes,
+    let modes = modal_analysis_at(rotor, speed, &options).map_err(|e| err(&e));
+    let stability = stability_study(
+        rotor,
+        &StabilityRequest {
+            sites: req.sites.clone(),
+            stages: req.stages,
+            ..StabilityRequest::at(speed)
+        },
+    )
+    .map_err(|e| err(&e));
+    let (top, _) = default_top_speed(model, Some(&operating));
+    let ucs = stiffness_grid(
+        DEFAULT_STIFFNESS_RANGE.0,
+        DEFAULT_STIFFNESS_RANGE.1,
+        UCS_POINTS,
+    )
+    .map_err(|e| err(&e))
+    .and_then(|k| {
+        critical_speed_map(
+            rotor,
+            &k,
+            DEFAULT_CRITICALS,
+            &bearing_speeds(top, DEFAULT_BEARING_SPEEDS),
         )
-    })?;
+        .map_err(|e| err(&e))
+    });
+
+    let summary = review::summary(&SummaryInputs {
+        campbell: campbell.as_ref().map_err(Clone::clone),
+        unbalance: unbalance.as_ref().map_err(Clone::clone),
+        stability: stability.as_ref().map_err(Clone::clone),
+        operating: points.as_deref().map_err(Clone::clone),
+        amplitude,
+    });
+    let overall = review::overall(&summary);
+    let file_arg = req
+        .source
+        .as_ref()
+        .map_or(String::new(), |p| format!(" {}", p.display()));
+    let same =
+        |cmd: &str| format!("As `rotor {cmd}{file_arg} --operating-rpm {rpm}:{rpm}` prints it.");
+    let mut sections = vec![section(
+        "summary",
+        "Summary",
+        vec![
+            Block::Text(format!(
+                "Overall: {} — {} at {} rpm.",
+                match overall {
+                    Verdict::Pass => "every check passes",
+                    Verdict::Fail => "at least one check FAILS",
+                    Verdict::NotJudged => "no check fails; some are not judged",
+                },
+                name,
+                short(rpm)
+            )),
+            Block::Table(summary),
+        ],
+    )];
+
+    let mut blocks = review::model_blocks(rotor);
+    blocks.push(figure_block(
+        figure(&dir, "rotor.png", |p| {
+            rotor_png(p, &format!("Rotor {name}"), model)
+        }),
+        "rotor drawing",
+    ));
+    sections.push(section("model", "Model", blocks));
+
+    let blocks = match &campbell {
+        Ok(study) => {
+            let mut b = vec![Block::Text(same("campbell"))];
+            b.push(figure_block(
+                figure(&dir, "campbell.png", |p| {
+                    campbell_png(p, &format!("Campbell diagram: {name}"), study)
+                }),
+                "Campbell diagram",
+            ));
+            b.extend(review::campbell_blocks(rotor, study));
+            b
+        }
+        Err(e) => vec![Block::Failure(format!("Campbell diagram: {e}"))],
+    };
     sections.push(section(
-        "modes",
-        "Modes and mode shapes",
-        text::modes(&name, rpm, &modes),
-        vec![(shapes, "mode shapes".into())],
+        "campbell",
+        "Campbell diagram and critical speeds",
+        blocks,
     ));
 
-    let q_max = default_cross_coupling_max(rotor, speed).map_err(|e| err(&e))?;
-    let check = stability(rotor, speed, q_max, 21, 8).map_err(|e| err(&e))?;
-    let curve = figure(&dir, "stability.png", |p| {
-        stability_png(
-            p,
-            &format!(
-                "Stability of {name} at {rpm} rpm: cross-coupling at node {}",
-                check.node + 1
-            ),
-            &check,
-        )
-    })?;
+    let blocks = match &unbalance {
+        Ok(study) => {
+            let mut b = vec![Block::Text(format!(
+                "Response to {what}. {}",
+                same("unbalance")
+            ))];
+            b.push(figure_block(
+                figure(&dir, "unbalance.png", |p| {
+                    unbalance_png(
+                        p,
+                        &format!("Unbalance response: {name} ({what})"),
+                        study,
+                        amplitude,
+                    )
+                }),
+                "Bode and polar plots",
+            ));
+            b.extend(review::unbalance_blocks(study, amplitude));
+            b
+        }
+        Err(e) => vec![Block::Failure(format!("unbalance response: {e}"))],
+    };
+    sections.push(section("unbalance", "Unbalance response", blocks));
+
+    let mut blocks = match &points {
+        Ok(p) => review::operating_blocks(p),
+        Err(e) => vec![Block::Failure(format!("operating point: {e}"))],
+    };
+    if !model.pedestals.is_empty() {
+        blocks.push(match pedestal_operating_points(rotor, speed) {
+            Ok(p) => Block::Text(rotor_bearing::report::text::pedestals(rpm, &p)),
+            Err(e) => Block::Failure(format!("pedestals: {e}")),
+        });
+    }
     sections.push(section(
-        "stability",
-        "Stability",
-        text::stability(&check, q_max),
-        vec![(
-            curve,
-            "log decrement against cross-coupled stiffness".into(),
-        )],
+        "operating-point",
+        &format!("Bearings at {} rpm", short(rpm)),
+        blocks,
     ));
 
-    let stiffness = stiffness_grid(1e5, 1e10, 31).map_err(|e| err(&e))?;
-    let bearing_speeds: Vec<f64> = (1..=20).map(|k| 2.0 * speed * k as f64 / 20.0).collect();
-    let map = critical_speed_map(rotor, &stiffness, 4, &bearing_speeds).map_err(|e| err(&e))?;
-    let ucs = figure(&dir, "ucs.png", |p| {
-        ucs_png(p, &format!("Undamped critical speed map: {name}"), &map)
-    })?;
-    sections.push(section(
-        "ucs",
-        "Undamped critical speed map",
-        text::critical_speed_map(&name, &map, 3),
-        vec![(ucs, "critical speed map".into())],
-    ));
+    let blocks = match &modes {
+        Ok(m) => {
+            let mut b = review::modes_blocks(m);
+            b.push(figure_block(
+                figure(&dir, "shapes.png", |p| {
+                    mode_shapes_png(
+                        p,
+                        &format!(
+                            "Mode shapes of {name} at {} rpm (red forward, blue backward whirl)",
+                            short(rpm)
+                        ),
+                        model,
+                        &m.modes,
+                    )
+                }),
+                "mode shapes",
+            ));
+            b
+        }
+        Err(e) => vec![Block::Failure(format!("modes: {e}"))],
+    };
+    sections.push(section("modes", "Modes and mode shapes", blocks));
+
+    let blocks = match &stability {
+        Ok(s) => {
+            let labels: Vec<String> = s.sites.iter().map(|&n| site_label(rotor, n)).collect();
+            let mut b = review::stability_blocks(s, &labels);
+            b.push(figure_block(
+                figure(&dir, "stability.png", |p| {
+                    stability_png(
+                        p,
+                        &format!(
+                            "Stability of {name} at {} rpm: cross-coupling at {}",
+                            short(rpm),
+                            labels.join(", ")
+                        ),
+                        s,
+                    )
+                }),
+                "log decrement against cross-coupled stiffness",
+            ));
+            b
+        }
+        Err(e) => vec![Block::Failure(format!("stability: {e}"))],
+    };
+    sections.push(section("stability", "Stability", blocks));
+
+    let blocks = match &ucs {
+        Ok(map) => {
+            let mut b = vec![figure_block(
+                figure(&dir, "ucs.png", |p| {
+                    ucs_png(p, &format!("Undamped critical speed map: {name}"), map)
+                }),
+                "critical speed map",
+            )];
+            b.extend(review::ucs_blocks(map));
+            b
+        }
+        Err(e) => vec![Block::Failure(format!("critical speed map: {e}"))],
+    };
+    sections.push(section("ucs", "Undamped critical speed map", blocks));
 
     std::fs::remove_dir_all(&dir).ok();
     write_file(
-        &out,
+        &req.out,
         &page(
-            &format!("Rotordynamic report: {name} at {rpm} rpm"),
+            &format!("Rotordynamic design review: {name} at {} rpm", short(rpm)),
+            &stamp,
             &sections,
         ),
     )

@@ -3,16 +3,22 @@
 use std::path::{Path, PathBuf};
 
 use rotor_bearing::analysis::spectrum::{
-    MIN_REVOLUTIONS, band_limit, frequency_grid, full_spectrum, waterfall,
+    MIN_REVOLUTIONS, about_moving_centre, band_limit, frequency_grid, full_spectrum, waterfall,
 };
+use rotor_bearing::model::RotorModel;
 use rotor_bearing::model::speed_table;
-use rotor_bearing::plot::{RAD_S_TO_RPM, orbits_png, spectrum_png, waterfall_png};
+use rotor_bearing::plot::{
+    OrbitPanel, RAD_S_TO_RPM, WaterfallTrace, orbits_png, spectrum_png, waterfall_png,
+};
+use rotor_bearing::report::text::{self, short};
 use rotor_bearing::report::{csv as report_csv, series};
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::reduction_check::{
     Excursion, ValidityWatch, error_estimate, excursion_report,
 };
-use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record};
+use rotor_bearing::solver::time_step::{MAX_DEFAULT_TIME_STEP, STEPS_PER_REVOLUTION};
+use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record_into};
+use rotor_bearing::units::Amplitude;
 
 use crate::write_file;
 
@@ -59,6 +65,82 @@ pub fn speed_profile(
     }
 }
 
+/// Refuse, before the run, a speed profile that reaches past the model's
+/// `max_speed_rpm`, in rpm (the simulator would stop there mid-run).
+pub fn check_speeds(model: &RotorModel, profile: &SpeedProfile) -> Result<(), String> {
+    let peak = profile.top_speed();
+    if peak > model.max_speed {
+        let stated = if model.max_speed_stated {
+            format!(
+                "{}: max_speed_rpm = {}",
+                model.source,
+                short(model.max_speed * RAD_S_TO_RPM)
+            )
+        } else {
+            format!(
+                "the default max_speed_rpm {} (give max_speed_rpm in {})",
+                short(model.max_speed * RAD_S_TO_RPM),
+                model.source
+            )
+        };
+        return Err(format!(
+            "the speed profile reaches {} rpm, above {stated}: nothing was run",
+            short(peak * RAD_S_TO_RPM)
+        ));
+    }
+    Ok(())
+}
+
+/// Where the default time step `h` of a run reaching `peak` (rad/s) came from.
+pub fn describe_default_step(model: &RotorModel, peak: f64, h: f64) -> String {
+    let top = model.transient_top_speed().unwrap_or(0.0).max(peak);
+    if h < MAX_DEFAULT_TIME_STEP {
+        format!(
+            "time step {} s ({} steps per revolution at {} rpm; --step to choose)",
+            short(h),
+            STEPS_PER_REVOLUTION,
+            short(top * RAD_S_TO_RPM)
+        )
+    } else {
+        format!(
+            "time step {} s (at most 1 ms; {} rpm needs no finer; --step to choose)",
+            short(h),
+            short(top * RAD_S_TO_RPM)
+        )
+    }
+}
+
+/// The motion's excursions from the reduced rotor's validated range in a run:
+/// how many records were outside, and the highest (time, speed, excursion).
+#[derive(Default)]
+struct Excursions {
+    count: usize,
+    highest: Option<(f64, f64, Excursion)>,
+}
+
+impl Excursions {
+    fn note(&mut self, t: f64, speed: f64, e: Excursion) {
+        if self
+            .highest
+            .is_none_or(|(_, _, x)| e.frequency() > x.frequency())
+        {
+            self.highest = Some((t, speed, e));
+        }
+        self.count += 1;
+    }
+
+    /// The warning for the highest excursion when there were several (the
+    /// first was reported as it happened).
+    fn warn(&self, name: &str, full: Option<&Rotor>, rotor: &Rotor) {
+        if let (Some(full), count @ 2.., Some((t, speed, e))) = (full, self.count, self.highest) {
+            let report = excursion_report(full, rotor, speed, e);
+            eprintln!(
+                "warning: {name}: the motion left the validated range {count} times; the highest, at t = {t:.4} s: {report}"
+            );
+        }
+    }
+}
+
 /// What `rotor simulate` records and writes.
 pub struct Run {
     pub profile: SpeedProfile,
@@ -67,6 +149,7 @@ pub struct Run {
     pub settle: bool,
     pub csv: Option<PathBuf>,
     pub plots: Option<String>,
+    pub amplitude: Amplitude,
 }
 
 /// The run of `rotor` (reduced from `full` when that is given): the reduced
@@ -85,6 +168,7 @@ pub fn simulate(
         settle,
         csv,
         plots,
+        amplitude,
     } = run;
     let profile = &profile;
     let model = rotor.model.clone();
@@ -118,37 +202,69 @@ pub fn simulate(
     let mut shown = 0;
     let terminal = std::io::IsTerminal::is_terminal(&std::io::stderr());
     // The first excursion of the motion is reported as it happens, the
-    // highest at the end: (count, time, speed, excursion).
-    let mut excursions: (usize, f64, f64, Option<Excursion>) = (0, 0.0, 0.0, None);
-    let result = record(&mut sim, profile, duration, output_step, |f, sim| {
-        let speed = sim.speed_at(sim.time());
-        // The speed was judged before the run: here the motion's frequency.
-        let motion = watch.check(speed, sim.state());
-        if let (Some(e @ Excursion::Motion(_)), Some(full)) = (motion, &full) {
-            let t = sim.time();
-            if excursions.0 == 0 {
-                let report = excursion_report(full, sim.rotor(), speed, e);
-                eprintln!("warning: {}: at t = {t:.4} s {report}", model.name);
+    // highest at the end, also of a failed run.
+    let mut excursions = Excursions::default();
+    let mut records = Vec::new();
+    let outcome = record_into(
+        &mut sim,
+        profile,
+        duration,
+        output_step,
+        &mut records,
+        |f, sim| {
+            let speed = sim.speed_at(sim.time());
+            // The speed was judged before the run: here the motion's frequency.
+            let motion = watch.check(speed, sim.state());
+            if let (Some(e @ Excursion::Motion(_)), Some(full)) = (motion, &full) {
+                let t = sim.time();
+                if excursions.count == 0 {
+                    let report = excursion_report(full, sim.rotor(), speed, e);
+                    eprintln!("warning: {}: at t = {t:.4} s {report}", model.name);
+                }
+                excursions.note(t, speed, e);
             }
-            if excursions.3.is_none_or(|x| e.frequency() > x.frequency()) {
-                (excursions.1, excursions.2, excursions.3) = (t, speed, Some(e));
+            let pct = (f * 100.0) as usize;
+            if terminal && pct >= shown + 5 {
+                shown = pct - pct % 5;
+                eprint!("\rsimulating {}: {shown:3}%", model.name);
             }
-            excursions.0 += 1;
-        }
-        let pct = (f * 100.0) as usize;
-        if terminal && pct >= shown + 5 {
-            shown = pct - pct % 5;
-            eprint!("\rsimulating {}: {shown:3}%", model.name);
-        }
-    });
+        },
+    );
     for w in sim.take_warnings() {
         eprintln!("warning: {}: {w}", model.source);
     }
     // Contact beyond its law's limits is reported whether or not the run ended.
-    for w in sim.take_contact_warnings() {
+    let contact = sim.take_contact_warnings();
+    for w in &contact {
         eprintln!("{}warning: {}", if terminal { "\r" } else { "" }, w.message);
     }
-    let records = result.map_err(|e| format!("{}: {e}", model.name))?;
+    if let Err(e) = outcome {
+        // End the progress line unless a warning already did.
+        if terminal && contact.is_empty() {
+            eprintln!();
+        }
+        excursions.warn(&model.name, full.as_ref(), sim.rotor());
+        // Keep what was computed: the rows up to the last converged output.
+        let reached = records.last().map_or(0.0, |o| o.time);
+        let kept = match &csv {
+            Some(path) if !records.is_empty() => {
+                write_file(path, &report_csv::simulation(&model, &records))?;
+                format!(
+                    "; the {} rows up to t = {} s are in {}",
+                    records.len(),
+                    short(reached),
+                    path.display()
+                )
+            }
+            _ => String::new(),
+        };
+        return Err(format!(
+            "{}: {e} (failed after t = {} s of {} s{kept})",
+            model.name,
+            short(reached),
+            short(duration)
+        ));
+    }
     eprintln!(
         "{}simulated {} s of {} in {:.4} s wall-clock ({:?})",
         if terminal { "\r" } else { "" },
@@ -157,17 +273,10 @@ pub fn simulate(
         started.elapsed().as_secs_f64(),
         sim.stats()
     );
-    if let (Some(full), (count @ 2.., t, speed, Some(e))) = (&full, excursions) {
-        let report = excursion_report(full, sim.rotor(), speed, e);
-        eprintln!(
-            "warning: {}: the motion left the validated range {count} times; the highest, at t = {t:.4} s: {report}",
-            model.name
-        );
-    }
-    let out = report_csv::simulation(&model, &records);
-    match csv {
-        Some(path) => write_file(&path, &out)?,
-        None if plots.is_none() => print!("{out}"),
+    excursions.warn(&model.name, full.as_ref(), sim.rotor());
+    match &csv {
+        Some(path) => write_file(path, &report_csv::simulation(&model, &records))?,
+        None if plots.is_none() => print!("{}", text::run_summary(&model, &records)),
         None => {}
     }
     if let Some(prefix) = plots {
@@ -175,22 +284,49 @@ pub fn simulate(
         let tail = &records[records.len() / 2..];
         let t: Vec<f64> = tail.iter().map(|o| o.time).collect();
         let orbits = series::orbits(&model, tail);
+        let mean_speed = tail.iter().map(|o| o.speed).sum::<f64>() / tail.len() as f64;
+        let panels: Vec<OrbitPanel> = orbits
+            .iter()
+            .enumerate()
+            .map(|(k, (name, x, y))| OrbitPanel {
+                name: name.clone(),
+                x: x.clone(),
+                y: y.clone(),
+                clearance: model
+                    .bearings
+                    .get(k)
+                    .filter(|b| !b.kind.is_rub())
+                    .and_then(|b| b.kind.journal_clearance()),
+            })
+            .collect();
+        let spin: Vec<f64> = tail.iter().map(|o| o.spin_angle).collect();
         let path = PathBuf::from(format!("{prefix}_orbits.png"));
         orbits_png(
             &path,
             &format!("Orbits: {} (last half of the run)", model.name),
-            &orbits,
-            None,
+            &panels,
+            &spin,
+            mean_speed,
         )
         .map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
-        let mean_speed = tail.iter().map(|o| o.speed).sum::<f64>() / tail.len() as f64;
         let f_spin = mean_speed / (2.0 * std::f64::consts::PI);
-        let f_max = band_limit(2.5 * f_spin, output_step);
+        let f_max = band_limit(2.5 * f_spin.abs(), output_step);
         let freqs = frequency_grid(-f_max, f_max, 1601);
+        // About the orbit's moving centre: the rest position's drift is no line at 0 Hz.
         let spectra: Vec<(String, Vec<f64>)> = orbits
             .iter()
-            .map(|(name, x, y)| (name.clone(), full_spectrum(&t, x, y, &freqs)))
+            .map(|(name, x, y)| {
+                (
+                    name.clone(),
+                    full_spectrum(
+                        &t,
+                        &about_moving_centre(x, &spin),
+                        &about_moving_centre(y, &spin),
+                        &freqs,
+                    ),
+                )
+            })
             .collect();
         let path = PathBuf::from(format!("{prefix}_spectrum.png"));
         let markers = vec![
@@ -200,10 +336,14 @@ pub fn simulate(
         ];
         spectrum_png(
             &path,
-            &format!("Full spectrum: {}", model.name),
+            &format!(
+                "Full spectrum: {} (last half of the run, about the orbit's moving centre)",
+                model.name
+            ),
             &freqs,
             &spectra,
             &markers,
+            amplitude,
         )
         .map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
@@ -212,14 +352,17 @@ pub fn simulate(
         let speed: Vec<f64> = records.iter().map(|o| o.speed).collect();
         let (x, y): (Vec<f64>, Vec<f64>) = records.iter().map(series::watched_point).unzip();
         let watched = series::watched_point_name(&model);
-        println!("spectra of {watched}, windows of {MIN_REVOLUTIONS} revolutions (Hann):");
-        println!(
-            "window    start_s      end_s  revolutions  speed_rpm  dominant_Hz   ratio  amplitude_um  subsync_share"
-        );
+        let mut out =
+            format!("spectra of {watched}, windows of {MIN_REVOLUTIONS} revolutions (Hann):\n");
+        out.push_str(&format!(
+            "window    start_s      end_s  revolutions  speed_rpm  dominant_Hz   ratio  amplitude_um_{}  subsync_share\n",
+            amplitude.label()
+        ));
         let wf = match waterfall(&t, &x, &y, &speed, output_step) {
             Ok(wf) => wf,
             Err(short) => {
-                println!("     -  {short}: no frequency ratio");
+                out.push_str(&format!("     -  {short}: no frequency ratio\n"));
+                print!("{out}");
                 eprintln!(
                     "warning: {short} in the whole run: no frequency ratio and no waterfall (run longer or faster)"
                 );
@@ -228,37 +371,43 @@ pub fn simulate(
         };
         for (w, row) in wf.rows.iter().enumerate() {
             let s = &row.window;
-            print!(
+            out.push_str(&format!(
                 "{w:6} {:10.6} {:10.6} {:12.1} {:10.1}",
                 s.start,
                 s.end,
                 s.revolutions,
                 s.speed * RAD_S_TO_RPM
-            );
+            ));
             match (s.peak, s.order()) {
-                (Some(p), Some(ratio)) => println!(
-                    " {:12.3} {ratio:7.3} {:13.4} {:14.6}",
+                (Some(p), Some(ratio)) => out.push_str(&format!(
+                    " {:12.3} {ratio:7.3} {:17.4} {:14.6}\n",
                     p.frequency,
-                    p.amplitude * 1e6,
+                    p.amplitude * 1e6 * amplitude.factor(),
                     s.subsynchronous_share
-                ),
-                _ => println!("  no motion: no dominant frequency"),
+                )),
+                _ => out.push_str("  no motion: no dominant frequency\n"),
             }
         }
-        let rows: Vec<(f64, Vec<f64>)> = wf
+        let traces: Vec<WaterfallTrace> = wf
             .rows
             .into_iter()
-            .map(|r| (r.speed * RAD_S_TO_RPM, r.amplitudes))
+            .map(|r| WaterfallTrace {
+                time: 0.5 * (r.window.start + r.window.end),
+                rpm: r.speed * RAD_S_TO_RPM,
+                amplitudes: r.amplitudes,
+            })
             .collect();
         let path = PathBuf::from(format!("{prefix}_waterfall.png"));
         waterfall_png(
             &path,
             &format!("Waterfall: {}, {watched}", model.name),
             &wf.freqs,
-            &rows,
+            &traces,
+            amplitude,
         )
         .map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
+        print!("{out}");
     }
     Ok(())
 }

@@ -1,9 +1,12 @@
-//! `rotor stability`: log decrements at a speed and the threshold of added
-//! cross-coupled stiffness at mid-span (API 684 Level I style).
+//! `rotor stability`: log decrements at a speed, the threshold of added
+//! cross-coupled stiffness at the disks (or named nodes), and the API 617 /
+//! API 684 Level I screening against Wachel's anticipated cross-coupling.
 
 use std::path::PathBuf;
 
-use rotor_bearing::analysis::stability::{default_cross_coupling_max, stability};
+use rotor_bearing::analysis::stability::{
+    StabilityRequest, StageData, site_label, stability_study,
+};
 use rotor_bearing::plot::{RAD_S_TO_RPM, stability_png};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
@@ -16,8 +19,68 @@ pub struct Request {
     pub q_max: Option<f64>,
     pub points: usize,
     pub modes: usize,
+    pub at: Option<String>,
+    pub stages: Option<StageData>,
     pub csv: Option<PathBuf>,
     pub png: Option<PathBuf>,
+}
+
+/// `--at 6,9` or `--at impeller,runner`: node numbers (from 1) or disk names,
+/// as 0-based nodes.
+pub fn sites(rotor: &Rotor, at: Option<&str>) -> Result<Vec<usize>, String> {
+    let Some(text) = at else {
+        return Ok(Vec::new());
+    };
+    text.split(',')
+        .map(|item| {
+            let item = item.trim();
+            if let Ok(n) = item.parse::<usize>() {
+                if n == 0 || n > rotor.model.node_count() {
+                    return Err(format!(
+                        "--at {item}: nodes count from 1 to {}",
+                        rotor.model.node_count()
+                    ));
+                }
+                return Ok(n - 1);
+            }
+            rotor
+                .model
+                .disks
+                .iter()
+                .find(|d| d.name == item)
+                .map(|d| d.node)
+                .ok_or_else(|| {
+                    let names: Vec<&str> =
+                        rotor.model.disks.iter().map(|d| d.name.as_str()).collect();
+                    format!("--at {item:?}: not a node number or a disk name (disks: {names:?})")
+                })
+        })
+        .collect()
+}
+
+/// The stage data of `--power`, `--impeller-diameter`, `--flow-width`
+/// (all three, or none), `--density-ratio` and `--stage-factor`.
+pub fn stages(
+    power: Option<f64>,
+    diameter: Option<f64>,
+    width: Option<f64>,
+    density_ratio: f64,
+    stage_factor: f64,
+) -> Result<Option<StageData>, String> {
+    match (power, diameter, width) {
+        (None, None, None) => Ok(None),
+        (Some(power), Some(diameter), Some(width)) => Ok(Some(StageData {
+            power,
+            diameter,
+            width,
+            density_ratio,
+            stage_factor,
+        })),
+        _ => Err(
+            "the anticipated cross-coupling needs --power, --impeller-diameter and --flow-width together"
+                .into(),
+        ),
+    }
 }
 
 pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
@@ -27,27 +90,32 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             req.rpm
         ));
     }
-    let speed = req.rpm / RAD_S_TO_RPM;
-    crate::warn_table_speeds(&rotor.model, &[speed]);
-    let q_max = match req.q_max {
-        Some(q) => q,
-        None => default_cross_coupling_max(rotor, speed).map_err(|e| e.to_string())?,
+    let request = StabilityRequest {
+        sites: sites(rotor, req.at.as_deref())?,
+        q_max: req.q_max,
+        points: req.points,
+        modes: req.modes,
+        stages: req.stages,
+        ..StabilityRequest::at(req.rpm / RAD_S_TO_RPM)
     };
-    let result = stability(rotor, speed, q_max, req.points, req.modes)
+    crate::warn_table_speeds(&rotor.model, &[req.rpm / RAD_S_TO_RPM]);
+    let result = stability_study(rotor, &request)
         .map_err(|e| format!("{} at {} rpm: {e}", rotor.model.name, req.rpm))?;
-    print!("{}", text::stability(&result, q_max));
+    let labels: Vec<String> = result.sites.iter().map(|&n| site_label(rotor, n)).collect();
+    let out = text::stability(&result, &labels);
     if let Some(path) = req.csv {
         write_file(&path, &report_csv::stability(&result))?;
     }
     if let Some(path) = req.png {
         let title = format!(
-            "Stability of {} at {} rpm: cross-coupling at node {}",
+            "Stability of {} at {} rpm: cross-coupling at {}",
             rotor.model.name,
             req.rpm,
-            result.node + 1
+            labels.join(", ")
         );
         stability_png(&path, &title, &result).map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
     }
+    print!("{out}");
     Ok(())
 }

@@ -37,15 +37,21 @@ pub fn deflection(rotor: &Rotor, rpm: f64, csv: Option<PathBuf>) -> Result<(), S
     let q = static_state(rotor, rpm)?;
     let out = report_csv::static_deflection(&rotor.model.node_z, &q);
     let (peak_node, peak) = series::largest_deflection(&q, rotor.model.node_count());
-    println!(
+    let line = format!(
         "static deflection of {}: largest {:.4e} m at node {}",
         rotor.model.name,
         peak,
         peak_node + 1
     );
     match csv {
-        Some(path) => write_file(&path, &out)?,
-        None => print!("{out}"),
+        Some(path) => {
+            write_file(&path, &out)?;
+            println!("{line}");
+        }
+        None => println!(
+            "{line}\n(--csv FILE writes the displacements of all {} nodes)",
+            rotor.model.node_count()
+        ),
     }
     Ok(())
 }

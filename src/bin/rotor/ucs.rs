@@ -3,8 +3,11 @@
 
 use std::path::PathBuf;
 
-use rotor_bearing::analysis::ucs::{critical_speed_map, stiffness_grid};
+use rotor_bearing::analysis::speed_range::default_top_speed;
+use rotor_bearing::analysis::ucs::{bearing_speeds, critical_speed_map, stiffness_grid};
+use rotor_bearing::analysis::unbalance::model_operating_range;
 use rotor_bearing::plot::{RAD_S_TO_RPM, ucs_png};
+use rotor_bearing::report::text::short;
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
 
@@ -16,7 +19,8 @@ pub struct Request {
     pub max_stiffness: f64,
     pub points: usize,
     pub criticals: usize,
-    pub max_rpm: f64,
+    /// `None` for the model's default top speed.
+    pub max_rpm: Option<f64>,
     pub speeds: usize,
     pub csv: Option<PathBuf>,
     pub bearings_csv: Option<PathBuf>,
@@ -27,25 +31,32 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     if req.criticals == 0 {
         return Err("--modes must be at least 1".into());
     }
-    if !(req.max_rpm.is_finite() && req.max_rpm > 0.0) || req.speeds == 0 {
+    let (top, origin) = match req.max_rpm {
+        Some(rpm) => (rpm / RAD_S_TO_RPM, "--max-rpm".to_string()),
+        None => {
+            let (t, o) = default_top_speed(&rotor.model, model_operating_range(rotor).as_ref());
+            (t, o.to_string())
+        }
+    };
+    if !(top.is_finite() && top > 0.0) || req.speeds == 0 {
         return Err(format!(
             "--max-rpm must be positive (got {}) and --speeds at least 1 (got {})",
-            req.max_rpm, req.speeds
+            top * RAD_S_TO_RPM,
+            req.speeds
         ));
     }
     let stiffness = stiffness_grid(req.min_stiffness, req.max_stiffness, req.points)
         .map_err(|e| e.to_string())?;
-    // The bearings' stiffness from max_rpm/speeds up to max_rpm (no film at standstill).
-    let speeds: Vec<f64> = (1..=req.speeds)
-        .map(|k| req.max_rpm / RAD_S_TO_RPM * k as f64 / req.speeds as f64)
-        .collect();
+    let speeds = bearing_speeds(top, req.speeds);
     crate::warn_table_speeds(&rotor.model, &speeds);
     let map = critical_speed_map(rotor, &stiffness, req.criticals, &speeds)
         .map_err(|e| format!("{}: {e}", rotor.model.name))?;
-    print!(
-        "{}",
-        text::critical_speed_map(&rotor.model.name, &map, req.points / 10)
-    );
+    let mut out = text::critical_speed_map(&rotor.model.name, &map, req.points / 10);
+    out.push_str(&format!(
+        "bearings' kxx, kyy at {} speeds up to {} rpm (top speed: {origin})\n",
+        req.speeds,
+        short(top * RAD_S_TO_RPM)
+    ));
     if let Some(path) = req.csv {
         write_file(&path, &report_csv::critical_speed_map(&map))?;
     }
@@ -57,5 +68,6 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         ucs_png(&path, &title, &map).map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
     }
+    print!("{out}");
     Ok(())
 }

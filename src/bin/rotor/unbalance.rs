@@ -4,23 +4,26 @@
 use std::path::PathBuf;
 
 use rotor_bearing::analysis::unbalance::{
-    OperatingRange, peaks, response_points, separation_margin, speed_grid, sweep, with_unbalance_at,
+    OperatingRange, UnbalanceRequest, model_operating_range, unbalance_study, with_unbalance_at,
 };
 use rotor_bearing::plot::{RAD_S_TO_RPM, unbalance_png};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::units::Amplitude;
 
 use crate::write_file;
 
 /// What `rotor unbalance` was asked for.
 pub struct Request {
     pub min_rpm: f64,
-    pub max_rpm: f64,
+    /// `None` for the model's default top speed.
+    pub max_rpm: Option<f64>,
     pub points: usize,
     /// 1-based node of a single unbalance, instead of the model's planes.
     pub node: Option<usize>,
     pub unbalance: f64,
     pub operating_rpm: Option<String>,
+    pub amplitude: Amplitude,
     pub csv: Option<PathBuf>,
     pub png: Option<PathBuf>,
 }
@@ -43,12 +46,9 @@ pub fn operating_range(text: &str) -> Result<OperatingRange, String> {
 }
 
 pub fn unbalance(rotor: &Rotor, req: Request) -> Result<(), String> {
-    let range = match &req.operating_rpm {
+    let operating = match &req.operating_rpm {
         Some(t) => Some(operating_range(t)?),
-        None => (rotor.model.nominal_speed > 0.0).then_some(OperatingRange {
-            min: rotor.model.nominal_speed,
-            max: rotor.model.nominal_speed,
-        }),
+        None => model_operating_range(rotor),
     };
     let excited;
     let rotor = match req.node {
@@ -65,61 +65,28 @@ pub fn unbalance(rotor: &Rotor, req: Request) -> Result<(), String> {
         }
         None => rotor,
     };
-    let mut speeds = speed_grid(
-        req.min_rpm / RAD_S_TO_RPM,
-        req.max_rpm / RAD_S_TO_RPM,
-        req.points,
-    )
-    .map_err(|e| e.to_string())?;
-    // A fluid film at standstill carries no load: start the grid one step up.
-    if !rotor.nonlinear_bearings.is_empty() && speeds[0] == 0.0 {
-        speeds.remove(0);
-    }
-    crate::warn_table_speeds(&rotor.model, &speeds);
-    let points = response_points(rotor);
-    let result = sweep(rotor, &speeds, &points).map_err(|e| e.to_string())?;
-    let mut rows = Vec::new();
-    for p in 0..points.len() {
-        for peak in peaks(rotor, &result, p).map_err(|e| e.to_string())? {
-            let margin = match (peak.amplification_factor, &range) {
-                (Some(af), Some(r)) => Some(separation_margin(peak.speed, af, r)),
-                _ => None,
-            };
-            rows.push((peak, margin));
-        }
-    }
+    let request = UnbalanceRequest {
+        min: req.min_rpm / RAD_S_TO_RPM,
+        max: req.max_rpm.map(|r| r / RAD_S_TO_RPM),
+        points: req.points,
+        operating,
+    };
+    let study = unbalance_study(rotor, &request).map_err(|e| e.to_string())?;
+    crate::warn_table_speeds(&rotor.model, &study.sweep.speeds);
     let what = match req.node {
         Some(n) => format!("{} kg·m at node {n}", req.unbalance),
         None => "the model's unbalance planes".to_string(),
     };
-    println!(
-        "unbalance response of {} to {what}, {} … {} rpm:",
-        rotor.model.name, req.min_rpm, req.max_rpm
-    );
-    match &range {
-        Some(r) => println!(
-            "operating range {:.1} … {:.1} rpm (API 684 separation margins)",
-            r.min * RAD_S_TO_RPM,
-            r.max * RAD_S_TO_RPM
-        ),
-        None => println!("no operating range (speed_rpm or --operating-rpm): margins not judged"),
-    }
-    print!("{}", text::peak_table(&result, &rows));
+    let out = text::unbalance_study(&rotor.model.name, &what, &study, req.amplitude);
     if let Some(path) = req.csv {
-        write_file(&path, &report_csv::unbalance(&result))?;
+        write_file(&path, &report_csv::unbalance(&study.sweep))?;
     }
     if let Some(path) = req.png {
         let title = format!("Unbalance response: {} ({what})", rotor.model.name);
-        let found: Vec<_> = rows.iter().map(|(p, _)| *p).collect();
-        unbalance_png(
-            &path,
-            &title,
-            &result,
-            &found,
-            range.map(|r| (r.min, r.max)),
-        )
-        .map_err(|e| e.to_string())?;
+        unbalance_png(&path, &title, &study, req.amplitude).map_err(|e| e.to_string())?;
         eprintln!("wrote {}", path.display());
     }
+    // Printed last: files are written even when stdout is a closed pipe.
+    print!("{out}");
     Ok(())
 }

@@ -38,8 +38,8 @@ use super::snapshot::fingerprint;
 use super::states::Call;
 pub use super::states::Phase;
 use super::variables::{
-    Binding, Causality, DEFAULT_MAX_ITERATIONS, DEFAULT_TIME_STEP, DEFAULT_TOLERANCE, Kind,
-    START_SPEED, Variability, Variable, variables,
+    Binding, Causality, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE, Kind, START_SPEED, Variability,
+    Variable, default_fmu_time_step, variables,
 };
 use super::xml::model_description;
 
@@ -105,7 +105,7 @@ impl Params {
     /// The start values of `model`'s parameters.
     pub(super) fn start(model: &RotorModel) -> Self {
         Self {
-            time_step: DEFAULT_TIME_STEP,
+            time_step: default_fmu_time_step(model),
             tolerance: DEFAULT_TOLERANCE,
             max_iterations: DEFAULT_MAX_ITERATIONS as i32,
             ramp_time: 0.0,

@@ -9,8 +9,8 @@ use super::Causality::*;
 use super::Kind::*;
 use super::Variability::*;
 use super::{
-    Binding, DEFAULT_MAX_ITERATIONS, DEFAULT_TIME_STEP, DEFAULT_TOLERANCE, OutputSpec, START_SPEED,
-    Table,
+    Binding, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE, OutputSpec, START_SPEED, Table,
+    default_fmu_time_step,
 };
 use crate::model::{DEFAULT_REDUCED_MODES, Drive};
 
@@ -24,7 +24,7 @@ pub(super) fn add(t: &mut Table) {
         Fixed,
         Some("s"),
         None,
-        Some(DEFAULT_TIME_STEP),
+        Some(default_fmu_time_step(t.model)),
         Binding::TimeStep,
     );
     t.push(

@@ -8,6 +8,7 @@
 
 use crate::model::{Drive, RotorModel};
 use crate::solver::SolverOptions;
+use crate::solver::time_step::default_time_step;
 
 mod drive;
 mod loads;
@@ -207,8 +208,14 @@ pub(super) type OutputSpec = (
     Binding,
 );
 
+/// Start value of `solver.time_step` (s) of an FMU of `model`: the rule the
+/// CLI's `simulate` follows ([`default_time_step`]: 60 steps per revolution
+/// at the model's top speed, at most 1 ms).
+pub fn default_fmu_time_step(model: &RotorModel) -> f64 {
+    default_time_step(model, None)
+}
+
 /// Defaults of the solver parameters.
-pub const DEFAULT_TIME_STEP: f64 = 1e-3;
 /// Start value of `shaft.speed` (rad/s): the machine at standstill, its
 /// journals resting on their bearings; a master sets another start value to
 /// begin at speed.

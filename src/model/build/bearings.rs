@@ -9,12 +9,91 @@ use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{BearingEntry, MagneticPullEntry, RubEntry, SealEntry};
 use crate::model::limits::{
-    CLEARANCE, CONTACT_STIFFNESS, DAMPING, LENGTH, RADIUS, STIFFNESS, VISCOSITY,
+    CLEARANCE, CONTACT_STIFFNESS, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, RADIUS, STIFFNESS,
+    VISCOSITY,
 };
-use crate::model::{ModelError, Pedestal, PlacedBearing, PlacedElement, TableFile};
+use crate::model::{
+    ModelError, Pedestal, PlacedBearing, PlacedElement, RADIUS_TOLERANCE, TableFile,
+};
 
 use super::pedestals::lookup;
 use super::tables::{TableInput, coefficient_table};
+
+/// The radial clearance (m) of a film bearing from `clearance` (radial) or
+/// `diametral_clearance` (bore diameter less journal diameter, twice the
+/// radial one): exactly one of them, within its range ([`CLEARANCE`],
+/// [`DIAMETRAL_CLEARANCE`]).
+fn radial_clearance(
+    ctx: &Ctx,
+    p: &FieldPath,
+    clearance: Option<f64>,
+    diametral: Option<f64>,
+) -> Result<f64, ModelError> {
+    match (clearance, diametral) {
+        (Some(c), None) => ctx.within(p.key("clearance"), c, &CLEARANCE),
+        (None, Some(d)) => {
+            let d = ctx.within(p.key("diametral_clearance"), d, &DIAMETRAL_CLEARANCE)?;
+            Ok(0.5 * d)
+        }
+        (Some(c), Some(_)) => Err(ctx.err(
+            p.key("diametral_clearance"),
+            "both",
+            &format!(
+                "give either clearance (radial, here {c} m) or diametral_clearance (twice it), not both"
+            ),
+        )),
+        (None, None) => Err(ctx.err(
+            p.key("clearance"),
+            "missing",
+            "give clearance (the radial clearance, m) or diametral_clearance (bore diameter less journal diameter, m)",
+        )),
+    }
+}
+
+/// The journal radius (m) checked against the shaft at `node`: within
+/// [`RADIUS_TOLERANCE`] of an element's outer radius there, or larger when the
+/// entry declares `journal_collar = true` (a collar or sleeve on the shaft).
+/// Larger without the declaration is an error that names it (and the
+/// millimetre slip it more often is); declared but not larger is an error too.
+fn journal_radius(
+    ctx: &Ctx,
+    p: &FieldPath,
+    radius: f64,
+    collar: Option<bool>,
+    node: usize,
+    elements: &[PlacedElement],
+) -> Result<f64, ModelError> {
+    let radius = ctx.within(p.key("radius"), radius, &RADIUS)?;
+    let shaft = elements
+        .iter()
+        .filter(|e| e.node == node || e.node + 1 == node)
+        .map(|e| 0.5 * e.element.section.outer_diameter)
+        .fold(0.0, f64::max);
+    if shaft == 0.0 {
+        return Ok(radius);
+    }
+    let larger = radius > shaft * (1.0 + RADIUS_TOLERANCE);
+    match (larger, collar.unwrap_or(false)) {
+        (true, false) => Err(ctx.err(
+            p.key("radius"),
+            radius,
+            &format!(
+                "is larger than the shaft's outer radius {shaft} m at node {}: a journal collar or sleeve \
+                 is declared with journal_collar = true; otherwise the radius is in metres (millimetres, or a diameter?)",
+                node + 1
+            ),
+        )),
+        (false, true) => Err(ctx.err(
+            p.key("journal_collar"),
+            "true",
+            &format!(
+                "the radius {radius} m is not larger than the shaft's outer radius {shaft} m at node {}: no collar",
+                node + 1
+            ),
+        )),
+        _ => Ok(radius),
+    }
+}
 
 /// Check each bearing: unique name, its node and the parameters of its `type`; film bearings
 /// need a clearance below a tenth of the radius, tilting pads 3–18
@@ -92,8 +171,10 @@ pub(super) fn bearings(
                 z,
                 pedestal,
                 radius,
+                journal_collar,
                 length,
                 clearance,
+                diametral_clearance,
                 viscosity,
                 contact_stiffness,
                 contact_damping,
@@ -101,9 +182,9 @@ pub(super) fn bearings(
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
                 let mut bearing = PlainBearing {
-                    radius: ctx.within(p.key("radius"), radius, &RADIUS)?,
+                    radius: journal_radius(ctx, &p, radius, journal_collar, node, elements)?,
                     length: ctx.within(p.key("length"), length, &LENGTH)?,
-                    clearance: ctx.within(p.key("clearance"), clearance, &CLEARANCE)?,
+                    clearance: radial_clearance(ctx, &p, clearance, diametral_clearance)?,
                     viscosity: ctx.within(p.key("viscosity"), viscosity, &VISCOSITY)?,
                     contact: None,
                 };
@@ -170,8 +251,10 @@ pub(super) fn bearings(
                 z,
                 pedestal,
                 radius,
+                journal_collar,
                 length,
                 clearance,
+                diametral_clearance,
                 viscosity,
                 pads,
                 first_pivot_deg,
@@ -184,8 +267,8 @@ pub(super) fn bearings(
                 friction_coefficient,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
-                let radius = ctx.within(p.key("radius"), radius, &RADIUS)?;
-                let clearance = ctx.within(p.key("clearance"), clearance, &CLEARANCE)?;
+                let radius = journal_radius(ctx, &p, radius, journal_collar, node, elements)?;
+                let clearance = radial_clearance(ctx, &p, clearance, diametral_clearance)?;
                 if clearance >= 0.1 * radius {
                     return Err(ctx.err(
                         p.key("clearance"),

@@ -1,16 +1,28 @@
-//! Plain-text summaries of a model for people: engineering units, no float
-//! noise, no debug structures.
+//! Plain-text summaries of a model and its results for people: engineering
+//! units, no float noise, no debug structures. The modal and Campbell tables
+//! are in [`modal`], the unbalance response in [`unbalance`].
 
 use std::fmt::Write;
 
-use crate::analysis::modal::Mode;
-use crate::analysis::operating_point::{BearingOperatingPoint, PedestalOperatingPoint};
-use crate::analysis::stability::Stability;
+use crate::analysis::operating_point::{
+    BearingOperatingPoint, PedestalOperatingPoint, ROUND_OFF_LOAD,
+};
+use crate::analysis::stability::{LEVEL_I_MIN_LOG_DEC, LEVEL_I_MIN_RATIO, Stability};
 use crate::analysis::ucs::CriticalSpeedMap;
-use crate::analysis::unbalance::{Peak, SeparationMargin, UnbalanceSweep};
 use crate::bearing::{BearingKind, CoefficientTable};
+use crate::model::RotorModel;
 use crate::rotor::Rotor;
+use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
+
+mod modal;
+mod unbalance;
+
+pub use modal::{
+    ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
+    overdamped_roots, overdamped_summary, zeta_and_log_dec,
+};
+pub use unbalance::{peak_cells, peak_table, unbalance_study};
 
 /// What `rotor info` prints: sizes, disks, bearings, unbalances, probes, gravity.
 pub fn model_summary(rotor: &Rotor) -> String {
@@ -30,6 +42,16 @@ pub fn model_summary(rotor: &Rotor) -> String {
         m.total_mass()
     )
     .ok();
+    // Node positions, eight to a line: where `node = N` in the file sits.
+    for (row, chunk) in m.node_z.chunks(8).enumerate() {
+        let cells: Vec<String> = chunk
+            .iter()
+            .enumerate()
+            .map(|(k, z)| format!("{}: {}", row * 8 + k + 1, short(*z)))
+            .collect();
+        let head = if row == 0 { "node z (m):" } else { "" };
+        writeln!(s, "  {head:<11} {}", cells.join(", ")).ok();
+    }
     for d in &m.disks {
         writeln!(
             s,
@@ -89,8 +111,8 @@ pub fn model_summary(rotor: &Rotor) -> String {
             "  pedestal {}: m = {} kg on {on}, K = {} N/m, C = {} N·s/m, carrying {}",
             p.name,
             short(p.mass),
-            matrix(&p.stiffness),
-            matrix(&p.damping),
+            coefficient_matrix(&p.stiffness),
+            coefficient_matrix(&p.damping),
             if carried.is_empty() {
                 "other pedestals".to_string()
             } else {
@@ -256,69 +278,27 @@ fn describe_table(table: &CoefficientTable, mass: [[f64; 2]; 2]) -> String {
     s
 }
 
-/// The table of unbalance response peaks `rotor unbalance` prints: point, peak
-/// speed (rpm), major semi-axis (µm), amplification factor, required and actual
-/// separation margins (%) and the verdict. An undamped resonance
-/// ([`Peak::is_undamped`]) shows amplitude "unbounded" and AF "∞" (its margin
-/// is the one required for any AF past the cap). A peak without both half-power
-/// speeds inside the sweep has no AF (and no margin); a row with an AF but no
-/// margin had no operating range to measure from.
-pub fn peak_table(sweep: &UnbalanceSweep, rows: &[(Peak, Option<SeparationMargin>)]) -> String {
-    let mut s = String::from(
-        "point                      speed (rpm)  amplitude (µm)        AF  required SM  actual SM  result\n",
-    );
-    for (peak, margin) in rows {
-        // An undamped resonance: infinite in theory, its numbers only the
-        // refinement's resolution.
-        let undamped = peak.is_undamped();
-        let af = match peak.amplification_factor {
-            _ if undamped => "∞".to_string(),
-            Some(a) => format!("{a:.2}"),
-            None => "—".to_string(),
-        };
-        let amplitude = if undamped {
-            "unbounded".to_string()
-        } else {
-            short(peak.amplitude * 1e6)
-        };
-        let (required, actual, verdict) = match margin {
-            Some(m) => (
-                m.required
-                    .map_or("none".to_string(), |r| format!("{:.1} %", 100.0 * r)),
-                format!("{:.1} %", 100.0 * m.actual),
-                if m.pass { "pass" } else { "FAIL" },
-            ),
-            None if peak.amplification_factor.is_none() => {
-                ("—".into(), "—".into(), "half-power speed outside the sweep")
-            }
-            None => ("—".into(), "—".into(), "no operating range"),
-        };
-        writeln!(
-            s,
-            "{:<26} {:>11.1} {:>15} {:>9} {:>12} {:>10}  {verdict}",
-            sweep.points[peak.point].label,
-            peak.speed * RAD_S_TO_RPM,
-            amplitude,
-            af,
-            required,
-            actual
-        )
-        .ok();
-    }
-    if rows.is_empty() {
-        s.push_str("(no peak inside the speed range)\n");
-    }
-    s
-}
+/// Fraction of a coefficient matrix's largest entry below which an entry is
+/// the equilibrium's round-off (it is solved to 1e-8): printed as 0.
+pub const ROUND_OFF_COEFFICIENT: f64 = 1e-7;
 
-/// A 2×2 matrix in one line: `[[a, b], [c, d]]`, six significant digits.
-fn matrix(m: &[[f64; 2]; 2]) -> String {
+/// A 2×2 matrix in one line: `[[a, b], [c, d]]`, six significant digits,
+/// entries below [`ROUND_OFF_COEFFICIENT`] of the largest as 0.
+pub fn coefficient_matrix(m: &[[f64; 2]; 2]) -> String {
+    let largest = m.iter().flatten().fold(0.0f64, |a, v| a.max(v.abs()));
+    let cell = |v: f64| {
+        if v.abs() <= ROUND_OFF_COEFFICIENT * largest {
+            "0".to_string()
+        } else {
+            short(v)
+        }
+    };
     format!(
         "[[{}, {}], [{}, {}]]",
-        short(m[0][0]),
-        short(m[0][1]),
-        short(m[1][0]),
-        short(m[1][1])
+        cell(m[0][0]),
+        cell(m[0][1]),
+        cell(m[1][0]),
+        cell(m[1][1])
     )
 }
 
@@ -329,16 +309,34 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
     let mut s = String::new();
     for p in points {
         writeln!(s, "bearing {} at {} rpm:", p.name, short(rpm)).ok();
-        writeln!(
-            s,
-            "  static load {} N (Fx = {} N, Fy = {} N), journal at x = {} µm, y = {} µm",
-            short(p.load),
-            short(p.force[0]),
-            short(p.force[1]),
-            short(p.journal[0] * 1e6),
-            short(p.journal[1] * 1e6)
-        )
-        .ok();
+        if p.is_unloaded() {
+            // Round-off: the journal is centred, the load line undefined.
+            let centred = p
+                .film
+                .as_ref()
+                .is_some_and(|f| f.eccentricity <= ROUND_OFF_LOAD);
+            let (x, y) = if centred {
+                ("0".into(), "0".into())
+            } else {
+                (short(p.journal[0] * 1e6), short(p.journal[1] * 1e6))
+            };
+            writeln!(
+                s,
+                "  static load 0 N (unloaded), journal at x = {x} µm, y = {y} µm"
+            )
+            .ok();
+        } else {
+            writeln!(
+                s,
+                "  static load {} N (Fx = {} N, Fy = {} N), journal at x = {} µm, y = {} µm",
+                short(p.load),
+                short(p.force[0]),
+                short(p.force[1]),
+                short(p.journal[0] * 1e6),
+                short(p.journal[1] * 1e6)
+            )
+            .ok();
+        }
         if let Some(h) = &p.housing {
             writeln!(
                 s,
@@ -350,11 +348,22 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
             .ok();
         }
         if let Some(f) = &p.film {
+            let (eccentricity, attitude) = if p.is_unloaded() {
+                let e = if f.eccentricity <= ROUND_OFF_LOAD {
+                    "0".to_string()
+                } else {
+                    short(f.eccentricity)
+                };
+                (e, "—".to_string())
+            } else {
+                (
+                    short(f.eccentricity),
+                    format!("{}°", short(f.attitude_angle.to_degrees())),
+                )
+            };
             writeln!(
                 s,
-                "  eccentricity ratio {}, attitude angle {}°, minimum film thickness {} µm",
-                short(f.eccentricity),
-                short(f.attitude_angle.to_degrees()),
+                "  eccentricity ratio {eccentricity}, attitude angle {attitude}, minimum film thickness {} µm",
                 short(f.min_film_thickness * 1e6)
             )
             .ok();
@@ -374,8 +383,8 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
                 .ok();
             }
         }
-        writeln!(s, "  K = {} N/m", matrix(&p.stiffness)).ok();
-        writeln!(s, "  C = {} N·s/m", matrix(&p.damping)).ok();
+        writeln!(s, "  K = {} N/m", coefficient_matrix(&p.stiffness)).ok();
+        writeln!(s, "  C = {} N·s/m", coefficient_matrix(&p.damping)).ok();
         for (k, pad) in p.film.iter().flat_map(|f| f.pads.iter()).enumerate() {
             writeln!(
                 s,
@@ -414,32 +423,58 @@ pub fn pedestals(rpm: f64, points: &[PedestalOperatingPoint]) -> String {
 }
 
 /// What `rotor stability` prints: the modes at the speed (frequency, damping
-/// ratio, logarithmic decrement, whirl), where the cross-coupling acts and the
-/// threshold `Q` of the least stable forward mode.
-pub fn stability(result: &Stability, q_max: f64) -> String {
+/// ratio, logarithmic decrement, whirl), where the cross-coupling acts, the
+/// threshold `Q` of the least stable forward mode and, with stage data, the
+/// Level I screening with its formula and verdict. `sites` names the nodes
+/// (e.g. "node 6 (disk impeller)").
+pub fn stability(result: &Stability, sites: &[String]) -> String {
     let mut s = format!(
         "modes at {} rpm (no added cross-coupling):\n mode  f_d (Hz)   damping ratio   log dec     whirl\n",
         short(result.speed * RAD_S_TO_RPM)
     );
     for (k, m) in result.modes.iter().enumerate() {
+        let (zeta, delta) = if m.damping_ratio.abs() < ROUND_OFF_DAMPING_RATIO {
+            ("0".to_string(), "0".to_string())
+        } else {
+            (
+                format!("{:.6}", m.damping_ratio),
+                format!("{:.6}", m.log_decrement),
+            )
+        };
         writeln!(
             s,
-            "{:5} {:9.4} {:15.6} {:9.6} {:>9}",
+            "{:5} {:9.4} {:>15} {:>9} {:>9}",
             k + 1,
             m.damped_frequency / (2.0 * std::f64::consts::PI),
-            m.damping_ratio,
-            m.log_decrement,
+            zeta,
+            delta,
             m.whirl.label()
         )
         .ok();
     }
-    writeln!(
-        s,
-        "cross-coupled stiffness [[0, Q], [-Q, 0]] at node {} (mid-span between the bearings)",
-        result.node + 1
-    )
-    .ok();
+    if sites.len() == 1 {
+        writeln!(
+            s,
+            "cross-coupled stiffness [[0, Q], [-Q, 0]] at {}",
+            sites[0]
+        )
+        .ok();
+    } else {
+        writeln!(
+            s,
+            "cross-coupled stiffness [[0, Q], [-Q, 0]] split equally over {}",
+            sites.join(", ")
+        )
+        .ok();
+    }
     match (result.threshold, &result.threshold_mode) {
+        (Some(0.0), Some(m)) if m.is_undamped() => {
+            writeln!(
+                s,
+                "the least stable forward mode has no damping (log dec 0): any cross-coupling destabilizes it"
+            )
+            .ok();
+        }
         (Some(0.0), _) => {
             writeln!(
                 s,
@@ -461,30 +496,51 @@ pub fn stability(result: &Stability, q_max: f64) -> String {
             writeln!(
                 s,
                 "stable up to Q = {} N/m (no threshold found)",
-                short(q_max)
+                short(result.q_max)
             )
             .ok();
         }
     }
-    s
-}
-
-/// The modes table `rotor modes` prints: damped frequency (rad/s, Hz), damping
-/// ratio, logarithmic decrement and whirl.
-pub fn modes(name: &str, rpm: f64, modes: &[Mode]) -> String {
-    let mut s = format!(
-        "{name} at {rpm} rpm:\n mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl\n"
-    );
-    for (k, m) in modes.iter().enumerate() {
+    if let Some(l) = &result.level_one {
+        let st = &l.stages;
+        writeln!(s, "API 617 / API 684 Level I screening:").ok();
         writeln!(
             s,
-            "{:5} {:12.4} {:11.4} {:14.4e} {:9.4} {:>9}",
-            k + 1,
-            m.damped_frequency,
-            m.damped_frequency / (2.0 * std::f64::consts::PI),
-            m.damping_ratio,
-            m.log_decrement,
-            m.whirl.label()
+            "  anticipated cross-coupling Q_A = B P (ρd/ρs) / (D H Ω) = {} × {} W × {} / ({} m × {} m × {} rad/s) = {} N/m (Wachel)",
+            short(st.stage_factor),
+            short(st.power),
+            short(st.density_ratio),
+            short(st.diameter),
+            short(st.width),
+            short(result.speed.abs()),
+            short(l.anticipated)
+        )
+        .ok();
+        let ratio = match l.ratio {
+            Some(r) => format!("{r:.2}"),
+            None => format!("> {:.2}", result.q_max / l.anticipated),
+        };
+        writeln!(
+            s,
+            "  stability margin Q0/Q_A = {ratio} (at least {LEVEL_I_MIN_RATIO} required): {}",
+            if l.ratio_pass { "pass" } else { "FAIL" }
+        )
+        .ok();
+        writeln!(
+            s,
+            "  log dec at Q_A = {:.4} (at least {LEVEL_I_MIN_LOG_DEC} required): {}",
+            l.mode_at_anticipated.log_decrement,
+            if l.log_dec_pass { "pass" } else { "FAIL" }
+        )
+        .ok();
+        writeln!(
+            s,
+            "  Level I: {}",
+            if l.pass() {
+                "pass"
+            } else {
+                "FAIL: a Level II analysis is required"
+            }
         )
         .ok();
     }
@@ -506,6 +562,57 @@ pub fn critical_speed_map(name: &str, map: &CriticalSpeedMap, step: usize) -> St
     s
 }
 
+/// What `rotor simulate` prints without `--csv` (the table goes to a file,
+/// never to the terminal): the run's length and records, and per bearing and
+/// probe the largest displacement from the centre (µm) and, for fluid-film
+/// bearings, the largest eccentricity ratio and smallest film thickness.
+pub fn run_summary(model: &RotorModel, records: &[Outputs]) -> String {
+    let (Some(first), Some(last)) = (records.first(), records.last()) else {
+        return "no records\n".into();
+    };
+    let mut s = format!(
+        "{}: {} records from t = {} to {} s, {} → {} rpm (--csv FILE writes them all)\n",
+        model.name,
+        records.len(),
+        short(first.time),
+        short(last.time),
+        short(first.speed * RAD_S_TO_RPM),
+        short(last.speed * RAD_S_TO_RPM)
+    );
+    s.push_str("largest displacement from the centre:\n");
+    for (k, (name, x, y)) in super::series::orbits(model, records).iter().enumerate() {
+        let r = x
+            .iter()
+            .zip(y)
+            .map(|(a, b)| a.hypot(*b))
+            .fold(0.0, f64::max);
+        write!(s, "  {name:<28} {:>10} µm", short(r * 1e6)).ok();
+        let film = model
+            .bearings
+            .get(k)
+            .filter(|b| b.kind.journal_clearance().is_some() && !b.kind.is_rub());
+        if film.is_some() {
+            let e = records
+                .iter()
+                .map(|o| o.bearings[k].report.eccentricity)
+                .fold(0.0, f64::max);
+            let h = records
+                .iter()
+                .map(|o| o.bearings[k].report.min_film_thickness)
+                .fold(f64::INFINITY, f64::min);
+            write!(
+                s,
+                ", eccentricity ratio up to {}, film down to {} µm",
+                short(e),
+                short(h * 1e6)
+            )
+            .ok();
+        }
+        s.push('\n');
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -517,45 +624,5 @@ mod tests {
         assert_eq!(short(-9.81), "-9.81");
         assert_eq!(short(1e-4 * 1e6), "100");
         assert_eq!(short(2.5e-9), "2.5e-9");
-    }
-
-    #[test]
-    fn peak_table_prints_every_column_and_the_verdict() {
-        use crate::analysis::unbalance::{ResponsePoint, UnbalanceSweep};
-        let sweep = UnbalanceSweep {
-            speeds: vec![],
-            points: vec![ResponsePoint {
-                label: "probe disk".into(),
-                node: 3,
-            }],
-            response: vec![],
-        };
-        let peak = Peak {
-            point: 0,
-            speed: 1000.0 / RAD_S_TO_RPM,
-            amplitude: 12.5e-6,
-            half_power: Some((1.0, 2.0)),
-            amplification_factor: Some(4.0),
-        };
-        let margin = SeparationMargin {
-            required: Some(0.16),
-            actual: 0.125,
-            pass: false,
-        };
-        let no_af = Peak {
-            amplification_factor: None,
-            ..peak
-        };
-        let table = peak_table(&sweep, &[(peak, Some(margin)), (peak, None), (no_af, None)]);
-        let lines: Vec<&str> = table.lines().collect();
-        let cells: Vec<&str> = lines[1].split_whitespace().collect();
-        assert_eq!(
-            cells,
-            [
-                "probe", "disk", "1000.0", "12.5", "4.00", "16.0", "%", "12.5", "%", "FAIL"
-            ]
-        );
-        assert!(lines[2].ends_with("no operating range"), "{}", lines[2]);
-        assert!(lines[3].ends_with("half-power speed outside the sweep"));
     }
 }

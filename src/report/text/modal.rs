@@ -1,0 +1,241 @@
+//! The tables of complex modes and Campbell diagrams: modes, overdamped
+//! roots, critical speeds and their separation margins, round-off as 0.
+
+use std::fmt::Write;
+
+use crate::analysis::campbell::{
+    CampbellPoint, CampbellStudy, CriticalMargin, CriticalSpeed, OVERDAMPED_DAMPING_RATIO,
+};
+use crate::analysis::modal::{Mode, NON_OSCILLATING_DAMPING_RATIO, OverdampedRoot};
+use crate::analysis::unbalance::OperatingRange;
+use crate::rotor::Rotor;
+use crate::units::RAD_S_TO_RPM;
+
+use super::short;
+
+/// What `rotor campbell` prints (the report shows the same): the speed grid
+/// and the origin of its top, the 1× critical speeds with their branch, whirl
+/// and ζ, the overdamped crossings apart, the API 684 margins, and how many
+/// non-oscillating roots the speeds had.
+pub fn campbell_study(rotor: &Rotor, study: &CampbellStudy) -> String {
+    let model = &rotor.model;
+    let first = study.diagram.first().map_or(0.0, |p| p.speed);
+    let origin = study
+        .top_origin
+        .map_or("--max-rpm".to_string(), |o| o.to_string());
+    let mut s = format!(
+        "speed grid of {}: {:.2} to {:.2} rpm in {} steps (top speed: {origin}{})\n",
+        model.name,
+        first * RAD_S_TO_RPM,
+        study.top * RAD_S_TO_RPM,
+        study.diagram.len().saturating_sub(1),
+        if rotor.nonlinear_bearings.is_empty() {
+            ""
+        } else {
+            "; fluid-film bearings: from 1 % of the top speed"
+        }
+    );
+    let line = |c: &CriticalSpeed| {
+        format!(
+            "  {:10.2} rpm ({:9.3} rad/s)  branch {}  {} whirl  ζ = {}\n",
+            c.speed * RAD_S_TO_RPM,
+            c.speed,
+            c.branch + 1,
+            c.whirl.label(),
+            damping_ratio(c.damping_ratio)
+        )
+    };
+    writeln!(
+        s,
+        "critical speeds of {} (1× unbalance excitation, ζ < {OVERDAMPED_DAMPING_RATIO}):",
+        model.name
+    )
+    .ok();
+    let (overdamped, critical): (Vec<_>, Vec<_>) =
+        study.criticals.iter().partition(|c| c.is_overdamped());
+    if critical.is_empty() {
+        writeln!(s, "  none up to {:.2} rpm", study.top * RAD_S_TO_RPM).ok();
+    }
+    critical.into_iter().for_each(|c| s.push_str(&line(c)));
+    if !overdamped.is_empty() {
+        writeln!(
+            s,
+            "overdamped crossings of the 1× line (ζ ≥ {OVERDAMPED_DAMPING_RATIO}: no resonance peak, not critical speeds):"
+        )
+        .ok();
+        overdamped.into_iter().for_each(|c| s.push_str(&line(c)));
+    }
+    s.push_str(&critical_margins(
+        &study.margins,
+        study.operating.as_ref(),
+        study.max_speed,
+    ));
+    s.push_str(&overdamped_summary(&study.diagram));
+    s
+}
+
+pub use crate::analysis::modal::ROUND_OFF_DAMPING_RATIO;
+
+/// `ζ` for a table: `{:.3e}`, or `0` below [`ROUND_OFF_DAMPING_RATIO`].
+pub fn damping_ratio(z: f64) -> String {
+    if z.abs() < ROUND_OFF_DAMPING_RATIO {
+        "0".into()
+    } else {
+        format!("{z:.3e}")
+    }
+}
+
+/// `ζ` and `δ` of a mode for the tables, round-off printed as 0 (`δ` of a
+/// round-off `ζ` is round-off too; never `-0.0000`).
+fn zeta_delta(m: &Mode, zeta_digits: usize, delta_digits: usize) -> (String, String) {
+    if m.damping_ratio.abs() < ROUND_OFF_DAMPING_RATIO {
+        ("0".into(), "0".into())
+    } else {
+        (
+            format!("{:.*e}", zeta_digits, m.damping_ratio),
+            format!("{:.*}", delta_digits, m.log_decrement),
+        )
+    }
+}
+
+/// `ζ` and `δ` of a mode as the modes table prints them (round-off as 0).
+pub fn zeta_and_log_dec(m: &Mode) -> (String, String) {
+    zeta_delta(m, 4, 4)
+}
+
+/// The modes table `rotor modes` prints: damped frequency (rad/s, Hz), damping
+/// ratio, logarithmic decrement and whirl.
+pub fn modes(name: &str, rpm: f64, modes: &[Mode]) -> String {
+    let mut s = format!(
+        "{name} at {rpm} rpm:\n mode  ω_d (rad/s)    f_d (Hz)   damping ratio  log dec   whirl\n"
+    );
+    for (k, m) in modes.iter().enumerate() {
+        let (zeta, delta) = zeta_delta(m, 4, 4);
+        writeln!(
+            s,
+            "{:5} {:12.4} {:11.4} {:>14} {:>9} {:>9}",
+            k + 1,
+            m.damped_frequency,
+            m.damped_frequency / (2.0 * std::f64::consts::PI),
+            zeta,
+            delta,
+            m.whirl.label()
+        )
+        .ok();
+    }
+    s
+}
+
+/// The non-oscillating roots of a modal analysis, apart from the modes: the
+/// decay rate `−Re λ` (1/s) and time constant of each, or nothing when there
+/// are none.
+pub fn overdamped_roots(roots: &[OverdampedRoot]) -> String {
+    if roots.is_empty() {
+        return String::new();
+    }
+    let mut s = format!(
+        "non-oscillating (overdamped) roots, not modes (ζ ≥ {NON_OSCILLATING_DAMPING_RATIO}, not counted in --modes):\n  decay rate (1/s)  time constant (s)\n"
+    );
+    for r in roots {
+        writeln!(
+            s,
+            "  {:>16} {:>18}",
+            short(r.decay_rate()),
+            short(r.time_constant())
+        )
+        .ok();
+    }
+    s
+}
+
+/// How many non-oscillating roots the speeds of a Campbell diagram had (they
+/// are not branches), or nothing when none.
+pub fn overdamped_summary(diagram: &[CampbellPoint]) -> String {
+    let counts: Vec<usize> = diagram.iter().map(|p| p.overdamped.len()).collect();
+    let (lo, hi) = (
+        counts.iter().copied().min().unwrap_or(0),
+        counts.iter().copied().max().unwrap_or(0),
+    );
+    match (lo, hi) {
+        (_, 0) => String::new(),
+        (lo, hi) if lo == hi => format!(
+            "non-oscillating (overdamped) roots: {hi} at every speed, below the listed modes; not branches\n"
+        ),
+        (lo, hi) => format!(
+            "non-oscillating (overdamped) roots: {lo} to {hi} per speed, below the listed modes; not branches\n"
+        ),
+    }
+}
+
+/// One row of the critical speeds' margins, as the command prints it and the
+/// report shows it: speed (rpm), AF, required and actual margins, distance
+/// from the maximum speed, verdict.
+pub fn margin_cells(m: &CriticalMargin) -> [String; 6] {
+    let af = if m.amplification_factor.is_finite() {
+        format!("{:.2}", m.amplification_factor)
+    } else {
+        "∞".into()
+    };
+    let (required, actual, verdict) = match &m.margin {
+        Some(sm) => (
+            sm.required
+                .map_or("none".to_string(), |r| format!("{:.1} %", 100.0 * r)),
+            format!("{:.1} %", 100.0 * sm.actual),
+            if sm.pass { "pass" } else { "FAIL" },
+        ),
+        None => ("—".into(), "—".into(), "not judged"),
+    };
+    let from_max = m
+        .from_max_speed
+        .map_or("—".to_string(), |d| format!("{:+.1} %", 100.0 * d));
+    [
+        format!("{:.2}", m.critical.speed * RAD_S_TO_RPM),
+        af,
+        required,
+        actual,
+        from_max,
+        verdict.to_string(),
+    ]
+}
+
+/// API 684 separation margins of the critical speeds of a Campbell diagram
+/// (amplification factor `1/(2ζ)`) from the operating range, and their
+/// distance from the maximum speed.
+pub fn critical_margins(
+    margins: &[CriticalMargin],
+    range: Option<&OperatingRange>,
+    max_speed: Option<f64>,
+) -> String {
+    if margins.is_empty() {
+        return String::new();
+    }
+    let mut s = match range {
+        Some(r) if r.min == r.max => format!(
+            "separation margins (API 684, AF = 1/(2ζ)) from the operating speed {} rpm",
+            short(r.min * RAD_S_TO_RPM)
+        ),
+        Some(r) => format!(
+            "separation margins (API 684, AF = 1/(2ζ)) from the operating range {} … {} rpm",
+            short(r.min * RAD_S_TO_RPM),
+            short(r.max * RAD_S_TO_RPM)
+        ),
+        None => {
+            "critical speeds (no operating speed: speed_rpm or --operating-rpm; margins not judged)"
+                .to_string()
+        }
+    };
+    if let Some(m) = max_speed {
+        write!(s, ", maximum speed {} rpm", short(m * RAD_S_TO_RPM)).ok();
+    }
+    s.push_str(":\n   speed (rpm)        AF  required SM  actual SM  from max speed  result\n");
+    for m in margins {
+        let c = margin_cells(m);
+        writeln!(
+            s,
+            "  {:>12} {:>9} {:>12} {:>10} {:>15}  {}",
+            c[0], c[1], c[2], c[3], c[4], c[5]
+        )
+        .ok();
+    }
+    s
+}
