@@ -2,6 +2,7 @@
 //! whole file text (header line first, `\n` line ends). Column names carry their
 //! SI unit; speeds are also given in rpm.
 
+use crate::analysis::torsion::TorsionalMode;
 use std::f64::consts::PI;
 use std::fmt::Write as _;
 
@@ -321,6 +322,28 @@ pub fn mode_shapes(model: &RotorModel, modes: &[Mode]) -> String {
                 o.minor,
                 o.major_angle.to_degrees(),
                 o.direction()
+            )
+            .ok();
+        }
+    }
+    out
+}
+
+/// Torsional mode shapes: per mode its natural frequency (Hz) and damping
+/// ratio, per node its position and twist (rad, the largest twist 1).
+pub fn torsional_mode_shapes(model: &RotorModel, modes: &[TorsionalMode]) -> String {
+    let mut out = String::from("mode,natural_frequency_hz,damping_ratio,node,z_m,twist\n");
+    for (k, m) in modes.iter().enumerate() {
+        for (node, twist) in m.shape.iter().enumerate() {
+            writeln!(
+                out,
+                "{},{},{},{},{},{}",
+                k + 1,
+                m.natural_frequency / (2.0 * PI),
+                m.damping_ratio,
+                node + 1,
+                model.node_z[node],
+                twist
             )
             .ok();
         }

@@ -147,6 +147,12 @@ enum Command {
         /// Draw the mode shapes (orbits along the shaft) to this PNG file.
         #[arg(long)]
         shapes_png: Option<PathBuf>,
+        /// Number of torsional modes listed after the lateral ones (0: none).
+        #[arg(long, default_value_t = 3)]
+        torsional_modes: usize,
+        /// Write the torsional mode shapes (twist per node) to this CSV file.
+        #[arg(long)]
+        torsional_shapes_csv: Option<PathBuf>,
     },
     /// Campbell diagram and critical speeds up to --max-rpm (from 0 on linear
     /// bearings, from 1 % of --max-rpm with fluid-film bearings); crossings with
@@ -473,14 +479,17 @@ fn run(cli: Cli) -> Result<(), String> {
             csv,
             shapes_csv,
             shapes_png,
+            torsional_modes,
+            torsional_shapes_csv,
         } => modal::modes(
             &load(&model)?,
             rpm,
-            modes,
+            (modes, torsional_modes),
             modal::ModeFiles {
                 csv,
                 shapes_csv,
                 shapes_png,
+                torsional_shapes_csv,
             },
         ),
         Command::Campbell {
