@@ -122,7 +122,10 @@ pub fn coefficients(curve: &[DimensionlessPoint]) -> String {
 /// position (m); the total friction torque; then, for every bearing, rub and
 /// seal on a pedestal, the journal position relative to the housing (m, what
 /// a proximity probe on the bearing reads) and the housing's absolute
-/// position (m) and velocity (m/s, what a seismic sensor on it reads).
+/// position (m) and velocity (m/s, what a seismic sensor on it reads); for a
+/// torque-driven shaft each torque node's speed (rpm) and angle (rad) and
+/// each shaft element's torque (N·m); each thrust bearing's friction torque
+/// (N·m) and power loss (W).
 pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
     let mut out = String::from("time_s,speed_rpm,spin_angle_rad");
     for b in &model.bearings {
@@ -147,6 +150,20 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
             ",{n}_x_rel_m,{n}_y_rel_m,{n}_housing_x_m,{n}_housing_y_m,{n}_housing_vx_m_s,{n}_housing_vy_m_s"
         )
         .ok();
+    }
+    // A torque-driven shaft: each torque node's speed and angle, each shaft
+    // element's torque; and the thrust bearings' friction.
+    let torque_driven = model.drive == crate::model::Drive::Torque;
+    if torque_driven {
+        for t in &model.torques {
+            write!(out, ",{0}_speed_rpm,{0}_angle_rad", t.name).ok();
+        }
+        for k in 0..model.elements.len() {
+            write!(out, ",shaft_torque_{}_Nm", k + 1).ok();
+        }
+    }
+    for t in &model.thrust_bearings {
+        write!(out, ",{0}_friction_torque_Nm,{0}_power_loss_W", t.name).ok();
     }
     out.push('\n');
     for o in records {
@@ -187,6 +204,17 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
                 h.x, h.y, h.vx, h.vy
             )
             .ok();
+        }
+        if torque_driven {
+            for t in &o.torques {
+                write!(out, ",{},{}", t.speed * RAD_S_TO_RPM, t.angle).ok();
+            }
+            for torque in &o.shaft_torques {
+                write!(out, ",{torque}").ok();
+            }
+        }
+        for t in &o.thrust_bearings {
+            write!(out, ",{},{}", t.friction_torque, t.power_loss).ok();
         }
         out.push('\n');
     }

@@ -194,6 +194,11 @@ enum Command {
         /// Speed table: CSV with columns time_s,speed_rpm (header line optional).
         #[arg(long)]
         speed_csv: Option<PathBuf>,
+        /// A torque-driven shaft's torque NAME=VALUE (N·m, a `[[torques]]`
+        /// name, constant from the start; repeat for each); --rpm is then its
+        /// initial speed (default 0: from rest).
+        #[arg(long = "torque", value_name = "NAME=N·m")]
+        torques: Vec<String>,
         /// Simulated time (s).
         #[arg(long, default_value_t = 1.0)]
         duration: f64,
@@ -623,6 +628,7 @@ fn run(cli: Cli) -> Result<(), String> {
             rpm,
             ramp_rpm,
             speed_csv,
+            torques,
             duration,
             step,
             output_step,
@@ -634,9 +640,15 @@ fn run(cli: Cli) -> Result<(), String> {
             plots,
             amplitude,
         } => {
+            let rotor = load(&model)?;
+            let torque_driven = rotor.model.drive == rotor_bearing::model::Drive::Torque;
+            let rpm = match (rpm, ramp_rpm.is_none() && speed_csv.is_none()) {
+                (None, true) if torque_driven => Some(0.0),
+                (rpm, _) => rpm,
+            };
             let profile =
                 simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
-            let rotor = load(&model)?;
+            let torques = simulate::torque_inputs(&rotor.model, &torques)?;
             simulate::check_speeds(&rotor.model, &profile)?;
             let step = step.unwrap_or_else(|| {
                 let peak = profile.top_speed();
@@ -672,6 +684,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 csv,
                 plots,
                 amplitude,
+                torques,
             };
             simulate::simulate(rotor, full, options, run)
         }
