@@ -260,6 +260,35 @@ pub fn unbalance(sweep: &UnbalanceSweep) -> String {
     out
 }
 
+/// The response to one harmonic force over speed: as [`unbalance`], with
+/// the force's frequency (Hz) after the speed; the phases are of
+/// `x(t) = |X| cos(ωt + φ)` at the force's own frequency `ω`.
+pub fn forced(frequencies: &[f64], sweep: &UnbalanceSweep) -> String {
+    let table = unbalance(sweep);
+    let mut lines = table.lines();
+    let mut out = String::new();
+    if let Some(header) = lines.next() {
+        let rest = header
+            .strip_prefix("speed_rpm,speed_rad_s")
+            .unwrap_or(header);
+        writeln!(out, "speed_rpm,speed_rad_s,frequency_hz{rest}").ok();
+    }
+    for (line, w) in lines.zip(frequencies) {
+        let mut cells = line.splitn(3, ',');
+        let (rpm, rad, rest) = (cells.next(), cells.next(), cells.next());
+        writeln!(
+            out,
+            "{},{},{}{}",
+            rpm.unwrap_or(""),
+            rad.unwrap_or(""),
+            w / (2.0 * PI),
+            rest.map_or(String::new(), |r| format!(",{r}"))
+        )
+        .ok();
+    }
+    out
+}
+
 /// Bearings at an operating point, one row each: load and force (N), journal
 /// position (m), eccentricity ratio, attitude angle (°), minimum film thickness
 /// (m), friction torque (N·m), power loss (W) (empty for linear bearings), then

@@ -27,6 +27,7 @@ mod fmu_stage;
 mod modal;
 mod operating_point;
 mod report;
+mod response;
 mod simulate;
 mod stability;
 mod statics;
@@ -362,6 +363,32 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Steady response of every probe and journal to one harmonic force of the
+    /// model (a vortex rope, blade passing, a fixed-frequency excitation) over
+    /// a speed range: the largest orbit of each, and a CSV of amplitude and
+    /// phase at every speed.
+    Response {
+        #[command(flatten)]
+        model: ModelArg,
+        /// The harmonic force (`[[forces]]` name).
+        #[arg(long)]
+        force: String,
+        /// Lowest spin speed (rpm).
+        #[arg(long, default_value_t = 0.0)]
+        min_rpm: f64,
+        /// Highest spin speed (rpm).
+        #[arg(long)]
+        max_rpm: f64,
+        /// Number of speeds.
+        #[arg(long, default_value_t = 200)]
+        points: usize,
+        /// The force's amplitude (N), instead of the model file's.
+        #[arg(long)]
+        magnitude: Option<f64>,
+        /// Write the response to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
     /// Unbalance response over a speed range (Bode and polar plots), its peaks,
     /// amplification factors and API 684 separation margins.
     Unbalance {
@@ -524,6 +551,25 @@ fn run(cli: Cli) -> Result<(), String> {
             csv,
             png,
         } => coefficients::coefficients(model, bearing, rpm, points, csv, png),
+        Command::Response {
+            model,
+            force,
+            min_rpm,
+            max_rpm,
+            points,
+            magnitude,
+            csv,
+        } => response::run(
+            &load(&model)?,
+            response::Request {
+                force,
+                min_rpm,
+                max_rpm,
+                points,
+                magnitude,
+                csv,
+            },
+        ),
         Command::Unbalance {
             model,
             min_rpm,
