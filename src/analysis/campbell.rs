@@ -332,8 +332,10 @@ pub struct CampbellStudy {
     /// benchmarks time.
     pub diagram_seconds: f64,
     /// The lowest torsional modes ([`torsional_modes`], as many as lateral
-    /// ones were asked for): horizontal lines, the twist having no
-    /// gyroscopic coupling to the spin.
+    /// ones were asked for) of a model that describes its torsion
+    /// ([`RotorModel::models_torsion`](crate::model::RotorModel::models_torsion)),
+    /// else none: horizontal lines, the twist having no gyroscopic coupling
+    /// to the spin.
     pub torsional: Vec<TorsionalMode>,
 }
 
@@ -368,8 +370,12 @@ pub fn campbell_study(
     let model = &rotor.model;
     let max_speed = model.max_speed_stated.then_some(model.max_speed);
     let margins = critical_margins(&criticals, request.operating.as_ref(), max_speed);
-    let torsional = torsional_modes(model, request.modes)
-        .map_err(|source| ModalError::Linalg { speed: 0.0, source })?;
+    let torsional = if model.models_torsion() {
+        torsional_modes(model, request.modes)
+            .map_err(|source| ModalError::Linalg { speed: 0.0, source })?
+    } else {
+        Vec::new()
+    };
     Ok(CampbellStudy {
         torsional,
         diagram,

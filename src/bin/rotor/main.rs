@@ -149,8 +149,10 @@ enum Command {
         #[arg(long)]
         shapes_png: Option<PathBuf>,
         /// Number of torsional modes listed after the lateral ones (0: none).
-        #[arg(long, default_value_t = 3)]
-        torsional_modes: usize,
+        /// Default: 3 for a model that describes its torsion (torque-driven,
+        /// or with torque nodes, couplings or thrust bearings), else 0.
+        #[arg(long)]
+        torsional_modes: Option<usize>,
         /// Write the torsional mode shapes (twist per node) to this CSV file.
         #[arg(long)]
         torsional_shapes_csv: Option<PathBuf>,

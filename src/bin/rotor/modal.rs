@@ -25,7 +25,7 @@ pub struct ModeFiles {
 pub fn modes(
     rotor: &Rotor,
     rpm: f64,
-    (count, torsional): (usize, usize),
+    (count, torsional): (usize, Option<usize>),
     files: ModeFiles,
 ) -> Result<(), String> {
     let speed = rpm / RAD_S_TO_RPM;
@@ -38,6 +38,7 @@ pub fn modes(
     let ms = &result.modes;
     let mut out = text::modes(&rotor.model.name, rpm, ms);
     out.push_str(&text::overdamped_roots(&result.overdamped));
+    let torsional = torsional.unwrap_or(if rotor.model.models_torsion() { 3 } else { 0 });
     let twist = torsional_modes(&rotor.model, torsional).map_err(|e| e.to_string())?;
     out.push_str(&text::torsional_modes(&twist));
     if let Some(path) = files.torsional_shapes_csv {
