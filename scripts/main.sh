@@ -63,4 +63,13 @@ bash fmu_pack.sh --model models/classic_disk_rotor_damped.toml
 .venv/bin/python system/couple.py all 2>&1 | grep '→'
 .venv/bin/python system/sweep.py --fmu out/jeffcott.fmu --rpm 4000:16000:13 \
   --param "bearings.left.viscosity,bearings.right.viscosity=0.01,0.02,0.04" --duration 0.6 --out out/sweep_jeffcott
-echo "main: results in out/ (hydro_unit_brackets*, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, unbalance_response.csv/png, jeffcott_report.html, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*)"
+# A PD magnetic bearing FMU (pythonfmu) closed through the rotor FMU's force port
+# under libcosim, against the same rotor with the bearing built in: orbits, the
+# difference and its bound from the communication step (docs/system.md), and the
+# map of the communication steps that keep the loop stable (docs/fmu.md).
+.venv/bin/python system/build_amb.py out
+bash fmu_pack.sh --model system/classic_disk_rotor_amb.toml
+bash fmu_pack.sh --model system/classic_disk_rotor_amb_reference.toml
+.venv/bin/python system/amb_demo.py --out out/amb_demo
+.venv/bin/python system/amb_demo.py --stability --out out/amb_demo | tee out/amb_demo_stability.txt | tail -n 1
+echo "main: results in out/ (hydro_unit_brackets*, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, unbalance_response.csv/png, jeffcott_report.html, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*, amb_demo.csv/png, amb_demo_stability.csv/txt)"

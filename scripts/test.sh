@@ -17,8 +17,12 @@ bash fmu_pack.sh
 for model in models/*.toml tests/data/torque_ports.toml; do
   [ "$model" = models/hydro_unit.toml ] || bash fmu_pack.sh --model "$model"
 done
-# The governor/turbine/generator FMU for the coupled-system tests.
+# The governor/turbine/generator FMU for the coupled-system tests; the magnetic
+# bearing FMU and the rotors it is coupled with (tests/system_amb.rs).
 .venv/bin/python system/build_plant.py out
+.venv/bin/python system/build_amb.py out
+bash fmu_pack.sh --model system/classic_disk_rotor_amb.toml
+bash fmu_pack.sh --model system/classic_disk_rotor_amb_reference.toml
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 status=0
