@@ -22,6 +22,7 @@ import sys
 
 import numpy as np
 from libcosimpy.CosimExecution import CosimExecution
+from libcosimpy.CosimManipulator import CosimManipulator
 from libcosimpy.CosimObserver import CosimObserver
 from libcosimpy.CosimSlave import CosimLocalSlave
 
@@ -59,8 +60,15 @@ def references(execution, index):
     return {v.name.decode(): v.reference for v in execution.slave_variables(index)}
 
 
-def run(rotor_fmu, plant_fmu, duration, plant_params, step=0.02, rotor_params=None):
-    """Co-simulate; returns a dict of arrays sampled at every communication step."""
+def run(rotor_fmu, plant_fmu, duration, plant_params, step=0.02, rotor_params=None, connections=(), record=(),
+        schedule=None):
+    """Co-simulate; returns a dict of arrays sampled at every communication step.
+    `rotor_params`: start values of rotor variables (parameters and inputs);
+    `connections`: (plant output, rotor tunable parameter) pairs, e.g. the field
+    into magnetic_pull.<m>.excitation: libcosim connects inputs only, so the
+    master passes each value on at every communication point through an
+    override manipulator; `record`: further rotor outputs; `schedule(t)`: a dict
+    of rotor input values to set for the step from t (e.g. hydraulic forces ramped in)."""
     execution = CosimExecution.from_step_size(step_size=int(round(step * 1e9)))
     rotor = execution.add_local_slave(CosimLocalSlave(fmu_path=rotor_fmu, instance_name="rotor"))
     plant = execution.add_local_slave(CosimLocalSlave(fmu_path=plant_fmu, instance_name="plant"))
@@ -76,20 +84,39 @@ def run(rotor_fmu, plant_fmu, duration, plant_params, step=0.02, rotor_params=No
     execution.connect_real_variables(rotor, rv["friction_torque"], plant, pv["friction_torque"])
     observer = CosimObserver.create_last_value()
     execution.add_observer(observer)
+    override = CosimManipulator.create_override()
+    execution.add_manipulator(override)
     bearings = sorted({n.split(".")[1] for n in rv if n.startswith("bearings.")})
     rotor_names = ["shaft.speed", "friction_torque"] + [f"bearings.{b}.{q}" for b in bearings for q in ("x", "y", "fx", "fy", "eccentricity")]
+    rotor_names += list(record)
     plant_names = ["speed", "gate", "setpoint", "turbine_torque", "electric_torque"]
+    plant_names += [source for source, _ in connections]
     rows = []
     steps = int(round(duration / step))
     for k in range(steps):
+        if schedule is not None:
+            values = schedule(k * step)
+            override.slave_real_values(rotor, [rv[n] for n in values], list(values.values()))
         if not execution.step(1):
             raise RuntimeError(f"co-simulation step {k} failed at t = {k * step:.3f} s")
         r = observer.last_real_values(rotor, [rv[n] for n in rotor_names])
         p = observer.last_real_values(plant, [pv[n] for n in plant_names])
         rows.append([(k + 1) * step] + list(r) + list(p))
+        if connections:
+            values = observer.last_real_values(plant, [pv[source] for source, _ in connections])
+            override.slave_real_values(rotor, [rv[target] for _, target in connections], values)
     names = ["time"] + [f"rotor.{n}" for n in rotor_names] + [f"plant.{n}" for n in plant_names]
     data = np.array(rows)
     return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def write_csv(result, path):
+    """One column per array of `result`, headed by its name."""
+    names = list(result)
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(names)
+        w.writerows(zip(*[result[n] for n in names]))
 
 
 def save(result, prefix, title):
@@ -97,10 +124,7 @@ def save(result, prefix, title):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     names = list(result)
-    with open(prefix + ".csv", "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(names)
-        w.writerows(zip(*[result[n] for n in names]))
+    write_csv(result, prefix + ".csv")
     t = result["time"]
     bearings = sorted({n.split(".")[2] for n in names if n.startswith("rotor.bearings.")})
     fig, ax = plt.subplots(2, 2, figsize=(12, 8))
