@@ -223,18 +223,23 @@ fn static_equilibrium_on_the_bearings_is_exact() {
     }
 }
 
-/// The shipped models: their file stems.
+/// The shipped speed-driven models: their file stems. A torque-driven copy
+/// (`hydro_unit_torque`: hydro_unit's lateral rotor, driven by torques and
+/// held by a thrust bearing that acts on the twist only) is run at a
+/// prescribed speed by none of these tests; its lateral rotor is hydro_unit's.
 fn shipped() -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/models"))
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/models");
+    let mut names: Vec<String> = std::fs::read_dir(dir)
         .unwrap()
-        .map(|e| {
-            e.unwrap()
-                .path()
-                .file_stem()
+        .map(|e| e.unwrap().path())
+        .filter(|p| {
+            let text = std::fs::read_to_string(p).unwrap();
+            RotorModel::from_toml(&text, &p.to_string_lossy())
                 .unwrap()
-                .to_string_lossy()
-                .into_owned()
+                .drive
+                != rotor_bearing::model::Drive::Torque
         })
+        .map(|p| p.file_stem().unwrap().to_string_lossy().into_owned())
         .collect();
     names.sort();
     names

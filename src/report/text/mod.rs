@@ -11,8 +11,8 @@ use crate::analysis::stability::{LEVEL_I_MIN_LOG_DEC, LEVEL_I_MIN_RATIO, Stabili
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::bearing::{BearingKind, CoefficientTable};
 use crate::model::{Drive, RotorModel};
-use crate::rotor::torsion::TorsionalRotor;
 use crate::rotor::Rotor;
+use crate::rotor::torsion::TorsionalRotor;
 use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
 
