@@ -19,14 +19,13 @@ Scenarios (CSV + PNG each, out/brackets_<name>.csv/.png):
 
 usage: python system/couple_brackets.py [NAME|all] [--duration S]
 """
-import argparse
 import os
 import sys
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from couple import OUT, run, write_csv  # noqa: E402
+from couple import OUT, run, scenario_cli, write_csv  # noqa: E402
 
 ROTOR = os.path.join(OUT, "hydro_unit_brackets.fmu")
 PLANT = os.path.join(OUT, "HydroPlant.fmu")
@@ -119,22 +118,21 @@ def save(result, prefix, title):
     plt.close(fig)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("scenario", nargs="?", default="all", choices=["all"] + list(SCENARIOS))
-    parser.add_argument("--duration", type=float, default=None)
-    args = parser.parse_args()
-    for name in ([args.scenario] if args.scenario != "all" else list(SCENARIOS)):
-        result = simulate(name, args.duration)
-        prefix = os.path.join(OUT, f"brackets_{name}")
-        save(result, prefix, f"hydro_unit_brackets: {name.replace('_', ' ')} (speed-driven, libcosim)")
-        t = result["time"]
-        late = t > t[-1] / 2
-        z = (result["rotor.probes.runner.x"] + 1j * result["rotor.probes.runner.y"])[late]
-        f0 = RATED / (2 * np.pi)
-        a = np.abs(line(t[late], z, [f0, 0.3 * f0]))
-        print(f"brackets {name}: runner probe 1x {a[0] * 1e6:.2f} µm, 0.3x forward {a[1] * 1e6:.2f} µm → {prefix}.csv/.png")
+def run_scenario(name, duration):
+    """Run one scenario; CSV and PNG into out/."""
+    result = simulate(name, duration)
+    prefix = os.path.join(OUT, f"brackets_{name}")
+    save(result, prefix, f"hydro_unit_brackets: {name.replace('_', ' ')} (speed-driven, libcosim)")
+    t = result["time"]
+    late = t > t[-1] / 2
+    z = (result["rotor.probes.runner.x"] + 1j * result["rotor.probes.runner.y"])[late]
+    f0 = RATED / (2 * np.pi)
+    a = np.abs(line(t[late], z, [f0, 0.3 * f0]))
+    print(f"brackets {name}: runner probe 1x {a[0] * 1e6:.2f} µm, 0.3x forward {a[1] * 1e6:.2f} µm → {prefix}.csv/.png")
 
+
+def main():
+    scenario_cli(__doc__, SCENARIOS, run_scenario)
 
 if __name__ == "__main__":
     sys.exit(main())

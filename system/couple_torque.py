@@ -21,17 +21,14 @@ Scenarios (CSV + PNG each, out/torque_<name>.csv/.png):
 
 usage: python system/couple_torque.py [NAME|all] [--duration S]
 """
-import argparse
 import os
 import sys
 
 import numpy as np
-from libcosimpy.CosimExecution import CosimExecution
 from libcosimpy.CosimObserver import CosimObserver
-from libcosimpy.CosimSlave import CosimLocalSlave
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from couple import OUT, RATED, references, write_csv  # noqa: E402
+from couple import OUT, RATED, execution_of, scenario_cli, write_csv  # noqa: E402
 
 ROTOR = os.path.join(OUT, "hydro_unit_torque.fmu")
 PLANT = os.path.join(OUT, "HydroPlantTorque.fmu")
@@ -59,19 +56,11 @@ PLANT_NAMES = ["turbine_torque", "generator_torque", "electric_torque", "gate", 
 
 
 def run(duration, plant_params, step=0.005, rotor_params=None, rotor_fmu=ROTOR, plant_fmu=PLANT):
-    """Co-simulate; returns a dict of arrays sampled at every communication step
-    (with the initial values at t = 0 first)."""
-    execution = CosimExecution.from_step_size(step_size=int(round(step * 1e9)))
-    rotor = execution.add_local_slave(CosimLocalSlave(fmu_path=rotor_fmu, instance_name="rotor"))
-    plant = execution.add_local_slave(CosimLocalSlave(fmu_path=plant_fmu, instance_name="plant"))
-    rv, pv = references(execution, rotor), references(execution, plant)
-    for name, value in plant_params.items():
-        execution.real_initial_value(plant, pv[name], float(value))
+    """Co-simulate; returns a dict of arrays sampled after every communication step."""
     params = {"solver.time_step": 5e-3, "unbalance_ramp_time": 2.0,
               "shaft.initial_speed": float(plant_params.get("start_speed", 0.0))}
     params.update(rotor_params or {})
-    for name, value in params.items():
-        execution.real_initial_value(rotor, rv[name], float(value))
+    execution, rotor, plant, rv, pv = execution_of(rotor_fmu, plant_fmu, step, plant_params, params)
     for source, target in [("turbine_torque", "torques.turbine"), ("generator_torque", "torques.generator")]:
         execution.connect_real_variables(plant, pv[source], rotor, rv[target])
     for source, target in [("torques.turbine.speed", "turbine_speed"), ("torques.generator.speed", "generator_speed"),
@@ -131,21 +120,20 @@ def save(result, prefix, title):
     plt.close(fig)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("scenario", nargs="?", default="all", choices=["all"] + list(SCENARIOS))
-    parser.add_argument("--duration", type=float, default=None)
-    args = parser.parse_args()
-    for name in ([args.scenario] if args.scenario != "all" else list(SCENARIOS)):
-        spec = SCENARIOS[name]
-        result = run(args.duration or spec["duration"], spec["plant"], spec["step"], spec.get("rotor"))
-        prefix = os.path.join(OUT, f"torque_{name}")
-        save(result, prefix, f"hydro_unit_torque: {name.replace('_', ' ')} (torque-driven rotor FMU, libcosim)")
-        speed = result["rotor.shaft.speed"] * 30 / np.pi
-        shaft = result[f"rotor.shaft.torque[{SECTION}]"]
-        print(f"torque {name}: final speed {speed[-1]:.2f} rpm, peak {np.max(speed):.2f} rpm, "
-              f"shaft torque {np.min(shaft) / 1e6:.2f} … {np.max(shaft) / 1e6:.2f} MN·m → {prefix}.csv/.png")
+def run_scenario(name, duration):
+    """Run one scenario; CSV and PNG into out/."""
+    spec = SCENARIOS[name]
+    result = run(duration or spec["duration"], spec["plant"], spec["step"], spec.get("rotor"))
+    prefix = os.path.join(OUT, f"torque_{name}")
+    save(result, prefix, f"hydro_unit_torque: {name.replace('_', ' ')} (torque-driven rotor FMU, libcosim)")
+    speed = result["rotor.shaft.speed"] * 30 / np.pi
+    shaft = result[f"rotor.shaft.torque[{SECTION}]"]
+    print(f"torque {name}: final speed {speed[-1]:.2f} rpm, peak {np.max(speed):.2f} rpm, "
+          f"shaft torque {np.min(shaft) / 1e6:.2f} … {np.max(shaft) / 1e6:.2f} MN·m → {prefix}.csv/.png")
 
+
+def main():
+    scenario_cli(__doc__, SCENARIOS, run_scenario)
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -223,10 +223,10 @@ fn static_equilibrium_on_the_bearings_is_exact() {
     }
 }
 
-/// The shipped speed-driven models: their file stems. A torque-driven copy
-/// (`hydro_unit_torque`: hydro_unit's lateral rotor, driven by torques and
-/// held by a thrust bearing that acts on the twist only) is run at a
-/// prescribed speed by none of these tests; its lateral rotor is hydro_unit's.
+/// The shipped speed-driven models: their file stems. These tests prescribe
+/// the speed, so a torque-driven model is left out (`hydro_unit_torque` is
+/// hydro_unit's lateral rotor with torque inputs and a thrust bearing that
+/// acts on the twist only).
 fn shipped() -> Vec<String> {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/models");
     let mut names: Vec<String> = std::fs::read_dir(dir)
