@@ -14,7 +14,7 @@ cargo clippy --lib --no-default-features --quiet -- -D warnings
 # packs and validates it with FMPy; tests/wine.rs runs the win64 one under Wine).
 cargo build --lib --examples --quiet
 bash fmu_pack.sh
-for model in models/*.toml; do
+for model in models/*.toml tests/data/torque_ports.toml; do
   [ "$model" = models/hydro_unit.toml ] || bash fmu_pack.sh --model "$model"
 done
 # The torque-driven hydro unit's speed-driven twin (the same model file with

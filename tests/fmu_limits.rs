@@ -119,7 +119,10 @@ fn restored_states_are_validated() {
     // Field values a master could craft with a valid checksum are checked on
     // restore: time NaN, a time step of 1e-300 s, a negative viscosity. The
     // image: 8-byte magic, version, fingerprint, then the scalars (time first,
-    // time_step sixth), the vectors (viscosity last), FNV-1a of all before it.
+    // time_step sixth), the vectors (each a length, then its values: the
+    // tuned viscosities, then the loads, their rates and the four twist
+    // vectors, empty for this speed-driven unit without loads), FNV-1a of
+    // all before it.
     let craft = |edit: &dyn Fn(&mut Vec<u8>)| -> Vec<u8> {
         let mut b = bytes.clone();
         b.truncate(b.len() - 8);
@@ -140,7 +143,8 @@ fn restored_states_are_validated() {
         (
             "viscosity",
             craft(&|b| {
-                let at = b.len() - 16;
+                // The last tuned value, before six empty vectors' lengths.
+                let at = b.len() - 16 - 6 * 8;
                 put(b, at, -0.02)
             }),
         ),

@@ -426,3 +426,24 @@ fn a_torque_driven_fmu_accelerates_as_its_net_torque_over_its_inertia() {
         );
     }
 }
+
+/// A non-finite port force, force magnitude or torque is refused with
+/// fmi2Error naming the variable (and the state machine says so).
+#[test]
+fn non_finite_load_inputs_are_errors() {
+    for (m, name) in [
+        (brackets_with_port(), "ports.amb.fx"),
+        (brackets_with_port(), "forces.vortex_rope.magnitude"),
+        (torque_driven_classic(), "torques.drive"),
+    ] {
+        for bad in [f64::NAN, f64::INFINITY] {
+            let mut fmu = Instance::new("nan", m.clone()).unwrap();
+            assert_eq!(fmu.set(vr(&m, name), Kind::Real, bad), Status::Error);
+            let text = fmu.drain_messages().pop().unwrap().2;
+            assert!(
+                text.contains(&format!("{name} = ")) && text.contains("is not finite"),
+                "{text}"
+            );
+        }
+    }
+}

@@ -330,3 +330,94 @@ fn port_and_harmonic_forces_balance_the_energy() {
         "energy change {change:e} J against net work {work:e} J (exchanged {exchanged:e} J)"
     );
 }
+
+/// `rotor response --force NAME` writes the linear forced response the
+/// library computes (every speed, the disk probe's x amplitude and phase, to
+/// 1e-12), the force's frequency (0.3× the speed), and prints each point's
+/// largest orbit with its speed; `--magnitude` scales the response
+/// linearly; an unknown force is refused naming the harmonic ones.
+#[test]
+fn the_response_command_writes_the_linear_forced_response() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("response_cli");
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = classic_with_force("ratio = 0.3\ndirection = \"forward\"");
+    let (model, csv) = (dir.join("forced.toml"), dir.join("response.csv"));
+    std::fs::write(&model, &text).unwrap();
+    let run = |extra: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .arg("response")
+            .arg(&model)
+            .args([
+                "--force",
+                "excitation",
+                "--min-rpm",
+                "1000",
+                "--max-rpm",
+                "6000",
+            ])
+            .args(["--points", "11", "--csv"])
+            .arg(&csv)
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let read = || -> Vec<Vec<f64>> {
+        std::fs::read_to_string(&csv)
+            .unwrap()
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+            .collect()
+    };
+    let out = run(&[]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let rows = read();
+    let r = rotor(&text);
+    let index = harmonic_force(&r, "excitation").unwrap();
+    let mut largest = (0.0f64, 0.0);
+    for row in &rows {
+        let speed = row[1];
+        let (omega, q) = forced_response(&r, index, speed).unwrap();
+        assert!((row[2] - omega / std::f64::consts::TAU).abs() < 1e-12 * row[2]);
+        assert!((omega - 0.3 * speed).abs() < 1e-12 * omega);
+        let (x, _) = node_xy(&q, 3);
+        assert!((row[3] - x.norm()).abs() <= 1e-12 * x.norm(), "{row:?}");
+        assert!((row[4] - x.arg().to_degrees()).abs() < 1e-9, "{row:?}");
+        if row[7] > largest.0 {
+            largest = (row[7], row[0]);
+        }
+    }
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let line = stdout
+        .lines()
+        .find(|l| l.starts_with("probe disk"))
+        .unwrap_or_else(|| panic!("{stdout}"));
+    let cols: Vec<&str> = line.split_whitespace().collect();
+    let printed: f64 = cols[2].parse().unwrap();
+    assert!(
+        (printed - largest.0 * 1e6).abs() <= 1e-5 * printed,
+        "{line} vs {largest:?}"
+    );
+    assert_eq!(cols[3].parse::<f64>().unwrap(), largest.1);
+    // Twice the amplitude, twice the response.
+    assert!(run(&["--magnitude", "100"]).status.success());
+    for (a, b) in rows.iter().zip(read()) {
+        assert!((b[3] - 2.0 * a[3]).abs() <= 1e-12 * b[3]);
+    }
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("response")
+        .arg(&model)
+        .args(["--force", "rope", "--max-rpm", "3000"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success()
+            && err.contains("has no harmonic force \"rope\" (its harmonic forces: excitation)"),
+        "{err}"
+    );
+}

@@ -24,9 +24,17 @@ fn env_u64(name: &str, default: u64) -> u64 {
         .unwrap_or(default)
 }
 
-/// The FMU packed from each shipped model (`scripts/test.sh` packs them all).
+/// The FMU packed from each shipped model (`scripts/test.sh` packs them all),
+/// and from `tests/data/torque_ports.toml`: a torque-driven rotor with a
+/// port, a magnetic pull and forces, so that the fuzzed sequences reach the
+/// torque, port, force and excitation variables.
 fn shipped_fmus() -> Vec<PathBuf> {
-    let mut fmus = Vec::new();
+    let mut fmus = vec![root().join("out/torque_ports.fmu")];
+    assert!(
+        fmus[0].exists(),
+        "{} missing: scripts/test.sh packs it",
+        fmus[0].display()
+    );
     for entry in std::fs::read_dir(root().join("models")).unwrap() {
         let path = entry.unwrap().path();
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();

@@ -4,13 +4,9 @@
 use rotor_bearing::analysis::torsion::torsional_modes;
 use rotor_bearing::model::RotorModel;
 
-/// Two disks (2 and 5 kg·m²) on a coupling of 1e5 N·m/rad joining two
-/// nodes of a vanishing shaft (1 mm × 1 mm: its polar inertia is 1e-12 of
-/// the disks'): the one torsional frequency is `√(k (J₁ + J₂)/(J₁ J₂))` to
-/// 1e-9, and the disks twist against each other in the ratio `−J₁/J₂`.
-#[test]
-fn two_inertias_on_a_spring_have_the_closed_form_frequency() {
-    let text = r#"
+/// Two disks (2 and 5 kg·m²) on a 1e5 N·m/rad coupling between the nodes
+/// of a vanishing shaft.
+const TWO_INERTIAS: &str = r#"
 name = "two_inertias"
 [[materials]]
 name = "steel"
@@ -46,6 +42,14 @@ node = 2
 kxx = 1e6
 kyy = 1e6
 "#;
+
+/// Two disks (2 and 5 kg·m²) on a coupling of 1e5 N·m/rad joining two
+/// nodes of a vanishing shaft (1 mm × 1 mm: its polar inertia is 1e-12 of
+/// the disks'): the one torsional frequency is `√(k (J₁ + J₂)/(J₁ J₂))` to
+/// 1e-9, and the disks twist against each other in the ratio `−J₁/J₂`.
+#[test]
+fn two_inertias_on_a_spring_have_the_closed_form_frequency() {
+    let text = TWO_INERTIAS;
     let model = RotorModel::from_toml(text, "two.toml").unwrap();
     let modes = torsional_modes(&model, 3).unwrap();
     assert_eq!(
@@ -356,4 +360,224 @@ fn a_vertical_unit_breaks_away_at_the_thrust_bearings_friction() {
             breakaway / rate
         );
     }
+}
+
+/// `rotor modes` lists the torsional modes after the lateral ones, labelled
+/// "torsional" (the two-inertia frequency to the printed 4 decimals), writes
+/// their shapes (twist ratio −J₁/J₂ to 1e-9), and `rotor campbell` names
+/// them as horizontal lines.
+#[test]
+fn the_cli_lists_torsional_modes_and_their_shapes() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("torsion_cli");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (model, csv) = (dir.join("two.toml"), dir.join("twist.csv"));
+    std::fs::write(&model, TWO_INERTIAS).unwrap();
+    let run = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let m = model.to_str().unwrap();
+    let out = run(&[
+        "modes",
+        m,
+        "--torsional-modes",
+        "2",
+        "--torsional-shapes-csv",
+        csv.to_str().unwrap(),
+    ]);
+    let want = (1e5f64 * 7.0 / 10.0).sqrt();
+    let rows: Vec<Vec<&str>> = out
+        .lines()
+        .filter(|l| l.trim_end().ends_with("torsional"))
+        .map(|l| l.split_whitespace().collect())
+        .collect();
+    assert_eq!(rows.len(), 1, "{out}");
+    let hz: f64 = rows[0][2].parse().unwrap();
+    assert!((hz - want / std::f64::consts::TAU).abs() < 5e-5, "{out}");
+    assert_eq!(rows[0][3], "0", "an undamped coupling");
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let twist: Vec<f64> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.rsplit(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(twist.len(), 2);
+    assert!((twist[1] / twist[0] + 2.0 / 5.0).abs() < 1e-9, "{text}");
+    let campbell = run(&["campbell", m, "--max-rpm", "3000", "--steps", "4"]);
+    let line = format!(
+        "torsional modes (horizontal lines, independent of the speed): {:.4} Hz",
+        want / std::f64::consts::TAU
+    );
+    assert!(campbell.contains(&line), "{campbell}");
+}
+
+/// A short-circuit torque on a two-inertia shaft (acceptance 4 of issue 25):
+/// the generator's electromagnetic torque rises linearly to `T` over `t_r`
+/// and stays (the envelope of a three-phase fault's torque). The twist
+/// `θ = φ₁ − φ₂` obeys `θ̈ + ω² θ = T(t)/J₁`, so the shaft torque `k θ`
+/// peaks at `T J₂/(J₁ + J₂) (1 + 2 |sin(ω t_r/2)|/(ω t_r))`: the torque-driven
+/// simulator's peak (parabola through the three samples around it) matches to
+/// 1e-6 at a 2 µs step (Newmark's error is `O((ω h)²)` ≈ 3e-7 here).
+#[test]
+fn a_short_circuit_torque_peaks_as_the_two_inertia_closed_form() {
+    let text = TWO_INERTIAS.to_string()
+        + "\n[torsion]\ndrive = \"torque\"\n[[torques]]\nname = \"generator\"\nnode = 1\n";
+    let model = RotorModel::from_toml(&text, "two_torque.toml").unwrap();
+    let (j1, j2, k, torque, rise): (f64, f64, f64, f64, f64) = (2.0, 5.0, 1e5, 1e4, 2e-3);
+    let omega = (k * (j1 + j2) / (j1 * j2)).sqrt();
+    let want =
+        torque * j2 / (j1 + j2) * (1.0 + 2.0 * (omega * rise / 2.0).sin().abs() / (omega * rise));
+    let h = 2e-6;
+    let mut sim = Simulator::new(
+        Rotor::new(model.clone()).unwrap(),
+        SolverOptions {
+            time_step: h,
+            gravity: false,
+            ..SolverOptions::default()
+        },
+    )
+    .unwrap();
+    sim.set_speed(100.0, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    let input = model.first_torque_input();
+    sim.set_load(input, 0.0, torque / rise).unwrap();
+    let mut series = Vec::new();
+    let steps = (0.03 / h) as usize;
+    for n in 1..=steps {
+        let t = n as f64 * h;
+        if n == (rise / h).round() as usize + 1 {
+            sim.set_load(input, torque, 0.0).unwrap();
+        }
+        sim.advance_to(t).unwrap();
+        series.push(sim.section_torque(0).unwrap().abs());
+    }
+    let i = (1..series.len() - 1)
+        .max_by(|&a, &b| series[a].total_cmp(&series[b]))
+        .unwrap();
+    let (a, b, c) = (series[i - 1], series[i], series[i + 1]);
+    let peak = b + 0.125 * (a - c).powi(2) / (a - 2.0 * b + c).abs();
+    assert!(
+        (peak / want - 1.0).abs() < 1e-6,
+        "shaft torque peak {peak} N·m against {want} N·m"
+    );
+}
+
+/// `rotor simulate --torque NAME=VALUE` drives a torque-driven shaft: from
+/// `--rpm` 600 (its initial speed) the rigid classic rotor without unbalance
+/// accelerates as the net 15 N·m over its polar inertia (the CSV's mean
+/// speed to 1e-9; each torque node's to 1e-4, as the torques applied at
+/// once ring the stiff couplings); the CSV has the torque nodes'
+/// speeds and angles and the elements' torques. A wrong name, a value that
+/// is not a number, `--torque` on a speed-driven model and a speed ramp on
+/// a torque-driven one are refused by name.
+#[test]
+fn the_cli_simulates_a_torque_driven_shaft() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("torsion_simulate");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (model, csv) = (dir.join("torque.toml"), dir.join("run.csv"));
+    let text = torque_driven_classic(true).replace("magnitude = 0.001", "magnitude = 0.0");
+    std::fs::write(&model, &text).unwrap();
+    let m = model.to_str().unwrap();
+    let rotor = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let out = rotor(&[
+        "simulate",
+        m,
+        "--torque",
+        "drive=20",
+        "--torque",
+        "load=-5",
+        "--rpm",
+        "600",
+        "--duration",
+        "0.3",
+        "--step",
+        "1e-4",
+        "--output-step",
+        "0.01",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let table = std::fs::read_to_string(&csv).unwrap();
+    let header: Vec<&str> = table.lines().next().unwrap().split(',').collect();
+    let last: Vec<f64> = table
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    let col = |name: &str| {
+        header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("{name}: {header:?}"))
+    };
+    let parsed = RotorModel::from_toml(&text, "torque.toml").unwrap();
+    let inertia = rotor_bearing::rotor::torsion::TorsionalRotor::new(&parsed).total_inertia();
+    let rpm = 30.0 / std::f64::consts::PI;
+    let want = 600.0 + 15.0 / inertia * 0.3 * rpm;
+    for (name, tolerance) in [
+        ("speed_rpm", 1e-9),
+        ("drive_speed_rpm", 1e-4),
+        ("load_speed_rpm", 1e-4),
+    ] {
+        let got = last[col(name)];
+        assert!(
+            (got / want - 1.0).abs() < tolerance,
+            "{name}: {got} vs {want} rpm"
+        );
+    }
+    assert!(header.contains(&"load_angle_rad") && header.contains(&"shaft_torque_6_Nm"));
+    for (args, needle) in [
+        (
+            vec!["--torque", "turbine=3"],
+            "\"turbine\" is not a torque node of",
+        ),
+        (
+            vec!["--torque", "drive=lots"],
+            "\"lots\" is not a finite number",
+        ),
+        (
+            vec!["--ramp-rpm", "0:600"],
+            "is torque-driven: its speed comes from the torques",
+        ),
+    ] {
+        let mut all = vec!["simulate", m, "--duration", "0.01"];
+        all.extend(args);
+        let out = rotor(&all);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success() && err.contains(needle), "{err}");
+    }
+    let out = rotor(&[
+        "simulate",
+        "--torque",
+        "drive=1",
+        "--rpm",
+        "100",
+        "--duration",
+        "0.01",
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !out.status.success() && err.contains("--torque: the shaft of"),
+        "{err}"
+    );
 }

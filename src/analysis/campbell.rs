@@ -6,6 +6,7 @@
 //! so the response has no peak there (rigid-body modes on fluid films at low
 //! speed cross the 1× line with ζ ≈ 0.8).
 
+use super::torsion::{TorsionalMode, torsional_modes};
 use nalgebra::Complex;
 
 use crate::rotor::Rotor;
@@ -330,6 +331,12 @@ pub struct CampbellStudy {
     /// tracked), without the critical speeds' refinement: what the
     /// benchmarks time.
     pub diagram_seconds: f64,
+    /// The lowest torsional modes ([`torsional_modes`], as many as lateral
+    /// ones were asked for) of a model that describes its torsion
+    /// ([`RotorModel::models_torsion`](crate::model::RotorModel::models_torsion)),
+    /// else none: horizontal lines, the twist having no gyroscopic coupling
+    /// to the spin.
+    pub torsional: Vec<TorsionalMode>,
 }
 
 /// The Campbell study `rotor campbell` and the report run.
@@ -363,7 +370,14 @@ pub fn campbell_study(
     let model = &rotor.model;
     let max_speed = model.max_speed_stated.then_some(model.max_speed);
     let margins = critical_margins(&criticals, request.operating.as_ref(), max_speed);
+    let torsional = if model.models_torsion() {
+        torsional_modes(model, request.modes)
+            .map_err(|source| ModalError::Linalg { speed: 0.0, source })?
+    } else {
+        Vec::new()
+    };
     Ok(CampbellStudy {
+        torsional,
         diagram,
         criticals,
         margins,

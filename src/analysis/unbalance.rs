@@ -62,7 +62,15 @@ pub fn response_points(rotor: &Rotor) -> Vec<ResponsePoint> {
     let bearings = m.bearings.iter().map(|b| ResponsePoint {
         label: format!(
             "{} {}",
-            if b.kind.is_seal() { "seal" } else { "bearing" },
+            if b.kind.is_seal() {
+                "seal"
+            } else if b.kind.is_magnetic_pull() {
+                "pull"
+            } else if b.kind.is_rub() {
+                "rub"
+            } else {
+                "bearing"
+            },
             b.name
         ),
         node: b.node,

@@ -16,6 +16,9 @@
 //! columns[1] = vec![2e7, 6e7]; // kxy: cross-coupled
 //! columns[2] = vec![-2e7, -6e7]; // kyx
 //! columns[3] = vec![1e8, 3e8]; // kyy
+//! for c in &mut columns[4..] {
+//!     *c = vec![0.0; 2]; // no damping
+//! }
 //! let table = CoefficientTable::new(vec![100.0, 300.0], columns)?;
 //! let bearing = TableBearing { table, added_mass: [[0.0; 2]; 2] };
 //! let mut eval = BearingEval::new(2);

@@ -513,6 +513,16 @@ impl RotorModel {
         out
     }
 
+    /// Whether the model describes its torsion: torque-driven, or with torque
+    /// nodes, couplings or thrust bearings. Analyses list torsional modes
+    /// for such a model by default.
+    pub fn models_torsion(&self) -> bool {
+        self.drive == Drive::Torque
+            || !self.torques.is_empty()
+            || !self.couplings.is_empty()
+            || !self.thrust_bearings.is_empty()
+    }
+
     /// Index of the first torque channel in [`Self::load_inputs`].
     pub fn first_torque_input(&self) -> usize {
         self.load_inputs().len() - self.torques.len()

@@ -251,3 +251,66 @@ fn pull_force_and_port_errors_name_file_line_and_field() {
         }
     }
 }
+
+/// `[torsion]`, `[[torques]]`, `[[couplings]]` and `[[thrust_bearings]]`:
+/// every bad entry names the file, line, field and value; a thrust bearing
+/// without an axial load on a horizontal rotor is a warning naming it.
+#[test]
+fn torsion_errors_name_file_line_and_field() {
+    let cases: Vec<(&str, &str, &str)> = vec![
+        (
+            "\n[torsion]\ndrive = \"torque\"\n[[torques]]\nname = \"turbine\"\nnode = 9\n",
+            "node = 9",
+            "torques[0].node = 9: must be a node number from 1 to 7",
+        ),
+        (
+            "\n[[couplings]]\nnode = 2\ntorsional_stiffness = -1e5\n",
+            "torsional_stiffness = -1e5",
+            "couplings[0].torsional_stiffness = -100000: must be a finite number greater than zero",
+        ),
+        (
+            "\n[[couplings]]\nnode = 2\ntorsional_stiffness = 1e5\ntorsional_damping = -3.0\n",
+            "torsional_damping = -3.0",
+            "couplings[0].torsional_damping = -3: must be a finite number not less than zero",
+        ),
+        (
+            "\n[[couplings]]\nnode = 7\ntorsional_stiffness = 1e5\n",
+            "node = 7",
+            "couplings[0].node = 7: no shaft element starts at this node",
+        ),
+        (
+            "\n[torsion]\ndrive = \"electric\"\n",
+            "drive = \"electric\"",
+            "torsion.drive = \"electric\": must be \"speed\" or \"torque\"",
+        ),
+        (
+            "\n[torsion]\ndrive = \"torque\"\n",
+            "drive = \"torque\"",
+            "torsion.drive = \"torque\": ",
+        ),
+    ];
+    for (extra, needle, want) in cases {
+        let e = err_of(extra);
+        assert!(e.contains(want), "{extra}\ngave: {e}\nwant: {want}");
+        let line = line_in(extra, needle, 0);
+        assert!(
+            e.starts_with(&format!("m.toml:{line}: ")),
+            "{e} (line {line})"
+        );
+    }
+    let text = format!(
+        "{BASE}\n[[thrust_bearings]]\nname = \"thrust\"\nnode = 1\ninner_radius = 0.05\nouter_radius = 0.1\nfilm_thickness = 3e-5\nviscosity = 0.03\n"
+    );
+    let m = RotorModel::from_toml(&text, "m.toml").unwrap();
+    let warnings: Vec<String> = m
+        .plausibility_warnings()
+        .iter()
+        .map(|w| w.to_string())
+        .collect();
+    assert!(
+        warnings.iter().any(|w| w.starts_with(
+            "m.toml: thrust_bearings[0].load = 0: the thrust bearing carries no axial load"
+        )),
+        "{warnings:?}"
+    );
+}

@@ -197,6 +197,26 @@ pub fn campbell_png(path: &Path, title: &str, study: &CampbellStudy) -> Result<(
     ] {
         legend.push((Swatch::Dot(whirl_color(w)), name.into()));
     }
+    // Torsional modes: horizontal lines (the twist has no gyroscopic term).
+    let torsion = RGBColor(150, 60, 170);
+    for m in &study.torsional {
+        let f = m.natural_frequency * hz;
+        if f <= f_max {
+            chart
+                .draw_series(DashedLineSeries::new(
+                    [(s_min, f), (s_max, f)],
+                    4,
+                    4,
+                    torsion.stroke_width(2),
+                ))
+                .map_err(|e| failed(path, e))?;
+        }
+        let shown = if f <= f_max { "" } else { ", above the chart" };
+        legend.push((
+            Swatch::Dashed(torsion, 2),
+            format!("torsional mode {f:.2} Hz{shown}"),
+        ));
+    }
     for (k, m) in study.margins.iter().enumerate() {
         legend.push((Swatch::Ring(BLACK), critical_label(k, m)));
     }

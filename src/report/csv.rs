@@ -2,6 +2,7 @@
 //! whole file text (header line first, `\n` line ends). Column names carry their
 //! SI unit; speeds are also given in rpm.
 
+use crate::analysis::torsion::TorsionalMode;
 use std::f64::consts::PI;
 use std::fmt::Write as _;
 
@@ -121,7 +122,10 @@ pub fn coefficients(curve: &[DimensionlessPoint]) -> String {
 /// position (m); the total friction torque; then, for every bearing, rub and
 /// seal on a pedestal, the journal position relative to the housing (m, what
 /// a proximity probe on the bearing reads) and the housing's absolute
-/// position (m) and velocity (m/s, what a seismic sensor on it reads).
+/// position (m) and velocity (m/s, what a seismic sensor on it reads); for a
+/// torque-driven shaft each torque node's speed (rpm) and angle (rad) and
+/// each shaft element's torque (N·m); each thrust bearing's friction torque
+/// (N·m) and power loss (W).
 pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
     let mut out = String::from("time_s,speed_rpm,spin_angle_rad");
     for b in &model.bearings {
@@ -146,6 +150,20 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
             ",{n}_x_rel_m,{n}_y_rel_m,{n}_housing_x_m,{n}_housing_y_m,{n}_housing_vx_m_s,{n}_housing_vy_m_s"
         )
         .ok();
+    }
+    // A torque-driven shaft: each torque node's speed and angle, each shaft
+    // element's torque; and the thrust bearings' friction.
+    let torque_driven = model.drive == crate::model::Drive::Torque;
+    if torque_driven {
+        for t in &model.torques {
+            write!(out, ",{0}_speed_rpm,{0}_angle_rad", t.name).ok();
+        }
+        for k in 0..model.elements.len() {
+            write!(out, ",shaft_torque_{}_Nm", k + 1).ok();
+        }
+    }
+    for t in &model.thrust_bearings {
+        write!(out, ",{0}_friction_torque_Nm,{0}_power_loss_W", t.name).ok();
     }
     out.push('\n');
     for o in records {
@@ -187,6 +205,17 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
             )
             .ok();
         }
+        if torque_driven {
+            for t in &o.torques {
+                write!(out, ",{},{}", t.speed * RAD_S_TO_RPM, t.angle).ok();
+            }
+            for torque in &o.shaft_torques {
+                write!(out, ",{torque}").ok();
+            }
+        }
+        for t in &o.thrust_bearings {
+            write!(out, ",{},{}", t.friction_torque, t.power_loss).ok();
+        }
         out.push('\n');
     }
     out
@@ -227,6 +256,35 @@ pub fn unbalance(sweep: &UnbalanceSweep) -> String {
             .ok();
         }
         out.push('\n');
+    }
+    out
+}
+
+/// The response to one harmonic force over speed: as [`unbalance`], with
+/// the force's frequency (Hz) after the speed; the phases are of
+/// `x(t) = |X| cos(ωt + φ)` at the force's own frequency `ω`.
+pub fn forced(frequencies: &[f64], sweep: &UnbalanceSweep) -> String {
+    let table = unbalance(sweep);
+    let mut lines = table.lines();
+    let mut out = String::new();
+    if let Some(header) = lines.next() {
+        let rest = header
+            .strip_prefix("speed_rpm,speed_rad_s")
+            .unwrap_or(header);
+        writeln!(out, "speed_rpm,speed_rad_s,frequency_hz{rest}").ok();
+    }
+    for (line, w) in lines.zip(frequencies) {
+        let mut cells = line.splitn(3, ',');
+        let (rpm, rad, rest) = (cells.next(), cells.next(), cells.next());
+        writeln!(
+            out,
+            "{},{},{}{}",
+            rpm.unwrap_or(""),
+            rad.unwrap_or(""),
+            w / (2.0 * PI),
+            rest.map_or(String::new(), |r| format!(",{r}"))
+        )
+        .ok();
     }
     out
 }
@@ -321,6 +379,28 @@ pub fn mode_shapes(model: &RotorModel, modes: &[Mode]) -> String {
                 o.minor,
                 o.major_angle.to_degrees(),
                 o.direction()
+            )
+            .ok();
+        }
+    }
+    out
+}
+
+/// Torsional mode shapes: per mode its natural frequency (Hz) and damping
+/// ratio, per node its position and twist (rad, the largest twist 1).
+pub fn torsional_mode_shapes(model: &RotorModel, modes: &[TorsionalMode]) -> String {
+    let mut out = String::from("mode,natural_frequency_hz,damping_ratio,node,z_m,twist\n");
+    for (k, m) in modes.iter().enumerate() {
+        for (node, twist) in m.shape.iter().enumerate() {
+            writeln!(
+                out,
+                "{},{},{},{},{},{}",
+                k + 1,
+                m.natural_frequency / (2.0 * PI),
+                m.damping_ratio,
+                node + 1,
+                model.node_z[node],
+                twist
             )
             .ok();
         }

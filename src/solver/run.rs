@@ -132,14 +132,27 @@ pub fn record_into(
     let t0 = sim.time();
     let count = (duration / output_step).round() as usize;
     out.reserve(count + 1);
+    // A torque-driven shaft takes its speed from the torques: the profile
+    // can only be its initial speed.
+    let driven = sim.is_torque_driven();
+    if driven && !matches!(profile, SpeedProfile::Constant(_)) {
+        return Err(SolverError::Input(format!(
+            "the shaft of {} is torque-driven: its speed comes from the torques, a speed profile can only give its initial speed (a constant speed)",
+            sim.rotor().model.name
+        )));
+    }
     let (w, rate) = profile.at(t0);
-    sim.set_speed(w, rate)?;
+    if !driven || t0 == 0.0 {
+        sim.set_speed(w, rate)?;
+    }
     out.push(sim.outputs()?);
     for k in 1..=count {
         let t = t0 + k as f64 * output_step;
         sim.advance_to(t)?;
-        let (w, rate) = profile.at(t);
-        sim.set_speed(w, rate)?;
+        if !driven {
+            let (w, rate) = profile.at(t);
+            sim.set_speed(w, rate)?;
+        }
         out.push(sim.outputs()?);
         progress(k as f64 / count as f64, sim);
     }

@@ -296,6 +296,12 @@ impl Simulator {
         self.warnings.take()
     }
 
+    /// Whether the shaft is torque-driven (`[torsion] drive = "torque"`): its
+    /// speed then comes from the torque inputs.
+    pub fn is_torque_driven(&self) -> bool {
+        self.torsion.is_some()
+    }
+
     /// Work counters since creation.
     pub fn stats(&self) -> StepStats {
         self.stats
@@ -444,7 +450,7 @@ impl Simulator {
         self.state.pdd.fill(0.0);
         self.factor = None;
         self.record_factor();
-        Ok(())
+        self.running_acceleration()
     }
 
     /// Make the accelerations consistent with the equations of motion at the

@@ -444,6 +444,53 @@ impl Simulator {
         Ok(outcome?)
     }
 
+    /// The twist accelerations consistent with the state of a turning shaft
+    /// and the inputs now, `M_t φ̈ = T_in − T_f − T_thrust(φ̇) − K_t φ − C_t φ̇`
+    /// (the sites' friction at the mean speed, each thrust bearing's at its
+    /// node's speed): a run that starts at speed under a torque starts
+    /// Newmark from the acceleration it has (a zero one is a lag of
+    /// `h/2 · φ̈` in the speed that never decays).
+    pub(super) fn running_acceleration(&mut self) -> Result<(), SolverError> {
+        if self.torsion.is_none() || self.state.stuck != 0.0 {
+            return Ok(());
+        }
+        if let Some(t) = self.torsion.as_mut() {
+            t.fresh.fill(0.0);
+        }
+        let t0 = self.state.time;
+        self.site_friction(self.speed_at(t0), true, true)?;
+        let Some(mut tors) = self.torsion.take() else {
+            return Ok(());
+        };
+        let s = &self.state;
+        tors.rhs.copy_from_slice(&tors.fresh);
+        for &(k, dof) in &tors.inputs {
+            if let Some(i) = dof {
+                tors.rhs[i] += self.load_at(k, t0);
+            }
+        }
+        for (dof, t) in &tors.thrust {
+            if let Some(i) = *dof {
+                tors.rhs[i] -= t.friction_torque(s.twist_rate[i]).0;
+            }
+        }
+        for (m, x) in [
+            (&tors.chain.stiffness, &s.twist),
+            (&tors.chain.damping, &s.twist_rate),
+        ] {
+            m.mul_vec(x, &mut tors.scratch);
+            for (r, v) in tors.rhs.iter_mut().zip(&tors.scratch) {
+                *r -= v;
+            }
+        }
+        let outcome = tors.chain.mass.lu().map(|lu| {
+            lu.solve_in_place(&mut tors.rhs);
+            self.state.twist_accel.copy_from_slice(&tors.rhs);
+        });
+        self.torsion = Some(tors);
+        Ok(outcome?)
+    }
+
     /// A step of the shaft held at rest by static friction: no twist motion,
     /// the lateral step at zero speed.
     fn hold_at_rest(&mut self, h: f64) -> Result<Option<f64>, SolverError> {

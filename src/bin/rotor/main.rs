@@ -27,6 +27,7 @@ mod fmu_stage;
 mod modal;
 mod operating_point;
 mod report;
+mod response;
 mod simulate;
 mod stability;
 mod statics;
@@ -147,6 +148,14 @@ enum Command {
         /// Draw the mode shapes (orbits along the shaft) to this PNG file.
         #[arg(long)]
         shapes_png: Option<PathBuf>,
+        /// Number of torsional modes listed after the lateral ones (0: none).
+        /// Default: 3 for a model that describes its torsion (torque-driven,
+        /// or with torque nodes, couplings or thrust bearings), else 0.
+        #[arg(long)]
+        torsional_modes: Option<usize>,
+        /// Write the torsional mode shapes (twist per node) to this CSV file.
+        #[arg(long)]
+        torsional_shapes_csv: Option<PathBuf>,
     },
     /// Campbell diagram and critical speeds up to --max-rpm (from 0 on linear
     /// bearings, from 1 % of --max-rpm with fluid-film bearings); crossings with
@@ -188,6 +197,11 @@ enum Command {
         /// Speed table: CSV with columns time_s,speed_rpm (header line optional).
         #[arg(long)]
         speed_csv: Option<PathBuf>,
+        /// A torque-driven shaft's torque NAME=VALUE (N·m, a `[[torques]]`
+        /// name, constant from the start; repeat for each); --rpm is then its
+        /// initial speed (default 0: from rest).
+        #[arg(long = "torque", value_name = "NAME=N·m")]
+        torques: Vec<String>,
         /// Simulated time (s).
         #[arg(long, default_value_t = 1.0)]
         duration: f64,
@@ -351,6 +365,32 @@ enum Command {
         #[arg(long)]
         out: PathBuf,
     },
+    /// Steady response of every probe and journal to one harmonic force of the
+    /// model (a vortex rope, blade passing, a fixed-frequency excitation) over
+    /// a speed range: the largest orbit of each, and a CSV of amplitude and
+    /// phase at every speed.
+    Response {
+        #[command(flatten)]
+        model: ModelArg,
+        /// The harmonic force (`[[forces]]` name).
+        #[arg(long)]
+        force: String,
+        /// Lowest spin speed (rpm).
+        #[arg(long, default_value_t = 0.0)]
+        min_rpm: f64,
+        /// Highest spin speed (rpm).
+        #[arg(long)]
+        max_rpm: f64,
+        /// Number of speeds.
+        #[arg(long, default_value_t = 200)]
+        points: usize,
+        /// The force's amplitude (N), instead of the model file's.
+        #[arg(long)]
+        magnitude: Option<f64>,
+        /// Write the response to this CSV file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+    },
     /// Unbalance response over a speed range (Bode and polar plots), its peaks,
     /// amplification factors and API 684 separation margins.
     Unbalance {
@@ -473,14 +513,17 @@ fn run(cli: Cli) -> Result<(), String> {
             csv,
             shapes_csv,
             shapes_png,
+            torsional_modes,
+            torsional_shapes_csv,
         } => modal::modes(
             &load(&model)?,
             rpm,
-            modes,
+            (modes, torsional_modes),
             modal::ModeFiles {
                 csv,
                 shapes_csv,
                 shapes_png,
+                torsional_shapes_csv,
             },
         ),
         Command::Campbell {
@@ -510,6 +553,25 @@ fn run(cli: Cli) -> Result<(), String> {
             csv,
             png,
         } => coefficients::coefficients(model, bearing, rpm, points, csv, png),
+        Command::Response {
+            model,
+            force,
+            min_rpm,
+            max_rpm,
+            points,
+            magnitude,
+            csv,
+        } => response::run(
+            &load(&model)?,
+            response::Request {
+                force,
+                min_rpm,
+                max_rpm,
+                points,
+                magnitude,
+                csv,
+            },
+        ),
         Command::Unbalance {
             model,
             min_rpm,
@@ -614,6 +676,7 @@ fn run(cli: Cli) -> Result<(), String> {
             rpm,
             ramp_rpm,
             speed_csv,
+            torques,
             duration,
             step,
             output_step,
@@ -625,9 +688,15 @@ fn run(cli: Cli) -> Result<(), String> {
             plots,
             amplitude,
         } => {
+            let rotor = load(&model)?;
+            let torque_driven = rotor.model.drive == rotor_bearing::model::Drive::Torque;
+            let rpm = match (rpm, ramp_rpm.is_none() && speed_csv.is_none()) {
+                (None, true) if torque_driven => Some(0.0),
+                (rpm, _) => rpm,
+            };
             let profile =
                 simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
-            let rotor = load(&model)?;
+            let torques = simulate::torque_inputs(&rotor.model, &torques)?;
             simulate::check_speeds(&rotor.model, &profile)?;
             let step = step.unwrap_or_else(|| {
                 let peak = profile.top_speed();
@@ -663,6 +732,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 csv,
                 plots,
                 amplitude,
+                torques,
             };
             simulate::simulate(rotor, full, options, run)
         }

@@ -1,5 +1,6 @@
 //! `rotor modes` and `rotor campbell`: complex modes at one speed and over a range.
 
+use rotor_bearing::analysis::torsion::torsional_modes;
 use std::path::PathBuf;
 
 use rotor_bearing::analysis::campbell::{self, campbell_study};
@@ -16,11 +17,17 @@ pub struct ModeFiles {
     pub csv: Option<PathBuf>,
     pub shapes_csv: Option<PathBuf>,
     pub shapes_png: Option<PathBuf>,
+    pub torsional_shapes_csv: Option<PathBuf>,
 }
 
 /// `rotor modes`: damped frequencies, damping, log dec and whirl at `rpm`, and
-/// the mode shapes.
-pub fn modes(rotor: &Rotor, rpm: f64, count: usize, files: ModeFiles) -> Result<(), String> {
+/// the mode shapes; then the lowest `torsional` torsional modes.
+pub fn modes(
+    rotor: &Rotor,
+    rpm: f64,
+    (count, torsional): (usize, Option<usize>),
+    files: ModeFiles,
+) -> Result<(), String> {
     let speed = rpm / RAD_S_TO_RPM;
     crate::warn_table_speeds(&rotor.model, &[speed]);
     let options = ModalOptions {
@@ -31,6 +38,15 @@ pub fn modes(rotor: &Rotor, rpm: f64, count: usize, files: ModeFiles) -> Result<
     let ms = &result.modes;
     let mut out = text::modes(&rotor.model.name, rpm, ms);
     out.push_str(&text::overdamped_roots(&result.overdamped));
+    let torsional = torsional.unwrap_or(if rotor.model.models_torsion() { 3 } else { 0 });
+    let twist = torsional_modes(&rotor.model, torsional).map_err(|e| e.to_string())?;
+    out.push_str(&text::torsional_modes(&twist));
+    if let Some(path) = files.torsional_shapes_csv {
+        write_file(
+            &path,
+            &report_csv::torsional_mode_shapes(&rotor.model, &twist),
+        )?;
+    }
     if let Some(path) = files.csv {
         write_file(&path, &report_csv::modes(rpm, ms))?;
     }

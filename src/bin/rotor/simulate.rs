@@ -150,6 +150,44 @@ pub struct Run {
     pub csv: Option<PathBuf>,
     pub plots: Option<String>,
     pub amplitude: Amplitude,
+    /// Torques of a torque-driven shaft: load channel and value (N·m).
+    pub torques: Vec<(usize, f64)>,
+}
+
+/// The `--torque NAME=VALUE` options as load channels of `model`'s torque
+/// nodes: each name one of its `[[torques]]`, each value finite (N·m).
+pub fn torque_inputs(model: &RotorModel, given: &[String]) -> Result<Vec<(usize, f64)>, String> {
+    if !given.is_empty() && model.drive != rotor_bearing::model::Drive::Torque {
+        return Err(format!(
+            "--torque: the shaft of {} is speed-driven (its file has no [torsion] drive = \"torque\")",
+            model.name
+        ));
+    }
+    let names: Vec<&str> = model.torques.iter().map(|t| t.name.as_str()).collect();
+    given
+        .iter()
+        .map(|g| {
+            let (name, value) = g
+                .split_once('=')
+                .ok_or_else(|| format!("--torque {g:?}: expected NAME=VALUE (N·m)"))?;
+            let k = names
+                .iter()
+                .position(|n| *n == name.trim())
+                .ok_or_else(|| {
+                    format!(
+                        "--torque {g:?}: {name:?} is not a torque node of {} ({names:?})",
+                        model.name
+                    )
+                })?;
+            let value: f64 = value
+                .trim()
+                .parse()
+                .ok()
+                .filter(|v: &f64| v.is_finite())
+                .ok_or_else(|| format!("--torque {g:?}: {value:?} is not a finite number (N·m)"))?;
+            Ok((model.first_torque_input() + k, value))
+        })
+        .collect()
 }
 
 /// The run of `rotor` (reduced from `full` when that is given): the reduced
@@ -169,6 +207,7 @@ pub fn simulate(
         csv,
         plots,
         amplitude,
+        torques,
     } = run;
     let profile = &profile;
     let model = rotor.model.clone();
@@ -188,6 +227,12 @@ pub fn simulate(
     let mut sim = Simulator::new(rotor, options).map_err(|e| e.to_string())?;
     let (w0, _) = profile.at(0.0);
     sim.set_speed(w0, 0.0).map_err(|e| e.to_string())?;
+    // The torques act from the start: the static state and its twist
+    // accelerations are taken under them.
+    for &(channel, torque) in &torques {
+        sim.set_load(channel, torque, 0.0)
+            .map_err(|e| format!("{}: {e}", model.name))?;
+    }
     if settle {
         sim.settle_static()
             .map_err(|e| format!("{}: {e}", model.name))?;

@@ -21,7 +21,7 @@ mod unbalance;
 
 pub use modal::{
     ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
-    overdamped_roots, overdamped_summary, zeta_and_log_dec,
+    overdamped_roots, overdamped_summary, torsional_modes, zeta_and_log_dec,
 };
 pub use unbalance::{peak_cells, peak_table, unbalance_study};
 

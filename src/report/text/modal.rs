@@ -7,6 +7,7 @@ use crate::analysis::campbell::{
     CampbellPoint, CampbellStudy, CriticalMargin, CriticalSpeed, OVERDAMPED_DAMPING_RATIO,
 };
 use crate::analysis::modal::{Mode, NON_OSCILLATING_DAMPING_RATIO, OverdampedRoot};
+use crate::analysis::torsion::TorsionalMode;
 use crate::analysis::unbalance::OperatingRange;
 use crate::rotor::Rotor;
 use crate::units::RAD_S_TO_RPM;
@@ -71,6 +72,62 @@ pub fn campbell_study(rotor: &Rotor, study: &CampbellStudy) -> String {
         study.max_speed,
     ));
     s.push_str(&overdamped_summary(&study.diagram));
+    if !study.torsional.is_empty() {
+        let lines: Vec<String> = study
+            .torsional
+            .iter()
+            .map(|m| {
+                format!(
+                    "{:.4} Hz",
+                    m.natural_frequency / (2.0 * std::f64::consts::PI)
+                )
+            })
+            .collect();
+        writeln!(
+            s,
+            "torsional modes (horizontal lines, independent of the speed): {}",
+            lines.join(", ")
+        )
+        .ok();
+    }
+    s
+}
+
+/// The torsional modes `rotor modes` prints after the lateral ones, in the
+/// same columns: natural frequency (rad/s, Hz), the couplings' modal damping
+/// ratio and log decrement `2πζ/√(1 − ζ²)`, labelled "torsional".
+pub fn torsional_modes(modes: &[TorsionalMode]) -> String {
+    if modes.is_empty() {
+        return String::new();
+    }
+    let mut s = String::from(
+        "torsional modes (twist about the shaft axis, independent of the speed):\n mode    ω (rad/s)      f (Hz)   damping ratio  log dec   whirl\n",
+    );
+    for (k, m) in modes.iter().enumerate() {
+        let z = m.damping_ratio;
+        let (zeta, delta) = if z.abs() < ROUND_OFF_DAMPING_RATIO {
+            ("0".to_string(), "0".to_string())
+        } else {
+            (
+                format!("{z:.4e}"),
+                format!(
+                    "{:.4}",
+                    2.0 * std::f64::consts::PI * z / (1.0 - z * z).sqrt()
+                ),
+            )
+        };
+        writeln!(
+            s,
+            "{:5} {:12.4} {:11.4} {:>14} {:>9} {:>9}",
+            k + 1,
+            m.natural_frequency,
+            m.natural_frequency / (2.0 * std::f64::consts::PI),
+            zeta,
+            delta,
+            "torsional"
+        )
+        .ok();
+    }
     s
 }
 
