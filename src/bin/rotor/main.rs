@@ -29,6 +29,7 @@ mod operating_point;
 mod report;
 mod response;
 mod simulate;
+mod simulate_args;
 mod stability;
 mod statics;
 mod ucs;
@@ -188,59 +189,8 @@ enum Command {
     Simulate {
         #[command(flatten)]
         model: ModelArg,
-        /// Constant spin speed (rpm).
-        #[arg(long, conflicts_with_all = ["ramp_rpm", "speed_csv"])]
-        rpm: Option<f64>,
-        /// Linear run-up or coast-down FROM:TO (rpm) over the whole duration.
-        #[arg(long, conflicts_with = "speed_csv")]
-        ramp_rpm: Option<String>,
-        /// Speed table: CSV with columns time_s,speed_rpm (header line optional).
-        #[arg(long)]
-        speed_csv: Option<PathBuf>,
-        /// A torque-driven shaft's torque NAME=VALUE (N·m, a `[[torques]]`
-        /// name, constant from the start; repeat for each); --rpm is then its
-        /// initial speed (default 0: from rest).
-        #[arg(long = "torque", value_name = "NAME=N·m")]
-        torques: Vec<String>,
-        /// Simulated time (s).
-        #[arg(long, default_value_t = 1.0)]
-        duration: f64,
-        /// Internal time step (s). Default: 60 steps per revolution at the top
-        /// speed (the larger of the run's and the model's max_speed_rpm, else
-        /// speed_rpm), at most 1 ms — the FMU's solver.time_step follows the
-        /// same rule at the model's top speed.
-        #[arg(long)]
-        step: Option<f64>,
-        /// Output interval (s); defaults to the internal step, at least 1/20 000 of the duration.
-        #[arg(long)]
-        output_step: Option<f64>,
-        /// Unbalance ramp time constant (s), 0 for none.
-        #[arg(long, default_value_t = 0.0)]
-        ramp_time: f64,
-        /// Switch gravity off.
-        #[arg(long)]
-        no_gravity: bool,
-        /// Start from rest at the bearing centres instead of the static equilibrium.
-        #[arg(long)]
-        no_settle: bool,
-        /// Run on a Craig–Bampton reduced rotor with this many fixed-interface
-        /// modes (bearings, rubs, probes and unbalance planes kept physical);
-        /// 0 for the full rotor. Default: the model's `[reduction]`, else full.
-        #[arg(long)]
-        reduced_modes: Option<usize>,
-        /// Write the outputs to this CSV file (without it the terminal gets a
-        /// summary, not the table); a run that fails keeps the rows up to the failure.
-        #[arg(long)]
-        csv: Option<PathBuf>,
-        /// Write PREFIX_orbits.png and PREFIX_spectrum.png (last half of the run) and
-        /// PREFIX_waterfall.png, and print the spectrum of each window of 20 revolutions
-        /// (a run under 20 revolutions gets no frequency ratio).
-        #[arg(long)]
-        plots: Option<String>,
-        /// Amplitudes of the spectra and the window table: the orbit's radius (0-pk)
-        /// or twice it (pk-pk).
-        #[arg(long, default_value = "0-pk", value_parser = parse_amplitude)]
-        amplitude: Amplitude,
+        #[command(flatten)]
+        args: simulate_args::SimulateArgs,
     },
     /// Write the generated parts of an FMU for MODEL into DIR: modelDescription.xml,
     /// resources/model.toml and documentation/index.html (fmu_pack.sh adds the binary).
@@ -491,7 +441,7 @@ fn load(arg: &ModelArg) -> Result<Rotor, String> {
 }
 
 /// `--amplitude 0-pk|pk-pk`.
-fn parse_amplitude(text: &str) -> Result<Amplitude, String> {
+pub(crate) fn parse_amplitude(text: &str) -> Result<Amplitude, String> {
     Amplitude::parse(text)
 }
 
@@ -671,70 +621,6 @@ fn run(cli: Cli) -> Result<(), String> {
             )
         }
         Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
-        Command::Simulate {
-            model,
-            rpm,
-            ramp_rpm,
-            speed_csv,
-            torques,
-            duration,
-            step,
-            output_step,
-            ramp_time,
-            no_gravity,
-            no_settle,
-            reduced_modes,
-            csv,
-            plots,
-            amplitude,
-        } => {
-            let rotor = load(&model)?;
-            let torque_driven = rotor.model.drive == rotor_bearing::model::Drive::Torque;
-            let rpm = match (rpm, ramp_rpm.is_none() && speed_csv.is_none()) {
-                (None, true) if torque_driven => Some(0.0),
-                (rpm, _) => rpm,
-            };
-            let profile =
-                simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
-            let torques = simulate::torque_inputs(&rotor.model, &torques)?;
-            simulate::check_speeds(&rotor.model, &profile)?;
-            let step = step.unwrap_or_else(|| {
-                let peak = profile.top_speed();
-                let h =
-                    rotor_bearing::solver::time_step::default_time_step(&rotor.model, Some(peak));
-                eprintln!("{}", simulate::describe_default_step(&rotor.model, peak, h));
-                h
-            });
-            let modes = match reduced_modes {
-                Some(m) => m,
-                None => Rotor::transient_modes(&rotor.model).map_err(|e| e.to_string())?,
-            };
-            let (rotor, full) = if modes == 0 {
-                (rotor, None)
-            } else {
-                (
-                    rotor.reduced(modes).map_err(|e| e.to_string())?,
-                    Some(rotor),
-                )
-            };
-            let options = rotor_bearing::solver::SolverOptions {
-                time_step: step,
-                unbalance_ramp_time: ramp_time,
-                gravity: !no_gravity,
-                ..Default::default()
-            };
-            let output_step = output_step.unwrap_or(step.max(duration / 20_000.0));
-            let run = simulate::Run {
-                profile,
-                duration,
-                output_step,
-                settle: !no_settle,
-                csv,
-                plots,
-                amplitude,
-                torques,
-            };
-            simulate::simulate(rotor, full, options, run)
-        }
+        Command::Simulate { model, args } => simulate_args::run(load(&model)?, args),
     }
 }
