@@ -44,6 +44,10 @@ import zipfile
 import numpy as np
 
 TOLERANCE = 1e-9
+# The torque that drives a torque-driven model's run-up and state runs (N·m):
+# past the breakaway torque of the shipped torque-driven unit's thrust bearing
+# (1.16e6 N·m, models/hydro_unit_torque.toml), so that the shaft turns.
+DRIVE_TORQUE = 2.0e6
 RUN_TIMEOUT = 600  # s, per FMPy run under Wine (they take seconds)
 
 
@@ -189,11 +193,18 @@ def main(root):
             md = read_model_description(fmus[stem])
             variables = {v.name: v for v in md.modelVariables}
             outputs = [v.name for v in md.modelVariables if v.causality == "output"]
-            unbalance = [v.name for v in md.modelVariables if v.causality == "input" and v.name != "shaft.speed"]
+            # A torque-driven shaft (shaft.speed an output) runs up from rest
+            # under its first torque input instead, ramped to DRIVE_TORQUE.
+            drive = [v.name for v in md.modelVariables if v.causality == "input" and v.name.startswith("torques.")]
+            unbalance = [v.name for v in md.modelVariables
+                         if v.causality == "input" and v.name != "shaft.speed" and v.name not in drive]
             # 40 revolutions at speed, at least 1 s; 400 communication points.
             stop = max(1.0, 40.0 * 60.0 / rpm)
             t = np.array([0.0, stop / 2, stop])
-            cols = [("time", t), ("shaft.speed", np.array([0.0, rpm, rpm]) * np.pi / 30.0)]
+            if drive:
+                cols = [("time", t), (drive[0], np.array([0.0, DRIVE_TORQUE, DRIVE_TORQUE]))]
+            else:
+                cols = [("time", t), ("shaft.speed", np.array([0.0, rpm, rpm]) * np.pi / 30.0)]
             for u in unbalance:
                 m_e = float(variables[u].start)
                 cols.append((u, np.array([m_e, m_e, 2.0 * m_e])))
@@ -252,7 +263,12 @@ def main(root):
             md = read_model_description(os.path.join(d, "modelDescription.xml"))
             model = tomllib.load(open(os.path.join(root, "models", stem + ".toml"), "rb"))
             w0 = float(model.get("speed_rpm", 0.0)) * np.pi / 30.0
-            speed_vr = str(next(v.valueReference for v in md.modelVariables if v.name == "shaft.speed"))
+            # The driven input: the speed, or a torque-driven shaft's first torque.
+            drive = [v for v in md.modelVariables if v.causality == "input" and v.name.startswith("torques.")]
+            if drive:
+                speed_vr, w0 = str(drive[0].valueReference), DRIVE_TORQUE
+            else:
+                speed_vr = str(next(v.valueReference for v in md.modelVariables if v.name == "shaft.speed"))
             outs = [str(v.valueReference) for v in md.modelVariables if v.causality == "output"]
             steps, h = 100, 0.01
             uri_linux = "file://" + (d + "/resources").replace(" ", "%20")
