@@ -72,12 +72,17 @@ def remote_run(job):
 
 def compare(a, b, names):
     """Largest relative difference over `names` (relative to each output's largest
-    magnitude in `b`), the output where it is, bit-identical samples, samples,
+    magnitude in `b`, the shaft's element torques to the largest of them), the output where it is, bit-identical samples, samples,
     and the outputs that break the rules."""
     worst, where, same, total, bad = 0.0, "", 0, 0, []
+    # The element torques of a torque-driven shaft are one family: an element
+    # near a free end carries a small part of what the shaft transmits, and
+    # its round-off is that of the largest element torque, its scale.
+    family = [n for n in names if n.startswith("shaft.torque[")]
+    shaft_scale = max((float(np.max(np.abs(b[n]))) for n in family), default=0.0)
     for n in names:
         d = float(np.max(np.abs(a[n] - b[n])))
-        s = float(np.max(np.abs(b[n])))
+        s = shaft_scale if n in family else float(np.max(np.abs(b[n])))
         same += int(np.sum(a[n] == b[n]))
         total += len(b[n])
         if not (np.all(np.isfinite(a[n])) and np.all(np.isfinite(b[n]))):
