@@ -61,6 +61,15 @@ bash fmu_pack.sh --model models/hydro_unit_plain.toml
 bash fmu_pack.sh --model models/jeffcott.toml
 bash fmu_pack.sh --model models/classic_disk_rotor_damped.toml
 .venv/bin/python system/couple.py all 2>&1 | grep '→'
+# The shaft as the plant's connector (docs/system.md): the torque-driven hydro
+# unit (its own inertia, torsion and thrust bearing) with the torque plant FMU:
+# start-up from standstill with breakaway and synchronization, load rejection,
+# shut-down to rest and a three-phase short circuit; and the unit on brackets
+# with its field switched on at synchronization and in a part-load run.
+bash fmu_pack.sh --model models/hydro_unit_torque.toml
+bash fmu_pack.sh --model models/hydro_unit_brackets.toml
+.venv/bin/python system/couple_torque.py all 2>&1 | grep '→'
+.venv/bin/python system/couple_brackets.py all 2>&1 | grep '→'
 .venv/bin/python system/sweep.py --fmu out/jeffcott.fmu --rpm 4000:16000:13 \
   --param "bearings.left.viscosity,bearings.right.viscosity=0.01,0.02,0.04" --duration 0.6 --out out/sweep_jeffcott
 # A PD magnetic bearing FMU (pythonfmu) closed through the rotor FMU's force port
@@ -72,4 +81,4 @@ bash fmu_pack.sh --model system/classic_disk_rotor_amb.toml
 bash fmu_pack.sh --model system/classic_disk_rotor_amb_reference.toml
 .venv/bin/python system/amb_demo.py --out out/amb_demo
 .venv/bin/python system/amb_demo.py --stability --out out/amb_demo | tee out/amb_demo_stability.txt | tail -n 1
-echo "main: results in out/ (hydro_unit_brackets*, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, unbalance_response.csv/png, jeffcott_report.html, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, sweep_jeffcott*, amb_demo.csv/png, amb_demo_stability.csv/txt)"
+echo "main: results in out/ (hydro_unit_brackets*, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, unbalance_response.csv/png, jeffcott_report.html, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, torque_*.csv/png, brackets_*.csv/png, sweep_jeffcott*, amb_demo.csv/png, amb_demo_stability.csv/txt)"

@@ -17,8 +17,13 @@ bash fmu_pack.sh
 for model in models/*.toml tests/data/torque_ports.toml; do
   [ "$model" = models/hydro_unit.toml ] || bash fmu_pack.sh --model "$model"
 done
-# The governor/turbine/generator FMU for the coupled-system tests; the magnetic
-# bearing FMU and the rotors it is coupled with (tests/system_amb.rs).
+# The torque-driven hydro unit's speed-driven twin (the same model file with
+# drive = "speed") for the load-rejection comparison of tests/system_plant.rs.
+sed 's/^drive = "torque"$/drive = "speed"/' models/hydro_unit_torque.toml > out/hydro_unit_torque_speed.toml
+grep -q '^drive = "speed"$' out/hydro_unit_torque_speed.toml
+bash fmu_pack.sh --model out/hydro_unit_torque_speed.toml --out out/hydro_unit_torque_speed.fmu
+# The governor/turbine/generator FMUs (speed- and torque-driven) for the coupled-system
+# tests; the magnetic bearing FMU and the rotors it is coupled with (tests/system_amb.rs).
 .venv/bin/python system/build_plant.py out
 .venv/bin/python system/build_amb.py out
 bash fmu_pack.sh --model system/classic_disk_rotor_amb.toml

@@ -1,5 +1,8 @@
-"""Build the governor/turbine/generator FMU with pythonfmu, complete its model
-description (system/pythonfmu_build.py) and validate it with FMPy.
+"""Build the governor/turbine/generator FMUs with pythonfmu — HydroPlant.fmu
+(speed-driven rotor: the plant integrates the swing equation) and
+HydroPlantTorque.fmu (torque-driven rotor: no inertia of its own), both with
+system/governor.py among their resources — complete each model description
+(system/pythonfmu_build.py) and validate it with FMPy.
 
 usage: python system/build_plant.py [DEST_DIR]
 """
@@ -10,5 +13,6 @@ from pythonfmu_build import build
 
 here = os.path.dirname(os.path.abspath(__file__))
 dest = sys.argv[1] if len(sys.argv) > 1 else os.path.join(here, "..", "out")
-fmu = build(os.path.join(here, "hydro_plant.py"), "HydroPlant", dest)
-print(f"built and validated {fmu}")
+for script, name in [("hydro_plant.py", "HydroPlant"), ("hydro_plant_torque.py", "HydroPlantTorque")]:
+    fmu = build(os.path.join(here, script), name, dest, extra=[os.path.join(here, "governor.py")])
+    print(f"built and validated {fmu}")

@@ -22,6 +22,7 @@ import sys
 
 import numpy as np
 from libcosimpy.CosimExecution import CosimExecution
+from libcosimpy.CosimManipulator import CosimManipulator
 from libcosimpy.CosimObserver import CosimObserver
 from libcosimpy.CosimSlave import CosimLocalSlave
 
@@ -59,37 +60,71 @@ def references(execution, index):
     return {v.name.decode(): v.reference for v in execution.slave_variables(index)}
 
 
-def run(rotor_fmu, plant_fmu, duration, plant_params, step=0.02, rotor_params=None):
-    """Co-simulate; returns a dict of arrays sampled at every communication step."""
+def execution_of(rotor_fmu, plant_fmu, step, plant_params, rotor_params):
+    """A libcosim execution of the rotor and plant FMUs at communication step
+    `step` (s) with their start values; returns it, the two slave indices and
+    their variables' references by name."""
     execution = CosimExecution.from_step_size(step_size=int(round(step * 1e9)))
     rotor = execution.add_local_slave(CosimLocalSlave(fmu_path=rotor_fmu, instance_name="rotor"))
     plant = execution.add_local_slave(CosimLocalSlave(fmu_path=plant_fmu, instance_name="plant"))
     rv, pv = references(execution, rotor), references(execution, plant)
     for name, value in plant_params.items():
         execution.real_initial_value(plant, pv[name], float(value))
+    for name, value in rotor_params.items():
+        execution.real_initial_value(rotor, rv[name], float(value))
+    return execution, rotor, plant, rv, pv
+
+
+def run(rotor_fmu, plant_fmu, duration, plant_params, step=0.02, rotor_params=None, connections=(), record=(),
+        schedule=None):
+    """Co-simulate; returns a dict of arrays sampled at every communication step.
+    `rotor_params`: start values of rotor variables (parameters and inputs);
+    `connections`: (plant output, rotor tunable parameter) pairs, e.g. the field
+    into magnetic_pull.<m>.excitation: libcosim connects inputs only, so the
+    master passes each value on at every communication point through an
+    override manipulator; `record`: further rotor outputs; `schedule(t)`: a dict
+    of rotor input values to set for the step from t (e.g. hydraulic forces ramped in)."""
     params = {"solver.time_step": 5e-3, "unbalance_ramp_time": 2.0}
     params.update(rotor_params or {})
-    for name, value in params.items():
-        execution.real_initial_value(rotor, rv[name], float(value))
+    execution, rotor, plant, rv, pv = execution_of(rotor_fmu, plant_fmu, step, plant_params, params)
     execution.real_initial_value(rotor, rv["shaft.speed"], float(plant_params.get("start_speed", 0.0)))
     execution.connect_real_variables(plant, pv["speed"], rotor, rv["shaft.speed"])
     execution.connect_real_variables(rotor, rv["friction_torque"], plant, pv["friction_torque"])
     observer = CosimObserver.create_last_value()
     execution.add_observer(observer)
+    override = CosimManipulator.create_override()
+    execution.add_manipulator(override)
     bearings = sorted({n.split(".")[1] for n in rv if n.startswith("bearings.")})
     rotor_names = ["shaft.speed", "friction_torque"] + [f"bearings.{b}.{q}" for b in bearings for q in ("x", "y", "fx", "fy", "eccentricity")]
+    rotor_names += list(record)
     plant_names = ["speed", "gate", "setpoint", "turbine_torque", "electric_torque"]
+    plant_names += [source for source, _ in connections]
     rows = []
     steps = int(round(duration / step))
     for k in range(steps):
+        if schedule is not None:
+            values = schedule(k * step)
+            override.slave_real_values(rotor, [rv[n] for n in values], list(values.values()))
         if not execution.step(1):
             raise RuntimeError(f"co-simulation step {k} failed at t = {k * step:.3f} s")
         r = observer.last_real_values(rotor, [rv[n] for n in rotor_names])
         p = observer.last_real_values(plant, [pv[n] for n in plant_names])
         rows.append([(k + 1) * step] + list(r) + list(p))
+        if connections:
+            values = observer.last_real_values(plant, [pv[source] for source, _ in connections])
+            override.slave_real_values(rotor, [rv[target] for _, target in connections], values)
     names = ["time"] + [f"rotor.{n}" for n in rotor_names] + [f"plant.{n}" for n in plant_names]
     data = np.array(rows)
     return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def write_csv(result, path):
+    """One column per array of `result`, headed by its name."""
+    names = list(result)
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(names)
+        w.writerows(zip(*[result[n] for n in names]))
 
 
 def save(result, prefix, title):
@@ -97,10 +132,7 @@ def save(result, prefix, title):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     names = list(result)
-    with open(prefix + ".csv", "w", newline="") as f:
-        w = csv.writer(f)
-        w.writerow(names)
-        w.writerows(zip(*[result[n] for n in names]))
+    write_csv(result, prefix + ".csv")
     t = result["time"]
     bearings = sorted({n.split(".")[2] for n in names if n.startswith("rotor.bearings.")})
     fig, ax = plt.subplots(2, 2, figsize=(12, 8))
@@ -131,21 +163,32 @@ def save(result, prefix, title):
     plt.close(fig)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("scenario", nargs="?", default="all", choices=["all"] + list(SCENARIOS))
+def scenario_cli(doc, scenarios, one):
+    """The command line of the scenario scripts: `[NAME|all] [--duration S]`;
+    calls `one(name, duration or None)` for each scenario chosen."""
+    parser = argparse.ArgumentParser(description=doc.split("\n")[0])
+    parser.add_argument("scenario", nargs="?", default="all", choices=["all"] + list(scenarios))
     parser.add_argument("--duration", type=float, default=None)
     args = parser.parse_args()
+    for name in ([args.scenario] if args.scenario != "all" else list(scenarios)):
+        one(name, args.duration)
+
+
+def run_scenario(name, duration):
+    """Run one scenario with each of its rotors; CSV and PNG into out/."""
     plant_fmu = os.path.join(OUT, "HydroPlant.fmu")
-    for name in ([args.scenario] if args.scenario != "all" else list(SCENARIOS)):
-        spec = SCENARIOS[name]
-        for bearing, fmu in spec["rotors"].items():
-            result = run(os.path.join(OUT, fmu), plant_fmu, args.duration or spec["duration"], spec["plant"],
-                         rotor_params=spec["rotor_params"])
-            prefix = os.path.join(OUT, f"coupled_{name}_{bearing}")
-            save(result, prefix, f"{os.path.splitext(fmu)[0]}: {name}, {bearing.replace('_', '-')} bearings (libcosim)")
-            peak = max(result[f"plant.speed"]) * 30 / np.pi
-            print(f"{name} / {bearing}: final speed {result['plant.speed'][-1] * 30 / np.pi:.1f} rpm, peak {peak:.1f} rpm → {prefix}.csv/.png")
+    spec = SCENARIOS[name]
+    for bearing, fmu in spec["rotors"].items():
+        result = run(os.path.join(OUT, fmu), plant_fmu, duration or spec["duration"], spec["plant"],
+                     rotor_params=spec["rotor_params"])
+        prefix = os.path.join(OUT, f"coupled_{name}_{bearing}")
+        save(result, prefix, f"{os.path.splitext(fmu)[0]}: {name}, {bearing.replace('_', '-')} bearings (libcosim)")
+        peak = max(result[f"plant.speed"]) * 30 / np.pi
+        print(f"{name} / {bearing}: final speed {result['plant.speed'][-1] * 30 / np.pi:.1f} rpm, peak {peak:.1f} rpm → {prefix}.csv/.png")
+
+
+def main():
+    scenario_cli(__doc__, SCENARIOS, run_scenario)
 
 
 if __name__ == "__main__":

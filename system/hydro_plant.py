@@ -5,13 +5,13 @@ Swing equation of the rotating masses with the rotor-bearing FMU's friction
 torque in the balance:
 
     J dω/dt = T_turbine − T_electric − T_friction
-    T_turbine = T_rated · [g · (2 − ω/ω_rated) − k_loss (ω/ω_rated)²]   (Francis-like;
-                windage and water friction k_loss make a closed gate decelerate the unit)
+    T_turbine, governor and gate servo: system/governor.py (shared with the
+                torque-driven plant, system/hydro_plant_torque.py)
     T_electric = P_load / ω_rated · (1 + D (ω − ω_rated)/ω_rated)   until load rejection
-    governor: gate command = g_ff + Kp e + Ki ∫e,  e = (ω_ref − ω)/ω_rated,
-              integral frozen while the command saturates (anti-windup)
-    gate servo: dg/dt = (command − g)/T_servo, |dg/dt| ≤ rate limit, 0 ≤ g ≤ 1
     set point ω_ref ramps from the start speed to ω_rated over `ramp_time`.
+    field: the `excitation` output (0 … 1, for a rotor FMU's tunable
+    magnetic_pull.<m>.excitation) rises linearly over `field_ramp` from
+    `field_time` on (synchronization), or is 1 throughout (negative field_time).
     shut-down (emergency stop) at `shutdown_time`: load off, gate command 0, and a
     mechanical brake T_brake = brake_torque · T_rated below brake_speed · ω_rated.
     The bearing friction and the brake are Coulomb torques: at standstill they
@@ -20,6 +20,7 @@ torque in the balance:
 
 Integrated with RK4 in sub-steps of at most 5 ms inside each do_step.
 """
+from governor import gate_rates, turbine_torque
 from pythonfmu import Fmi2Causality, Fmi2Slave, Fmi2Variability, Real
 
 
@@ -46,6 +47,8 @@ class HydroPlant(Fmi2Slave):
         self.brake_speed = 0.2        # per unit of rated speed
         self.brake_torque = 0.2       # per unit of rated torque
         self.friction_torque = 0.0    # input, N·m
+        self.field_time = -1.0        # s, negative: field on from the start
+        self.field_ramp = 1.0         # s
         self.speed = 0.0
         self.gate = 0.0
         self.setpoint = 0.0
@@ -69,6 +72,8 @@ class HydroPlant(Fmi2Slave):
             ("shutdown_time", "Time of an emergency stop: load off, gate closed, brake on (negative: none)", "s"),
             ("brake_speed", "Speed below which the brake acts after a stop (per unit)", "1"),
             ("brake_torque", "Mechanical brake torque (per unit of rated torque)", "1"),
+            ("field_time", "Time the generator field is switched on, at synchronization (negative: on from the start)", "s"),
+            ("field_ramp", "Rise time of the field (excitation 0 to 1, linear)", "s"),
         ]
         for name, text, unit in params:
             self.register_variable(Real(name, causality=Fmi2Causality.parameter,
@@ -80,6 +85,11 @@ class HydroPlant(Fmi2Slave):
                            ("electric_torque", "Electrical torque [N.m]"),
                            ("turbine_torque", "Turbine torque [N.m]")]:
             self.register_variable(Real(name, causality=Fmi2Causality.output, description=text))
+        # Appended (earlier value references unchanged): the field for a rotor
+        # FMU's magnetic_pull.<m>.excitation.
+        self.excitation = 1.0
+        self.register_variable(Real("excitation", causality=Fmi2Causality.output,
+                                    description="Generator field excitation, 0 off to 1 nominal, on at field_time [1]"))
         self.started = False
 
     def _rates(self, t, speed, gate, integral):
@@ -89,17 +99,10 @@ class HydroPlant(Fmi2Slave):
         stopping = 0.0 <= self.shutdown_time <= t
         if stopping:
             ref = 0.0
-        error = (ref - speed) / w0
         loaded = (self.rejection_time < 0 or t < self.rejection_time) and not stopping
         p_load = self.load if loaded else 0.0
-        raw = p_load + self.loss + self.kp * error + self.ki * integral
-        command = 0.0 if stopping else min(1.0, max(0.0, raw))
-        # Anti-windup: the integral stops where the command saturates.
-        windup = (raw <= 0.0 and error < 0.0) or (raw >= 1.0 and error > 0.0)
-        dgate = max(-self.gate_rate, min(self.gate_rate, (command - gate) / self.servo_time))
-        if (gate <= 0.0 and dgate < 0.0) or (gate >= 1.0 and dgate > 0.0):
-            dgate = 0.0
-        t_turbine = self.rated_torque * (gate * (2.0 - speed / w0) - self.loss * (speed / w0) ** 2)
+        dgate, dintegral = gate_rates(self, ref, speed, p_load, integral, gate, stopping)
+        t_turbine = turbine_torque(self, gate, speed)
         t_electric = p_load * self.rated_torque * (1.0 + self.load_damping * (speed - w0) / w0)
         braking = stopping and speed <= self.brake_speed * w0
         resist = self.friction_torque + (self.brake_torque * self.rated_torque if braking else 0.0)
@@ -108,7 +111,18 @@ class HydroPlant(Fmi2Slave):
             dspeed = 0.0  # at rest, held by the bearings' breakaway torque and the brake
         else:
             dspeed = (drive - resist) / self.inertia
-        return dspeed, dgate, 0.0 if (windup or stopping) else error, ref, t_turbine, t_electric
+        return dspeed, dgate, dintegral, ref, t_turbine, t_electric
+
+    def _field(self, t):
+        """Excitation at time t: 0 before field_time, then a linear rise over field_ramp to 1."""
+        if self.field_time < 0.0:
+            return 1.0
+        if self.field_ramp <= 0.0:
+            return 1.0 if t >= self.field_time else 0.0
+        return min(1.0, max(0.0, (t - self.field_time) / self.field_ramp))
+
+    def exit_initialization_mode(self):
+        self.excitation = self._field(0.0)
 
     def do_step(self, current_time, step_size):
         if not self.started:
@@ -130,5 +144,6 @@ class HydroPlant(Fmi2Slave):
             i += h / 6 * (k1[2] + 2 * k2[2] + 2 * k3[2] + k4[2])
             t += h
         self.speed, self.gate, self.integral = s, g, i
+        self.excitation = self._field(t)
         _, _, _, self.setpoint, self.turbine_torque, self.electric_torque = self._rates(t, s, g, i)
         return True

@@ -17,14 +17,15 @@ import zipfile
 from fmpy.validation import validate_fmu
 
 
-def build(script, name, dest, dependencies=None):
+def build(script, name, dest, dependencies=None, extra=()):
     """Build `script` (class `name`) into `dest`/`name`.fmu; returns its path.
     `dependencies`: {output name: [input names]} for the outputs that depend
-    on some inputs only."""
+    on some inputs only; `extra`: further files the script imports, packed
+    among its resources."""
     dependencies = dependencies or {}
     os.makedirs(dest, exist_ok=True)
     pythonfmu = os.path.join(os.path.dirname(sys.executable), "pythonfmu")
-    subprocess.run([pythonfmu, "build", "-f", script, "--dest", dest], check=True, capture_output=True)
+    subprocess.run([pythonfmu, "build", "-f", script, *extra, "--dest", dest], check=True, capture_output=True)
     fmu = os.path.join(dest, f"{name}.fmu")
     with tempfile.TemporaryDirectory() as tmp:
         with zipfile.ZipFile(fmu) as z:

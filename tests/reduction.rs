@@ -223,18 +223,23 @@ fn static_equilibrium_on_the_bearings_is_exact() {
     }
 }
 
-/// The shipped models: their file stems.
+/// The shipped speed-driven models: their file stems. These tests prescribe
+/// the speed, so a torque-driven model is left out (`hydro_unit_torque` is
+/// hydro_unit's lateral rotor with torque inputs and a thrust bearing that
+/// acts on the twist only).
 fn shipped() -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/models"))
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/models");
+    let mut names: Vec<String> = std::fs::read_dir(dir)
         .unwrap()
-        .map(|e| {
-            e.unwrap()
-                .path()
-                .file_stem()
+        .map(|e| e.unwrap().path())
+        .filter(|p| {
+            let text = std::fs::read_to_string(p).unwrap();
+            RotorModel::from_toml(&text, &p.to_string_lossy())
                 .unwrap()
-                .to_string_lossy()
-                .into_owned()
+                .drive
+                != rotor_bearing::model::Drive::Torque
         })
+        .map(|p| p.file_stem().unwrap().to_string_lossy().into_owned())
         .collect();
     names.sort();
     names

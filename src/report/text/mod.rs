@@ -10,8 +10,9 @@ use crate::analysis::operating_point::{
 use crate::analysis::stability::{LEVEL_I_MIN_LOG_DEC, LEVEL_I_MIN_RATIO, Stability};
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::bearing::{BearingKind, CoefficientTable};
-use crate::model::RotorModel;
+use crate::model::{Drive, RotorModel};
 use crate::rotor::Rotor;
+use crate::rotor::torsion::TorsionalRotor;
 use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
 
@@ -137,7 +138,43 @@ pub fn model_summary(rotor: &Rotor) -> String {
     }
     let [gx, gy, gz] = m.gravity.map(short);
     writeln!(s, "  gravity ({gx}, {gy}, {gz}) m/s²").ok();
+    if m.drive == Drive::Torque {
+        drive_summary(&mut s, m);
+    }
     s
+}
+
+/// A torque-driven shaft's lines of `rotor info`: where the torques act, the
+/// polar inertia `J = Σ` (disks' `I_p` + shaft elements' `ρ J_p L`) over the
+/// free twist DOFs (the inertia a plant model's swing equation would need), and
+/// each thrust bearing's load and breakaway torque `μ_b W R_m`.
+fn drive_summary(s: &mut String, m: &RotorModel) {
+    let torques: Vec<String> = m
+        .torques
+        .iter()
+        .map(|t| format!("{} at node {}", t.name, t.node + 1))
+        .collect();
+    writeln!(
+        s,
+        "  torque drive: {}; polar inertia {:.1} kg·m² (shaft and disks)",
+        torques.join(", "),
+        TorsionalRotor::new(m).total_inertia()
+    )
+    .ok();
+    for t in &m.thrust_bearings {
+        let b = &t.bearing;
+        writeln!(
+            s,
+            "  thrust bearing {} at node {}: load W = {} N, R_m = {} m, breakaway torque μ_b W R_m = {} N·m{}",
+            t.name,
+            t.node + 1,
+            short(b.load),
+            short(b.mean_radius()),
+            short(b.breakaway_torque()),
+            if b.oil_lift { " (oil lift)" } else { "" }
+        )
+        .ok();
+    }
 }
 
 /// A number without float noise: at most 6 significant digits, no trailing zeros.
