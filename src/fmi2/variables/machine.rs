@@ -199,19 +199,7 @@ pub(super) fn add(t: &mut Table) {
                 Binding::BearingFriction(k),
             ),
         ];
-        for (suffix, description, unit, display, binding) in outputs {
-            t.push(
-                format!("bearings.{n}.{suffix}"),
-                description,
-                Real,
-                Output,
-                Continuous,
-                unit,
-                display,
-                None,
-                binding,
-            );
-        }
+        t.outputs("bearings", n, outputs);
     }
     for (k, p) in t.model.probes.iter().enumerate() {
         let node = p.node + 1;
@@ -367,19 +355,7 @@ pub(super) fn add(t: &mut Table) {
                 Binding::BearingContact(k),
             ),
         ];
-        for (suffix, description, unit, display, binding) in outputs {
-            t.push(
-                format!("seals.{n}.{suffix}"),
-                description,
-                Real,
-                Output,
-                Continuous,
-                unit,
-                display,
-                None,
-                binding,
-            );
-        }
+        t.outputs("seals", n, outputs);
     }
     for (k, b) in t.model.bearings.iter().enumerate() {
         let Some(p) = b.pedestal else { continue };
@@ -439,18 +415,6 @@ pub(super) fn add(t: &mut Table) {
                 Binding::HousingVy(k),
             ),
         ];
-        for (suffix, description, unit, display, binding) in outputs {
-            t.push(
-                format!("{group}.{n}.{suffix}"),
-                description,
-                Real,
-                Output,
-                Continuous,
-                unit,
-                display,
-                None,
-                binding,
-            );
-        }
+        t.outputs(group, n, outputs);
     }
 }

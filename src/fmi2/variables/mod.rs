@@ -280,7 +280,12 @@ impl Table<'_> {
     }
 
     /// Append the continuous outputs `{group}.{name}.{suffix}` of `specs`.
-    pub(super) fn outputs(&mut self, group: &str, name: &str, specs: Vec<OutputSpec>) {
+    pub(super) fn outputs(
+        &mut self,
+        group: &str,
+        name: &str,
+        specs: impl IntoIterator<Item = OutputSpec>,
+    ) {
         for (suffix, description, unit, display, binding) in specs {
             self.push(
                 format!("{group}.{name}.{suffix}"),
