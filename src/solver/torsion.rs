@@ -403,45 +403,9 @@ impl Simulator {
     /// net input `drive`), `M_t φ̈ = T_in − T_f − K_t φ − C_t φ̇`, so that
     /// Newmark's first step neither lags nor breaks the energy balance.
     fn breakaway_acceleration(&mut self, drive: f64) -> Result<(), SolverError> {
-        if let Some(t) = self.torsion.as_mut() {
-            t.fresh.fill(0.0);
-        }
-        // The sites' contact friction at rest, as if sliding forward.
-        self.site_friction(0.0, true, true)?;
-        let t0 = self.state.time;
-        let Some(mut tors) = self.torsion.take() else {
-            return Ok(());
-        };
         let sign = drive.signum();
-        let s = &self.state;
-        for (r, f) in tors.rhs.iter_mut().zip(&tors.fresh) {
-            *r = sign * f;
-        }
-        for &(k, dof) in &tors.inputs {
-            if let Some(i) = dof {
-                tors.rhs[i] += self.load_at(k, t0);
-            }
-        }
-        for (dof, t) in &tors.thrust {
-            if let Some(i) = *dof {
-                tors.rhs[i] -= sign * t.breakaway_torque();
-            }
-        }
-        for (m, x) in [
-            (&tors.chain.stiffness, &s.twist),
-            (&tors.chain.damping, &s.twist_rate),
-        ] {
-            m.mul_vec(x, &mut tors.scratch);
-            for (r, v) in tors.rhs.iter_mut().zip(&tors.scratch) {
-                *r -= v;
-            }
-        }
-        let outcome = tors.chain.mass.lu().map(|lu| {
-            lu.solve_in_place(&mut tors.rhs);
-            self.state.twist_accel.copy_from_slice(&tors.rhs);
-        });
-        self.torsion = Some(tors);
-        Ok(outcome?)
+        // The sites' contact friction at rest, as if sliding the way the drive pushes.
+        self.consistent_twist_acceleration(0.0, sign, |t, _| sign * t.breakaway_torque())
     }
 
     /// The twist accelerations consistent with the state of a turning shaft
@@ -454,16 +418,32 @@ impl Simulator {
         if self.torsion.is_none() || self.state.stuck != 0.0 {
             return Ok(());
         }
+        let speed = self.speed_at(self.state.time);
+        self.consistent_twist_acceleration(speed, 1.0, |t, rate| t.friction_torque(rate).0)
+    }
+
+    /// `M_t φ̈ = sign · T_sites + T_in − Σ T_thrust − K_t φ − C_t φ̇` at the
+    /// state into its twist accelerations: the sites' friction torques taken
+    /// at spin `speed` (as torques on the shaft), each thrust bearing's
+    /// `thrust(bearing, φ̇ of its node)`.
+    fn consistent_twist_acceleration(
+        &mut self,
+        speed: f64,
+        sign: f64,
+        thrust: impl Fn(&ThrustBearing, f64) -> f64,
+    ) -> Result<(), SolverError> {
         if let Some(t) = self.torsion.as_mut() {
             t.fresh.fill(0.0);
         }
+        self.site_friction(speed, true, true)?;
         let t0 = self.state.time;
-        self.site_friction(self.speed_at(t0), true, true)?;
         let Some(mut tors) = self.torsion.take() else {
             return Ok(());
         };
         let s = &self.state;
-        tors.rhs.copy_from_slice(&tors.fresh);
+        for (r, f) in tors.rhs.iter_mut().zip(&tors.fresh) {
+            *r = sign * f;
+        }
         for &(k, dof) in &tors.inputs {
             if let Some(i) = dof {
                 tors.rhs[i] += self.load_at(k, t0);
@@ -471,7 +451,7 @@ impl Simulator {
         }
         for (dof, t) in &tors.thrust {
             if let Some(i) = *dof {
-                tors.rhs[i] -= t.friction_torque(s.twist_rate[i]).0;
+                tors.rhs[i] -= thrust(t, s.twist_rate[i]);
             }
         }
         for (m, x) in [
