@@ -231,7 +231,24 @@ pub fn column_stem(label: &str) -> String {
 /// `x(t) = |X| cos(Ωt + arg X)`, spin angle `Ωt` from +x toward +y), and the
 /// major semi-axis of the orbit (m).
 pub fn unbalance(sweep: &UnbalanceSweep) -> String {
+    response_table(sweep, None)
+}
+
+/// The response to one harmonic force over speed: as [`unbalance`], with
+/// the force's frequency (Hz) after the speed; the phases are of
+/// `x(t) = |X| cos(ωt + φ)` at the force's own frequency `ω`.
+pub fn forced(frequencies: &[f64], sweep: &UnbalanceSweep) -> String {
+    response_table(sweep, Some(frequencies))
+}
+
+/// The table of [`unbalance`] and [`forced`]: speed, the excitation
+/// frequency (Hz) when given (rad/s per speed), then per point the
+/// amplitude and phase of x and y and the major semi-axis.
+fn response_table(sweep: &UnbalanceSweep, frequencies: Option<&[f64]>) -> String {
     let mut out = String::from("speed_rpm,speed_rad_s");
+    if frequencies.is_some() {
+        out.push_str(",frequency_hz");
+    }
     for p in &sweep.points {
         let n = column_stem(&p.label);
         write!(
@@ -241,8 +258,11 @@ pub fn unbalance(sweep: &UnbalanceSweep) -> String {
         .ok();
     }
     out.push('\n');
-    for (speed, row) in sweep.speeds.iter().zip(&sweep.response) {
+    for (k, (speed, row)) in sweep.speeds.iter().zip(&sweep.response).enumerate() {
         write!(out, "{},{speed}", speed * RAD_S_TO_RPM).ok();
+        if let Some(w) = frequencies {
+            write!(out, ",{}", w[k] / (2.0 * PI)).ok();
+        }
         for &(x, y) in row {
             write!(
                 out,
@@ -256,35 +276,6 @@ pub fn unbalance(sweep: &UnbalanceSweep) -> String {
             .ok();
         }
         out.push('\n');
-    }
-    out
-}
-
-/// The response to one harmonic force over speed: as [`unbalance`], with
-/// the force's frequency (Hz) after the speed; the phases are of
-/// `x(t) = |X| cos(ωt + φ)` at the force's own frequency `ω`.
-pub fn forced(frequencies: &[f64], sweep: &UnbalanceSweep) -> String {
-    let table = unbalance(sweep);
-    let mut lines = table.lines();
-    let mut out = String::new();
-    if let Some(header) = lines.next() {
-        let rest = header
-            .strip_prefix("speed_rpm,speed_rad_s")
-            .unwrap_or(header);
-        writeln!(out, "speed_rpm,speed_rad_s,frequency_hz{rest}").ok();
-    }
-    for (line, w) in lines.zip(frequencies) {
-        let mut cells = line.splitn(3, ',');
-        let (rpm, rad, rest) = (cells.next(), cells.next(), cells.next());
-        writeln!(
-            out,
-            "{},{},{}{}",
-            rpm.unwrap_or(""),
-            rad.unwrap_or(""),
-            w / (2.0 * PI),
-            rest.map_or(String::new(), |r| format!(",{r}"))
-        )
-        .ok();
     }
     out
 }
