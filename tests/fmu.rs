@@ -486,9 +486,11 @@ fn run_steps(fmu: &Fmu, k0: usize, k1: usize, rate: f64) -> Vec<Vec<u64>> {
         .collect()
 }
 
-/// On every shipped model, with a communication step of 0.01 s and internal
-/// steps that do not divide it in binary (1e-3 s and the default), with and
-/// without a speed ramp (a torque ramp on a torque-driven shaft, spinning):
+/// On every shipped model, with a communication step of 0.01 s and equal
+/// internal steps that do not divide it in binary (1e-3 s), with the default
+/// accuracy-controlled steps and with a tight tolerance (1e-4, steps of at
+/// most 1e-3 s), with and without a speed ramp (a torque ramp on a
+/// torque-driven shaft, spinning):
 /// after fmi2SetFMUstate, in the same instance and in a fresh one from the
 /// serialized image, every step repeats the uninterrupted run bit for bit.
 #[test]
@@ -504,17 +506,24 @@ fn rollback_is_bit_identical_on_every_model_and_step() {
     let mut failures = Vec::new();
     for path in &paths {
         let stem = path.file_stem().unwrap().to_string_lossy().into_owned();
-        for (internal, rate) in [
-            (Some(1e-3), 0.0),
-            (Some(1e-3), 5.0),
-            (None, 0.0),
-            (None, 5.0),
+        for (internal, tolerance, rate) in [
+            (Some(1e-3), Some(0.0), 0.0),
+            (Some(1e-3), Some(0.0), 5.0),
+            (None, None, 0.0),
+            (None, None, 5.0),
+            (Some(1e-3), Some(1e-4), 5.0),
         ] {
-            let tag = format!("bits_{stem}_{internal:?}_{rate}");
+            let tag = format!("bits_{stem}_{internal:?}_{tolerance:?}_{rate}");
             let make = |which: &str| {
                 let fmu = Fmu::of_model(&format!("{tag}_{which}"), path);
                 if let Some(h) = internal {
                     assert_eq!(fmu.set("solver.time_step", h), fmi2Status_fmi2OK);
+                }
+                if let Some(t) = tolerance {
+                    assert_eq!(
+                        fmu.set("solver.local_error_tolerance", t),
+                        fmi2Status_fmi2OK
+                    );
                 }
                 // A torque-driven shaft runs from 10 rad/s (at rest it would
                 // only be held by its thrust bearing).
@@ -590,7 +599,7 @@ fn rollback_is_bit_identical_on_every_model_and_step() {
                     .fold(0.0, f64::max);
                 if want[20..] != got[..] {
                     failures.push(format!(
-                        "{stem}, internal step {internal:?}, ramp {rate} rad/s², {what}: max relative difference {worst:e}"
+                        "{stem}, internal step {internal:?}, tolerance {tolerance:?}, ramp {rate} rad/s², {what}: max relative difference {worst:e}"
                     ));
                 }
             }
