@@ -70,15 +70,26 @@ fn simulator(model: &RotorModel) -> (f64, f64) {
 /// output count.
 fn instance(model: &RotorModel) -> (f64, f64, usize) {
     let vars = variables(model);
-    let vr = |name: &str| vars.iter().find(|v| v.name == name).unwrap().value_reference;
+    let vr = |name: &str| {
+        vars.iter()
+            .find(|v| v.name == name)
+            .unwrap()
+            .value_reference
+    };
     let outputs: Vec<u32> = vars
         .iter()
         .filter(|v| v.causality == Causality::Output)
         .map(|v| v.value_reference)
         .collect();
     let mut fmu = Instance::new("bench", model.clone()).unwrap();
-    assert_eq!(fmu.set(vr("solver.time_step"), Kind::Real, COMM), Status::Ok);
-    assert_eq!(fmu.set(vr("shaft.speed"), Kind::Real, model.nominal_speed), Status::Ok);
+    assert_eq!(
+        fmu.set(vr("solver.time_step"), Kind::Real, COMM),
+        Status::Ok
+    );
+    assert_eq!(
+        fmu.set(vr("shaft.speed"), Kind::Real, model.nominal_speed),
+        Status::Ok
+    );
     assert_eq!(fmu.enter_initialization_mode(), Status::Ok);
     assert_eq!(fmu.exit_initialization_mode(), Status::Ok);
     let mut t = 0.0;
