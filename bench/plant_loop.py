@@ -13,9 +13,11 @@ Needs the FMUs in out/ (bench/run_all.sh packs them: `bash fmu_pack.sh
 no-op library of the FMPy ceiling.
 
 Configurations: the internal step (`solver.time_step`) fixed at 1 ms and at
-5 ms, and accuracy-controlled stepping when the FMU declares the parameter
+5 ms, accuracy-controlled stepping when the FMU declares the parameter
 `solver.local_error_tolerance` (its start value when non-zero, else
---tolerance; `solver.time_step` then the largest step, 5 ms). Each is timed
+--tolerance; `solver.time_step` then the largest step, 5 ms), and the FMU's
+defaults (no parameter set) unless they are one of these, which is then marked
+"(FMU default)". Each is timed
 over the whole loop (wall clock around doStep + getReal, median of --runs
 runs) and gives:
 
@@ -201,17 +203,24 @@ def main():
             tol = unit.start(TOLERANCE_PARAMETER) or a.tolerance
             configs.append((f"accuracy-controlled ({TOLERANCE_PARAMETER} = {tol:g})",
                             {"solver.time_step": 5e-3, TOLERANCE_PARAMETER: tol}))
-        default_step = unit.start("solver.time_step")
-        default_tol = unit.start(TOLERANCE_PARAMETER) or 0.0
+        defaults = {"solver.time_step": unit.start("solver.time_step")}
+        if TOLERANCE_PARAMETER in unit.vars:
+            defaults[TOLERANCE_PARAMETER] = unit.start(TOLERANCE_PARAMETER) or 0.0
+        chosen_defaults = [k for k, (_, params) in enumerate(configs)
+                           if all(params.get(n, 0.0) == v for n, v in defaults.items())]
+        if chosen_defaults:
+            k = chosen_defaults[0]
+            configs[k] = (configs[k][0] + " (FMU default)", configs[k][1])
+        else:
+            text = ", ".join(f"{n} = {v:g}" for n, v in defaults.items())
+            configs.insert(0, (f"FMU defaults ({text})", {}))
         _, _, _, reference = unit.run({"solver.time_step": REFERENCE_STEP}, a.seconds)
         for label, params in configs:
             runs = [unit.run(params, a.seconds, keep=(k == 0)) for k in range(a.runs)]
             journal = runs[0][3]
             wall, t_step, t_get, _ = sorted(runs, key=lambda r: r[0])[len(runs) // 2]
             n = round(a.seconds / COMM)
-            is_default = (params["solver.time_step"] == default_step
-                          and params.get(TOLERANCE_PARAMETER, 0.0) == default_tol)
-            row = dict(unit=unit.model, rpm=unit.rpm, config=label + (" (FMU default)" if is_default else ""),
+            row = dict(unit=unit.model, rpm=unit.rpm, config=label,
                        factor=a.seconds / wall, per=wall / n * 1e6, step=t_step / n * 1e6,
                        get=t_get / n * 1e6, outputs=len(unit.outputs),
                        error=orbit_error(journal, reference, window))
