@@ -2,7 +2,9 @@
 //! Co-Simulation calls onto the [`Simulator`]. Each call first asks the state
 //! table ([`super::states`]) whether it is allowed now; the FMU state lives in
 //! [`super::snapshot`]. The C exports only translate pointers and call these
-//! methods; messages for the logger are queued here.
+//! methods; messages for the logger are queued here. Reads are served by
+//! `values.rs`: the outputs are evaluated once per change of the state into
+//! an array indexed by value reference.
 //!
 //! ```
 //! use rotor_bearing::fmi2::instance::{Instance, Status};
