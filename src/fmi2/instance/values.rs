@@ -158,6 +158,7 @@ impl Instance {
             Binding::Unbalance(k) => s.unbalance[k] + s.unbalance_rate[k] * (s.time - s.speed_time),
             Binding::Load(i) => self.sim.load_at(i, s.time),
             Binding::InitialSpeed => p.initial_speed,
+            Binding::LocalErrorTolerance => p.local_error_tolerance,
             _ => {
                 if self.phase == Phase::InitializationMode && !self.outputs.is_fresh() {
                     self.settle()?;
