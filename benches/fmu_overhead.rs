@@ -1,6 +1,6 @@
 //! What the FMU layer adds to the simulator it drives, per communication
 //! point of a plant loop (fmi2DoStep every 5 ms with one 5 ms internal step,
-//! then every output read): the bare `Simulator::advance_to`, the
+//! with equal steps, then every output read): the bare `Simulator::advance_to`, the
 //! `Instance::do_step` around it, and one read of all outputs, for the
 //! shipped hydro unit and the three-guide-bearing unit; medians of five
 //! batches. `cargo bench --bench fmu_overhead`.
@@ -84,6 +84,11 @@ fn instance(model: &RotorModel) -> (f64, f64, usize) {
     let mut fmu = Instance::new("bench", model.clone()).unwrap();
     assert_eq!(
         fmu.set(vr("solver.time_step"), Kind::Real, COMM),
+        Status::Ok
+    );
+    // Equal steps, as the simulator above takes.
+    assert_eq!(
+        fmu.set(vr("solver.local_error_tolerance"), Kind::Real, 0.0),
         Status::Ok
     );
     assert_eq!(
