@@ -67,7 +67,7 @@ impl Instance {
                 ),
             );
         }
-        self.outputs = None;
+        self.outputs.invalidate();
         let before = self.sim.stats();
         let result = self.sim.advance_to(current + step);
         for w in self.sim.take_warnings() {
@@ -100,7 +100,7 @@ impl Instance {
                 .push((Status::Warning, category(Status::Warning), w.message));
         }
         match result {
-            Ok(()) => match self.current_outputs() {
+            Ok(()) => match self.refresh_outputs() {
                 Ok(_) => match self.watch_reduction(call) {
                     Status::Ok if warned => Status::Warning,
                     status => status,
