@@ -38,8 +38,8 @@ use super::snapshot::fingerprint;
 use super::states::Call;
 pub use super::states::Phase;
 use super::variables::{
-    Binding, Causality, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE, Kind, START_SPEED, Variability,
-    Variable, default_fmu_time_step, variables,
+    Binding, Causality, DEFAULT_LOCAL_ERROR_TOLERANCE, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE,
+    Kind, START_SPEED, Variability, Variable, default_fmu_time_step, variables,
 };
 use super::xml::model_description;
 
@@ -85,6 +85,9 @@ pub(super) struct Params {
     pub(super) reduced_modes: i32,
     /// Initial speed of a torque-driven shaft (rad/s; `shaft.initial_speed`).
     pub(super) initial_speed: f64,
+    /// Local error tolerance of accuracy-controlled steps, 0 for equal steps
+    /// (`solver.local_error_tolerance`).
+    pub(super) local_error_tolerance: f64,
 }
 
 impl Params {
@@ -96,6 +99,7 @@ impl Params {
             max_iterations: self.max_iterations.max(1) as usize,
             unbalance_ramp_time: self.ramp_time,
             gravity: self.gravity,
+            local_error_tolerance: self.local_error_tolerance,
             ..SolverOptions::default()
         }
     }
@@ -112,6 +116,7 @@ impl Params {
             gravity: true,
             reduced_modes: Rotor::transient_modes(model).unwrap_or(DEFAULT_REDUCED_MODES) as i32,
             initial_speed: START_SPEED,
+            local_error_tolerance: DEFAULT_LOCAL_ERROR_TOLERANCE,
         }
     }
 }
@@ -411,6 +416,7 @@ impl Instance {
             Binding::Unbalance(k) => s.unbalance[k] + s.unbalance_rate[k] * (s.time - s.speed_time),
             Binding::Load(i) => self.sim.load_at(i, s.time),
             Binding::InitialSpeed => p.initial_speed,
+            Binding::LocalErrorTolerance => p.local_error_tolerance,
             binding => {
                 if self.phase == Phase::InitializationMode && self.outputs.is_none() {
                     self.settle()?;
@@ -510,6 +516,14 @@ impl Instance {
         let result: Result<(), SolverError> = match v.binding {
             Binding::TimeStep => {
                 self.params.time_step = value;
+                Ok(())
+            }
+            Binding::LocalErrorTolerance => {
+                let (lo, _) = SolverOptions::LOCAL_ERROR_TOLERANCE_RANGE;
+                if value != 0.0 && value < lo {
+                    return bad(self, &format!("must be 0 (equal steps) or at least {lo}"));
+                }
+                self.params.local_error_tolerance = value;
                 Ok(())
             }
             Binding::Tolerance => {

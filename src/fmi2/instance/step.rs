@@ -80,8 +80,9 @@ impl Instance {
                 Status::Ok,
                 category(Status::Ok),
                 format!(
-                    "{call} from {t} s by {h} s: {} internal steps, {} Newton iterations, {} step cuts, {} damped retries ({} Jacobian refreshes, {} factorizations)",
+                    "{call} from {t} s by {h} s: {} internal steps, {} rejected by the error estimate, {} Newton iterations, {} step cuts, {} damped retries ({} Jacobian refreshes, {} factorizations)",
                     after.steps - before.steps,
+                    after.rejections - before.rejections,
                     after.iterations - before.iterations,
                     after.step_cuts - before.step_cuts,
                     after.retries - before.retries,
