@@ -34,8 +34,9 @@ pub fn speed_grid(rotor: &Rotor, top: f64, steps: usize) -> Vec<f64> {
         .collect()
 }
 
+use super::critical_refine::{Bracket, Known, refine};
 use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis_at};
-use super::mode_tracking::{link, mac, translations};
+use super::mode_tracking::{link, translations};
 use super::unbalance::{OperatingRange, SeparationMargin, separation_margin};
 
 type Complex64 = Complex<f64>;
@@ -159,8 +160,23 @@ pub fn campbell(
     speeds: &[f64],
     options: &ModalOptions,
 ) -> Result<Vec<CampbellPoint>, ModalError> {
+    Ok(sweep(rotor, speeds, options, None)?.0)
+}
+
+/// [`campbell`], and with `harmonic` the brackets of its crossings of
+/// `ω = harmonic·Ω`: every pair of neighbouring speeds of a branch where
+/// `ω_b − harmonic·Ω` changes sign, with the branch's modes at both ends.
+fn sweep(
+    rotor: &Rotor,
+    speeds: &[f64],
+    options: &ModalOptions,
+    harmonic: Option<f64>,
+) -> Result<(Vec<CampbellPoint>, Vec<Bracket>), ModalError> {
     let mut diagram = Vec::with_capacity(speeds.len());
+    let mut brackets = Vec::new();
     let mut previous: Vec<(usize, Vec<Complex64>)> = Vec::new();
+    // The last mode seen of every branch (with `harmonic` only).
+    let mut last: Vec<Option<Known>> = Vec::new();
     let mut branches = 0;
     for &speed in speeds {
         let result = modal_analysis_at(rotor, speed, options)?;
@@ -181,6 +197,24 @@ pub fn campbell(
                 }
             });
         }
+        if let Some(h) = harmonic {
+            last.resize(branches, None);
+            for (m, &b) in result.modes.iter().zip(&ids) {
+                let now = Known::of(rotor, speed, m);
+                if let Some(before) = last[b].take() {
+                    let ga = before.lambda.im.abs() - h * before.speed;
+                    let gb = m.damped_frequency - h * speed;
+                    if ga != 0.0 && ga.signum() != gb.signum() {
+                        brackets.push(Bracket {
+                            branch: b,
+                            start: before,
+                            end: now.clone(),
+                        });
+                    }
+                }
+                last[b] = Some(now);
+            }
+        }
         diagram.push(CampbellPoint {
             speed,
             modes: result
@@ -193,7 +227,7 @@ pub fn campbell(
         });
         previous = ids.into_iter().zip(shapes).collect();
     }
-    Ok(diagram)
+    Ok((diagram, brackets))
 }
 
 /// Number of branches of a diagram.
@@ -218,29 +252,21 @@ pub fn branch(diagram: &[CampbellPoint], b: usize) -> Vec<(f64, ModeSummary)> {
         .collect()
 }
 
-/// The mode of `analysis` whose shape is nearest `shape` (largest MAC), with
-/// its rank.
-fn nearest(modes: &[Mode], shape: &[Complex64]) -> Option<(usize, Mode)> {
-    modes
-        .iter()
-        .enumerate()
-        .map(|(k, m)| (k, mac(shape, &translations(&m.shape)), m))
-        .max_by(|a, b| a.1.total_cmp(&b.1))
-        .map(|(k, _, m)| (k, m.clone()))
-}
-
 /// Critical speeds within the range of `diagram`: roots of `ω_b(Ω) − h Ω` along
 /// every tracked branch `b`, bracketed between neighbouring speeds where the
 /// branch is present and refined by the secant/bisection (Illinois) method to
-/// `1e-8` relative, each iterate's mode the one whose shape continues the
-/// branch (largest MAC with the branch's mode at the bracket's start).
+/// `1e-8` relative, each iterate's mode the one that continues the branch's
+/// shape at the bracket's start, found from the nearest speed already
+/// evaluated by a short Krylov run (whole eigen-solves only where that mode's
+/// shape does not continue the branch). The branch's modes at the bracket's
+/// ends are solved anew; [`campbell_study`] keeps them from the sweep.
 pub fn critical_speeds(
     rotor: &Rotor,
     diagram: &[CampbellPoint],
     harmonic: f64,
     options: &ModalOptions,
 ) -> Result<Vec<CriticalSpeed>, ModalError> {
-    let mut found = Vec::new();
+    let mut brackets = Vec::new();
     for b in 0..branch_count(diagram) {
         let points = branch(diagram, b);
         let g = |(s, m): &(f64, ModeSummary)| m.damped_frequency - harmonic * s;
@@ -249,33 +275,38 @@ pub fn critical_speeds(
             if ga == 0.0 || ga.signum() == gb.signum() {
                 continue;
             }
-            // The branch's shape at the start of the bracket.
-            let start = pair[0].0;
-            let at_start = modal_analysis_at(rotor, start, options)?.modes;
-            let rank = diagram
-                .iter()
-                .find(|p| p.speed == start)
-                .and_then(|p| p.modes.iter().position(|m| m.branch == b))
-                .unwrap_or(0);
-            let shape = translations(&at_start[rank].shape);
-            let follow = |speed: f64| -> Result<(f64, (usize, Mode)), ModalError> {
-                let ms = modal_analysis_at(rotor, speed, options)?.modes;
-                let (k, m) = nearest(&ms, &shape).ok_or_else(|| {
-                    ModalError::Options(format!("branch {} vanished at {speed} rad/s", b + 1))
-                })?;
-                Ok((m.damped_frequency - harmonic * speed, (k, m)))
-            };
-            let (speed, (rank, mode)) = illinois(follow, (start, ga), (pair[1].0, gb))?;
-            found.push(CriticalSpeed {
-                speed,
-                harmonic,
-                rank,
+            let mut ends = [pair[0].0, pair[1].0].into_iter().map(|speed| {
+                let modes = modal_analysis_at(rotor, speed, options)?.modes;
+                let rank = diagram
+                    .iter()
+                    .find(|p| p.speed == speed)
+                    .and_then(|p| p.modes.iter().position(|m| m.branch == b))
+                    .unwrap_or(0);
+                Ok::<_, ModalError>(Known::of(rotor, speed, &modes[rank]))
+            });
+            let (start, end) = (ends.next().unwrap()?, ends.next().unwrap()?);
+            brackets.push(Bracket {
                 branch: b,
-                whirl: mode.whirl,
-                damping_ratio: mode.damping_ratio,
+                start,
+                end,
             });
         }
     }
+    refined(rotor, diagram, &brackets, harmonic, options)
+}
+
+/// The critical speeds of `brackets`, by speed.
+fn refined(
+    rotor: &Rotor,
+    diagram: &[CampbellPoint],
+    brackets: &[Bracket],
+    harmonic: f64,
+    options: &ModalOptions,
+) -> Result<Vec<CriticalSpeed>, ModalError> {
+    let mut found = brackets
+        .iter()
+        .map(|bracket| refine(rotor, diagram, bracket, harmonic, options))
+        .collect::<Result<Vec<_>, _>>()?;
     found.sort_by(|a, b| a.speed.total_cmp(&b.speed));
     Ok(found)
 }
@@ -364,9 +395,10 @@ pub fn campbell_study(
         ..ModalOptions::default()
     };
     let clock = std::time::Instant::now();
-    let diagram = campbell(rotor, &speed_grid(rotor, top, request.steps), &options)?;
+    let grid = speed_grid(rotor, top, request.steps);
+    let (diagram, brackets) = sweep(rotor, &grid, &options, Some(1.0))?;
     let diagram_seconds = clock.elapsed().as_secs_f64();
-    let criticals = critical_speeds(rotor, &diagram, 1.0, &options)?;
+    let criticals = refined(rotor, &diagram, &brackets, 1.0, &options)?;
     let model = &rotor.model;
     let max_speed = model.max_speed_stated.then_some(model.max_speed);
     let margins = critical_margins(&criticals, request.operating.as_ref(), max_speed);
@@ -387,38 +419,4 @@ pub fn campbell_study(
         max_speed,
         diagram_seconds,
     })
-}
-
-/// Illinois regula falsi on a bracket `(a, f(a))`, `(b, f(b))` with a sign change.
-fn illinois<T>(
-    mut f: impl FnMut(f64) -> Result<(f64, T), ModalError>,
-    (mut a, mut fa): (f64, f64),
-    (mut b, mut fb): (f64, f64),
-) -> Result<(f64, T), ModalError> {
-    let mut side = 0;
-    let mut last = None;
-    for _ in 0..60 {
-        let c = (a * fb - b * fa) / (fb - fa);
-        let (fc, mode) = f(c)?;
-        last = Some((c, mode));
-        if fc == 0.0 || (b - a).abs() <= 1e-8 * c.abs().max(1e-12) {
-            break;
-        }
-        if fc.signum() == fb.signum() {
-            b = c;
-            fb = fc;
-            if side == -1 {
-                fa /= 2.0;
-            }
-            side = -1;
-        } else {
-            a = c;
-            fa = fc;
-            if side == 1 {
-                fb /= 2.0;
-            }
-            side = 1;
-        }
-    }
-    last.ok_or_else(|| ModalError::Options("critical speed search did not start".into()))
 }

@@ -4,6 +4,7 @@
 //! points, mode-shape orbits, cross-coupling stability and the critical speed map.
 
 pub mod campbell;
+mod critical_refine;
 pub mod forced;
 pub mod linear;
 pub mod linearize;

@@ -12,7 +12,7 @@ pub mod pchip;
 
 pub use arnoldi::{
     ArnoldiOptions, EigenPair, LinearOperator, RealOperator, largest_eigenpairs,
-    largest_eigenpairs_real,
+    largest_eigenpairs_real, nearest_eigenpair_real,
 };
 pub use band::{BandLu, BandMatrix, Scalar, map_to_complex};
 
