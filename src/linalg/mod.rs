@@ -2,19 +2,22 @@
 //! banded LU with partial pivoting ([`band`]), an Arnoldi eigensolver for a
 //! few largest-modulus eigenvalues of a linear operator ([`arnoldi`]), meant to
 //! be used in shift-invert mode, and monotone cubic interpolation of tables
-//! ([`pchip`]).
+//! ([`pchip`]), and the Sturm sequence count of a symmetric definite banded
+//! pencil ([`sturm`]).
 
 use std::fmt;
 
 pub mod arnoldi;
 pub mod band;
 pub mod pchip;
+pub mod sturm;
 
 pub use arnoldi::{
     ArnoldiOptions, EigenPair, LinearOperator, RealOperator, largest_eigenpairs,
     largest_eigenpairs_real, nearest_eigenpair_real,
 };
 pub use band::{BandLu, BandMatrix, Scalar, map_to_complex};
+pub use sturm::eigenvalues_below;
 
 /// Numerical failures of the linear-algebra routines. Programming errors (an
 /// entry outside the band, operands of the wrong dimension or band) are not

@@ -24,7 +24,7 @@ use nalgebra::{DMatrix, SymmetricEigen};
 use super::dofs::DOF_PER_PEDESTAL;
 use super::{AssemblyError, Dof, DofMap, Rotor};
 use crate::fe::DOF_PER_NODE;
-use crate::linalg::BandMatrix;
+use crate::linalg::{BandMatrix, LinalgError, eigenvalues_below};
 use crate::model::{DEFAULT_REDUCED_MODES, MAX_REDUCED_MODES, ReductionRequest, RotorModel};
 
 /// The kept fixed-interface modes must reach this multiple of the highest
@@ -413,10 +413,16 @@ fn sub_band(a: &BandMatrix<f64>, keep: &[usize]) -> BandMatrix<f64> {
 /// Procedures*, §11.6): a block of `p = max(2m, m + 8)` vectors (all DOFs when
 /// fewer, which makes it one exact dense solve), `Y = K⁻¹ M X`, then the
 /// `p × p` pencil `(Yᵀ M X, Yᵀ M Y)` (`K Y = M X`, so `K` itself, badly
-/// conditioned, is never multiplied). Repeated eigenvalues (the two planes of
-/// an isotropic rotor) need no special care. Vectors come M-orthonormal.
-/// Converged when the kept eigenvalues change by less than [`EIGEN_TOL`], or
-/// stop improving below 1e-9 (their round-off floor).
+/// conditioned, is never multiplied). Vectors come M-orthonormal.
+///
+/// Converged Ritz values need not be the *lowest* eigenvalues: a mode the
+/// start block (nearly) misses, such as the second plane of a degenerate pair,
+/// may emerge only long after the others stopped changing. So every result is
+/// checked by a Sturm sequence count ([`eigenvalues_below`]) at
+/// `σ = (1 + CLUSTER) ω_m²`: when the pencil has more eigenvalues below `σ`
+/// than converged Ritz values, the iteration restarts from its Ritz vectors
+/// and pseudo-random vectors in a block enlarged by twice the missing count
+/// plus 8 (bounded: at `p = n` the solution is exact).
 fn fixed_interface_modes(
     k: &BandMatrix<f64>,
     mass: &BandMatrix<f64>,
@@ -427,25 +433,69 @@ fn fixed_interface_modes(
     if m == 0 {
         return Ok((Vec::new(), DMatrix::zeros(n, 0)));
     }
-    let p = (2 * m).max(m + 8).min(n);
-    // Start: unit vectors on the DOFs of largest M_jj / K_jj (Bathe's choice),
-    // plus a spread vector so no mode starts orthogonal to the block.
+    let mut p = (2 * m).max(m + 8).min(n);
+    let mut x = start_block(k, mass, p);
+    let mut random = PseudoRandom(0x2545_f491_4f6c_dd1d);
+    loop {
+        let (values, ritz) = subspace_iteration(mass, lu, m, x)?;
+        if p == n {
+            return Ok((values[..m].to_vec(), ritz.columns(0, m).into_owned()));
+        }
+        let (below, found) = sturm_check(k, mass, &values, values[m - 1] * (1.0 + CLUSTER))?;
+        if below <= found {
+            return Ok((values[..m].to_vec(), ritz.columns(0, m).into_owned()));
+        }
+        let old = p;
+        p = (p + 2 * (below - found) + 8).min(n);
+        x = DMatrix::zeros(n, p);
+        x.columns_mut(0, old).copy_from(&ritz);
+        for c in old..p {
+            for j in 0..n {
+                x[(j, c)] = random.next();
+            }
+        }
+    }
+}
+
+/// Relative width of a cluster of eigenvalues kept together: converged
+/// together, and counted together by the Sturm check.
+const CLUSTER: f64 = 1e-6;
+
+/// Bathe's start block: unit vectors on the DOFs of largest `M_jj / K_jj`,
+/// plus a spread vector so no mode starts orthogonal to the block (the
+/// identity when `p` is the order).
+fn start_block(k: &BandMatrix<f64>, mass: &BandMatrix<f64>, p: usize) -> DMatrix<f64> {
+    let n = k.n();
     let mut x = DMatrix::zeros(n, p);
     if p == n {
         x.fill_with_identity();
-    } else {
-        let mut ratio: Vec<(f64, usize)> = (0..n)
-            .map(|j| (mass.get(j, j) / k.get(j, j).abs().max(f64::MIN_POSITIVE), j))
-            .collect();
-        ratio.sort_by(|a, b| b.0.total_cmp(&a.0));
-        for c in 1..p {
-            x[(ratio[c - 1].1, c)] = 1.0;
-        }
-        for j in 0..n {
-            x[(j, 0)] = 1.0 + (j % 7) as f64 * 0.1;
-        }
+        return x;
     }
-    let mut previous: Vec<f64> = vec![f64::INFINITY; m];
+    let mut ratio: Vec<(f64, usize)> = (0..n)
+        .map(|j| (mass.get(j, j) / k.get(j, j).abs().max(f64::MIN_POSITIVE), j))
+        .collect();
+    ratio.sort_by(|a, b| b.0.total_cmp(&a.0));
+    for c in 1..p {
+        x[(ratio[c - 1].1, c)] = 1.0;
+    }
+    for j in 0..n {
+        x[(j, 0)] = 1.0 + (j % 7) as f64 * 0.1;
+    }
+    x
+}
+
+/// Subspace iteration from the block `x` until the `m` lowest Ritz values and
+/// those within [`CLUSTER`] of the highest of them change by less than
+/// [`EIGEN_TOL`], or stop improving below 1e-9 (their round-off floor): all
+/// Ritz values (ascending) and their vectors.
+fn subspace_iteration(
+    mass: &BandMatrix<f64>,
+    lu: &crate::linalg::BandLu<f64>,
+    m: usize,
+    mut x: DMatrix<f64>,
+) -> Result<(Vec<f64>, DMatrix<f64>), String> {
+    let (n, p) = x.shape();
+    let mut previous: Vec<f64> = vec![f64::INFINITY; p];
     let mut last_change = f64::INFINITY;
     let (mut y, mut mx) = (DMatrix::zeros(n, p), DMatrix::zeros(n, p));
     let mut work = vec![0.0; n];
@@ -465,20 +515,58 @@ fn fixed_interface_modes(
         let mr = y.transpose() * my;
         let (values, vectors) = rayleigh_ritz(kr, mr)?;
         x = &y * vectors;
-        let change = values[..m]
+        let edge = values[m - 1] * (1.0 + CLUSTER);
+        let wanted = values.iter().take_while(|&&v| v < edge).count().max(m);
+        let change = values[..wanted]
             .iter()
             .zip(&previous)
             .map(|(v, p)| ((v - p) / v).abs())
             .fold(0.0, f64::max);
-        previous = values[..m].to_vec();
+        previous = values;
         if p == n || change <= EIGEN_TOL || (change <= 1e-9 && change >= last_change) {
-            return Ok((previous, x.columns(0, m).into_owned()));
+            return Ok((previous, x));
         }
         last_change = change;
     }
     Err(format!(
         "the fixed-interface modes did not converge in {MAX_SUBSPACE_ITERATIONS} subspace iterations"
     ))
+}
+
+/// Eigenvalues of `(k, mass)` below `shift` by their Sturm count, and Ritz
+/// `values` below it; `shift` moves up by a little when it is an eigenvalue to
+/// round-off (a zero pivot).
+fn sturm_check(
+    k: &BandMatrix<f64>,
+    mass: &BandMatrix<f64>,
+    values: &[f64],
+    shift: f64,
+) -> Result<(usize, usize), String> {
+    let mut sigma = shift;
+    for _ in 0..8 {
+        match eigenvalues_below(k, mass, sigma) {
+            Ok(below) => return Ok((below, values.iter().filter(|&&v| v < sigma).count())),
+            Err(LinalgError::Singular { .. }) => sigma *= 1.0 + 1e-7,
+            Err(e) => return Err(format!("Sturm check of the fixed-interface modes: {e}")),
+        }
+    }
+    Err(format!(
+        "Sturm check of the fixed-interface modes: every shift near {shift} is an eigenvalue"
+    ))
+}
+
+/// Deterministic uniform numbers in [−1, 1) (xorshift64*, Vigna 2016) for
+/// restart vectors: no structure a mode could be orthogonal to.
+struct PseudoRandom(u64);
+
+impl PseudoRandom {
+    fn next(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        let bits = self.0.wrapping_mul(0x2545_f491_4f6c_dd1d) >> 11;
+        bits as f64 / (1u64 << 52) as f64 - 1.0
+    }
 }
 
 /// Eigenpairs of the pencil `(kr, mr)` (symmetrized), ascending, vectors
@@ -602,36 +690,90 @@ node = {}
         }
     }
 
+    /// The generalized eigenvalues of `(k, m)` by a dense solution, ascending:
+    /// the inverse problem `L⁻¹ M L⁻ᵀ y = (1/ω²) y`, `K = L Lᵀ`, whose largest
+    /// eigenvalues (the lowest modes) a dense solver gets to round-off.
+    fn dense_eigenvalues(k: &BandMatrix<f64>, m: &BandMatrix<f64>) -> Vec<f64> {
+        let l = k.to_dense().cholesky().unwrap().l();
+        let a = l.solve_lower_triangular(&m.to_dense()).unwrap();
+        let a = l.solve_lower_triangular(&a.transpose()).unwrap();
+        let mut dense: Vec<f64> = SymmetricEigen::new((&a + a.transpose()) * 0.5)
+            .eigenvalues
+            .iter()
+            .map(|mu| 1.0 / mu)
+            .collect();
+        dense.sort_by(f64::total_cmp);
+        dense
+    }
+
+    /// Every count from 1 to `up_to` gives exactly the lowest eigenvalues of
+    /// the rotor's interior, with their multiplicity, to 1e-10 (the dense
+    /// solution's round-off on `ω²`), and M-orthonormal vectors.
+    fn assert_lowest_eigenvalues(rotor: &Rotor, up_to: usize) {
+        let i = rotor.interior().unwrap();
+        let dense = dense_eigenvalues(&i.k_ii, &i.m_ii);
+        let md = i.m_ii.to_dense();
+        for count in 1..=up_to {
+            let (values, vectors) = fixed_interface_modes(&i.k_ii, &i.m_ii, &i.lu, count).unwrap();
+            assert_eq!(values.len(), count);
+            for (j, (v, d)) in values.iter().zip(&dense).enumerate() {
+                assert!(
+                    (v / d - 1.0).abs() < 1e-10,
+                    "{}, {count} modes, mode {j}: ω = {} against {} rad/s",
+                    rotor.model.name,
+                    v.sqrt(),
+                    d.sqrt()
+                );
+            }
+            let gram = vectors.transpose() * &md * &vectors;
+            assert!((gram - DMatrix::identity(count, count)).amax() < 1e-10);
+        }
+    }
+
     /// Subspace iteration (block smaller than the interior) gives the
     /// eigenvalues of a dense generalized solution of `(K_ii, M_ii)` to 1e-10,
     /// repeated pairs included.
     #[test]
     fn subspace_iteration_matches_a_dense_eigensolution() {
         let rotor = clamped_interior(30);
-        let interior: Vec<usize> = (4..rotor.dof_count() - 4).collect();
-        let k = sub_band(&rotor.stiffness, &interior);
-        let m = sub_band(&rotor.mass, &interior);
-        let lu = k.lu().unwrap();
-        let (values, vectors) = fixed_interface_modes(&k, &m, &lu, 6).unwrap();
-        assert!(2 * 6 < interior.len());
-        let (kd, md) = (k.to_dense(), m.to_dense());
-        // The inverse problem `L⁻¹ M L⁻ᵀ y = (1/ω²) y`, `K = L Lᵀ`, whose largest
-        // eigenvalues (the lowest modes) a dense solver gets to round-off.
-        let l = kd.cholesky().unwrap().l();
-        let a = l.solve_lower_triangular(&md).unwrap();
-        let a = l.solve_lower_triangular(&a.transpose()).unwrap();
-        let mut dense: Vec<f64> = SymmetricEigen::new(a)
-            .eigenvalues
-            .iter()
-            .map(|mu| 1.0 / mu)
-            .collect();
-        dense.sort_by(f64::total_cmp);
-        for (v, d) in values.iter().zip(&dense) {
-            assert!((v / d - 1.0).abs() < 1e-10, "{v} against {d}");
-        }
-        // M-orthonormal vectors.
-        let gram = vectors.transpose() * &md * &vectors;
-        assert!((gram - DMatrix::identity(6, 6)).amax() < 1e-10);
+        assert!(2 * 12 < rotor.dof_count() - 8);
+        assert_lowest_eigenvalues(&rotor, 12);
+    }
+
+    /// Two identical clamped spans (the middle node kept too), each in two
+    /// planes: every eigenvalue is fourfold, and every count, cutting a
+    /// cluster or not, gets the lowest ones.
+    #[test]
+    fn fourfold_eigenvalues_of_two_identical_spans_are_all_found() {
+        let mut rotor = clamped_interior(40);
+        let mut model = rotor.model.clone();
+        let mut probe = model.probes[0].clone();
+        probe.node = 20;
+        probe.name = "mid".into();
+        model.probes.push(probe);
+        rotor = Rotor::new(model).unwrap();
+        assert_eq!(rotor.kept_nodes(), vec![0, 20, 40]);
+        let i = rotor.interior().unwrap();
+        let dense = dense_eigenvalues(&i.k_ii, &i.m_ii);
+        assert!((dense[3] / dense[0] - 1.0) < 1e-9 && dense[4] / dense[3] > 2.0);
+        assert_lowest_eigenvalues(&rotor, 12);
+    }
+
+    /// The unit with three guide bearings (24 elements, kept nodes 1, 5, 9,
+    /// 22, 25): its long span 9–22 has degenerate pairs (697.5 and 1734.4
+    /// rad/s) that a start block of unit vectors misses without the Sturm check.
+    #[test]
+    fn the_three_guide_unit_gets_its_lowest_fixed_interface_modes() {
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/models/hydro_unit_three_guide.toml"
+        );
+        let rotor = Rotor::new(RotorModel::from_file(std::path::Path::new(path)).unwrap()).unwrap();
+        assert_eq!(rotor.kept_nodes(), vec![0, 4, 8, 21, 24]);
+        assert_lowest_eigenvalues(&rotor, 24);
+        let f = rotor.fixed_interface_frequencies(6).unwrap();
+        assert!((f[1] / f[0] - 1.0).abs() < 1e-9 && (f[3] / f[2] - 1.0).abs() < 1e-9);
+        assert!(f[2] > 1.5 * f[0] && f[4] > 1.5 * f[2], "{f:?}");
     }
 
     /// The reduced matrices are `Tᵀ X T` with `T` identity on the kept DOFs:
