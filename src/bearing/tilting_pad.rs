@@ -41,6 +41,10 @@ use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, che
 /// Relative size of the pivot's restoring moment (see the module docs).
 const PIVOT_REST: f64 = 1e-9;
 
+/// `|p_e|² / C²` below which a pad's contact is not evaluated (it is zero
+/// there; the margin covers the rounding of `n·p_e` against `|p_e|`).
+const CONTACT_FREE: f64 = 1.0 - 1e-9;
+
 /// One pad of a tilting-pad bearing, with its fixed geometry's trigonometry
 /// worked out once ([`Pad::new`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -300,8 +304,12 @@ impl Bearing for TiltingPadBearing {
             let (s, c, state) = self.pad_state(k, q, qdot);
             let part = film.force(&state, speed, Some(&pad.window))?;
             out.add_transformed(&part, Some((k, -s, c)));
-            let (contact, _) = self.pad_contact(&law, k, &state, speed);
-            out.add_transformed(&contact, Some((k, -s, c)));
+            // Within the gap (`|p_e| < C`) neither the pad's surface nor its edges
+            // touch (`n·p_e ≤ |p_e|`): the contact adds nothing.
+            if state.position.norm_squared() >= CONTACT_FREE * law.gap * law.gap {
+                let (contact, _) = self.pad_contact(&law, k, &state, speed);
+                out.add_transformed(&contact, Some((k, -s, c)));
+            }
             let i = 2 + k;
             out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
             out.stiffness[i * n + i] += k_rest;
