@@ -257,6 +257,15 @@ pub fn arc_potential_sc(x: f64, y: f64, span: f64, end1: (f64, f64), end2: (f64,
     (Jet3::constant(span) + (end(end2) - end(end1)) * 2.0) / root
 }
 
+/// The value of [`arc_potential_sc`] alone, by the same operations on the
+/// constant terms (so the same number).
+pub fn arc_potential_value(x: f64, y: f64, span: f64, end1: (f64, f64), end2: (f64, f64)) -> f64 {
+    let root = ((1.0 - x * x) - y * y).sqrt();
+    let end =
+        |(s, c): (f64, f64)| ((x * s - y * c) * (1.0 / (((1.0 + root) - x * c) - y * s))).atan();
+    (span + (end(end2) - end(end1)) * 2.0) * (1.0 / root)
+}
+
 /// The product of the linear jet `a0 + a1 dx + a2 dy` and `b`: [`Jet3`]'s
 /// product with the terms of `a`'s zero coefficients left out (they come last
 /// in each sum, so the rounding is the same).
@@ -433,6 +442,8 @@ mod tests {
             let got = arc_potential_sc(x, y, t2 - t1, a, b);
             let want = generic(x, y, t2 - t1, a, b);
             assert_eq!(got, want, "(x, y) = ({x}, {y}), arc [{t1}, {t2}]");
+            let value = arc_potential_value(x, y, t2 - t1, a, b);
+            assert_eq!(value.to_bits(), want.value().to_bits());
         }
         let centre = arc_potential_sc(0.0, 0.0, 1.0, (0.0, 1.0), 1f64.sin_cos());
         assert_eq!(centre, generic(0.0, 0.0, 1.0, (0.0, 1.0), 1f64.sin_cos()));

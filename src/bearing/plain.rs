@@ -156,12 +156,9 @@ impl ShortFilm {
             stiffness: -Matrix2::new(dfx_dx, dfx_dy, dfy_dx, dfy_dy) * saturation,
             damping: Matrix2::new(f.xx, f.xy, f.xy, f.yy) * (2.0 * c),
         };
-        let finite = out
-            .force
-            .iter()
-            .chain(out.stiffness.iter())
-            .chain(out.damping.iter())
-            .all(|v| v.is_finite());
+        let finite = out.force.iter().all(|v| v.is_finite())
+            && out.stiffness.iter().all(|v| v.is_finite())
+            && out.damping.iter().all(|v| v.is_finite());
         if finite {
             Ok(out)
         } else {
@@ -188,9 +185,7 @@ impl ShortFilm {
         // `∫₀^{2π} dθ/H = 2π/√(1 − ε²)`.
         let phi = match window {
             None => 2.0 * PI / (1.0 - x * x - y * y).sqrt(),
-            Some(w) => {
-                super::film::arc_potential_sc(x, y, w.to - w.from, w.from_sc, w.to_sc).value()
-            }
+            Some(w) => super::film::arc_potential_value(x, y, w.to - w.from, w.from_sc, w.to_sc),
         };
         self.viscosity * speed * self.radius.powi(3) * self.length / self.clearance * phi
     }
