@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Regenerate BENCHMARKS.md: criterion hot paths, scaling with rotor size,
-# real-time factors, and the comparisons with ROSS (transients and the Campbell
+# real-time factors, the FMU layer's overhead, the FMPy plant loop (the hydro
+# units packed as linux64 FMUs into out/), and the comparisons with ROSS (transients and the Campbell
 # diagram; ROSS installed into .venv-ross,
 # Python 3.13 from pyenv, ross-rotordynamics from PyPI).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
+bash scripts/python_env.sh
 py=""
 for cand in "${HOME}/.pyenv/versions/3.13.0/bin/python" python3.13; do
   if command -v "$cand" >/dev/null 2>&1; then py="$cand"; break; fi
@@ -18,6 +20,11 @@ hot=$(cargo bench --quiet --bench hot_paths -- --warm-up-time 1 --measurement-ti
       | awk '/time:/ { gsub(/^ +/, "", prev); printf "| %s | %s %s |\n", prev, $4, $5 } { prev = $0 }')
 scaling=$(cargo bench --quiet --bench scaling 2>/dev/null | grep -E '^\||fitted')
 realtime=$(cargo bench --quiet --bench realtime 2>/dev/null | grep -E '^\|')
+overhead=$(cargo bench --quiet --bench fmu_overhead 2>/dev/null | grep -E '^\|')
+for m in hydro_unit hydro_unit_plain hydro_unit_brackets hydro_unit_three_guide; do
+  bash fmu_pack.sh --platforms linux64 --model "models/$m.toml" > /dev/null
+done
+.venv/bin/python bench/plant_loop.py > /tmp/plant_loop.log 2>&1 || { cat /tmp/plant_loop.log; exit 1; }
 .venv-ross/bin/python bench/ross_compare.py target/release/rotor > /tmp/ross_compare.log 2>&1 || { cat /tmp/ross_compare.log; exit 1; }
 checks=$(grep -oE '(non)?linear: .*' /tmp/ross_compare.log)
 .venv-ross/bin/python bench/campbell_ross.py target/release/rotor > /tmp/campbell_ross.log 2>&1 || { cat /tmp/campbell_ross.log; exit 1; }
@@ -41,9 +48,19 @@ checks=$(grep -oE '(non)?linear: .*' /tmp/ross_compare.log)
   echo
   echo "## Real-time factors (\`cargo bench --bench realtime\`)"
   echo
-  echo "Communication every 10 ms, outputs read at each, as an FMU master does."
+  echo "Communication every 5 ms (or every internal step if longer), outputs read at each, as the plant loop below does."
   echo
   echo "$realtime"
+  echo
+  echo "## FMU layer overhead (\`cargo bench --bench fmu_overhead\`)"
+  echo
+  echo "Per 5 ms communication point with one 5 ms internal step: the bare simulator step, the step plus \`Simulator::outputs\` (the bearing evaluations the outputs need), \`Instance::do_step\` (which evaluates the outputs once into the array every read is served from), and a read of every output one value at a time (\`Instance::get\`, what fmi2GetReal calls per value). Medians of five batches of 400."
+  echo
+  echo "$overhead"
+  echo
+  echo "## FMPy plant loop (\`bench/plant_loop.py\`)"
+  echo
+  cat bench/plant_loop_results.md
   echo
   echo "## Against ROSS (\`bench/ross_compare.py\`)"
   echo

@@ -108,69 +108,104 @@ fn without_csv_the_terminal_gets_a_summary_of_the_run() {
     );
 }
 
-/// The default step: 60 steps per revolution at the top speed (the run's or
-/// the model's max_speed_rpm, whichever is larger), at most 1 ms — and the
-/// FMU's `solver.time_step` start value follows the same rule.
+/// The default steps: accuracy-controlled (local error tolerance 0.003) of at
+/// most 12 per revolution at the top speed (the run's or the model's
+/// max_speed_rpm, whichever is larger), at most 20 ms — the FMU's
+/// `solver.time_step` and `solver.local_error_tolerance` start values follow
+/// the same rule; `--local-error-tolerance 0` gives equal steps of 60 per
+/// revolution, at most 1 ms.
 #[test]
 fn default_time_step_is_one_rule_for_the_cli_and_the_fmu() {
-    let pump = root().join("examples/my_pump.toml");
-    for (rpm, step) in [("3600", "0.00025"), ("1000", "0.00025")] {
-        // max_speed_rpm 4000: 66.7 Hz, 1/4000 s — whatever the run's speed below it.
-        let out = rotor()
-            .args([
-                "simulate",
-                pump.to_str().unwrap(),
-                "--rpm",
-                rpm,
-                "--duration",
-                "0.05",
-            ])
-            .output()
-            .unwrap();
+    let run = |args: &[&str]| {
+        let out = rotor().arg("simulate").args(args).output().unwrap();
         let (stdout, stderr) = text(&out);
         assert!(out.status.success(), "{stderr}");
+        (stdout, stderr)
+    };
+    let pump = root().join("examples/my_pump.toml");
+    let pump = pump.to_str().unwrap();
+    for rpm in ["3600", "1000"] {
+        // max_speed_rpm 4000: 66.7 Hz, 1/800 s at most — whatever the run's
+        // speed below it; the records follow the largest step.
+        let (stdout, stderr) = run(&[pump, "--rpm", rpm, "--duration", "0.05"]);
         assert!(
-            stderr.contains(&format!(
-                "time step {step} s (60 steps per revolution at 4000 rpm; --step to choose)"
-            )),
+            stderr.contains(
+                "accuracy-controlled steps: local error tolerance 0.003, steps up to 0.00125 s (12 per revolution at 4000 rpm; --step for equal steps)"
+            ),
+            "{stderr}"
+        );
+        assert!(stdout.contains("41 records"), "{stdout}");
+        // Equal steps: 1/4000 s.
+        let (stdout, stderr) = run(&[
+            pump,
+            "--rpm",
+            rpm,
+            "--duration",
+            "0.05",
+            "--local-error-tolerance",
+            "0",
+        ]);
+        assert!(
+            stderr.contains(
+                "time step 0.00025 s (60 steps per revolution at 4000 rpm; --step to choose)"
+            ),
             "{stderr}"
         );
         assert!(stdout.contains("201 records"), "{stdout}");
     }
     // Jeffcott rotor (speed_rpm 3000, no max_speed_rpm) run at 6000 rpm:
-    // the run's speed sets it, 1/6000 s.
+    // the run's speed sets it, 1/1200 s (equal steps 1/6000 s).
     let jeffcott = root().join("models/jeffcott.toml");
-    let out = rotor()
-        .args([
-            "simulate",
-            jeffcott.to_str().unwrap(),
-            "--rpm",
-            "6000",
-            "--duration",
-            "0.01",
-        ])
-        .output()
-        .unwrap();
+    let jeffcott = jeffcott.to_str().unwrap();
+    let (_, stderr) = run(&[jeffcott, "--rpm", "6000", "--duration", "0.01"]);
     assert!(
-        text(&out)
-            .1
-            .contains("time step 0.000166667 s (60 steps per revolution at 6000 rpm")
+        stderr.contains("steps up to 0.000833333 s (12 per revolution at 6000 rpm"),
+        "{stderr}"
     );
-    // The classic rotor at 1000 rpm: 1 ms.
-    let out = rotor()
-        .args(["simulate", "--rpm", "1000", "--duration", "0.01"])
-        .output()
-        .unwrap();
+    let (_, stderr) = run(&[
+        jeffcott,
+        "--rpm",
+        "6000",
+        "--duration",
+        "0.01",
+        "--local-error-tolerance",
+        "0",
+    ]);
     assert!(
-        text(&out)
-            .1
-            .contains("time step 0.001 s (at most 1 ms; 1000 rpm needs no finer")
+        stderr.contains("time step 0.000166667 s (60 steps per revolution at 6000 rpm"),
+        "{stderr}"
+    );
+    // The classic rotor at 1000 rpm: equal steps of 1 ms; the hydro unit at
+    // 150 rpm: accuracy-controlled steps of at most 20 ms.
+    let (_, stderr) = run(&[
+        "--rpm",
+        "1000",
+        "--duration",
+        "0.01",
+        "--local-error-tolerance",
+        "0",
+    ]);
+    assert!(
+        stderr.contains("time step 0.001 s (at most 1 ms; 1000 rpm needs no finer"),
+        "{stderr}"
+    );
+    let hydro = root().join("models/hydro_unit.toml");
+    let (_, stderr) = run(&[
+        hydro.to_str().unwrap(),
+        "--rpm",
+        "150",
+        "--duration",
+        "0.04",
+    ]);
+    assert!(
+        stderr.contains("steps up to 0.02 s (at most 20 ms; 150 rpm; --step for equal steps)"),
+        "{stderr}"
     );
     // The FMU of each model starts with the same rule at the model's speed.
     for (model, start) in [
-        ("models/jeffcott.toml", 1.0 / 3000.0),
-        ("models/hydro_unit.toml", 1e-3),
-        ("examples/my_pump.toml", 1.0 / 4000.0),
+        ("models/jeffcott.toml", 1.0 / 600.0),
+        ("models/hydro_unit.toml", 0.02),
+        ("examples/my_pump.toml", 1.0 / 800.0),
     ] {
         let stage = dir(&format!("stage_{}", model.replace(['/', '.'], "_")));
         let out = rotor()
@@ -181,17 +216,20 @@ fn default_time_step_is_one_rule_for_the_cli_and_the_fmu() {
             .unwrap();
         assert!(out.status.success(), "{}", text(&out).1);
         let xml = std::fs::read_to_string(stage.join("modelDescription.xml")).unwrap();
-        let var = xml.split("name=\"solver.time_step\"").nth(1).unwrap();
-        let value: f64 = var
-            .split("start=\"")
-            .nth(1)
-            .unwrap()
-            .split('"')
-            .next()
-            .unwrap()
-            .parse()
-            .unwrap();
+        let start_of = |name: &str| -> f64 {
+            let var = xml.split(&format!("name=\"{name}\"")).nth(1).unwrap();
+            var.split("start=\"")
+                .nth(1)
+                .unwrap()
+                .split('"')
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap()
+        };
+        let value = start_of("solver.time_step");
         assert!((value - start).abs() < 1e-15, "{model}: {value}");
+        assert_eq!(start_of("solver.local_error_tolerance"), 0.003, "{model}");
     }
 }
 
@@ -261,8 +299,8 @@ fn rub_model(d: &Path) -> PathBuf {
     model
 }
 
-/// A run that fails (the rub above at 3000 rpm: Newton does not converge
-/// after 16 halvings) keeps its rows up to the failure in the CSV and says
+/// A run that fails (the rub above at 3000 rpm in equal steps: Newton does
+/// not converge after 16 halvings; accuracy-controlled steps get through) keeps its rows up to the failure in the CSV and says
 /// where they are and when it stopped; the contact warnings come first.
 #[test]
 fn a_failed_run_keeps_its_rows() {
@@ -279,6 +317,8 @@ fn a_failed_run_keeps_its_rows() {
             "--no-gravity",
             "--duration",
             "0.5",
+            "--local-error-tolerance",
+            "0",
             "--csv",
         ])
         .arg(&path)

@@ -143,8 +143,9 @@ fn restored_states_are_validated() {
         (
             "viscosity",
             craft(&|b| {
-                // The last tuned value, before six empty vectors' lengths.
-                let at = b.len() - 16 - 6 * 8;
+                // The last tuned value, before six empty vectors' lengths
+                // and the previous accelerations (empty before the first step).
+                let at = b.len() - 16 - 7 * 8;
                 put(b, at, -0.02)
             }),
         ),

@@ -106,6 +106,7 @@ fn load_variables_are_appended_in_channel_order() {
             "bearings.lower_guide.power_loss",
             "bearings.turbine_guide.power_loss",
             "power_loss",
+            "solver.local_error_tolerance",
         ]
     );
     let channels = m.load_inputs();
@@ -151,7 +152,8 @@ fn load_variables_are_appended_in_channel_order() {
         [
             "bearings.drive_end.power_loss",
             "bearings.non_drive_end.power_loss",
-            "power_loss"
+            "power_loss",
+            "solver.local_error_tolerance"
         ]
     );
 }
@@ -177,6 +179,7 @@ fn load_inputs_give_the_simulators_run() {
     let mut sim = Simulator::new(Rotor::new(m.clone()).unwrap(), SolverOptions::default()).unwrap();
     sim.set_options(SolverOptions {
         time_step: rotor_bearing::fmi2::variables::default_fmu_time_step(&m),
+        local_error_tolerance: rotor_bearing::fmi2::variables::DEFAULT_LOCAL_ERROR_TOLERANCE,
         ..SolverOptions::default()
     })
     .unwrap();
@@ -355,7 +358,14 @@ fn a_torque_driven_fmu_accelerates_as_its_net_torque_over_its_inertia() {
         variables(&s)
     };
     let vars = variables(&m);
-    for (a, b) in speed_mode.iter().zip(&vars) {
+    // Every variable before the step control (appended last of all, after
+    // the drive's) keeps its value reference.
+    let before_step_control = speed_mode.len() - 1;
+    assert_eq!(
+        speed_mode[before_step_control].name,
+        "solver.local_error_tolerance"
+    );
+    for (a, b) in speed_mode[..before_step_control].iter().zip(&vars) {
         assert_eq!((&a.name, a.value_reference), (&b.name, b.value_reference));
     }
     let speed = &vars[vr(&m, "shaft.speed") as usize];
@@ -372,6 +382,7 @@ fn a_torque_driven_fmu_accelerates_as_its_net_torque_over_its_inertia() {
         Rotor::new(m.clone()).unwrap(),
         SolverOptions {
             time_step: rotor_bearing::fmi2::variables::default_fmu_time_step(&m),
+            local_error_tolerance: rotor_bearing::fmi2::variables::DEFAULT_LOCAL_ERROR_TOLERANCE,
             ..SolverOptions::default()
         },
     )

@@ -98,6 +98,7 @@ fn pedestal_outputs_equal_the_simulator() {
         Rotor::new(m.clone()).unwrap(),
         SolverOptions {
             time_step: rotor_bearing::fmi2::variables::default_fmu_time_step(&m),
+            local_error_tolerance: rotor_bearing::fmi2::variables::DEFAULT_LOCAL_ERROR_TOLERANCE,
             ..SolverOptions::default()
         },
     )

@@ -467,7 +467,13 @@ fn the_cli_warns_once_per_run_when_a_contact_leaves_its_law() {
             .arg("simulate")
             .arg(model)
             .args(speed)
-            .args(["--duration", "0.05", "--csv"])
+            .args([
+                "--duration",
+                "0.05",
+                "--local-error-tolerance",
+                "0",
+                "--csv",
+            ])
             .arg(dir.join("run.csv"))
             .output()
             .unwrap();

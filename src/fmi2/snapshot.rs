@@ -41,8 +41,9 @@ pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
 /// rotor's mode count, 5 the load inputs of forces and ports and the
 /// torsional state of a torque-driven shaft, 6 the initial speed of a
 /// torque-driven shaft and each bearing's tuned value, the field excitation
-/// of a magnetic pull beside the viscosities).
-pub const VERSION: u64 = 6;
+/// of a magnetic pull beside the viscosities, 7 the local error tolerance and
+/// the step proposal and previous accelerations of accuracy-controlled steps).
+pub const VERSION: u64 = 7;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -68,7 +69,7 @@ fn phase_index(phase: Phase) -> f64 {
 }
 
 /// The scalar fields, in image order.
-const SCALARS: [Scalar; 16] = [
+const SCALARS: [Scalar; 18] = [
     ("time", |s| s.sim.time, |s, v| put(&mut s.sim.time, v)),
     (
         "spin_angle",
@@ -171,10 +172,26 @@ const SCALARS: [Scalar; 16] = [
             v == 0.0 || v == 1.0
         },
     ),
+    (
+        "local_error_tolerance",
+        |s| s.params.local_error_tolerance,
+        |s, v| {
+            s.params.local_error_tolerance = v;
+            v.is_finite() && v >= 0.0
+        },
+    ),
+    (
+        "step_proposal",
+        |s| s.sim.step_proposal,
+        |s, v| {
+            s.sim.step_proposal = v;
+            v.is_finite() && v >= 0.0
+        },
+    ),
 ];
 
 /// The vector fields, in image order.
-const VECTORS: [Vector; 16] = [
+const VECTORS: [Vector; 17] = [
     ("u", |s| &s.sim.u, |s| &mut s.sim.u),
     ("ud", |s| &s.sim.ud, |s| &mut s.sim.ud),
     ("udd", |s| &s.sim.udd, |s| &mut s.sim.udd),
@@ -214,6 +231,11 @@ const VECTORS: [Vector; 16] = [
         "twist_torque",
         |s| &s.sim.twist_torque,
         |s| &mut s.sim.twist_torque,
+    ),
+    (
+        "udd_previous",
+        |s| &s.sim.udd_previous,
+        |s| &mut s.sim.udd_previous,
     ),
 ];
 
@@ -265,6 +287,8 @@ impl Reader<'_> {
 /// The vector fields sized by the rotor's coordinates, which depend on the
 /// mode count of the reduced rotor (`solver.reduced_modes`).
 const ROTOR_VECTORS: [&str; 3] = ["u", "ud", "udd"];
+/// A rotor vector that is empty until accuracy-controlled steps fill it.
+const ROTOR_OR_EMPTY: &str = "udd_previous";
 
 impl Snapshot {
     /// `Ok` if this state fits an instance whose current state is `current`:
@@ -281,6 +305,9 @@ impl Snapshot {
         for (name, get, _) in VECTORS {
             let (n, m) = if ROTOR_VECTORS.contains(&name) {
                 (get(self).len(), coordinates)
+            } else if name == ROTOR_OR_EMPTY {
+                let n = get(self).len();
+                (n, if n == 0 { 0 } else { coordinates })
             } else {
                 (get(self).len(), get(current).len())
             };
@@ -363,7 +390,11 @@ impl Snapshot {
             }
         }
         for (name, _, get_mut) in VECTORS {
-            let n = r.u64()?;
+            let read = r.u64()?;
+            if name == ROTOR_OR_EMPTY && (read == 0 || read == n as u64) {
+                get_mut(&mut snap).resize(read as usize, 0.0);
+            }
+            let n = read;
             let expected = get_mut(&mut snap).len();
             if n != expected as u64 {
                 return Err(format!(
@@ -415,6 +446,8 @@ mod tests {
                 stuck: 1.0,
                 factor_step: 1e-3,
                 factor_speed: 13.0,
+                udd_previous: v(8, 20.0),
+                step_proposal: 2.5e-4,
             },
             params: Params {
                 time_step: 1e-3,
@@ -424,6 +457,7 @@ mod tests {
                 gravity: false,
                 reduced_modes: 6,
                 initial_speed: 21.0,
+                local_error_tolerance: 3e-3,
             },
             tuned: v(2, 0.03),
             phase: Phase::StepFailed,
@@ -504,6 +538,26 @@ mod tests {
         assert!(e.contains("version 5"), "{e}");
     }
 
+    /// The previous accelerations of accuracy-controlled steps are empty until
+    /// the first such step: a state with them empty or full fits an instance
+    /// holding either, any other length is refused.
+    #[test]
+    fn previous_accelerations_are_empty_or_one_per_rotor_coordinate() {
+        let full = sample();
+        let mut empty = full.clone();
+        empty.sim.udd_previous.clear();
+        for (saved, current) in [(&empty, &full), (&full, &empty), (&empty, &empty)] {
+            assert!(saved.fits(current, 8).is_ok());
+            let back = Snapshot::from_bytes(&saved.to_bytes(), current, eight).unwrap();
+            assert_eq!(&back, saved);
+        }
+        let mut odd = full.clone();
+        odd.sim.udd_previous.truncate(5);
+        assert!(odd.fits(&full, 8).is_err());
+        let e = Snapshot::from_bytes(&odd.to_bytes(), &full, eight).unwrap_err();
+        assert!(e.contains("udd_previous has 5 values"), "{e}");
+    }
+
     /// A state saved with another mode count is read with the rotor vectors
     /// of the rotor that count builds, and refused where it cannot fit.
     #[test]
@@ -515,6 +569,7 @@ mod tests {
             &mut reduced.sim.u,
             &mut reduced.sim.ud,
             &mut reduced.sim.udd,
+            &mut reduced.sim.udd_previous,
         ] {
             v.extend([0.5, 0.25]);
         }

@@ -54,6 +54,7 @@
 //! unconverged state is never returned. Every accepted step is checked against
 //! the limits of the contact law ([`contact_watch`]).
 
+mod adaptive;
 mod condense;
 pub mod contact_watch;
 mod dense;

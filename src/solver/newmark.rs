@@ -262,6 +262,9 @@ impl Simulator {
         let now = self.state.time;
         self.warnings.check_tables(&self.rotor, start_speed, now);
         self.warnings.check_tables(&self.rotor, end_speed, t_end);
+        if self.options.local_error_tolerance > 0.0 {
+            return self.advance_adaptive(t_end);
+        }
         let count = steps as usize;
         let h = span / count as f64;
         let cuts_before = self.stats.step_cuts;
@@ -335,7 +338,7 @@ impl Simulator {
     /// step, so a smaller step is tried before giving up. A torque-driven
     /// shaft steps its twist and its lateral motion together
     /// ([`Simulator::try_coupled_step`]).
-    fn try_step(&mut self, h: f64) -> Result<Option<f64>, SolverError> {
+    pub(super) fn try_step(&mut self, h: f64) -> Result<Option<f64>, SolverError> {
         // Sub-steps of communication intervals differ from the factored step by
         // the round-off of the time grid (1e-11 relative at t = 20 s): take the
         // factored step itself (the grid moves by ~1e-15 s, and `advance_to`

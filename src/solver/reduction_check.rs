@@ -395,6 +395,8 @@ mod tests {
             stuck: 0.0,
             factor_step: 0.0,
             factor_speed: 0.0,
+            udd_previous: vec![],
+            step_proposal: 0.0,
         };
         for &node in &rotor.reduction.as_ref().unwrap().kept_nodes {
             let (ix, iy) = (

@@ -31,6 +31,11 @@ pub struct SolverOptions {
     pub unbalance_ramp_time: f64,
     /// Apply gravity.
     pub gravity: bool,
+    /// Local error tolerance of accuracy-controlled steps (–): the relative
+    /// period error `(ωh)²/12` allowed to the motion of a step
+    /// ([`super::adaptive`]); 0 for equal steps of `time_step`. With it,
+    /// `time_step` is the largest step.
+    pub local_error_tolerance: f64,
 }
 
 impl SolverOptions {
@@ -45,6 +50,10 @@ impl SolverOptions {
     pub const MAX_STEP_CUTS_RANGE: (usize, usize) = (0, 20);
     /// Allowed unbalance ramp time constants (s).
     pub const RAMP_TIME_RANGE: (f64, f64) = (0.0, 1e6);
+    /// Allowed local error tolerances (–) besides 0 (equal steps): below 1e-10
+    /// the steps reach the Newton tolerance's noise, above 0.1 the period
+    /// error of a step is no longer small.
+    pub const LOCAL_ERROR_TOLERANCE_RANGE: (f64, f64) = (1e-10, 0.1);
     /// Most internal steps one [`Simulator::advance_to`] takes; a longer span
     /// is refused before it starts ([`SolverError::Budget`]).
     pub const MAX_STEPS_PER_CALL: usize = 200_000;
@@ -72,6 +81,7 @@ impl Default for SolverOptions {
             max_step_cuts: 16,
             unbalance_ramp_time: 0.0,
             gravity: true,
+            local_error_tolerance: 0.0,
         }
     }
 }
@@ -91,6 +101,8 @@ pub struct StepStats {
     pub retries: usize,
     /// Factorizations of the linear part.
     pub factorizations: usize,
+    /// Steps rejected by the local error estimate (accuracy-controlled steps).
+    pub rejections: usize,
 }
 
 /// Why the solver stopped.
@@ -173,6 +185,12 @@ pub struct Simulator {
     pub(super) torsion: Option<Torsion>,
     /// Contacts reported beyond the limits of their law ([`super::contact_watch`]).
     pub(super) contact_watch: ContactWatch,
+    /// The state a step starts from, kept to undo a rejected step
+    /// (accuracy-controlled steps).
+    pub(super) step_start: SimState,
+    /// The coordinates the local error estimate looks at
+    /// ([`super::adaptive::observed_dofs`]).
+    pub(super) error_dofs: Vec<usize>,
 }
 
 impl Simulator {
@@ -230,6 +248,8 @@ impl Simulator {
             stuck: 0.0,
             factor_step: 0.0,
             factor_speed: 0.0,
+            udd_previous: Vec::new(),
+            step_proposal: 0.0,
         };
         if let Some(t) = &torsion {
             let n = t.chain.dof_count();
@@ -249,7 +269,10 @@ impl Simulator {
             .map(|(b, _)| BearingEval::new(2 + b.internal_dofs()))
             .collect();
         let widest = output_evals.iter().map(BearingEval::n).max().unwrap_or(2);
+        let error_dofs = super::adaptive::observed_dofs(&rotor);
         Ok(Self {
+            step_start: state.clone(),
+            error_dofs,
             factor: None,
             factor_work: FactorWork::new(&rotor),
             output_evals,
@@ -333,6 +356,7 @@ impl Simulator {
             || state.twist_rate.len() != s.twist_rate.len()
             || state.twist_accel.len() != s.twist_accel.len()
             || state.twist_torque.len() != s.twist_torque.len()
+            || !(state.udd_previous.is_empty() || state.udd_previous.len() == s.u.len())
         {
             return Err(SolverError::Input(
                 "state does not belong to this rotor (sizes differ)".into(),
@@ -448,6 +472,8 @@ impl Simulator {
         self.state.udd.fill(0.0);
         self.state.pd.fill(0.0);
         self.state.pdd.fill(0.0);
+        self.state.step_proposal = 0.0;
+        self.state.udd_previous.clear();
         self.factor = None;
         self.record_factor();
         self.running_acceleration()
@@ -524,5 +550,14 @@ fn check_options(o: &SolverOptions) -> Result<(), SolverError> {
         o.unbalance_ramp_time,
         SolverOptions::RAMP_TIME_RANGE,
         "s",
-    )
+    )?;
+    let (lo, hi) = SolverOptions::LOCAL_ERROR_TOLERANCE_RANGE;
+    let tol = o.local_error_tolerance;
+    if tol != 0.0 && !(tol.is_finite() && (lo..=hi).contains(&tol)) {
+        return Err(SolverError::Input(format!(
+            "solver option local_error_tolerance = {} is outside [{lo}, {hi}] (0 for equal steps)",
+            Short(tol)
+        )));
+    }
+    Ok(())
 }

@@ -57,6 +57,12 @@ pub struct SimState {
     pub factor_step: f64,
     /// Spin speed the factorization in hand was made at (rad/s).
     pub factor_speed: f64,
+    /// The rotor accelerations one accuracy-controlled step back (the
+    /// local error estimate's); empty before the first such step.
+    pub udd_previous: Vec<f64>,
+    /// The next step accuracy-controlled stepping proposes (s); 0 before the
+    /// first such step (then the largest step is tried).
+    pub step_proposal: f64,
 }
 
 impl SimState {
@@ -72,8 +78,9 @@ impl SimState {
             ("factor_step", self.factor_step),
             ("factor_speed", self.factor_speed),
             ("stuck", self.stuck),
+            ("step_proposal", self.step_proposal),
         ];
-        let vectors: [(&str, &[f64]); 15] = [
+        let vectors: [(&str, &[f64]); 16] = [
             ("u", &self.u),
             ("ud", &self.ud),
             ("udd", &self.udd),
@@ -89,6 +96,7 @@ impl SimState {
             ("twist_rate", &self.twist_rate),
             ("twist_accel", &self.twist_accel),
             ("twist_torque", &self.twist_torque),
+            ("udd_previous", &self.udd_previous),
         ];
         let bad = scalars
             .iter()
@@ -109,6 +117,12 @@ impl SimState {
             return Err(SolverError::Input(format!(
                 "state field unbalance = {} kg·m is negative",
                 Short(*m)
+            )));
+        }
+        if self.step_proposal < 0.0 {
+            return Err(SolverError::Input(format!(
+                "state field step_proposal = {} s is negative",
+                Short(self.step_proposal)
             )));
         }
         if self.speed.abs() > max_speed {

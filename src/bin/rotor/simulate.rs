@@ -16,7 +16,10 @@ use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::reduction_check::{
     Excursion, ValidityWatch, error_estimate, excursion_report,
 };
-use rotor_bearing::solver::time_step::{MAX_DEFAULT_TIME_STEP, STEPS_PER_REVOLUTION};
+use rotor_bearing::solver::time_step::{
+    ADAPTIVE_STEPS_PER_REVOLUTION, MAX_ADAPTIVE_TIME_STEP, MAX_DEFAULT_TIME_STEP,
+    STEPS_PER_REVOLUTION,
+};
 use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record_into};
 use rotor_bearing::units::Amplitude;
 
@@ -92,8 +95,25 @@ pub fn check_speeds(model: &RotorModel, profile: &SpeedProfile) -> Result<(), St
 }
 
 /// Where the default time step `h` of a run reaching `peak` (rad/s) came from.
-pub fn describe_default_step(model: &RotorModel, peak: f64, h: f64) -> String {
+/// (`tolerance`: the local error tolerance of accuracy-controlled steps, 0 for equal steps.)
+pub fn describe_default_step(model: &RotorModel, peak: f64, h: f64, tolerance: f64) -> String {
     let top = model.transient_top_speed().unwrap_or(0.0).max(peak);
+    if tolerance > 0.0 {
+        let bound = if h < MAX_ADAPTIVE_TIME_STEP {
+            format!(
+                "{} per revolution at {} rpm",
+                ADAPTIVE_STEPS_PER_REVOLUTION,
+                short(top * RAD_S_TO_RPM)
+            )
+        } else {
+            format!("at most 20 ms; {} rpm", short(top * RAD_S_TO_RPM))
+        };
+        return format!(
+            "accuracy-controlled steps: local error tolerance {}, steps up to {} s ({bound}; --step for equal steps)",
+            short(tolerance),
+            short(h)
+        );
+    }
     if h < MAX_DEFAULT_TIME_STEP {
         format!(
             "time step {} s ({} steps per revolution at {} rpm; --step to choose)",

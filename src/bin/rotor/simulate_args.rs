@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::solver::time_step;
 use rotor_bearing::units::Amplitude;
 
 use crate::simulate;
@@ -30,12 +31,20 @@ pub struct SimulateArgs {
     /// Simulated time (s).
     #[arg(long, default_value_t = 1.0)]
     pub duration: f64,
-    /// Internal time step (s). Default: 60 steps per revolution at the top
-    /// speed (the larger of the run's and the model's max_speed_rpm, else
-    /// speed_rpm), at most 1 ms — the FMU's solver.time_step follows the
-    /// same rule at the model's top speed.
+    /// Internal time step (s): equal steps of it (the largest step with
+    /// --local-error-tolerance). Default: accuracy-controlled steps of at most
+    /// 12 per revolution at the top speed (the larger of the run's and the
+    /// model's max_speed_rpm, else speed_rpm), at most 20 ms — the FMU's
+    /// solver.time_step follows the same rule at the model's top speed; with
+    /// --local-error-tolerance 0, 60 equal steps per revolution, at most 1 ms.
     #[arg(long)]
     pub step: Option<f64>,
+    /// Accuracy-controlled steps: the local error allowed to each step,
+    /// the relative period error (ωh)²/12 of the motion it resolves; --step
+    /// is then the largest step. 0: equal steps. Default: 0.003 without
+    /// --step (the FMU's default), equal steps with it.
+    #[arg(long)]
+    pub local_error_tolerance: Option<f64>,
     /// Output interval (s); defaults to the internal step, at least 1/20 000 of the duration.
     #[arg(long)]
     pub output_step: Option<f64>,
@@ -77,6 +86,7 @@ pub fn run(rotor: Rotor, args: SimulateArgs) -> Result<(), String> {
         torques,
         duration,
         step,
+        local_error_tolerance,
         output_step,
         ramp_time,
         no_gravity,
@@ -95,10 +105,23 @@ pub fn run(rotor: Rotor, args: SimulateArgs) -> Result<(), String> {
         simulate::speed_profile(rpm, ramp_rpm.as_deref(), speed_csv.as_deref(), duration)?;
     let torques = simulate::torque_inputs(&rotor.model, &torques)?;
     simulate::check_speeds(&rotor.model, &profile)?;
+    let local_error_tolerance = local_error_tolerance.unwrap_or(if step.is_some() {
+        0.0
+    } else {
+        time_step::DEFAULT_LOCAL_ERROR_TOLERANCE
+    });
+    let adaptive = local_error_tolerance > 0.0;
     let step = step.unwrap_or_else(|| {
         let peak = profile.top_speed();
-        let h = rotor_bearing::solver::time_step::default_time_step(&rotor.model, Some(peak));
-        eprintln!("{}", simulate::describe_default_step(&rotor.model, peak, h));
+        let h = if adaptive {
+            time_step::largest_adaptive_step(&rotor.model, Some(peak))
+        } else {
+            time_step::default_time_step(&rotor.model, Some(peak))
+        };
+        eprintln!(
+            "{}",
+            simulate::describe_default_step(&rotor.model, peak, h, local_error_tolerance)
+        );
         h
     });
     let modes = match reduced_modes {
@@ -117,6 +140,7 @@ pub fn run(rotor: Rotor, args: SimulateArgs) -> Result<(), String> {
         time_step: step,
         unbalance_ramp_time: ramp_time,
         gravity: !no_gravity,
+        local_error_tolerance,
         ..Default::default()
     };
     let output_step = output_step.unwrap_or(step.max(duration / 20_000.0));

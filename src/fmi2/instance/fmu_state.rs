@@ -111,7 +111,7 @@ impl Instance {
         self.params = snap.params;
         self.tuned = snap.tuned.clone();
         self.phase = snap.phase;
-        self.outputs = None;
+        self.outputs.invalidate();
         Status::Ok
     }
 

@@ -2,7 +2,9 @@
 //! Co-Simulation calls onto the [`Simulator`]. Each call first asks the state
 //! table ([`super::states`]) whether it is allowed now; the FMU state lives in
 //! [`super::snapshot`]. The C exports only translate pointers and call these
-//! methods; messages for the logger are queued here.
+//! methods; messages for the logger are queued here. Reads are served by
+//! `values.rs`: the outputs are evaluated once per change of the state into
+//! an array indexed by value reference.
 //!
 //! ```
 //! use rotor_bearing::fmi2::instance::{Instance, Status};
@@ -31,20 +33,23 @@
 use crate::model::{DEFAULT_REDUCED_MODES, Drive, RotorModel};
 use crate::rotor::Rotor;
 use crate::solver::reduction_check::ValidityWatch;
-use crate::solver::{Outputs, Simulator, SolverError, SolverOptions};
+use crate::solver::{Simulator, SolverError, SolverOptions};
 use crate::units::Short;
 
 use super::snapshot::fingerprint;
 use super::states::Call;
 pub use super::states::Phase;
 use super::variables::{
-    Binding, Causality, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE, Kind, START_SPEED, Variability,
-    Variable, default_fmu_time_step, variables,
+    Binding, Causality, DEFAULT_LOCAL_ERROR_TOLERANCE, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE,
+    Kind, START_SPEED, Variability, Variable, default_fmu_time_step, variables,
 };
 use super::xml::model_description;
 
 mod fmu_state;
 mod step;
+mod values;
+
+use values::OutputCache;
 
 /// FMI status codes (the subset an instance returns).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -85,6 +90,9 @@ pub(super) struct Params {
     pub(super) reduced_modes: i32,
     /// Initial speed of a torque-driven shaft (rad/s; `shaft.initial_speed`).
     pub(super) initial_speed: f64,
+    /// Local error tolerance of accuracy-controlled steps, 0 for equal steps
+    /// (`solver.local_error_tolerance`).
+    pub(super) local_error_tolerance: f64,
 }
 
 impl Params {
@@ -96,6 +104,7 @@ impl Params {
             max_iterations: self.max_iterations.max(1) as usize,
             unbalance_ramp_time: self.ramp_time,
             gravity: self.gravity,
+            local_error_tolerance: self.local_error_tolerance,
             ..SolverOptions::default()
         }
     }
@@ -112,6 +121,7 @@ impl Params {
             gravity: true,
             reduced_modes: Rotor::transient_modes(model).unwrap_or(DEFAULT_REDUCED_MODES) as i32,
             initial_speed: START_SPEED,
+            local_error_tolerance: DEFAULT_LOCAL_ERROR_TOLERANCE,
         }
     }
 }
@@ -131,7 +141,7 @@ pub struct Instance {
     phase: Phase,
     start_time: f64,
     stop_time: Option<f64>,
-    outputs: Option<Outputs>,
+    outputs: OutputCache,
     messages: Vec<LogMessage>,
     step_statistics: bool,
     /// Whether the reduced rotor runs inside its validated range.
@@ -171,6 +181,7 @@ impl Instance {
             .map(warning)
             .collect();
         let vars = variables(&model);
+        let outputs = OutputCache::new(&vars);
         let (_, guid) = model_description(&model);
         let tuned = model_tuned(&model);
         let params = Params::start(&model);
@@ -191,7 +202,7 @@ impl Instance {
             phase: Phase::Instantiated,
             start_time: 0.0,
             stop_time: None,
-            outputs: None,
+            outputs,
             messages,
             step_statistics: false,
         })
@@ -329,7 +340,7 @@ impl Instance {
             .set_options(options)
             .and_then(|()| self.sim.set_state(state))
             .and_then(|()| self.sim.settle_static());
-        self.outputs = None;
+        self.outputs.invalidate();
         for w in self.sim.take_warnings() {
             self.messages
                 .push((Status::Warning, category(Status::Warning), w.to_string()));
@@ -359,104 +370,7 @@ impl Instance {
     fn variable(&mut self, vr: u32, kind: Kind, call: &str) -> Result<Variable, Status> {
         match self.vars.get(vr as usize) {
             Some(v) if v.kind == kind => Ok(v.clone()),
-            Some(v) => Err(self.report(
-                Status::Error,
-                format!(
-                    "{call}: value reference {vr} ({}) is a {:?}, not a {kind:?}",
-                    v.name, v.kind
-                ),
-            )),
-            None => Err(self.report(
-                Status::Error,
-                format!(
-                    "{call}: unknown value reference {vr} (the FMU has {} variables)",
-                    self.vars.len()
-                ),
-            )),
-        }
-    }
-
-    fn current_outputs(&mut self) -> Result<&Outputs, Status> {
-        if self.outputs.is_none() {
-            match self.sim.outputs() {
-                Ok(o) => self.outputs = Some(o),
-                Err(e) => return Err(self.report(Status::Error, format!("outputs: {e}"))),
-            }
-        }
-        self.outputs.as_ref().ok_or(Status::Error)
-    }
-
-    /// fmi2GetReal / fmi2GetInteger / fmi2GetBoolean: value of `vr` as f64.
-    pub fn get(&mut self, vr: u32, kind: Kind) -> Result<f64, Status> {
-        let call = match kind {
-            Kind::Real => Call::GetReal,
-            Kind::Integer => Call::GetInteger,
-            Kind::Boolean => Call::GetBoolean,
-        };
-        self.check(call)?;
-        let call = call.name();
-        let v = self.variable(vr, kind, call)?;
-        let s = self.sim.state();
-        let p = self.params;
-        let value = match v.binding {
-            Binding::TimeStep => p.time_step,
-            Binding::Tolerance => p.tolerance,
-            Binding::MaxIterations => f64::from(p.max_iterations),
-            Binding::RampTime => p.ramp_time,
-            Binding::Gravity => f64::from(u8::from(p.gravity)),
-            Binding::ReducedModes => f64::from(p.reduced_modes),
-            Binding::Viscosity(k) | Binding::Excitation(k) => self.tuned[k],
-            Binding::UnbalancePhase(k) => s.unbalance_phase[k],
-            Binding::Speed => self.sim.speed_at(s.time),
-            Binding::Unbalance(k) => s.unbalance[k] + s.unbalance_rate[k] * (s.time - s.speed_time),
-            Binding::Load(i) => self.sim.load_at(i, s.time),
-            Binding::InitialSpeed => p.initial_speed,
-            binding => {
-                if self.phase == Phase::InitializationMode && self.outputs.is_none() {
-                    self.settle()?;
-                }
-                let o = self.current_outputs()?;
-                match binding {
-                    Binding::BearingX(k) => o.bearings[k].x,
-                    Binding::BearingY(k) => o.bearings[k].y,
-                    Binding::BearingFx(k) => o.bearings[k].fx,
-                    Binding::BearingFy(k) => o.bearings[k].fy,
-                    Binding::BearingEccentricity(k) => o.bearings[k].report.eccentricity,
-                    Binding::BearingFriction(k) => o.bearings[k].report.friction_torque,
-                    Binding::BearingContact(k) => o.bearings[k].report.contact_force,
-                    Binding::BearingMinFilm(k) => o.bearings[k].report.min_film_thickness,
-                    Binding::ProbeX(k) => o.probes[k].x,
-                    Binding::ProbeY(k) => o.probes[k].y,
-                    Binding::SpinAngle => o.spin_angle,
-                    Binding::FrictionTorque => o.friction_torque,
-                    Binding::BearingRelativeX(k) => o.bearings[k].relative().0,
-                    Binding::BearingRelativeY(k) => o.bearings[k].relative().1,
-                    Binding::HousingX(k) => o.bearings[k].housing.x,
-                    Binding::HousingY(k) => o.bearings[k].housing.y,
-                    Binding::HousingVx(k) => o.bearings[k].housing.vx,
-                    Binding::HousingVy(k) => o.bearings[k].housing.vy,
-                    Binding::PortX(k) => o.ports[k].x,
-                    Binding::PortY(k) => o.ports[k].y,
-                    Binding::PortVx(k) => o.ports[k].vx,
-                    Binding::PortVy(k) => o.ports[k].vy,
-                    Binding::BearingPowerLoss(k) => o.bearings[k].report.power_loss,
-                    Binding::ThrustFriction(k) => o.thrust_bearings[k].friction_torque,
-                    Binding::ThrustPowerLoss(k) => o.thrust_bearings[k].power_loss,
-                    Binding::PowerLoss => o.power_loss,
-                    Binding::TorqueSpeed(k) => o.torques[k].speed,
-                    Binding::TorqueAngle(k) => o.torques[k].angle,
-                    Binding::ShaftTorque(k) => o.shaft_torques[k],
-                    _ => f64::NAN,
-                }
-            }
-        };
-        if value.is_finite() {
-            Ok(value)
-        } else {
-            Err(self.report(
-                Status::Error,
-                format!("{call}: {} is not finite ({})", v.name, Short(value)),
-            ))
+            _ => Err(self.wrong_variable(vr, kind, call)),
         }
     }
 
@@ -512,6 +426,14 @@ impl Instance {
                 self.params.time_step = value;
                 Ok(())
             }
+            Binding::LocalErrorTolerance => {
+                let (lo, _) = SolverOptions::LOCAL_ERROR_TOLERANCE_RANGE;
+                if value != 0.0 && value < lo {
+                    return bad(self, &format!("must be 0 (equal steps) or at least {lo}"));
+                }
+                self.params.local_error_tolerance = value;
+                Ok(())
+            }
             Binding::Tolerance => {
                 self.params.tolerance = value;
                 Ok(())
@@ -550,7 +472,7 @@ impl Instance {
             }
             _ => return bad(self, "cannot be set"),
         };
-        self.outputs = None;
+        self.outputs.invalidate();
         match result {
             Ok(()) => Status::Ok,
             Err(e) => self.report(Status::Error, format!("{call}: {}: {e}", v.name)),
@@ -614,7 +536,7 @@ impl Instance {
                 );
             }
         };
-        self.outputs = None;
+        self.outputs.invalidate();
         match result {
             Ok(()) => Status::Ok,
             Err(e) => self.report(Status::Error, format!("{call}: {}: {e}", v.name)),
@@ -643,7 +565,7 @@ impl Instance {
                 self.params = params;
                 self.tuned = model_tuned(&self.model);
                 self.phase = Phase::Instantiated;
-                self.outputs = None;
+                self.outputs.invalidate();
                 self.start_time = 0.0;
                 self.stop_time = None;
                 Status::Ok

@@ -67,7 +67,7 @@ impl Instance {
                 ),
             );
         }
-        self.outputs = None;
+        self.outputs.invalidate();
         let before = self.sim.stats();
         let result = self.sim.advance_to(current + step);
         for w in self.sim.take_warnings() {
@@ -80,8 +80,9 @@ impl Instance {
                 Status::Ok,
                 category(Status::Ok),
                 format!(
-                    "{call} from {t} s by {h} s: {} internal steps, {} Newton iterations, {} step cuts, {} damped retries ({} Jacobian refreshes, {} factorizations)",
+                    "{call} from {t} s by {h} s: {} internal steps, {} rejected by the error estimate, {} Newton iterations, {} step cuts, {} damped retries ({} Jacobian refreshes, {} factorizations)",
                     after.steps - before.steps,
+                    after.rejections - before.rejections,
                     after.iterations - before.iterations,
                     after.step_cuts - before.step_cuts,
                     after.retries - before.retries,
@@ -99,7 +100,7 @@ impl Instance {
                 .push((Status::Warning, category(Status::Warning), w.message));
         }
         match result {
-            Ok(()) => match self.current_outputs() {
+            Ok(()) => match self.refresh_outputs() {
                 Ok(_) => match self.watch_reduction(call) {
                     Status::Ok if warned => Status::Warning,
                     status => status,

@@ -18,7 +18,7 @@ use crate::model::{DEFAULT_REDUCED_MODES, Drive};
 pub(super) fn add(t: &mut Table) {
     t.push(
         "solver.time_step".into(),
-        "Largest internal Newmark time step; each fmi2DoStep is split into equal sub-steps no longer than this".into(),
+        "Largest internal Newmark time step: each fmi2DoStep is split into sub-steps no longer than this, sized by solver.local_error_tolerance (equal sub-steps when it is 0)".into(),
         Real,
         Parameter,
         Fixed,

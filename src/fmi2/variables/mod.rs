@@ -8,11 +8,13 @@
 
 use crate::model::{Drive, RotorModel};
 use crate::solver::SolverOptions;
-use crate::solver::time_step::default_time_step;
+pub use crate::solver::time_step::DEFAULT_LOCAL_ERROR_TOLERANCE;
+use crate::solver::time_step::largest_adaptive_step;
 
 mod drive;
 mod loads;
 mod machine;
+mod stepping;
 
 /// What a variable reads or writes in the simulator.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -97,6 +99,8 @@ pub enum Binding {
     PowerLoss,
     /// Initial spin speed of a torque-driven shaft (rad/s).
     InitialSpeed,
+    /// Local error tolerance of accuracy-controlled steps (–), 0 for equal steps.
+    LocalErrorTolerance,
     /// Speed of torque node `k` (rad/s).
     TorqueSpeed(usize),
     /// Angle of torque node `k` (rad).
@@ -191,6 +195,10 @@ pub fn value_range(binding: Binding, model: &RotorModel) -> (Option<f64>, Option
         Binding::MaxIterations => ints(SolverOptions::MAX_ITERATIONS_RANGE),
         Binding::ReducedModes => ints((0, crate::model::MAX_REDUCED_MODES)),
         Binding::RampTime => pair(SolverOptions::RAMP_TIME_RANGE),
+        Binding::LocalErrorTolerance => (
+            Some(0.0),
+            Some(SolverOptions::LOCAL_ERROR_TOLERANCE_RANGE.1),
+        ),
         Binding::Viscosity(_) => pair(VISCOSITY_RANGE),
         Binding::Excitation(_) => pair(EXCITATION_RANGE),
         Binding::Speed => (Some(-model.max_speed), Some(model.max_speed)),
@@ -208,11 +216,13 @@ pub(super) type OutputSpec = (
     Binding,
 );
 
-/// Start value of `solver.time_step` (s) of an FMU of `model`: the rule the
-/// CLI's `simulate` follows ([`default_time_step`]: 60 steps per revolution
-/// at the model's top speed, at most 1 ms).
+/// Start value of `solver.time_step` (s) of an FMU of `model`, the largest
+/// internal step: the rule the CLI's `simulate` follows for
+/// accuracy-controlled steps, the FMU's default
+/// ([`largest_adaptive_step`]: 12 steps per revolution at the model's top
+/// speed, at most 20 ms).
 pub fn default_fmu_time_step(model: &RotorModel) -> f64 {
-    default_time_step(model, None)
+    largest_adaptive_step(model, None)
 }
 
 /// Defaults of the solver parameters.
@@ -313,5 +323,6 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
     machine::add(&mut t);
     loads::add(&mut t);
     drive::add(&mut t);
+    stepping::add(&mut t);
     t.out
 }

@@ -1,0 +1,235 @@
+//! Accuracy-controlled step size ([`SolverOptions::local_error_tolerance`]
+//! `> 0`): each Newmark step is judged by the Zienkiewicz–Xie estimate of its
+//! local displacement error and the next step is sized from it.
+//!
+//! # Estimate
+//! For the average-acceleration scheme (β = 1/4) the local error of the
+//! displacement is `e = (β − 1/6) h² (üₙ₊₁ − üₙ) = h²/12 (üₙ₊₁ − üₙ)`
+//! (Zienkiewicz & Xie, "A simple error estimator and adaptive time stepping
+//! procedure for dynamic analysis", Earthquake Eng. Struct. Dyn. 20, 1991).
+//! The step is judged by it relative to the step's own displacement
+//! increment, over the coordinates a user observes ([`observed_dofs`]:
+//! journals, housings, probes, unbalance planes):
+//!
+//! `η = ‖e‖∞ / max(‖uₙ₊₁ − uₙ‖∞, 10⁻⁶ L)`,
+//!
+//! `L` the smallest bearing clearance. For a motion at angular frequency ω,
+//! `η → (ωh)²/12`, the relative period error of the scheme at that frequency:
+//! the tolerance is the relative frequency (phase-per-cycle) error allowed to
+//! the motion that dominates the step. A motion below `10⁻⁶ L` per step is not
+//! resolved for its own sake. The twist of a torque-driven shaft is not in
+//! `η` (its rigid-body rotation dominates any increment); its step is the
+//! lateral one.
+//!
+//! # Control
+//! A step with `η > tol` is rejected (the state is restored) and retried at
+//! `h · max(0.2, 0.9 √(tol/η))`; an accepted step proposes
+//! `h · min(2, 0.9 √(tol/η))` for the next (`η ∝ h²`), grown only when that
+//! is at least 1.25 times the step in hand, so a steady run keeps one step
+//! (and one factorization). Newton failing on a step halves it. Steps never
+//! exceed [`SolverOptions::time_step`] and never fall below
+//! `time_step · 2^-max_step_cuts` (nor [`SolverOptions::MIN_SPAN`]): a step
+//! at that floor is accepted whatever its estimate. Each call of
+//! [`Simulator::advance_to`] ends exactly on its target: the span left is
+//! split into equal steps no longer than the proposal. The proposal is part
+//! of the state ([`SimState::step_proposal`]), so a restored state continues
+//! bit for bit.
+
+use crate::fe::{DOF_X, DOF_Y};
+use crate::rotor::Rotor;
+use crate::units::Short;
+
+use super::simulator::{Simulator, SolverError, SolverOptions};
+use super::state::SimState;
+
+/// Safety factor on the step the estimate allows.
+const SAFETY: f64 = 0.9;
+/// Largest growth of the step from one step to the next.
+const MAX_GROWTH: f64 = 2.0;
+/// Smallest shrink of a rejected step.
+const MAX_SHRINK: f64 = 0.2;
+/// A proposal grows only past this factor over the step in hand.
+const GROW_DEAD_BAND: f64 = 1.25;
+/// Displacement increments below this fraction of the clearance are judged
+/// against it.
+const MOTION_FLOOR: f64 = 1e-6;
+
+impl SimState {
+    /// Copy every field of `other` (of the same rotor) into `self` without
+    /// allocating.
+    pub(super) fn copy_from(&mut self, other: &SimState) {
+        copy(&mut self.u, &other.u);
+        copy(&mut self.ud, &other.ud);
+        copy(&mut self.udd, &other.udd);
+        copy(&mut self.p, &other.p);
+        copy(&mut self.pd, &other.pd);
+        copy(&mut self.pdd, &other.pdd);
+        copy(&mut self.unbalance, &other.unbalance);
+        copy(&mut self.unbalance_rate, &other.unbalance_rate);
+        copy(&mut self.unbalance_phase, &other.unbalance_phase);
+        copy(&mut self.loads, &other.loads);
+        copy(&mut self.load_rates, &other.load_rates);
+        copy(&mut self.twist, &other.twist);
+        copy(&mut self.twist_rate, &other.twist_rate);
+        copy(&mut self.twist_accel, &other.twist_accel);
+        copy(&mut self.twist_torque, &other.twist_torque);
+        copy(&mut self.udd_previous, &other.udd_previous);
+        self.time = other.time;
+        self.spin_angle = other.spin_angle;
+        self.speed = other.speed;
+        self.speed_rate = other.speed_rate;
+        self.speed_time = other.speed_time;
+        self.stuck = other.stuck;
+        self.factor_step = other.factor_step;
+        self.factor_speed = other.factor_speed;
+        self.step_proposal = other.step_proposal;
+    }
+}
+
+/// The coordinates the local error estimate watches, the ones a user
+/// observes: the translations of every bearing's journal (rubs, seals and
+/// linear supports included), of every housing, probe and unbalance plane;
+/// every displacement coordinate when the model names none. (Bending modes
+/// with nodes near the bearings ring undamped between them at amplitudes far
+/// below the orbit; unresolved by the step they would hold it down for
+/// nothing.)
+pub(super) fn observed_dofs(rotor: &Rotor) -> Vec<usize> {
+    let m = &rotor.model;
+    let nodes = m
+        .bearings
+        .iter()
+        .map(|b| b.node)
+        .chain(m.probes.iter().map(|p| p.node))
+        .chain(m.unbalances.iter().map(|u| u.node));
+    let mut dofs: Vec<usize> = nodes
+        .flat_map(|node| [DOF_X, DOF_Y].map(|k| rotor.dofs.free(node, k)))
+        .chain((0..m.pedestals.len()).flat_map(|p| [0, 1].map(|k| rotor.dofs.pedestal(p, k))))
+        .flatten()
+        .collect();
+    dofs.sort_unstable();
+    dofs.dedup();
+    if dofs.is_empty() {
+        dofs = (0..rotor.dof_count())
+            .filter(|&i| rotor.dofs.is_displacement(i))
+            .collect();
+    }
+    dofs
+}
+
+/// `dst = src`, reusing `dst`'s storage when the lengths agree.
+fn copy(dst: &mut Vec<f64>, src: &[f64]) {
+    if dst.len() == src.len() {
+        dst.copy_from_slice(src);
+    } else {
+        dst.clear();
+        dst.extend_from_slice(src);
+    }
+}
+
+impl Simulator {
+    /// The estimate `η` of the step just taken from `self.step_start` to the
+    /// state in hand, of size `h` (see the module docs).
+    pub(super) fn local_error(&self, h: f64) -> f64 {
+        let (a, b) = (&self.step_start, &self.state);
+        // The acceleration change over the mean of two steps where the step
+        // before is known (module docs: unresolved modes alternate).
+        let two_step = b.step_proposal > 0.0 && a.udd_previous.len() == a.udd.len();
+        let (mut accel, mut motion) = (0.0_f64, 0.0_f64);
+        for &i in &self.error_dofs {
+            let change = if two_step {
+                0.5 * (b.udd[i] - a.udd_previous[i])
+            } else {
+                b.udd[i] - a.udd[i]
+            };
+            accel = accel.max(change.abs());
+            motion = motion.max((b.u[i] - a.u[i]).abs());
+        }
+        h * h / 12.0 * accel / motion.max(MOTION_FLOOR * self.sites.length_scale)
+    }
+
+    /// Advance to `t_end` (checked by [`Simulator::advance_to`]) in steps sized
+    /// by the local error estimate (module docs).
+    pub(super) fn advance_adaptive(&mut self, t_end: f64) -> Result<(), SolverError> {
+        let tol = self.options.local_error_tolerance;
+        let largest = self.options.time_step;
+        let smallest =
+            (largest * 0.5f64.powi(self.options.max_step_cuts as i32)).max(SolverOptions::MIN_SPAN);
+        let mut proposal = match self.state.step_proposal {
+            p if p > 0.0 => p.clamp(smallest, largest),
+            _ => largest,
+        };
+        let mut attempts = 0usize;
+        let cuts_before = self.stats.step_cuts;
+        while self.state.time < t_end {
+            let remaining = t_end - self.state.time;
+            let count = (remaining / proposal - 1e-9).ceil().max(1.0);
+            let last = count == 1.0;
+            let h = if last { remaining } else { remaining / count };
+            attempts += 1;
+            if attempts > SolverOptions::MAX_STEPS_PER_CALL {
+                return Err(SolverError::Budget(format!(
+                    "{attempts} step attempts by t = {} s, more than the {} one call may take: the local error tolerance {} needs steps near {} s",
+                    Short(self.state.time),
+                    SolverOptions::MAX_STEPS_PER_CALL,
+                    Short(tol),
+                    Short(h)
+                )));
+            }
+            self.step_start.copy_from(&self.state);
+            let floor = h <= smallest * (1.0 + 1e-9);
+            if let Some(residual) = self.try_step(h)? {
+                self.restore_step_start();
+                if floor {
+                    return Err(SolverError::NotConverged {
+                        time: self.state.time,
+                        step: h,
+                        cuts: self.options.max_step_cuts,
+                        residual,
+                    });
+                }
+                self.stats.step_cuts += 1;
+                if self.stats.step_cuts - cuts_before > SolverOptions::MAX_CUTS_PER_CALL {
+                    return Err(SolverError::Budget(format!(
+                        "{} step halvings by t = {} s, more than the {} one call may spend: the bearings keep Newton from converging",
+                        self.stats.step_cuts - cuts_before,
+                        Short(self.state.time),
+                        SolverOptions::MAX_CUTS_PER_CALL
+                    )));
+                }
+                proposal = (0.5 * h).max(smallest);
+                continue;
+            }
+            let eta = self.local_error(h);
+            let allowed = if eta > 0.0 {
+                SAFETY * (tol / eta).sqrt()
+            } else {
+                MAX_GROWTH
+            };
+            if eta > tol && !floor {
+                self.restore_step_start();
+                self.stats.steps -= 1;
+                self.stats.rejections += 1;
+                proposal = (h * allowed.max(MAX_SHRINK)).max(smallest);
+                continue;
+            }
+            if last {
+                self.state.time = t_end;
+            }
+            copy(&mut self.state.udd_previous, &self.step_start.udd);
+            if allowed >= GROW_DEAD_BAND {
+                proposal = proposal.max(h * allowed.min(MAX_GROWTH)).min(largest);
+            } else if allowed < 1.0 {
+                proposal = proposal.min(h * allowed).max(smallest);
+            }
+            self.state.step_proposal = proposal;
+        }
+        Ok(())
+    }
+
+    /// Undo a step: the state it started from, with the factorization in hand
+    /// recorded in it.
+    fn restore_step_start(&mut self) {
+        self.state.copy_from(&self.step_start);
+        self.record_factor();
+    }
+}
