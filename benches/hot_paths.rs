@@ -1,5 +1,6 @@
 //! Criterion benchmarks of the hot paths: one bearing evaluation (plain, tilting
-//! pad with 4 and 12 pads), one Newmark step of each shipped model (full and reduced), and one
+//! pad with 4 and 12 pads), one Newmark step of each shipped model (full and reduced; the
+//! three-guide-bearing unit at h = 5 ms and 1 ms), and one
 //! fmi2DoStep of the default FMU (through the safe instance the C exports call).
 
 use std::hint::black_box;
@@ -78,6 +79,8 @@ fn newmark_steps(c: &mut Criterion) {
         ("vertical_rotor", 2e-3),
         ("hydro_unit", 5e-3),
         ("hydro_unit_plain", 5e-3),
+        ("hydro_unit_three_guide", 5e-3),
+        ("hydro_unit_three_guide", 1e-3),
     ] {
         // The full rotor, then the reduced one with the default mode count.
         for modes in [0, rotor_bearing::model::DEFAULT_REDUCED_MODES] {

@@ -50,6 +50,12 @@ pub const FILM_SATURATION_LIMIT: f64 = 0.995;
 /// `J = ∂p_f/∂p = ρ' n nᵀ + (ρ/ε)(I − n nᵀ)` (see the module docs; the identity
 /// up to [`FILM_SATURATION_START`]).
 pub fn film_position(position: Vector2<f64>, clearance: f64) -> (Vector2<f64>, Matrix2<f64>) {
+    // Well inside the start (the common case) without the square root; the
+    // margin keeps the decision the one `ε <= ε_a` takes.
+    let inside = FILM_SATURATION_START * clearance;
+    if position.norm_squared() <= (1.0 - 1e-9) * inside * inside {
+        return (position, Matrix2::identity());
+    }
     let eps = position.norm() / clearance;
     if eps <= FILM_SATURATION_START {
         return (position, Matrix2::identity());
@@ -125,59 +131,19 @@ impl ShortFilm {
         };
         let (x, y) = (state.position.x / cl, state.position.y / cl);
         let (a, b) = source_coefficients(state, speed);
-        // The positive-pressure half circle [α, α + π], α = atan2(B, A) + π, has
-        // its ends' sines and cosines without trigonometry:
-        // (sin α, cos α) = −(B, A)/|(A, B)|. With S ≡ 0 there is no pressure; any
-        // half circle gives the one-sided limit of the Jacobian (the force is
-        // not differentiable there).
-        let r = a.hypot(b);
-        let pressure = !source_vanishes(state, speed, r);
-        let start = || {
-            if pressure {
-                b.atan2(a) + PI
-            } else {
-                y.atan2(x) + 0.5 * PI
-            }
-        };
-        let start_sc = if pressure {
-            (-b / r, -a / r)
-        } else {
-            start().sin_cos()
-        };
-        let end_sc = (-start_sc.0, -start_sc.1);
-        let f = match window {
-            None => FilmIntegrals::from_potential(super::film::arc_potential_sc(
-                x, y, PI, start_sc, end_sc,
-            )),
-            Some(w) => {
-                let start = start();
-                let mut sum = FilmIntegrals::default();
-                for k in -2..=1 {
-                    let from = start + 2.0 * PI * k as f64;
-                    let to = from + PI;
-                    let (lo, lo_sc) = if from >= w.from {
-                        (from, start_sc)
-                    } else {
-                        (w.from, w.from_sc)
-                    };
-                    let (hi, hi_sc) = if to <= w.to {
-                        (to, end_sc)
-                    } else {
-                        (w.to, w.to_sc)
-                    };
-                    if hi > lo {
-                        sum = sum
-                            + FilmIntegrals::from_potential(super::film::arc_potential_sc(
-                                x,
-                                y,
-                                hi - lo,
-                                lo_sc,
-                                hi_sc,
-                            ));
-                    }
-                }
-                sum
-            }
+        let cover = window.map(|w| pressure_cover(w, a, b, state, speed));
+        if cover == Some(Cover::Nothing) {
+            return Ok(BearingForce {
+                force: Vector2::zeros(),
+                stiffness: Matrix2::zeros(),
+                damping: Matrix2::zeros(),
+            });
+        }
+        let f = match (window, cover) {
+            (Some(w), Some(Cover::Whole)) => FilmIntegrals::from_potential(
+                super::film::arc_potential_sc(x, y, w.to - w.from, w.from_sc, w.to_sc),
+            ),
+            _ => integrals_by_angles(x, y, (a, b), state, speed, window),
         };
         let c = self.viscosity * self.radius * self.length.powi(3) / (4.0 * cl.powi(3));
         let force = Vector2::new(c * (a * f.xy - b * f.xx), c * (a * f.yy - b * f.xy));
@@ -190,12 +156,9 @@ impl ShortFilm {
             stiffness: -Matrix2::new(dfx_dx, dfx_dy, dfy_dx, dfy_dy) * saturation,
             damping: Matrix2::new(f.xx, f.xy, f.xy, f.yy) * (2.0 * c),
         };
-        let finite = out
-            .force
-            .iter()
-            .chain(out.stiffness.iter())
-            .chain(out.damping.iter())
-            .all(|v| v.is_finite());
+        let finite = out.force.iter().all(|v| v.is_finite())
+            && out.stiffness.iter().all(|v| v.is_finite())
+            && out.damping.iter().all(|v| v.is_finite());
         if finite {
             Ok(out)
         } else {
@@ -222,9 +185,7 @@ impl ShortFilm {
         // `∫₀^{2π} dθ/H = 2π/√(1 − ε²)`.
         let phi = match window {
             None => 2.0 * PI / (1.0 - x * x - y * y).sqrt(),
-            Some(w) => {
-                super::film::arc_potential_sc(x, y, w.to - w.from, w.from_sc, w.to_sc).value()
-            }
+            Some(w) => super::film::arc_potential_value(x, y, w.to - w.from, w.from_sc, w.to_sc),
         };
         self.viscosity * speed * self.radius.powi(3) * self.length / self.clearance * phi
     }
@@ -278,6 +239,73 @@ impl PlainBearing {
     }
 }
 
+/// The film integrals over the positive-pressure half circle `[α, α + π]`,
+/// `α = atan2(B, A) + π`, within the window (`None`: all of it), by the angles
+/// of its ends (see [`ShortFilm::force`]).
+fn integrals_by_angles(
+    x: f64,
+    y: f64,
+    (a, b): (f64, f64),
+    state: &JournalState,
+    speed: f64,
+    window: Option<&FilmWindow>,
+) -> FilmIntegrals {
+    // The positive-pressure half circle [α, α + π], α = atan2(B, A) + π, has
+    // its ends' sines and cosines without trigonometry:
+    // (sin α, cos α) = −(B, A)/|(A, B)|. With S ≡ 0 there is no pressure; any
+    // half circle gives the one-sided limit of the Jacobian (the force is
+    // not differentiable there).
+    let r = a.hypot(b);
+    let pressure = !source_vanishes(state, speed, r);
+    let start = || {
+        if pressure {
+            b.atan2(a) + PI
+        } else {
+            y.atan2(x) + 0.5 * PI
+        }
+    };
+    let start_sc = if pressure {
+        (-b / r, -a / r)
+    } else {
+        start().sin_cos()
+    };
+    let end_sc = (-start_sc.0, -start_sc.1);
+    match window {
+        None => {
+            FilmIntegrals::from_potential(super::film::arc_potential_sc(x, y, PI, start_sc, end_sc))
+        }
+        Some(w) => {
+            let start = start();
+            let mut sum = FilmIntegrals::default();
+            for k in -2..=1 {
+                let from = start + 2.0 * PI * k as f64;
+                let to = from + PI;
+                let (lo, lo_sc) = if from >= w.from {
+                    (from, start_sc)
+                } else {
+                    (w.from, w.from_sc)
+                };
+                let (hi, hi_sc) = if to <= w.to {
+                    (to, end_sc)
+                } else {
+                    (w.to, w.to_sc)
+                };
+                if hi > lo {
+                    sum = sum
+                        + FilmIntegrals::from_potential(super::film::arc_potential_sc(
+                            x,
+                            y,
+                            hi - lo,
+                            lo_sc,
+                            hi_sc,
+                        ));
+                }
+            }
+            sum
+        }
+    }
+}
+
 /// Coulomb friction torque `μ N R` of a contact, opposing the spin (signed with
 /// `speed`; at standstill the breakaway torque the drive must overcome).
 pub(crate) fn contact_friction_torque(
@@ -303,11 +331,50 @@ pub fn pressure_arc_start(state: &JournalState, speed: f64) -> Option<f64> {
 
 /// `S ≡ 0` to round-off: `|(A, B)|` (given) below 1e-14 of its terms' size.
 fn source_vanishes(state: &JournalState, speed: f64, magnitude: f64) -> bool {
-    let scale = (speed * state.position.x).abs()
+    magnitude <= 1e-14 * source_scale(state, speed) || magnitude == 0.0
+}
+
+/// The size of the terms of `A` and `B` (m/s).
+fn source_scale(state: &JournalState, speed: f64) -> f64 {
+    (speed * state.position.x).abs()
         + (speed * state.position.y).abs()
         + 2.0 * state.velocity.x.abs()
-        + 2.0 * state.velocity.y.abs();
-    magnitude <= 1e-14 * scale || magnitude == 0.0
+        + 2.0 * state.velocity.y.abs()
+}
+
+/// How the positive-pressure half circle covers a film window.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Cover {
+    /// Not at all: the film carries nothing.
+    Nothing,
+    /// The whole window.
+    Whole,
+    /// In part, or too close to call from the window's ends.
+    Partial,
+}
+
+/// Where the pressure half circle `S < 0` lies on window `w`, from the sign of
+/// `S = A sin θ − B cos θ` at its two ends: a window shorter than π is covered
+/// wholly when both ends have `S < 0` and not at all when both have `S > 0`.
+/// Ends within 1e-9 rad of the half circle's ends, windows of π or more and a
+/// vanishing `S` are [`Cover::Partial`], which [`ShortFilm::force`] integrates
+/// by the angles: the two decisions agree wherever these are taken.
+fn pressure_cover(w: &FilmWindow, a: f64, b: f64, state: &JournalState, speed: f64) -> Cover {
+    let size = a.abs() + b.abs();
+    // |(A, B)| ≥ max(|A|, |B|) > 1e-14 · scale: `S` does not vanish.
+    if w.to - w.from >= PI - 1e-6 || a.abs().max(b.abs()) <= 1e-14 * source_scale(state, speed) {
+        return Cover::Partial;
+    }
+    let margin = 1e-9 * size;
+    let s_from = a * w.from_sc.0 - b * w.from_sc.1;
+    let s_to = a * w.to_sc.0 - b * w.to_sc.1;
+    if s_from < -margin && s_to < -margin {
+        Cover::Whole
+    } else if s_from > margin && s_to > margin {
+        Cover::Nothing
+    } else {
+        Cover::Partial
+    }
 }
 
 /// `A = ωX − 2Ẏ`, `B = ωY + 2Ẋ` (m/s): `S(θ) = A sin θ − B cos θ`.

@@ -41,6 +41,10 @@ use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, che
 /// Relative size of the pivot's restoring moment (see the module docs).
 const PIVOT_REST: f64 = 1e-9;
 
+/// `|p_e|² / C²` below which a pad's contact is not evaluated (it is zero
+/// there; the margin covers the rounding of `n·p_e` against `|p_e|`).
+const CONTACT_FREE: f64 = 1.0 - 1e-9;
+
 /// One pad of a tilting-pad bearing, with its fixed geometry's trigonometry
 /// worked out once ([`Pad::new`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -137,20 +141,25 @@ impl TiltingPadBearing {
     /// with the pad's circular surface (`|p_e| = C`) when the closest approach
     /// lies on the pad's arc, else with its nearer edge (a flat contact of
     /// normal `(cos θ_e, sin θ_e)`). Both give the same penetration and normal at
-    /// the arc's ends, so the force is continuous.
+    /// the arc's ends, so the force is continuous. `None` within the gap
+    /// (`|p_e| < C`), where neither the surface nor the edges touch
+    /// (`n·p_e ≤ |p_e|`): no force, no contact to report.
     fn pad_contact(
         &self,
         law: &ContactLaw,
         k: usize,
         state: &JournalState,
         speed: f64,
-    ) -> (BearingForce, ContactReport) {
+    ) -> Option<(BearingForce, ContactReport)> {
+        let p = state.position;
+        if p.norm_squared() < CONTACT_FREE * law.gap * law.gap {
+            return None;
+        }
         let pad = &self.pads[k];
         let window = &pad.window;
-        let p = state.position;
         let phi = p.y.atan2(p.x);
         if (phi - window.from).rem_euclid(2.0 * PI) <= pad.arc {
-            return law.evaluate(p, state.velocity, speed);
+            return Some(law.evaluate(p, state.velocity, speed));
         }
         let lead = Vector2::new(window.from_sc.1, window.from_sc.0);
         let trail = Vector2::new(window.to_sc.1, window.to_sc.0);
@@ -159,7 +168,7 @@ impl TiltingPadBearing {
         } else {
             trail
         };
-        law.evaluate_edge(normal, p, state.velocity, speed)
+        Some(law.evaluate_edge(normal, p, state.velocity, speed))
     }
 
     /// Assembled (bearing) clearance `C_b = C (1 − m)`, the smallest over the pads (m).
@@ -300,8 +309,9 @@ impl Bearing for TiltingPadBearing {
             let (s, c, state) = self.pad_state(k, q, qdot);
             let part = film.force(&state, speed, Some(&pad.window))?;
             out.add_transformed(&part, Some((k, -s, c)));
-            let (contact, _) = self.pad_contact(&law, k, &state, speed);
-            out.add_transformed(&contact, Some((k, -s, c)));
+            if let Some((contact, _)) = self.pad_contact(&law, k, &state, speed) {
+                out.add_transformed(&contact, Some((k, -s, c)));
+            }
             let i = 2 + k;
             out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
             out.stiffness[i * n + i] += k_rest;
@@ -319,7 +329,7 @@ impl Bearing for TiltingPadBearing {
         (0..self.pads.len())
             .filter_map(|k| {
                 let (_, _, state) = self.pad_state(k, q, qdot);
-                law.extent(&self.pad_contact(&law, k, &state, speed).1)
+                law.extent(&self.pad_contact(&law, k, &state, speed)?.1)
             })
             .reduce(ContactExtent::worst)
     }
@@ -413,10 +423,17 @@ impl Bearing for TiltingPadBearing {
         for (k, pad) in self.pads.iter().enumerate() {
             let (_, _, state) = self.pad_state(k, q, qdot);
             let film_torque = film.friction_torque(&state, speed, Some(&pad.window));
-            let (contact, report) = self.pad_contact(&law, k, &state, speed);
-            friction_torque += film_torque + contact_friction_torque(&law, &report, speed);
-            power_loss += film_torque * speed + law.friction_power(&report);
-            contact_resultant += contact.force;
+            match self.pad_contact(&law, k, &state, speed) {
+                Some((contact, report)) => {
+                    friction_torque += film_torque + contact_friction_torque(&law, &report, speed);
+                    power_loss += film_torque * speed + law.friction_power(&report);
+                    contact_resultant += contact.force;
+                }
+                None => {
+                    friction_torque += film_torque;
+                    power_loss += film_torque * speed;
+                }
+            }
             min_film = min_film.min(self.pad_min_film_thickness(k, q));
         }
         let position = Vector2::new(q[0], q[1]);

@@ -27,20 +27,17 @@ pub(super) fn condense_internal(
     if mi == 0 {
         return Some((kc, wv));
     }
-    let mut uncoupled = true;
+    // Pads that act on the journal only leave the off-diagonal pad block zero:
+    // found without forming the block (the scan stops at the first coupling).
+    let uncoupled = (0..mi).all(|r| (0..mi).all(|c| r == c || keff(2 + r, 2 + c) == 0.0));
     for r in 0..mi {
-        for c in 0..mi {
-            let v = keff(2 + r, 2 + c);
-            kpp[r * mi + c] = v;
-            uncoupled &= r == c || v == 0.0;
-        }
         x[r] = keff(2 + r, 0);
         x[mi + r] = keff(2 + r, 1);
         x[2 * mi + r] = -ev.force[2 + r];
     }
     if uncoupled {
         for r in 0..mi {
-            let d = kpp[r * mi + r];
+            let d = keff(2 + r, 2 + r);
             if d == 0.0 || !d.is_finite() {
                 return None;
             }
@@ -49,6 +46,11 @@ pub(super) fn condense_internal(
             }
         }
     } else {
+        for r in 0..mi {
+            for c in 0..mi {
+                kpp[r * mi + c] = keff(2 + r, 2 + c);
+            }
+        }
         if !lu_in_place(kpp, mi, piv) {
             return None;
         }
