@@ -21,8 +21,9 @@ hot=$(cargo bench --quiet --bench hot_paths -- --warm-up-time 1 --measurement-ti
 scaling=$(cargo bench --quiet --bench scaling 2>/dev/null | grep -E '^\||fitted')
 realtime=$(cargo bench --quiet --bench realtime 2>/dev/null | grep -E '^\|')
 overhead=$(cargo bench --quiet --bench fmu_overhead 2>/dev/null | grep -E '^\|')
-for m in hydro_unit hydro_unit_plain hydro_unit_brackets hydro_unit_three_guide; do
-  bash fmu_pack.sh --platforms linux64 --model "models/$m.toml" > /dev/null
+for model in models/hydro_unit.toml models/hydro_unit_plain.toml models/hydro_unit_brackets.toml \
+  models/hydro_unit_three_guide.toml; do
+  bash fmu_pack.sh --platforms linux64 --model "$model" > /dev/null
 done
 .venv/bin/python bench/plant_loop.py > /tmp/plant_loop.log 2>&1 || { cat /tmp/plant_loop.log; exit 1; }
 .venv-ross/bin/python bench/ross_compare.py target/release/rotor > /tmp/ross_compare.log 2>&1 || { cat /tmp/ross_compare.log; exit 1; }

@@ -32,6 +32,7 @@ fn main() -> Result<(), String> {
     let h: f64 = args[4].parse().map_err(|e| format!("{e}"))?;
     let options = SolverOptions {
         time_step: default_fmu_time_step(&model),
+        local_error_tolerance: rotor_bearing::fmi2::variables::DEFAULT_LOCAL_ERROR_TOLERANCE,
         ..SolverOptions::default()
     };
     let mut sim = Simulator::new(Rotor::new(model).map_err(|e| e.to_string())?, options)

@@ -144,8 +144,12 @@ fn restored_states_are_validated() {
             "viscosity",
             craft(&|b| {
                 // The last tuned value, before six empty vectors' lengths
-                // and the previous accelerations (empty before the first step).
-                let at = b.len() - 16 - 7 * 8;
+                // and the previous accelerations of the accuracy-controlled
+                // step taken (a length and one per rotor coordinate).
+                let n = rotor_bearing::rotor::Rotor::new(m.clone())
+                    .unwrap()
+                    .dof_count();
+                let at = b.len() - 16 - 6 * 8 - 8 * (1 + n);
                 put(b, at, -0.02)
             }),
         ),

@@ -26,7 +26,8 @@
 //! `h · max(0.2, 0.9 √(tol/η))`; an accepted step proposes
 //! `h · min(2, 0.9 √(tol/η))` for the next (`η ∝ h²`), grown only when that
 //! is at least 1.25 times the step in hand, so a steady run keeps one step
-//! (and one factorization). Newton failing on a step halves it. Steps never
+//! (and one factorization). A step that fails (Newton, the torsional Newton
+//! of a torque-driven shaft, a bearing) is undone and halved. Steps never
 //! exceed [`SolverOptions::time_step`] and never fall below
 //! `time_step · 2^-max_step_cuts` (nor [`SolverOptions::MIN_SPAN`]): a step
 //! at that floor is accepted whatever its estimate. Each call of
@@ -177,7 +178,17 @@ impl Simulator {
             }
             self.step_start.copy_from(&self.state);
             let floor = h <= smallest * (1.0 + 1e-9);
-            if let Some(residual) = self.try_step(h)? {
+            // A step that fails (Newton, the torsional Newton, a bearing) is
+            // tried smaller; at the floor its error is the call's.
+            let outcome = match self.try_step(h) {
+                Ok(outcome) => outcome,
+                Err(e) if floor => {
+                    self.restore_step_start();
+                    return Err(e);
+                }
+                Err(_) => Some(f64::INFINITY),
+            };
+            if let Some(residual) = outcome {
                 self.restore_step_start();
                 if floor {
                     return Err(SolverError::NotConverged {
