@@ -45,8 +45,8 @@ import zipfile
 import numpy as np
 
 TOLERANCE = 1e-9
-# The run-ups take equal internal steps (60 per revolution at the run's speed,
-# at most 1 ms), where the two binaries differ by round-off only. The state
+# The run-ups take equal internal steps (60 per revolution at the model's top
+# speed, at most 1 ms), where the two binaries differ by round-off only. The state
 # runs keep the FMU's default accuracy-controlled steps: there a last-bit
 # difference of the math libraries moves the error estimate by more than an
 # ulp and, where it sits near a threshold, a step size (measured 9.5e-9 of the
@@ -231,7 +231,11 @@ def main(root):
             table = np.array(list(zip(*[c for _, c in cols])), dtype=[(n, np.float64) for n, _ in cols])
             table_file = os.path.join(tmp, f"input{i}.npy")
             np.save(table_file, table)
-            equal_steps = {"solver.local_error_tolerance": 0.0, "solver.time_step": min(1e-3, 1.0 / rpm)}
+            # Equal steps of 60 per revolution at the model's top speed (its
+            # max_speed_rpm, else speed_rpm), at most 1 ms.
+            spec = tomllib.load(open(os.path.join(root, "models", stem + ".toml"), "rb"))
+            top = spec.get("max_speed_rpm", spec.get("speed_rpm", 0.0)) or 1000.0
+            equal_steps = {"solver.local_error_tolerance": 0.0, "solver.time_step": min(1e-3, 1.0 / top)}
             kwargs = dict(stop_time=stop, output_interval=stop / 400, start_values={**equal_steps, **start},
                           output=outputs)
             # A fresh copy per run: FMPy adds its remoting client and server to the folder.
