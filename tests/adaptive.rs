@@ -93,24 +93,6 @@ fn state_of(sim: &Simulator) -> DVector<f64> {
     DVector::from_iterator(2 * s.u.len(), s.u.iter().chain(&s.ud).copied())
 }
 
-/// The journal, probe and unbalance-plane translations of `rotor` (the
-/// coordinates a user reads).
-fn observed(rotor: &Rotor) -> Vec<usize> {
-    let m = &rotor.model;
-    let nodes = m
-        .bearings
-        .iter()
-        .map(|b| b.node)
-        .chain(m.probes.iter().map(|p| p.node))
-        .chain(m.unbalances.iter().map(|u| u.node));
-    let mut v: Vec<usize> = nodes
-        .flat_map(|n| [0, 1].map(|k| rotor.dofs.free(n, k).unwrap()))
-        .collect();
-    v.sort_unstable();
-    v.dedup();
-    v
-}
-
 fn linear_simulator(tolerance: f64, speed: f64, unbalance: bool) -> Simulator {
     let mut m = model("classic_disk_rotor_damped");
     if !unbalance {
@@ -159,7 +141,9 @@ fn run_linear(tolerance: f64, forced: bool) -> (f64, f64, usize) {
         release(&mut sim);
     }
     let exact = Exact::new(sim.rotor(), speed, interval, forced);
-    let dofs = observed(sim.rotor());
+    // The journal, probe and unbalance-plane translations, as the control.
+    let dofs = sim.observed_coordinates().to_vec();
+    assert_eq!(dofs.len(), 6);
     let mut global = state_of(&sim);
     let (mut local_worst, mut global_worst, mut largest) = (0.0_f64, 0.0_f64, 0.0_f64);
     for k in 0..300 {

@@ -57,33 +57,69 @@ const MOTION_FLOOR: f64 = 1e-6;
 
 impl SimState {
     /// Copy every field of `other` (of the same rotor) into `self` without
-    /// allocating.
+    /// allocating (`Vec::clone_from` reuses the storage); the exhaustive
+    /// pattern makes a field added to the state a compile error here.
     pub(super) fn copy_from(&mut self, other: &SimState) {
-        copy(&mut self.u, &other.u);
-        copy(&mut self.ud, &other.ud);
-        copy(&mut self.udd, &other.udd);
-        copy(&mut self.p, &other.p);
-        copy(&mut self.pd, &other.pd);
-        copy(&mut self.pdd, &other.pdd);
-        copy(&mut self.unbalance, &other.unbalance);
-        copy(&mut self.unbalance_rate, &other.unbalance_rate);
-        copy(&mut self.unbalance_phase, &other.unbalance_phase);
-        copy(&mut self.loads, &other.loads);
-        copy(&mut self.load_rates, &other.load_rates);
-        copy(&mut self.twist, &other.twist);
-        copy(&mut self.twist_rate, &other.twist_rate);
-        copy(&mut self.twist_accel, &other.twist_accel);
-        copy(&mut self.twist_torque, &other.twist_torque);
-        copy(&mut self.udd_previous, &other.udd_previous);
-        self.time = other.time;
-        self.spin_angle = other.spin_angle;
-        self.speed = other.speed;
-        self.speed_rate = other.speed_rate;
-        self.speed_time = other.speed_time;
-        self.stuck = other.stuck;
-        self.factor_step = other.factor_step;
-        self.factor_speed = other.factor_speed;
-        self.step_proposal = other.step_proposal;
+        let SimState {
+            time,
+            u,
+            ud,
+            udd,
+            p,
+            pd,
+            pdd,
+            spin_angle,
+            speed,
+            speed_rate,
+            speed_time,
+            unbalance,
+            unbalance_rate,
+            unbalance_phase,
+            loads,
+            load_rates,
+            twist,
+            twist_rate,
+            twist_accel,
+            twist_torque,
+            stuck,
+            factor_step,
+            factor_speed,
+            udd_previous,
+            step_proposal,
+        } = other;
+        for (dst, src) in [
+            (&mut self.u, u),
+            (&mut self.ud, ud),
+            (&mut self.udd, udd),
+            (&mut self.p, p),
+            (&mut self.pd, pd),
+            (&mut self.pdd, pdd),
+            (&mut self.unbalance, unbalance),
+            (&mut self.unbalance_rate, unbalance_rate),
+            (&mut self.unbalance_phase, unbalance_phase),
+            (&mut self.loads, loads),
+            (&mut self.load_rates, load_rates),
+            (&mut self.twist, twist),
+            (&mut self.twist_rate, twist_rate),
+            (&mut self.twist_accel, twist_accel),
+            (&mut self.twist_torque, twist_torque),
+            (&mut self.udd_previous, udd_previous),
+        ] {
+            dst.clone_from(src);
+        }
+        for (dst, src) in [
+            (&mut self.time, time),
+            (&mut self.spin_angle, spin_angle),
+            (&mut self.speed, speed),
+            (&mut self.speed_rate, speed_rate),
+            (&mut self.speed_time, speed_time),
+            (&mut self.stuck, stuck),
+            (&mut self.factor_step, factor_step),
+            (&mut self.factor_speed, factor_speed),
+            (&mut self.step_proposal, step_proposal),
+        ] {
+            *dst = *src;
+        }
     }
 }
 
@@ -117,24 +153,21 @@ pub(super) fn observed_dofs(rotor: &Rotor) -> Vec<usize> {
     dofs
 }
 
-/// `dst = src`, reusing `dst`'s storage when the lengths agree.
-fn copy(dst: &mut Vec<f64>, src: &[f64]) {
-    if dst.len() == src.len() {
-        dst.copy_from_slice(src);
-    } else {
-        dst.clear();
-        dst.extend_from_slice(src);
-    }
-}
-
 impl Simulator {
+    /// The coordinates (free DOF indices) the local error estimate of
+    /// accuracy-controlled steps watches ([`observed_dofs`]).
+    pub fn observed_coordinates(&self) -> &[usize] {
+        &self.error_dofs
+    }
+
     /// The estimate `η` of the step just taken from `self.step_start` to the
     /// state in hand, of size `h` (see the module docs).
     pub(super) fn local_error(&self, h: f64) -> f64 {
         let (a, b) = (&self.step_start, &self.state);
         // The acceleration change over the mean of two steps where the step
-        // before is known (module docs: unresolved modes alternate).
-        let two_step = b.step_proposal > 0.0 && a.udd_previous.len() == a.udd.len();
+        // before is known (module docs: unresolved modes alternate); the
+        // previous accelerations are empty before the first such step.
+        let two_step = a.udd_previous.len() == a.udd.len();
         let (mut accel, mut motion) = (0.0_f64, 0.0_f64);
         for &i in &self.error_dofs {
             let change = if two_step {
@@ -226,7 +259,7 @@ impl Simulator {
             if last {
                 self.state.time = t_end;
             }
-            copy(&mut self.state.udd_previous, &self.step_start.udd);
+            self.state.udd_previous.clone_from(&self.step_start.udd);
             if allowed >= GROW_DEAD_BAND {
                 proposal = proposal.max(h * allowed.min(MAX_GROWTH)).min(largest);
             } else if allowed < 1.0 {
