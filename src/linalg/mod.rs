@@ -2,8 +2,9 @@
 //! banded LU with partial pivoting ([`band`]), an Arnoldi eigensolver for a
 //! few largest-modulus eigenvalues of a linear operator ([`arnoldi`]), meant to
 //! be used in shift-invert mode, and monotone cubic interpolation of tables
-//! ([`pchip`]), and the Sturm sequence count of a symmetric definite banded
-//! pencil ([`sturm`]).
+//! ([`pchip`]), the Sturm sequence count of a symmetric definite banded
+//! pencil ([`sturm`]) and its lowest eigenpairs by subspace iteration
+//! ([`subspace`]).
 
 use std::fmt;
 
@@ -11,6 +12,7 @@ pub mod arnoldi;
 pub mod band;
 pub mod pchip;
 pub mod sturm;
+pub mod subspace;
 
 pub use arnoldi::{
     ArnoldiOptions, EigenPair, LinearOperator, RealOperator, largest_eigenpairs,
@@ -18,6 +20,7 @@ pub use arnoldi::{
 };
 pub use band::{BandLu, BandMatrix, Scalar, map_to_complex};
 pub use sturm::eigenvalues_below;
+pub use subspace::lowest_eigenpairs;
 
 /// Numerical failures of the linear-algebra routines. Programming errors (an
 /// entry outside the band, operands of the wrong dimension or band) are not
