@@ -11,6 +11,11 @@
 //! the film's saturation into contact, tilts that unload pads, squeeze and
 //! whirl velocities, and speeds from standstill to reverse rotation.
 //!
+//! The front ends' pass (`Bearing::output`: each pad once, the force without
+//! its Jacobians) gives the same forces and report bit for bit, the thinnest
+//! film (now by cross products instead of angles) within 1e-14 of the
+//! clearance of the formula by angles kept here.
+//!
 //! Then the orbits: `rotor simulate` of the shipped hydro unit and the
 //! three-guide-bearing unit at a 5 ms step against the runs of the solver
 //! before this hot path (`tests/data/orbit_*.csv`, made on main at 2d919c5).
@@ -186,6 +191,24 @@ fn bearing(
     }
 }
 
+/// Thinnest film (m) on pad `k` by angles: `h(θ) = C − X_e cos θ − Y_e sin θ`
+/// at `θ = atan2(Y_e, X_e)` when on the pad's arc, else the smaller at its edges.
+fn min_film_by_angles(b: &TiltingPadBearing, k: usize, q: &[f64]) -> f64 {
+    let pad = &b.pads[k];
+    let (s, c) = pad.pivot().sin_cos();
+    let shift = pad.preload() * b.clearance;
+    let eta = q[2 + k];
+    let (x, y) = (q[0] + shift * c - eta * s, q[1] + shift * s + eta * c);
+    let (from, to) = pad.edges();
+    let h = |t: f64| b.clearance - x * t.cos() - y * t.sin();
+    let phi = y.atan2(x);
+    if (phi - from).rem_euclid(2.0 * PI) <= to - from {
+        h(phi)
+    } else {
+        h(from).min(h(to))
+    }
+}
+
 /// Largest `|a − b| / (|b| + 1e-3 · max |b|)` over the entries.
 fn worst(a: &[f64], b: &[f64]) -> f64 {
     let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
@@ -215,6 +238,7 @@ fn the_hot_path_matches_a_straightforward_evaluation_on_every_pad() {
     };
     let (mut cases, mut loaded, mut unloaded, mut contact) = (0, 0, 0, 0);
     let mut largest: f64 = 0.0;
+    let (mut largest_film, mut outputs): (f64, usize) = (0.0, 0);
     for b in &bearings {
         let n = 2 + b.pads.len();
         let cl = b.clearance;
@@ -249,6 +273,33 @@ fn the_hot_path_matches_a_straightforward_evaluation_on_every_pad() {
                                 b.pads.len()
                             );
                         }
+                        // The front ends' pass: the same forces and report, bit
+                        // for bit, the thinnest film to round-off of the clearance.
+                        let report = b.report(&q, &qd, speed, &out);
+                        let mut single = BearingEval::new(n);
+                        let got = b.output(&q, &qd, speed, &mut single).unwrap();
+                        for (a, w) in single.force.iter().zip(&out.force) {
+                            assert_eq!(
+                                a.to_bits(),
+                                w.to_bits(),
+                                "output force {:?} vs {:?}",
+                                single.force,
+                                out.force
+                            );
+                        }
+                        assert_eq!(got, report);
+                        let thinnest = (0..b.pads.len())
+                            .map(|k| min_film_by_angles(b, k, &q))
+                            .fold(f64::INFINITY, f64::min)
+                            .max(0.0);
+                        let e = (report.min_film_thickness - thinnest).abs();
+                        largest_film = largest_film.max(e / cl);
+                        assert!(
+                            e <= 1e-14 * cl,
+                            "min film {} vs {thinnest}",
+                            report.min_film_thickness
+                        );
+                        outputs += 1;
                         for k in 0..b.pads.len() {
                             if b.pad_force(k, &q, &qd, speed).unwrap().norm() == 0.0 {
                                 unloaded += 1;
@@ -266,6 +317,7 @@ fn the_hot_path_matches_a_straightforward_evaluation_on_every_pad() {
     println!(
         "{cases} states, {loaded} loaded and {unloaded} unloaded pad films, {contact} in contact: worst relative difference {largest:e}"
     );
+    println!("{outputs} outputs: thinnest film within {largest_film:e} of the clearance");
     // The cases reach what they are meant to: unloaded pads, contact.
     assert!(unloaded > 1000 && loaded > 1000 && contact > 50);
 }

@@ -174,15 +174,23 @@ impl BearingEval {
         self.damping.fill(0.0);
     }
 
+    /// The force part of [`BearingEval::add_transformed`]: `Q += Tᵀ f`.
+    fn add_force(&mut self, f: &Vector2<f64>, internal: Option<(usize, f64, f64)>) {
+        self.force[0] += f.x;
+        self.force[1] += f.y;
+        if let Some((m, a, b)) = internal {
+            self.force[2 + m] += a * f.x + b * f.y;
+        }
+    }
+
     /// Add a journal-type contribution `f, K, C` acting on the effective journal
     /// coordinates `(x_e, y_e) = (x, y) + η·(a, b)` of internal coordinate
     /// `internal` (`None`: the journal itself), i.e. with `T = [[1, 0, a], [0, 1, b]]`:
     /// `Q += Tᵀ f`, `K += Tᵀ K T`, `C += Tᵀ C T`.
     fn add_transformed(&mut self, part: &BearingForce, internal: Option<(usize, f64, f64)>) {
         let n = self.n;
-        let (f, k, c) = (&part.force, &part.stiffness, &part.damping);
-        self.force[0] += f.x;
-        self.force[1] += f.y;
+        let (k, c) = (&part.stiffness, &part.damping);
+        self.add_force(&part.force, internal);
         for i in 0..2 {
             for j in 0..2 {
                 self.stiffness[i * n + j] += k[(i, j)];
@@ -194,7 +202,6 @@ impl BearingEval {
         };
         // Third row and column of T = [[1, 0, a], [0, 1, b]]: t = (a, b).
         let p = 2 + m;
-        self.force[p] += a * f.x + b * f.y;
         for (mat, out) in [(k, &mut self.stiffness), (c, &mut self.damping)] {
             let col = [
                 mat[(0, 0)] * a + mat[(0, 1)] * b,
@@ -274,6 +281,21 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
     /// `q`, `q̇`, with `eval` the evaluation there.
     fn report(&self, _q: &[f64], _qdot: &[f64], _speed: f64, _eval: &BearingEval) -> BearingReport {
         BearingReport::default()
+    }
+
+    /// What a front end reports at `q`, `q̇`, `speed`: the generalized forces
+    /// in `out.force` and the film report, the numbers [`Bearing::evaluate`]
+    /// and [`Bearing::report`] give; the Jacobians in `out` are left
+    /// unspecified, so kinds may skip them (a tilting-pad bearing does).
+    fn output(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<BearingReport, BearingError> {
+        self.evaluate(q, qdot, speed, out)?;
+        Ok(self.report(q, qdot, speed, out))
     }
 }
 

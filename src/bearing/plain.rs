@@ -123,29 +123,22 @@ impl ShortFilm {
         speed: f64,
         window: Option<&FilmWindow>,
     ) -> Result<BearingForce, BearingError> {
-        let cl = self.clearance;
-        let (position, saturation) = film_position(state.position, cl);
-        let state = &JournalState {
-            position,
-            velocity: state.velocity,
-        };
-        let (x, y) = (state.position.x / cl, state.position.y / cl);
-        let (a, b) = source_coefficients(state, speed);
-        let cover = window.map(|w| pressure_cover(w, a, b, state, speed));
-        if cover == Some(Cover::Nothing) {
+        let Some(film) = self.integrals(state, speed, window, Terms::WithJacobians) else {
             return Ok(BearingForce {
                 force: Vector2::zeros(),
                 stiffness: Matrix2::zeros(),
                 damping: Matrix2::zeros(),
             });
-        }
-        let f = match (window, cover) {
-            (Some(w), Some(Cover::Whole)) => FilmIntegrals::from_potential(
-                super::film::arc_potential_sc(x, y, w.to - w.from, w.from_sc, w.to_sc),
-            ),
-            _ => integrals_by_angles(x, y, (a, b), state, speed, window),
         };
-        let c = self.viscosity * self.radius * self.length.powi(3) / (4.0 * cl.powi(3));
+        let FilmAt {
+            f,
+            a,
+            b,
+            c,
+            saturation,
+            ..
+        } = film;
+        let cl = self.clearance;
         let force = Vector2::new(c * (a * f.xy - b * f.xx), c * (a * f.yy - b * f.xy));
         let dfx_dx = c * (speed * f.xy + (a * f.xxy - b * f.xxx) / cl);
         let dfx_dy = c * (-speed * f.xx + (a * f.xyy - b * f.xxy) / cl);
@@ -169,6 +162,76 @@ impl ShortFilm {
         }
     }
 
+    /// The force of [`ShortFilm::force`] alone (the same number, from the
+    /// potential's terms up to degree 2), and `∫ dθ/H` over the window when the
+    /// pressure covers all of it (what [`ShortFilm::friction_torque`] needs, the
+    /// same number too), for reports.
+    pub(crate) fn force_only(
+        &self,
+        state: &JournalState,
+        speed: f64,
+        window: Option<&FilmWindow>,
+    ) -> Result<(Vector2<f64>, Option<f64>), BearingError> {
+        let Some(FilmAt {
+            f, a, b, c, whole, ..
+        }) = self.integrals(state, speed, window, Terms::ForceOnly)
+        else {
+            return Ok((Vector2::zeros(), None));
+        };
+        let force = Vector2::new(c * (a * f.xy - b * f.xx), c * (a * f.yy - b * f.xy));
+        if force.iter().all(|v| v.is_finite()) {
+            Ok((force, whole))
+        } else {
+            Err(BearingError::NotFinite {
+                what: "film force",
+                value: force.norm(),
+            })
+        }
+    }
+
+    /// The film integrals at `state` over the positive-pressure part of the
+    /// window, with the source coefficients `A`, `B`, the force constant
+    /// `μ R L³ / (4 C³)` and the saturation Jacobian; `None` when the pressure
+    /// half circle misses the window.
+    fn integrals(
+        &self,
+        state: &JournalState,
+        speed: f64,
+        window: Option<&FilmWindow>,
+        terms: Terms,
+    ) -> Option<FilmAt> {
+        let cl = self.clearance;
+        let (position, saturation) = film_position(state.position, cl);
+        let state = &JournalState {
+            position,
+            velocity: state.velocity,
+        };
+        let (x, y) = (state.position.x / cl, state.position.y / cl);
+        let (a, b) = source_coefficients(state, speed);
+        let cover = window.map(|w| pressure_cover(w, a, b, state, speed));
+        if cover == Some(Cover::Nothing) {
+            return None;
+        }
+        let (f, whole) = match (window, cover) {
+            (Some(w), Some(Cover::Whole)) => {
+                terms.over_arc(x, y, w.to - w.from, w.from_sc, w.to_sc)
+            }
+            _ => (
+                integrals_by_angles(x, y, (a, b), state, speed, window, terms),
+                None,
+            ),
+        };
+        let c = self.viscosity * self.radius * self.length.powi(3) / (4.0 * cl.powi(3));
+        Some(FilmAt {
+            f,
+            a,
+            b,
+            c,
+            saturation,
+            whole,
+        })
+    }
+
     /// Couette (Petroff-corrected) friction torque of the film over the window
     /// (`None`: the whole circle),
     /// shear `μωR/h` on the journal surface: `T = (μωR³L/C) ∫ dθ/H` (N·m). The
@@ -187,6 +250,11 @@ impl ShortFilm {
             None => 2.0 * PI / (1.0 - x * x - y * y).sqrt(),
             Some(w) => super::film::arc_potential_value(x, y, w.to - w.from, w.from_sc, w.to_sc),
         };
+        self.friction_torque_of(phi, speed)
+    }
+
+    /// The friction torque `(μωR³L/C) Φ` from `Φ = ∫ dθ/H` over the film (N·m).
+    pub(crate) fn friction_torque_of(&self, phi: f64, speed: f64) -> f64 {
         self.viscosity * speed * self.radius.powi(3) * self.length / self.clearance * phi
     }
 }
@@ -239,6 +307,53 @@ impl PlainBearing {
     }
 }
 
+/// Which terms of the film potential a caller needs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Terms {
+    /// Up to degree 3: the force and its Jacobians.
+    WithJacobians,
+    /// Up to degree 2: the force alone.
+    ForceOnly,
+}
+
+impl Terms {
+    /// The film integrals over an arc of length `span` with the given end
+    /// sines and cosines, and the potential's value `∫ dθ/H` over it.
+    fn over_arc(
+        self,
+        x: f64,
+        y: f64,
+        span: f64,
+        from: (f64, f64),
+        to: (f64, f64),
+    ) -> (FilmIntegrals, Option<f64>) {
+        match self {
+            Terms::WithJacobians => {
+                let phi = super::film::arc_potential_sc(x, y, span, from, to);
+                (FilmIntegrals::from_potential(phi), Some(phi.value()))
+            }
+            Terms::ForceOnly => {
+                let phi = super::film::arc_potential_sc2(x, y, span, from, to);
+                (FilmIntegrals::from_potential2(phi), Some(phi[0]))
+            }
+        }
+    }
+}
+
+/// The film integrals at a state and what the force is made of.
+struct FilmAt {
+    f: FilmIntegrals,
+    /// Source coefficients `A`, `B` (m/s).
+    a: f64,
+    b: f64,
+    /// `μ R L³ / (4 C³)`.
+    c: f64,
+    /// Jacobian of the saturated film position.
+    saturation: Matrix2<f64>,
+    /// `∫ dθ/H` over the window when the pressure covers all of it.
+    whole: Option<f64>,
+}
+
 /// The film integrals over the positive-pressure half circle `[α, α + π]`,
 /// `α = atan2(B, A) + π`, within the window (`None`: all of it), by the angles
 /// of its ends (see [`ShortFilm::force`]).
@@ -249,6 +364,7 @@ fn integrals_by_angles(
     state: &JournalState,
     speed: f64,
     window: Option<&FilmWindow>,
+    terms: Terms,
 ) -> FilmIntegrals {
     // The positive-pressure half circle [α, α + π], α = atan2(B, A) + π, has
     // its ends' sines and cosines without trigonometry:
@@ -271,9 +387,7 @@ fn integrals_by_angles(
     };
     let end_sc = (-start_sc.0, -start_sc.1);
     match window {
-        None => {
-            FilmIntegrals::from_potential(super::film::arc_potential_sc(x, y, PI, start_sc, end_sc))
-        }
+        None => terms.over_arc(x, y, PI, start_sc, end_sc).0,
         Some(w) => {
             let start = start();
             let mut sum = FilmIntegrals::default();
@@ -291,14 +405,7 @@ fn integrals_by_angles(
                     (w.to, w.to_sc)
                 };
                 if hi > lo {
-                    sum = sum
-                        + FilmIntegrals::from_potential(super::film::arc_potential_sc(
-                            x,
-                            y,
-                            hi - lo,
-                            lo_sc,
-                            hi_sc,
-                        ));
+                    sum = sum + terms.over_arc(x, y, hi - lo, lo_sc, hi_sc).0;
                 }
             }
             sum
@@ -426,6 +533,27 @@ impl Bearing for PlainBearing {
         };
         self.journal_report(&state, speed, &eval.journal().force)
     }
+
+    /// The film force without its Jacobians ([`ShortFilm::force_only`]).
+    fn output(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<BearingReport, BearingError> {
+        check_state(2, q, qdot, speed, out)?;
+        let state = JournalState::from_coordinates(q, qdot);
+        let (film, _) = self.film().force_only(&state, speed, None)?;
+        out.force.fill(0.0);
+        out.add_force(&film, None);
+        let (contact, _) = self
+            .contact_law()
+            .evaluate(state.position, state.velocity, speed);
+        out.add_force(&contact.force, None);
+        let force = Vector2::new(out.force[0], out.force[1]);
+        Ok(self.journal_report(&state, speed, &force))
+    }
 }
 
 /// Angle from the load line (the direction of `−F`, the load the film carries) to
@@ -441,6 +569,40 @@ pub fn attitude_angle(position: &Vector2<f64>, force: &Vector2<f64>) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The front ends' pass gives the force and report of `evaluate` then
+    /// `report`, bit for bit, from the centre through saturation into contact,
+    /// at rest, squeezing and whirling, and in reverse.
+    #[test]
+    fn output_is_evaluate_then_report() {
+        let b = PlainBearing {
+            radius: 0.05,
+            length: 0.03,
+            clearance: 1e-4,
+            viscosity: 0.02,
+            contact: None,
+        };
+        let (mut full, mut single) = (BearingEval::new(2), BearingEval::new(2));
+        let mut cases = 0;
+        for speed in [0.0, 40.0, 314.0, -150.0] {
+            for eps in [0.0, 0.3, 0.9, 0.99, 1.02] {
+                for angle in [-100.0f64, 10.0, 135.0] {
+                    for rate in [0.0, 0.01, -0.02] {
+                        let (s, c) = angle.to_radians().sin_cos();
+                        let q = [eps * 1e-4 * c, eps * 1e-4 * s];
+                        let qd = [rate * c - 0.5 * rate * s, rate * s];
+                        b.evaluate(&q, &qd, speed, &mut full).unwrap();
+                        let report = b.report(&q, &qd, speed, &full);
+                        let got = b.output(&q, &qd, speed, &mut single).unwrap();
+                        assert_eq!(single.force, full.force);
+                        assert_eq!(got, report);
+                        cases += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(cases, 180);
+    }
 
     /// The film is continuous through the start of its saturation and finite at
     /// and beyond contact, and its closed-form stiffness there still matches

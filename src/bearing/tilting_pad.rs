@@ -200,21 +200,25 @@ impl TiltingPadBearing {
     }
 
     /// Minimum film thickness (m) on pad `k` at `q = [x, y, η…]`: the film
-    /// `h = C − X_e cos θ − Y_e sin θ` at the effective journal position is
-    /// thinnest at `θ = atan2(Y_e, X_e)` when that lies on the pad's arc, else at
-    /// the nearer edge.
+    /// `h = C − X_e cos θ − Y_e sin θ` at the effective journal position `p_e`
+    /// is thinnest, `C − |p_e|`, at `θ = atan2(Y_e, X_e)` when that lies on the
+    /// pad's arc (for arcs under π: `p_e` between the ends' directions by the
+    /// signs of two cross products), else at the nearer edge.
     pub fn pad_min_film_thickness(&self, k: usize, q: &[f64]) -> f64 {
         let pad = &self.pads[k];
-        let position = self.pad_position(k, q[0], q[1], q[2 + k]);
+        let p = self.pad_position(k, q[0], q[1], q[2 + k]);
         let window = &pad.window;
-        let (x, y) = (position.x, position.y);
-        let phi = y.atan2(x);
-        let inside = (phi - window.from).rem_euclid(2.0 * PI) <= pad.arc;
-        let h = |t: f64| self.clearance - x * t.cos() - y * t.sin();
-        let thinnest = if inside {
-            h(phi)
+        let lead = Vector2::new(window.from_sc.1, window.from_sc.0);
+        let trail = Vector2::new(window.to_sc.1, window.to_sc.0);
+        let inside = if pad.arc < PI {
+            lead.perp(&p) >= 0.0 && p.perp(&trail) >= 0.0
         } else {
-            h(window.from).min(h(window.to))
+            (p.y.atan2(p.x) - window.from).rem_euclid(2.0 * PI) <= pad.arc
+        };
+        let thinnest = if inside {
+            self.clearance - p.norm()
+        } else {
+            (self.clearance - p.dot(&lead)).min(self.clearance - p.dot(&trail))
         };
         thinnest.max(0.0)
     }
@@ -416,35 +420,111 @@ impl Bearing for TiltingPadBearing {
     fn report(&self, q: &[f64], qdot: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
         let film = self.film();
         let law = self.contact_law();
-        let mut friction_torque = 0.0;
-        let mut power_loss = 0.0;
-        let mut min_film = f64::INFINITY;
-        let mut contact_resultant = Vector2::zeros();
+        let mut tally = PadTally::default();
         for (k, pad) in self.pads.iter().enumerate() {
             let (_, _, state) = self.pad_state(k, q, qdot);
             let film_torque = film.friction_torque(&state, speed, Some(&pad.window));
-            match self.pad_contact(&law, k, &state, speed) {
-                Some((contact, report)) => {
-                    friction_torque += film_torque + contact_friction_torque(&law, &report, speed);
-                    power_loss += film_torque * speed + law.friction_power(&report);
-                    contact_resultant += contact.force;
-                }
-                None => {
-                    friction_torque += film_torque;
-                    power_loss += film_torque * speed;
-                }
-            }
-            min_film = min_film.min(self.pad_min_film_thickness(k, q));
+            let contact = self.pad_contact(&law, k, &state, speed);
+            tally.add(&law, film_torque, contact.as_ref(), speed);
+            tally.min_film = tally.min_film.min(self.pad_min_film_thickness(k, q));
         }
+        self.tally_report(q, eval, &tally)
+    }
+
+    /// One pass over the pads: each pad's state once, its film force without
+    /// the Jacobians ([`ShortFilm::force_only`]), whose potential also gives the
+    /// friction of a pad the pressure covers wholly; the same numbers as
+    /// `evaluate` then `report`.
+    fn output(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<BearingReport, BearingError> {
+        let n = 2 + self.pads.len();
+        check_state(n, q, qdot, speed, out)?;
+        out.force.fill(0.0);
+        let film = self.film();
+        let (c_rest, k_rest) = self.pivot_rest(speed);
+        let law = self.contact_law();
+        let mut tally = PadTally::default();
+        for (k, pad) in self.pads.iter().enumerate() {
+            let (s, c, state) = self.pad_state(k, q, qdot);
+            let (force, whole) = film.force_only(&state, speed, Some(&pad.window))?;
+            out.add_force(&force, Some((k, -s, c)));
+            let contact = self.pad_contact(&law, k, &state, speed);
+            if let Some((contact, _)) = &contact {
+                out.add_force(&contact.force, Some((k, -s, c)));
+            }
+            let i = 2 + k;
+            out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+            let film_torque = match whole {
+                Some(phi) => film.friction_torque_of(phi, speed),
+                None => film.friction_torque(&state, speed, Some(&pad.window)),
+            };
+            tally.add(&law, film_torque, contact.as_ref(), speed);
+            tally.min_film = tally.min_film.min(self.pad_min_film_thickness(k, q));
+        }
+        Ok(self.tally_report(q, out, &tally))
+    }
+}
+
+impl TiltingPadBearing {
+    /// The report from the pads' tally and the journal force in `eval`.
+    fn tally_report(&self, q: &[f64], eval: &BearingEval, tally: &PadTally) -> BearingReport {
         let position = Vector2::new(q[0], q[1]);
-        let force = eval.journal().force;
+        let force = Vector2::new(eval.force[0], eval.force[1]);
         BearingReport {
             eccentricity: position.norm() / self.assembled_clearance(),
             attitude_angle: attitude_angle(&position, &force),
-            min_film_thickness: min_film.max(0.0),
-            friction_torque,
-            power_loss,
-            contact_force: contact_resultant.norm(),
+            min_film_thickness: tally.min_film.max(0.0),
+            friction_torque: tally.friction_torque,
+            power_loss: tally.power_loss,
+            contact_force: tally.contact_resultant.norm(),
+        }
+    }
+}
+
+/// Friction, power loss, contact resultant and thinnest film summed over pads.
+#[derive(Debug)]
+struct PadTally {
+    friction_torque: f64,
+    power_loss: f64,
+    min_film: f64,
+    contact_resultant: Vector2<f64>,
+}
+
+impl Default for PadTally {
+    fn default() -> Self {
+        Self {
+            friction_torque: 0.0,
+            power_loss: 0.0,
+            min_film: f64::INFINITY,
+            contact_resultant: Vector2::zeros(),
+        }
+    }
+}
+
+impl PadTally {
+    /// Add a pad's film friction torque and its contact, if any.
+    fn add(
+        &mut self,
+        law: &ContactLaw,
+        film_torque: f64,
+        contact: Option<&(BearingForce, ContactReport)>,
+        speed: f64,
+    ) {
+        match contact {
+            Some((contact, report)) => {
+                self.friction_torque += film_torque + contact_friction_torque(law, report, speed);
+                self.power_loss += film_torque * speed + law.friction_power(report);
+                self.contact_resultant += contact.force;
+            }
+            None => {
+                self.friction_torque += film_torque;
+                self.power_loss += film_torque * speed;
+            }
         }
     }
 }

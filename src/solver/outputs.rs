@@ -169,14 +169,14 @@ impl Simulator {
                 q[2..].copy_from_slice(&self.state.p[s.offset..s.offset + internal]);
                 qd[2..].copy_from_slice(&self.state.pd[s.offset..s.offset + internal]);
             }
-            bearing
-                .evaluate(q, qd, speed, eval)
-                .map_err(|source| SolverError::Bearing {
-                    name: self.rotor.model.bearings[k].name.clone(),
-                    time: t,
-                    source,
-                })?;
-            let report = bearing.report(q, qd, speed, eval);
+            let report =
+                bearing
+                    .output(q, qd, speed, eval)
+                    .map_err(|source| SolverError::Bearing {
+                        name: self.rotor.model.bearings[k].name.clone(),
+                        time: t,
+                        source,
+                    })?;
             friction_torque += report.friction_torque;
             power_loss += report.power_loss;
             bearings.push(BearingOutput {
