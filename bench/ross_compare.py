@@ -120,7 +120,7 @@ results.append((f"Linear classic rotor, reduced ({MODES} modes): ROSS Newmark", 
 results.append((f"Linear classic rotor, reduced ({MODES} modes): ROSS state space (default)", ross_ss, rust_wall_red))
 
 # ------------------------------------------------------------- 2. nonlinear
-R, L, C, MU = 0.05, 0.03, 1e-4, 0.02
+R, L, C, MU = 0.05, 0.03, 1e-4, 0.02  # a 50 mm journal (collar) on the 25 mm-radius shaft, as in ROSS, whose bearing radius is its own
 nodes = np.polynomial.legendre.leggauss(200)
 theta = np.pi * (nodes[0] + 1.0)  # [0, 2π]
 weight = np.pi * nodes[1]
@@ -137,7 +137,7 @@ def short_bearing(x, y, vx, vy):
 nl_model = base.split("[[bearings]]")[0]
 for node, name in ((1, "drive_end"), (7, "non_drive_end")):
     nl_model += (f'[[bearings]]\nname = "{name}"\ntype = "plain"\nnode = {node}\nradius = {R}\nlength = {L}\n'
-                 f'clearance = {C}\nviscosity = {MU}\n')
+                 f'clearance = {C}\nviscosity = {MU}\njournal_collar = true\n')
 nl_model += base[base.index("[[unbalance]]"):]
 data, rust_wall_nl = rust_run(nl_model, 0.5, ["--no-settle"])
 
