@@ -159,13 +159,15 @@ impl SchurSolve {
 /// quadratically, so an increment just above the tolerance leaves an iterate
 /// whose error is of the order of the next increment, `ρ δ_k` (round-off on the
 /// three-guide-bearing unit: the third increment it saves is 1e-16 of the
-/// journal motion). `previous`: `δ_{k−1}`, infinite at the first iteration.
+/// journal motion). `previous`: `δ_{k−1}`, infinite at the first iteration,
+/// where there is no contraction to judge by.
 fn converged(increment: f64, previous: f64, tol: f64, damped: bool) -> bool {
     if increment <= tol {
         return true;
     }
     let contraction = increment / previous;
     !damped
+        && previous.is_finite()
         && increment <= 10.0 * tol
         && contraction < 1.0
         && contraction / (1.0 - contraction) * increment <= tol
@@ -481,5 +483,31 @@ impl Simulator {
             residual = self.residual_with_bearings(t1, speed1, &mut scale)?;
         }
         Ok(Some(last))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::converged;
+
+    /// Within the tolerance always; just above it only on evidence of fast
+    /// contraction, never at the first iteration, never damped, never when
+    /// the iterations contract slowly (a double root halves its error).
+    #[test]
+    fn an_increment_just_above_the_tolerance_needs_a_fast_contraction() {
+        let tol = 1e-8;
+        assert!(converged(0.9e-8, f64::INFINITY, tol, false));
+        assert!(converged(0.9e-8, 1e-9, tol, true));
+        // The three-guide unit's second iterations: 1.3e-8 after 9e-5.
+        assert!(converged(1.3e-8, 9e-5, tol, false));
+        assert!(!converged(1.3e-8, 9e-5, tol, true));
+        assert!(!converged(1.3e-8, f64::INFINITY, tol, false));
+        // ρ = 0.5: what is left is as large as the increment.
+        assert!(!converged(1.3e-8, 2.6e-8, tol, false));
+        // Ten times the tolerance is the limit whatever the contraction.
+        assert!(converged(9e-8, 1.0, tol, false));
+        assert!(!converged(1.1e-7, 1.0, tol, false));
+        // Growing increments are not converging.
+        assert!(!converged(2e-8, 1e-8, tol, false));
     }
 }
