@@ -475,6 +475,16 @@ mod tests {
         sum * 0.5 * h
     }
 
+    /// Uniform numbers in [0, 1) from a 64-bit LCG seeded with `seed`.
+    fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
+        move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        }
+    }
+
     #[test]
     fn film_integrals_match_quadrature() {
         let cases = [
@@ -534,13 +544,7 @@ mod tests {
             };
             (Jet3::constant(span) + (end(end2) - end(end1)) * 2.0) / root
         };
-        let mut seed = 7u64;
-        let mut rand = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rand = uniform(7);
         for _ in 0..20_000 {
             let (eps, angle) = (0.995 * rand().sqrt(), 2.0 * std::f64::consts::PI * rand());
             let (x, y) = (eps * angle.cos(), eps * angle.sin());
@@ -562,13 +566,7 @@ mod tests {
     /// of every length and place, and the centre.
     #[test]
     fn the_degree_two_potential_is_the_head_of_the_degree_three_one() {
-        let mut seed = 11u64;
-        let mut rand = || {
-            seed = seed
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut rand = uniform(11);
         let mut cases: Vec<(f64, f64, f64, f64)> = (0..20_000)
             .map(|_| {
                 let (eps, angle) = (0.995 * rand().sqrt(), 2.0 * std::f64::consts::PI * rand());

@@ -583,7 +583,6 @@ mod tests {
             contact: None,
         };
         let (mut full, mut single) = (BearingEval::new(2), BearingEval::new(2));
-        let mut cases = 0;
         for speed in [0.0, 40.0, 314.0, -150.0] {
             for eps in [0.0, 0.3, 0.9, 0.99, 1.02] {
                 for angle in [-100.0f64, 10.0, 135.0] {
@@ -596,12 +595,10 @@ mod tests {
                         let got = b.output(&q, &qd, speed, &mut single).unwrap();
                         assert_eq!(single.force, full.force);
                         assert_eq!(got, report);
-                        cases += 1;
                     }
                 }
             }
         }
-        assert_eq!(cases, 180);
     }
 
     /// The film is continuous through the start of its saturation and finite at

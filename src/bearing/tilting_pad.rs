@@ -205,8 +205,13 @@ impl TiltingPadBearing {
     /// pad's arc (for arcs under π: `p_e` between the ends' directions by the
     /// signs of two cross products), else at the nearer edge.
     pub fn pad_min_film_thickness(&self, k: usize, q: &[f64]) -> f64 {
+        self.min_film_at(k, self.pad_position(k, q[0], q[1], q[2 + k]))
+    }
+
+    /// [`TiltingPadBearing::pad_min_film_thickness`] at the effective journal
+    /// position `p` of pad `k`.
+    fn min_film_at(&self, k: usize, p: Vector2<f64>) -> f64 {
         let pad = &self.pads[k];
-        let p = self.pad_position(k, q[0], q[1], q[2 + k]);
         let window = &pad.window;
         let lead = Vector2::new(window.from_sc.1, window.from_sc.0);
         let trail = Vector2::new(window.to_sc.1, window.to_sc.0);
@@ -426,7 +431,7 @@ impl Bearing for TiltingPadBearing {
             let film_torque = film.friction_torque(&state, speed, Some(&pad.window));
             let contact = self.pad_contact(&law, k, &state, speed);
             tally.add(&law, film_torque, contact.as_ref(), speed);
-            tally.min_film = tally.min_film.min(self.pad_min_film_thickness(k, q));
+            tally.min_film = tally.min_film.min(self.min_film_at(k, state.position));
         }
         self.tally_report(q, eval, &tally)
     }
@@ -464,7 +469,7 @@ impl Bearing for TiltingPadBearing {
                 None => film.friction_torque(&state, speed, Some(&pad.window)),
             };
             tally.add(&law, film_torque, contact.as_ref(), speed);
-            tally.min_film = tally.min_film.min(self.pad_min_film_thickness(k, q));
+            tally.min_film = tally.min_film.min(self.min_film_at(k, state.position));
         }
         Ok(self.tally_report(q, out, &tally))
     }
