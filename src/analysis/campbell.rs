@@ -37,6 +37,7 @@ pub fn speed_grid(rotor: &Rotor, top: f64, steps: usize) -> Vec<f64> {
 use super::critical_refine::{Bracket, Known, refine};
 use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis_at};
 use super::mode_tracking::{link, translations};
+use super::parallel::map_in_order;
 use super::unbalance::{OperatingRange, SeparationMargin, separation_margin};
 
 type Complex64 = Complex<f64>;
@@ -160,7 +161,7 @@ pub fn campbell(
     speeds: &[f64],
     options: &ModalOptions,
 ) -> Result<Vec<CampbellPoint>, ModalError> {
-    Ok(sweep(rotor, speeds, options, None)?.0)
+    Ok(sweep(rotor, speeds, options, None, 0)?.0)
 }
 
 /// [`campbell`], and with `harmonic` the brackets of its crossings of
@@ -171,15 +172,19 @@ fn sweep(
     speeds: &[f64],
     options: &ModalOptions,
     harmonic: Option<f64>,
+    threads: usize,
 ) -> Result<(Vec<CampbellPoint>, Vec<Bracket>), ModalError> {
+    let solves = map_in_order(speeds, threads, |&speed| {
+        modal_analysis_at(rotor, speed, options)
+    });
     let mut diagram = Vec::with_capacity(speeds.len());
     let mut brackets = Vec::new();
     let mut previous: Vec<(usize, Vec<Complex64>)> = Vec::new();
     // The last mode seen of every branch (with `harmonic` only).
     let mut last: Vec<Option<Known>> = Vec::new();
     let mut branches = 0;
-    for &speed in speeds {
-        let result = modal_analysis_at(rotor, speed, options)?;
+    for (&speed, result) in speeds.iter().zip(solves) {
+        let result = result?;
         let shapes: Vec<Vec<Complex64>> = result
             .modes
             .iter()
@@ -292,7 +297,7 @@ pub fn critical_speeds(
             });
         }
     }
-    refined(rotor, diagram, &brackets, harmonic, options)
+    refined(rotor, diagram, &brackets, harmonic, options, 0)
 }
 
 /// The critical speeds of `brackets`, by speed.
@@ -302,11 +307,13 @@ fn refined(
     brackets: &[Bracket],
     harmonic: f64,
     options: &ModalOptions,
+    threads: usize,
 ) -> Result<Vec<CriticalSpeed>, ModalError> {
-    let mut found = brackets
-        .iter()
-        .map(|bracket| refine(rotor, diagram, bracket, harmonic, options))
-        .collect::<Result<Vec<_>, _>>()?;
+    let mut found = map_in_order(brackets, threads, |bracket| {
+        refine(rotor, diagram, bracket, harmonic, options)
+    })
+    .into_iter()
+    .collect::<Result<Vec<_>, _>>()?;
     found.sort_by(|a, b| a.speed.total_cmp(&b.speed));
     Ok(found)
 }
@@ -324,6 +331,9 @@ pub struct CampbellRequest {
     pub modes: usize,
     /// Operating range of the separation margins.
     pub operating: Option<OperatingRange>,
+    /// Threads the speeds and the critical-speed refinements are spread over
+    /// (`0`: every core; the results are the same bit for bit).
+    pub threads: usize,
 }
 
 impl CampbellRequest {
@@ -335,6 +345,7 @@ impl CampbellRequest {
             steps: 40,
             modes: 8,
             operating,
+            threads: 0,
         }
     }
 }
@@ -396,9 +407,9 @@ pub fn campbell_study(
     };
     let clock = std::time::Instant::now();
     let grid = speed_grid(rotor, top, request.steps);
-    let (diagram, brackets) = sweep(rotor, &grid, &options, Some(1.0))?;
+    let (diagram, brackets) = sweep(rotor, &grid, &options, Some(1.0), request.threads)?;
     let diagram_seconds = clock.elapsed().as_secs_f64();
-    let criticals = refined(rotor, &diagram, &brackets, 1.0, &options)?;
+    let criticals = refined(rotor, &diagram, &brackets, 1.0, &options, request.threads)?;
     let model = &rotor.model;
     let max_speed = model.max_speed_stated.then_some(model.max_speed);
     let margins = critical_margins(&criticals, request.operating.as_ref(), max_speed);

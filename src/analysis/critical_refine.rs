@@ -243,6 +243,7 @@ mod tests {
             steps: 20,
             modes: 8,
             operating: None,
+            threads: 0,
         };
         let study = campbell_study(&rotor, &request).unwrap();
         assert!(study.criticals.len() >= 4, "{:?}", study.criticals);

@@ -12,6 +12,7 @@ pub mod modal;
 pub mod mode_tracking;
 pub mod operating_point;
 pub mod orbit;
+pub mod parallel;
 mod polish;
 pub mod shapes;
 pub mod spectrum;

@@ -183,6 +183,9 @@ enum Command {
         /// Draw the diagram to this PNG file.
         #[arg(long)]
         png: Option<PathBuf>,
+        /// Threads the speeds are solved on (0: every core; the results are the same).
+        #[arg(long, default_value_t = 0)]
+        threads: usize,
     },
     /// Time simulation (Newmark + Newton–Raphson) with nonlinear bearings: CSV of
     /// bearing and probe outputs, orbit and full-spectrum plots.
@@ -484,6 +487,7 @@ fn run(cli: Cli) -> Result<(), String> {
             operating_rpm,
             csv,
             png,
+            threads,
         } => modal::campbell_diagram(
             &load(&model)?,
             modal::CampbellRequest {
@@ -493,6 +497,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 operating_rpm,
                 csv,
                 png,
+                threads,
             },
         ),
         Command::Coefficients {

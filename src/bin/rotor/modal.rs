@@ -74,6 +74,7 @@ pub struct CampbellRequest {
     pub operating_rpm: Option<String>,
     pub csv: Option<PathBuf>,
     pub png: Option<PathBuf>,
+    pub threads: usize,
 }
 
 /// The operating range of `--operating-rpm`, else the model's `speed_rpm`.
@@ -98,6 +99,7 @@ pub fn campbell_diagram(rotor: &Rotor, req: CampbellRequest) -> Result<(), Strin
         steps: req.steps,
         modes: req.modes,
         operating: operating_range(rotor, req.operating_rpm.as_deref())?,
+        threads: req.threads,
     };
     let study = campbell_study(rotor, &request).map_err(|e| e.to_string())?;
     let seconds = study.diagram_seconds;
