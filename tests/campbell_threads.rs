@@ -1,0 +1,77 @@
+//! The Campbell study spread over threads and on coarse speed grids:
+//! the same study bit for bit on 1, 2 and 3 threads (each speed and each
+//! critical-speed refinement is the same computation whichever thread takes
+//! it), and the critical speeds of an 8-step grid (brackets of 2500 rpm, the
+//! refinement starting far from each root) equal to those of the 40-step
+//! grid to the refinement's 1e-8.
+
+use rotor_bearing::analysis::campbell::{CampbellRequest, CampbellStudy, campbell_study};
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
+use std::path::PathBuf;
+
+fn model(name: &str) -> Rotor {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("models")
+        .join(name);
+    Rotor::new(RotorModel::from_file(&path).unwrap()).unwrap()
+}
+
+/// The study up to `max_rpm` (the model's default top speed when `None`).
+fn study(rotor: &Rotor, max_rpm: Option<f64>, steps: usize, threads: usize) -> CampbellStudy {
+    let request = CampbellRequest {
+        max: max_rpm.map(|r| r * std::f64::consts::PI / 30.0),
+        steps,
+        threads,
+        ..CampbellRequest::default_for(None)
+    };
+    let mut s = campbell_study(rotor, &request).unwrap();
+    s.diagram_seconds = 0.0;
+    s
+}
+
+#[test]
+fn the_study_is_the_same_bit_for_bit_on_any_number_of_threads() {
+    for (rotor, top) in [
+        (
+            Rotor::new(RotorModel::default_model()).unwrap(),
+            Some(20_000.0),
+        ),
+        (model("hydro_unit.toml"), None),
+    ] {
+        let serial = study(&rotor, top, 40, 1);
+        assert!(!serial.criticals.is_empty(), "{:?}", serial.criticals);
+        for threads in [2, 3] {
+            assert_eq!(study(&rotor, top, 40, threads), serial, "{threads} threads");
+        }
+    }
+}
+
+#[test]
+fn a_coarse_grid_finds_the_critical_speeds_of_the_fine_grid() {
+    let rotor = Rotor::new(RotorModel::default_model()).unwrap();
+    let fine = study(&rotor, Some(20_000.0), 40, 0).criticals;
+    let coarse = study(&rotor, Some(20_000.0), 8, 0).criticals;
+    assert!(fine.len() >= 4, "{fine:?}");
+    assert_eq!(coarse.len(), fine.len(), "{coarse:?}");
+    for c in &coarse {
+        let f = fine
+            .iter()
+            .filter(|f| f.whirl == c.whirl)
+            .min_by(|a, b| {
+                (a.speed - c.speed)
+                    .abs()
+                    .total_cmp(&(b.speed - c.speed).abs())
+            })
+            .unwrap();
+        assert!(
+            (f.speed - c.speed).abs() <= 1e-7 * f.speed,
+            "coarse {} rad/s against fine {} rad/s",
+            c.speed,
+            f.speed
+        );
+        assert!(
+            (f.damping_ratio - c.damping_ratio).abs() <= 1e-6 * f.damping_ratio.abs().max(1e-9)
+        );
+    }
+}
