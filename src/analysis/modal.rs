@@ -22,7 +22,7 @@ use nalgebra::Complex;
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::{
     ArnoldiOptions, BandLu, BandMatrix, EigenPair, LinalgError, Scalar, largest_eigenpairs,
-    largest_eigenpairs_real, map_to_complex, nearest_eigenpair_real,
+    largest_eigenpairs_real, map_to_complex,
 };
 use crate::rotor::Rotor;
 
@@ -331,67 +331,21 @@ impl ShiftInvert {
     }
 }
 
-/// Largest Krylov basis of [`mode_near`]. From a neighbouring speed's vector
-/// the mode converged within 40 vectors in every call measured (the shipped
-/// models' default diagrams, the 480-element benchmark rotor at 1 to 19
-/// speed steps); a start farther from it fails at this size and the caller's
-/// whole eigen-solve takes over, instead of a basis grown to 600 with a dense
-/// Schur form every 8 vectors (56 s for one such call at 480 elements).
-const NEAR_KRYLOV: usize = 64;
-
-/// The mode of a linear `rotor` at `speed` (rad/s) whose eigenvalue is
-/// nearest `guess` (`Im > 0`) among those the vector `seed` (free DOFs; a
-/// neighbouring speed's mode) holds: Arnoldi on the real shift-inverted
-/// operator of [`modal_analysis`] started from `[seed; guess·seed]`
-/// ([`nearest_eigenpair_real`]), polished as its modes are; with the
-/// first-order vector's top half (`x`).
+/// The mode of a linear `rotor` at `speed` (rad/s) that nonlinear inverse
+/// iteration on the quadratic problem reaches from `guess` (`Im > 0`) and
+/// `seed` (free DOFs; a neighbouring speed's mode), with its vector `x`
+/// ([`Polisher::followed`]: one to three complex factorizations from a
+/// neighbouring speed of the 480-element benchmark rotor); `None` when the
+/// iteration does not converge.
 pub(crate) fn mode_near(
     rotor: &Rotor,
     speed: f64,
     guess: C64,
     seed: &[C64],
-) -> Result<(Mode, Vec<C64>), LinalgError> {
-    let n = rotor.dof_count();
+) -> Option<(Mode, Vec<C64>)> {
     let d = damping_at_speed(rotor, speed);
-    let step = 1e-3 * frequency_scale(rotor);
-    let solver = match ShiftInvert::real(rotor, &d, 0.0) {
-        Err(LinalgError::Singular { .. }) => ShiftInvert::real(rotor, &d, -step),
-        other => other,
-    }?;
-    let ShiftInvert::Real {
-        sigma,
-        factor,
-        mass,
-        d_sigma,
-    } = &solver
-    else {
-        unreachable!("ShiftInvert::real builds the real operator")
-    };
-    let sigma = *sigma;
-    let (mut rhs, mut tmp) = (vec![0.0; n], vec![0.0; n]);
-    let mut apply = |z: &[f64], out: &mut [f64]| -> Result<(), LinalgError> {
-        shift_invert_apply(sigma, factor, mass, d_sigma, z, out, &mut rhs, &mut tmp);
-        Ok(())
-    };
-    let start: Vec<C64> = seed
-        .iter()
-        .copied()
-        .chain(seed.iter().map(|x| guess * x))
-        .collect();
-    let arnoldi = ArnoldiOptions {
-        tol: ARNOLDI_TOL,
-        max_krylov: NEAR_KRYLOV,
-        start: Some(start),
-        ..ArnoldiOptions::default()
-    };
-    // The real path finds the member `Im λ ≤ 0` of the pair (as in
-    // `ShiftInvert::eigenpairs`).
-    let target = C64::new(1.0, 0.0) / (guess.conj() - sigma);
-    let pair = nearest_eigenpair_real(2 * n, target, &mut apply, &arnoldi)?;
-    let lambda = (sigma + C64::new(1.0, 0.0) / pair.value).conj();
-    let x: Vec<C64> = pair.vector[..n].iter().map(|z| z.conj()).collect();
-    let lambda = Polisher::new(rotor, &d).polished(lambda, &x);
-    Ok((make_mode(rotor, &d, speed, lambda, &x), x))
+    let (lambda, x) = Polisher::new(rotor, &d).followed(guess, seed)?;
+    Some((make_mode(rotor, &d, speed, lambda, &x), x))
 }
 
 /// The lowest (or nearest-target) oscillating modes of `rotor` at spin speed

@@ -1,5 +1,6 @@
-//! Polishing of complex modes on the quadratic eigenproblem (see
-//! [`Polisher`]), used by [`super::modal`].
+//! Polishing of complex modes on the quadratic eigenproblem, and following
+//! a mode from a neighbouring speed's (see [`Polisher`]), used by
+//! [`super::modal`].
 
 use nalgebra::Complex;
 
@@ -42,6 +43,10 @@ pub(crate) struct Polisher<'a> {
     /// Real and imaginary parts of `x`, and `K x`, `D x`, `M x` by parts.
     parts: [Vec<f64>; 8],
 }
+
+/// Steps of nonlinear inverse iteration [`Polisher::followed`] takes at
+/// most.
+const FOLLOW_STEPS: usize = 8;
 
 /// `Σ āᵢ bᵢ`.
 fn dot(a: &[C64], b: &[C64]) -> C64 {
@@ -98,6 +103,49 @@ impl<'a> Polisher<'a> {
                     + at2 * C64::new(mr[k], mi[k]);
             }
         }
+    }
+
+    /// The eigenpair `(λ, x)` that nonlinear inverse iteration reaches from
+    /// `guess` and `seed` (a neighbouring speed's eigenvalue interpolated
+    /// and its vector): each step factors `Q(λ_k)` and takes
+    /// `u = Q(λ_k)⁻¹ Q'(λ_k) x_k`, `λ_{k+1} = λ_k − cᴴx_k / cᴴu`,
+    /// `x_{k+1} = u / cᴴu` with `c = seed` (Ruhe, as in [`Polisher`]),
+    /// quadratically convergent in both. It stops after the step that moves
+    /// `λ` by at most 1e-8 of it (the next would move it by about the square
+    /// of that, below what the quadratic problem determines), or after the
+    /// step from 1e-10 away when `Q(λ_k)` is singular to working precision;
+    /// `None` after [`FOLLOW_STEPS`] steps, or when a step breaks down.
+    /// `x` is scaled to `cᴴx = 1`.
+    pub(crate) fn followed(&mut self, guess: C64, seed: &[C64]) -> Option<(C64, Vec<C64>)> {
+        let usable = |z: C64| z.norm() > 0.0 && z.re.is_finite() && z.im.is_finite();
+        let (mut lambda, mut x) = (guess, seed.to_vec());
+        let mut u = vec![C64::new(0.0, 0.0); seed.len()];
+        for _ in 0..FOLLOW_STEPS {
+            let offset = C64::new(POLISH_OFFSET * lambda.norm(), 0.0);
+            let exact = !self.factored(lambda);
+            let at = if exact { lambda + offset } else { lambda };
+            if exact && !self.factored(at) {
+                return Some((lambda, x));
+            }
+            self.apply(at, &x, &mut u, None);
+            self.lu.solve_in_place(&mut u);
+            let cu = dot(seed, &u);
+            if !usable(cu) {
+                return None;
+            }
+            let step = dot(seed, &x) / cu;
+            lambda = at - step;
+            for (xi, ui) in x.iter_mut().zip(&u) {
+                *xi = ui / cu;
+            }
+            if !(lambda.re.is_finite() && lambda.im.is_finite()) {
+                return None;
+            }
+            if exact || step.norm() <= 1e-8 * lambda.norm() {
+                return Some((lambda, x));
+            }
+        }
+        None
     }
 
     /// `λ` polished with the Arnoldi vector `x` (see [`Polisher`]).
@@ -172,5 +220,35 @@ mod tests {
             }
         }
         assert!(worst <= 1e-12, "{worst:e}");
+    }
+
+    /// Each of the six lowest modes of the classic rotor at 4000 rpm,
+    /// followed to 4400 rpm from its own eigenvalue and vector, lands on the
+    /// whole eigen-solve's mode of the same rank there to 1e-12 (both
+    /// whirls, pairs 0.05 % apart, the step moving them by up to 0.6 %).
+    #[test]
+    fn a_mode_followed_from_a_neighbouring_speed_is_the_whole_solves() {
+        let rotor = Rotor::new(RotorModel::default_model()).unwrap();
+        let rpm = |r: f64| r * std::f64::consts::PI / 30.0;
+        let options = ModalOptions {
+            modes: 6,
+            ..ModalOptions::default()
+        };
+        let before = modes(&rotor, rpm(4000.0), &options).unwrap();
+        let after = modes(&rotor, rpm(4400.0), &options).unwrap();
+        let d = damping_at_speed(&rotor, rpm(4400.0));
+        let mut polisher = Polisher::new(&rotor, &d);
+        for (rank, m) in before.iter().enumerate() {
+            let seed: Vec<C64> = (0..rotor.dof_count())
+                .map(|i| m.shape[rotor.dofs.full(i)])
+                .collect();
+            let (lambda, _) = polisher.followed(m.eigenvalue, &seed).unwrap();
+            let target = after[rank].eigenvalue;
+            assert!(
+                ((lambda - target) / target).norm() <= 1e-12,
+                "{lambda} vs {target}"
+            );
+            assert!(((lambda - m.eigenvalue) / m.eigenvalue).norm() > 1e-5);
+        }
     }
 }

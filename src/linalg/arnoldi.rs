@@ -158,72 +158,6 @@ pub fn largest_eigenpairs_real(
     finish(ritz, vectors, tol, None)
 }
 
-/// The eigenpair of a real operator whose eigenvalue is nearest `target`
-/// among those the start vector holds: a real Krylov basis grown from the
-/// real part of `opts.start` (checked every 8 steps up to `opts.max_krylov`,
-/// no restart) until the Ritz pair nearest `target` among those with a
-/// component of at least [`START_SHARE`] along the start vector has a Ritz
-/// estimate within `opts.tol` of its modulus. For an eigenvector known
-/// approximately (a neighbouring parameter's): the few dominant eigenvalues
-/// its error excites are resolved on the way, the wanted one converges from
-/// the start. Returns the member with non-negative imaginary part as
-/// [`largest_eigenpairs_real`] does when `target` has one.
-pub fn nearest_eigenpair_real(
-    n: usize,
-    target: C,
-    apply: &mut RealOperator<'_>,
-    opts: &ArnoldiOptions,
-) -> Result<EigenPair, LinalgError> {
-    check_arguments(n, 1, opts)?;
-    let mut start: Vec<f64> = match &opts.start {
-        Some(s) => checked_start(s, n)?.iter().map(|z| z.re).collect(),
-        None => Vec::new(),
-    };
-    let mut rng = Lcg::new();
-    if norm(&start) == 0.0 {
-        start.resize(n, 0.0);
-        rng.fill(&mut start);
-    }
-    let cap = n.min(opts.max_krylov);
-    let s = norm(&start);
-    let mut basis: Vec<f64> = start.iter().map(|&x| x / s).collect();
-    let mut h = DMatrix::from_element(0, 0, 0.0);
-    let mut w = vec![0.0; n];
-    let (mut from, mut beta, mut size) = (0, 0.0, cap.min(8));
-    loop {
-        let k;
-        (k, beta) = build_krylov(
-            size, from, beta, apply, &mut basis, &mut h, &mut w, &mut rng,
-        )?;
-        let ritz = wanted_ritz(&h.view((0, 0), (k, k)).map(|x| C::new(x, 0.0)), beta, k)?;
-        let best = ritz
-            .into_iter()
-            .filter(|r| r.y[0].norm() >= START_SHARE)
-            .min_by(|a, b| {
-                (a.value - target)
-                    .norm()
-                    .total_cmp(&(b.value - target).norm())
-            });
-        if let Some(r) = best.filter(|r| r.estimate <= opts.tol * r.value.norm()) {
-            let u = combine(&basis, n, k, &r.y);
-            let mut pair = finish(vec![r], vec![u], opts.tol, None)?;
-            return Ok(pair.remove(0));
-        }
-        if k < size || size == cap {
-            return Err(LinalgError::NotConverged {
-                converged: 0,
-                wanted: 1,
-            });
-        }
-        (from, size) = (size, (size + 8).min(cap));
-    }
-}
-
-/// Smallest component along the start vector of the Ritz vector
-/// [`nearest_eigenpair_real`] returns: a start vector near one eigenvector of
-/// a conjugate pair has about `1/√2` along each, other eigenvectors little.
-pub const START_SHARE: f64 = 0.3;
-
 /// Checks the arguments shared by both entry points (`nev > 0`).
 fn check_arguments(n: usize, nev: usize, opts: &ArnoldiOptions) -> Result<(), LinalgError> {
     if nev > n {
@@ -1206,39 +1140,6 @@ mod tests {
     /// From a start vector near one eigenvector (the 12th largest of 2000),
     /// the Ritz pair nearest the target converges to it, not to the dominant
     /// ones; a target between two eigenvalues gets the one the start holds.
-    #[test]
-    fn nearest_eigenpair_from_an_approximate_eigenvector() {
-        let n = 2000;
-        let d: Vec<f64> = (0..n).map(|k| 1.0 / (k as f64 + 1.0)).collect();
-        let mut apply = |x: &[f64], y: &mut [f64]| {
-            for ((yi, xi), di) in y.iter_mut().zip(x).zip(&d) {
-                *yi = xi * di;
-            }
-            Ok(())
-        };
-        let mut start = vec![ZERO; n];
-        let mut rng = Lcg(3);
-        for z in &mut start {
-            *z = c(1e-3 * rng.uniform(), 0.0);
-        }
-        start[11] = c(1.0, 0.0);
-        let opts = ArnoldiOptions {
-            tol: 1e-13,
-            start: Some(start),
-            ..ArnoldiOptions::default()
-        };
-        // Halfway to the 11th: still the 12th, the one the start holds.
-        let target = c(0.5 * (d[11] + d[10]) - 1e-6, 0.0);
-        let p = nearest_eigenpair_real(n, target, &mut apply, &opts).expect("converged");
-        assert!(
-            (p.value - c(d[11], 0.0)).norm() < 1e-13 * d[11],
-            "{}",
-            p.value
-        );
-        assert!(p.vector[11].norm() > 1.0 - 1e-10);
-        assert!(p.residual <= 1e-13);
-    }
-
     #[test]
     fn reproducible() {
         let a = random_dense(40, 9);

@@ -16,7 +16,7 @@ pub mod subspace;
 
 pub use arnoldi::{
     ArnoldiOptions, EigenPair, LinearOperator, RealOperator, largest_eigenpairs,
-    largest_eigenpairs_real, nearest_eigenpair_real,
+    largest_eigenpairs_real,
 };
 pub use band::{BandLu, BandMatrix, Scalar, map_to_complex};
 pub use sturm::eigenvalues_below;
