@@ -600,6 +600,35 @@ fn simulate_refuses_a_ratio_for_a_run_under_twenty_revolutions() {
 }
 
 #[test]
+fn campbell_refines_a_grid_too_coarse_to_follow_the_modes() {
+    // One step from 0 to 20 000 rpm follows the second forward mode onto the
+    // second backward mode's branch: its 4705.44 rpm found twice, the backward
+    // 4165.40 rpm missed. The study doubles the steps to 8 and says so.
+    let out = rotor()
+        .args(["campbell", "--max-rpm", "20000", "--steps", "1"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout.contains(
+            "speed grid of classic_disk_rotor: 0.00 to 20000.00 rpm in 8 steps (top speed: --max-rpm)\n  (refined from the 1 step asked for: a critical speed appeared on two branches, a mode not followed across a step)"
+        ),
+        "{stdout}"
+    );
+    assert_eq!(stdout.matches("4705.44 rpm (").count(), 1, "{stdout}");
+    assert!(
+        stdout.contains("4165.40 rpm (  436.200 rad/s)  branch 4  backward whirl"),
+        "{stdout}"
+    );
+    assert!(!stdout.contains("warning"), "{stdout}");
+}
+
+#[test]
 fn campbell_lists_overdamped_crossings_apart_from_critical_speeds() {
     // The Jeffcott rotor's rigid-body modes on the films cross the 1× line at
     // 419 rpm with ζ = 0.82: overdamped, no resonance peak.

@@ -373,6 +373,13 @@ pub struct CampbellStudy {
     /// tracked), without the critical speeds' refinement: what the
     /// benchmarks time.
     pub diagram_seconds: f64,
+    /// The speed steps asked for; the diagram has more (twice, four or eight
+    /// times as many) when a critical speed appeared on two branches with
+    /// the same whirl on the grid asked for (see [`campbell_study`]).
+    pub requested_steps: usize,
+    /// Critical speeds still found on two branches with the same whirl after
+    /// the grid was refined ([`repeated_criticals`]): `(speed, branch, branch)`.
+    pub repeated: Vec<(f64, usize, usize)>,
     /// The lowest torsional modes ([`torsional_modes`], as many as lateral
     /// ones were asked for) of a model that describes its torsion
     /// ([`RotorModel::models_torsion`](crate::model::RotorModel::models_torsion)),
@@ -405,11 +412,22 @@ pub fn campbell_study(
         modes: request.modes,
         ..ModalOptions::default()
     };
-    let clock = std::time::Instant::now();
-    let grid = speed_grid(rotor, top, request.steps);
-    let (diagram, brackets) = sweep(rotor, &grid, &options, Some(1.0), request.threads)?;
-    let diagram_seconds = clock.elapsed().as_secs_f64();
-    let criticals = refined(rotor, &diagram, &brackets, 1.0, &options, request.threads)?;
+    // A grid step across which a mode cannot be followed links it to another
+    // mode's branch: the other mode's critical speed is found twice (and the
+    // mode's own is missed). The grid is then refined.
+    let mut steps = request.steps;
+    let (diagram, diagram_seconds, criticals, repeated) = loop {
+        let clock = std::time::Instant::now();
+        let grid = speed_grid(rotor, top, steps);
+        let (diagram, brackets) = sweep(rotor, &grid, &options, Some(1.0), request.threads)?;
+        let diagram_seconds = clock.elapsed().as_secs_f64();
+        let criticals = refined(rotor, &diagram, &brackets, 1.0, &options, request.threads)?;
+        let repeated = repeated_criticals(&criticals);
+        if repeated.is_empty() || steps >= request.steps << MAX_GRID_DOUBLINGS {
+            break (diagram, diagram_seconds, criticals, repeated);
+        }
+        steps *= 2;
+    };
     let model = &rotor.model;
     let max_speed = model.max_speed_stated.then_some(model.max_speed);
     let margins = critical_margins(&criticals, request.operating.as_ref(), max_speed);
@@ -429,5 +447,62 @@ pub fn campbell_study(
         operating: request.operating,
         max_speed,
         diagram_seconds,
+        requested_steps: request.steps,
+        repeated,
     })
+}
+
+/// How many times [`campbell_study`] doubles the speed steps while a
+/// critical speed appears on two branches.
+pub const MAX_GRID_DOUBLINGS: u32 = 3;
+
+/// The critical speeds found on two branches with the same definite whirl
+/// (forward or backward) within 1e-6 relative, as `(speed, branch, branch)`:
+/// two modes of one whirl cross the 1× line at one speed only by accident,
+/// while a mode followed onto another's branch across a coarse grid step
+/// repeats that mode's crossing exactly. (Two modes of a rotor without
+/// gyroscopic coupling share a speed with opposite whirls, or are planar.)
+pub fn repeated_criticals(criticals: &[CriticalSpeed]) -> Vec<(f64, usize, usize)> {
+    let mut out = Vec::new();
+    for (i, a) in criticals.iter().enumerate() {
+        for b in &criticals[i + 1..] {
+            if a.whirl == b.whirl
+                && a.whirl != Whirl::Mixed
+                && (a.speed - b.speed).abs() <= 1e-6 * a.speed.abs().max(b.speed.abs())
+            {
+                out.push((a.speed, a.branch, b.branch));
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Only a definite whirl repeated at one speed (to 1e-6) counts:
+    /// opposite whirls, planar (mixed) modes and speeds 2e-6 apart do not.
+    #[test]
+    fn a_critical_speed_repeats_with_its_whirl() {
+        let c = |speed: f64, branch: usize, whirl: Whirl| CriticalSpeed {
+            speed,
+            harmonic: 1.0,
+            rank: branch,
+            branch,
+            whirl,
+            damping_ratio: 0.01,
+        };
+        let found = [
+            c(100.0, 0, Whirl::Forward),
+            c(100.0, 1, Whirl::Backward),
+            c(200.0, 2, Whirl::Mixed),
+            c(200.0, 3, Whirl::Mixed),
+            c(300.0, 4, Whirl::Forward),
+            c(300.0006, 5, Whirl::Forward),
+            c(492.753, 6, Whirl::Forward),
+            c(492.753 * (1.0 + 5e-7), 7, Whirl::Forward),
+        ];
+        assert_eq!(repeated_criticals(&found), vec![(492.753, 6, 7)]);
+    }
 }

@@ -36,6 +36,26 @@ pub fn campbell_study(rotor: &Rotor, study: &CampbellStudy) -> String {
             "; fluid-film bearings: from 1 % of the top speed"
         }
     );
+    let steps = study.diagram.len().saturating_sub(1);
+    if steps != study.requested_steps {
+        writeln!(
+            s,
+            "  (refined from the {} step{} asked for: a critical speed appeared on two branches, a mode not followed across a step)",
+            study.requested_steps,
+            if study.requested_steps == 1 { "" } else { "s" }
+        )
+        .ok();
+    }
+    for (speed, a, b) in &study.repeated {
+        writeln!(
+            s,
+            "warning: the critical speed {:.2} rpm appears on branches {} and {}: modes may be mistracked; use more --steps",
+            speed * RAD_S_TO_RPM,
+            a + 1,
+            b + 1
+        )
+        .ok();
+    }
     let line = |c: &CriticalSpeed| {
         format!(
             "  {:10.2} rpm ({:9.3} rad/s)  branch {}  {} whirl  ζ = {}\n",
@@ -295,4 +315,38 @@ pub fn critical_margins(
         .ok();
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::RotorModel;
+
+    /// A critical speed left on two branches after the grid's refinement is
+    /// printed as a warning with its speed (rpm) and branches (1-based).
+    #[test]
+    fn a_repeated_critical_speed_is_a_warning() {
+        let rotor = Rotor::new(RotorModel::default_model()).unwrap();
+        let study = CampbellStudy {
+            diagram: Vec::new(),
+            criticals: Vec::new(),
+            margins: Vec::new(),
+            top: 2000.0,
+            top_origin: None,
+            operating: None,
+            max_speed: None,
+            diagram_seconds: 0.0,
+            requested_steps: 0,
+            repeated: vec![(100.0, 2, 5)],
+            torsional: Vec::new(),
+        };
+        let text = campbell_study(&rotor, &study);
+        assert!(
+            text.contains(
+                "warning: the critical speed 954.93 rpm appears on branches 3 and 6: modes may be mistracked; use more --steps\n"
+            ),
+            "{text}"
+        );
+        assert!(!text.contains("refined from"), "{text}");
+    }
 }
