@@ -27,7 +27,7 @@ use std::process::Command;
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 
 use rotor_bearing::bearing::film::{FilmIntegrals, Jet3};
-use rotor_bearing::bearing::plain::film_position;
+use rotor_bearing::bearing::short_film::film_position;
 use rotor_bearing::bearing::tilting_pad::{Pad, TiltingPadBearing};
 use rotor_bearing::bearing::{Bearing, BearingEval};
 

@@ -44,6 +44,7 @@ pub mod linear;
 pub mod magnetic_pull;
 pub mod plain;
 pub mod rub;
+pub mod short_film;
 pub mod table;
 pub mod thrust;
 pub mod tilting_pad;

@@ -35,7 +35,8 @@ use nalgebra::Vector2;
 
 use super::BearingForce;
 use super::contact::{ContactExtent, ContactLaw, ContactReport};
-use super::plain::{FilmWindow, ShortFilm, attitude_angle, contact_friction_torque};
+use super::plain::{attitude_angle, contact_friction_torque};
+use super::short_film::{FilmWindow, ShortFilm};
 use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, check_state};
 
 /// Relative size of the pivot's restoring moment (see the module docs).
