@@ -34,7 +34,7 @@ pub fn speed_grid(rotor: &Rotor, top: f64, steps: usize) -> Vec<f64> {
         .collect()
 }
 
-use super::critical_refine::{Bracket, Known, refine};
+use super::critical_refine::{Bracket, Known, Refined, refine};
 use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis_at};
 use super::mode_tracking::{link, translations};
 use super::parallel::map_in_order;
@@ -262,9 +262,11 @@ pub fn branch(diagram: &[CampbellPoint], b: usize) -> Vec<(f64, ModeSummary)> {
 /// branch is present and refined by the secant/bisection (Illinois) method to
 /// `1e-8` relative, each iterate's mode the one that continues the branch's
 /// shape at the bracket's start, found from the nearest speed already
-/// evaluated by a short Krylov run (whole eigen-solves only where that mode's
+/// evaluated by nonlinear inverse iteration (whole eigen-solves only where that mode's
 /// shape does not continue the branch). The branch's modes at the bracket's
-/// ends are solved anew; [`campbell_study`] keeps them from the sweep.
+/// ends are solved anew; [`campbell_study`] keeps them from the sweep. A
+/// branch that jumps across the line inside a bracket (its modes not
+/// followed across a step of `diagram`) is an error.
 pub fn critical_speeds(
     rotor: &Rotor,
     diagram: &[CampbellPoint],
@@ -297,10 +299,22 @@ pub fn critical_speeds(
             });
         }
     }
-    refined(rotor, diagram, &brackets, harmonic, options, 0)
+    let (found, jumps) = refined(rotor, diagram, &brackets, harmonic, options, 0)?;
+    match jumps.first() {
+        None => Ok(found),
+        Some((speed, b)) => Err(ModalError::Options(format!(
+            "branch {} jumps across the {harmonic}× line at {speed} rad/s instead of crossing it: \
+             its modes were not followed across a speed step; use a finer diagram",
+            b + 1
+        ))),
+    }
 }
 
-/// The critical speeds of `brackets`, by speed.
+/// Where a branch jumps across the 1× line: `(speed, branch)`, speed in rad/s.
+type Jump = (f64, usize);
+
+/// The critical speeds of `brackets`, by speed, and the brackets where the
+/// branch jumps across the line instead.
 fn refined(
     rotor: &Rotor,
     diagram: &[CampbellPoint],
@@ -308,14 +322,19 @@ fn refined(
     harmonic: f64,
     options: &ModalOptions,
     threads: usize,
-) -> Result<Vec<CriticalSpeed>, ModalError> {
-    let mut found = map_in_order(brackets, threads, |bracket| {
+) -> Result<(Vec<CriticalSpeed>, Vec<Jump>), ModalError> {
+    let results = map_in_order(brackets, threads, |bracket| {
         refine(rotor, diagram, bracket, harmonic, options)
-    })
-    .into_iter()
-    .collect::<Result<Vec<_>, _>>()?;
+    });
+    let (mut found, mut jumps) = (Vec::new(), Vec::new());
+    for r in results {
+        match r? {
+            Refined::Root(c) => found.push(c),
+            Refined::Jump { speed, branch } => jumps.push((speed, branch)),
+        }
+    }
     found.sort_by(|a, b| a.speed.total_cmp(&b.speed));
-    Ok(found)
+    Ok((found, jumps))
 }
 
 /// What a Campbell study sweeps (speeds in rad/s).
@@ -380,6 +399,11 @@ pub struct CampbellStudy {
     /// Critical speeds still found on two branches with the same whirl after
     /// the grid was refined ([`repeated_criticals`]): `(speed, branch, branch)`.
     pub repeated: Vec<(f64, usize, usize)>,
+    /// Branches that jump across the 1× line instead of crossing it (the
+    /// followed mode changes inside a bracket: a mode linked to another's
+    /// branch across a step), still after the grid was refined:
+    /// `(speed, branch)`, the speed (rad/s) where the branch jumps.
+    pub jumps: Vec<(f64, usize)>,
     /// The lowest torsional modes ([`torsional_modes`], as many as lateral
     /// ones were asked for) of a model that describes its torsion
     /// ([`RotorModel::models_torsion`](crate::model::RotorModel::models_torsion)),
@@ -414,17 +438,20 @@ pub fn campbell_study(
     };
     // A grid step across which a mode cannot be followed links it to another
     // mode's branch: the other mode's critical speed is found twice (and the
-    // mode's own is missed). The grid is then refined.
+    // mode's own is missed), or the branch jumps across the 1× line. The
+    // grid is then refined.
     let mut steps = request.steps;
-    let (diagram, diagram_seconds, criticals, repeated) = loop {
+    let (diagram, diagram_seconds, criticals, repeated, jumps) = loop {
         let clock = std::time::Instant::now();
         let grid = speed_grid(rotor, top, steps);
         let (diagram, brackets) = sweep(rotor, &grid, &options, Some(1.0), request.threads)?;
         let diagram_seconds = clock.elapsed().as_secs_f64();
-        let criticals = refined(rotor, &diagram, &brackets, 1.0, &options, request.threads)?;
+        let (criticals, jumps) =
+            refined(rotor, &diagram, &brackets, 1.0, &options, request.threads)?;
         let repeated = repeated_criticals(&criticals);
-        if repeated.is_empty() || steps >= request.steps << MAX_GRID_DOUBLINGS {
-            break (diagram, diagram_seconds, criticals, repeated);
+        let tracked = repeated.is_empty() && jumps.is_empty();
+        if tracked || steps >= request.steps << MAX_GRID_DOUBLINGS {
+            break (diagram, diagram_seconds, criticals, repeated, jumps);
         }
         steps *= 2;
     };
@@ -449,6 +476,7 @@ pub fn campbell_study(
         diagram_seconds,
         requested_steps: request.steps,
         repeated,
+        jumps,
     })
 }
 

@@ -151,15 +151,34 @@ fn rank_between(diagram: &[CampbellPoint], b: usize, start: f64, end: f64) -> Op
     (a == z).then_some(a.len())
 }
 
+/// What the refinement of a bracket found.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Refined {
+    /// A crossing of the 1× line: a critical speed.
+    Root(CriticalSpeed),
+    /// No crossing: `g` jumps at `speed` (rad/s), where the followed mode
+    /// changes (the bracket's ends are two modes, linked across a step too
+    /// wide to follow one).
+    Jump { speed: f64, branch: usize },
+}
+
+/// Largest `|g(c)| / (|c| max(1, |s|))` at a root, `s` the slope of `g`
+/// across the bracket: the Illinois iterations stop within 1e-8 `|c|` of a
+/// root of a smooth `g`, where `|g|` is about `1e-8 |c| |g'|`; Illinois on a
+/// bracket where `g` jumps converges onto the jump, with `|g|` of the jump's
+/// size there.
+const JUMP_FRACTION: f64 = 1e-6;
+
 /// The critical speed of `bracket`: Illinois iterations on `g(Ω) = ω_b − hΩ`
-/// to `1e-8` relative, each iterate's mode followed from the known ones.
+/// to `1e-8` relative, each iterate's mode followed from the known ones; a
+/// [`Refined::Jump`] where they converge onto a jump of `g` instead.
 pub(crate) fn refine(
     rotor: &Rotor,
     diagram: &[CampbellPoint],
     bracket: &Bracket,
     harmonic: f64,
     options: &ModalOptions,
-) -> Result<CriticalSpeed, ModalError> {
+) -> Result<Refined, ModalError> {
     let b = bracket.branch;
     let mut known = vec![bracket.start.clone(), bracket.end.clone()];
     let branch_shape = bracket.start.shape.clone();
@@ -171,6 +190,10 @@ pub(crate) fn refine(
     };
     let (ga, gb) = (g(&bracket.start), g(&bracket.end));
     let (speed, (mode, rank)) = illinois(at, (bracket.start.speed, ga), (bracket.end.speed, gb))?;
+    let slope = (gb - ga) / (bracket.end.speed - bracket.start.speed);
+    if excess(&mode, speed, harmonic).abs() > JUMP_FRACTION * speed.abs() * slope.abs().max(1.0) {
+        return Ok(Refined::Jump { speed, branch: b });
+    }
     let rank =
         match rank.or_else(|| rank_between(diagram, b, bracket.start.speed, bracket.end.speed)) {
             Some(r) => r,
@@ -181,14 +204,14 @@ pub(crate) fn refine(
                 nearest(&modes, &branch_shape).map_or(0, |(k, _)| k)
             }
         };
-    Ok(CriticalSpeed {
+    Ok(Refined::Root(CriticalSpeed {
         speed,
         harmonic,
         rank,
         branch: b,
         whirl: mode.whirl,
         damping_ratio: mode.damping_ratio,
-    })
+    }))
 }
 
 /// Illinois regula falsi on a bracket `(a, f(a))`, `(b, f(b))` with a sign
@@ -285,6 +308,51 @@ mod tests {
         }
         assert_eq!(iterates[0].1, iterates[1].1);
         assert!((iterates[0].0 - iterates[1].0).abs() <= 1e-15 * iterates[0].0);
+    }
+
+    /// A bracket whose ends are two modes (the lowest at 1500 rpm, the third
+    /// at 1600 rpm: `g` changes sign only because the mode does) is a jump,
+    /// not a critical speed; the forward mode's true crossing at 1111.46 rpm,
+    /// bracketed on the same rotor, is a root.
+    #[test]
+    fn a_bracket_across_two_modes_is_a_jump() {
+        let rotor = Rotor::new(RotorModel::default_model()).unwrap();
+        let options = ModalOptions {
+            modes: 8,
+            ..ModalOptions::default()
+        };
+        let rpm = |r: f64| r * std::f64::consts::PI / 30.0;
+        let known = |speed: f64, rank: usize| {
+            let modes = modal_analysis_at(&rotor, speed, &options).unwrap().modes;
+            Known::of(&rotor, speed, &modes[rank])
+        };
+        let jump = Bracket {
+            branch: 0,
+            start: known(rpm(1500.0), 0),
+            end: known(rpm(1600.0), 2),
+        };
+        match refine(&rotor, &[], &jump, 1.0, &options).unwrap() {
+            Refined::Jump { speed, branch } => {
+                assert_eq!(branch, 0);
+                assert!(speed >= rpm(1500.0) && speed <= rpm(1600.0), "{speed}");
+            }
+            other => panic!("{other:?}"),
+        }
+        let root = Bracket {
+            branch: 1,
+            start: known(rpm(1000.0), 1),
+            end: known(rpm(1200.0), 1),
+        };
+        match refine(&rotor, &[], &root, 1.0, &options).unwrap() {
+            Refined::Root(c) => {
+                assert!(
+                    (c.speed * 30.0 / std::f64::consts::PI - 1111.46).abs() < 0.005,
+                    "{c:?}"
+                );
+                assert_eq!(c.whirl, crate::analysis::modal::Whirl::Forward);
+            }
+            other => panic!("{other:?}"),
+        }
     }
 
     /// Every refined critical speed of the classic rotor (8 modes up to

@@ -40,9 +40,18 @@ pub fn campbell_study(rotor: &Rotor, study: &CampbellStudy) -> String {
     if steps != study.requested_steps {
         writeln!(
             s,
-            "  (refined from the {} step{} asked for: a critical speed appeared on two branches, a mode not followed across a step)",
+            "  (refined from the {} step{} asked for: a mode was not followed across a step)",
             study.requested_steps,
             if study.requested_steps == 1 { "" } else { "s" }
+        )
+        .ok();
+    }
+    for (speed, b) in &study.jumps {
+        writeln!(
+            s,
+            "warning: branch {} jumps across the 1× line at {:.2} rpm instead of crossing it: modes may be mistracked; use more --steps",
+            b + 1,
+            speed * RAD_S_TO_RPM
         )
         .ok();
     }
@@ -322,8 +331,9 @@ mod tests {
     use super::*;
     use crate::model::RotorModel;
 
-    /// A critical speed left on two branches after the grid's refinement is
-    /// printed as a warning with its speed (rpm) and branches (1-based).
+    /// A critical speed left on two branches after the grid's refinement, and
+    /// a branch that jumps across the 1× line, are printed as warnings with
+    /// their speeds (rpm) and branches (1-based).
     #[test]
     fn a_repeated_critical_speed_is_a_warning() {
         let rotor = Rotor::new(RotorModel::default_model()).unwrap();
@@ -338,12 +348,19 @@ mod tests {
             diagram_seconds: 0.0,
             requested_steps: 0,
             repeated: vec![(100.0, 2, 5)],
+            jumps: vec![(200.0, 4)],
             torsional: Vec::new(),
         };
         let text = campbell_study(&rotor, &study);
         assert!(
             text.contains(
                 "warning: the critical speed 954.93 rpm appears on branches 3 and 6: modes may be mistracked; use more --steps\n"
+            ),
+            "{text}"
+        );
+        assert!(
+            text.contains(
+                "warning: branch 5 jumps across the 1× line at 1909.86 rpm instead of crossing it: modes may be mistracked; use more --steps\n"
             ),
             "{text}"
         );
