@@ -265,8 +265,10 @@ pub fn branch(diagram: &[CampbellPoint], b: usize) -> Vec<(f64, ModeSummary)> {
 /// evaluated by nonlinear inverse iteration (whole eigen-solves only where that mode's
 /// shape does not continue the branch). The branch's modes at the bracket's
 /// ends are solved anew; [`campbell_study`] keeps them from the sweep. A
-/// branch that jumps across the line inside a bracket (its modes not
-/// followed across a step of `diagram`) is an error.
+/// branch that jumps across the line inside a bracket, or a critical speed
+/// found on two branches ([`repeated_criticals`]), both signs of modes not
+/// followed across a step of `diagram`, is an error ([`campbell_study`]
+/// refines its grid instead).
 pub fn critical_speeds(
     rotor: &Rotor,
     diagram: &[CampbellPoint],
@@ -300,14 +302,22 @@ pub fn critical_speeds(
         }
     }
     let (found, jumps) = refined(rotor, diagram, &brackets, harmonic, options, 0)?;
-    match jumps.first() {
-        None => Ok(found),
-        Some((speed, b)) => Err(ModalError::Options(format!(
+    if let Some((speed, b)) = jumps.first() {
+        return Err(ModalError::Options(format!(
             "branch {} jumps across the {harmonic}× line at {speed} rad/s instead of crossing it: \
              its modes were not followed across a speed step; use a finer diagram",
             b + 1
-        ))),
+        )));
     }
+    if let Some((speed, a, b)) = repeated_criticals(&found).first() {
+        return Err(ModalError::Options(format!(
+            "the critical speed {speed} rad/s appears on branches {} and {}: \
+             a mode was not followed across a speed step; use a finer diagram",
+            a + 1,
+            b + 1
+        )));
+    }
+    Ok(found)
 }
 
 /// Where a branch jumps across the 1× line: `(speed, branch)`, speed in rad/s.
@@ -490,6 +500,7 @@ pub const MAX_GRID_DOUBLINGS: u32 = 3;
 /// while a mode followed onto another's branch across a coarse grid step
 /// repeats that mode's crossing exactly. (Two modes of a rotor without
 /// gyroscopic coupling share a speed with opposite whirls, or are planar.)
+/// The lower branch comes first.
 pub fn repeated_criticals(criticals: &[CriticalSpeed]) -> Vec<(f64, usize, usize)> {
     let mut out = Vec::new();
     for (i, a) in criticals.iter().enumerate() {
@@ -498,7 +509,7 @@ pub fn repeated_criticals(criticals: &[CriticalSpeed]) -> Vec<(f64, usize, usize
                 && a.whirl != Whirl::Mixed
                 && (a.speed - b.speed).abs() <= 1e-6 * a.speed.abs().max(b.speed.abs())
             {
-                out.push((a.speed, a.branch, b.branch));
+                out.push((a.speed, a.branch.min(b.branch), a.branch.max(b.branch)));
             }
         }
     }
@@ -508,6 +519,32 @@ pub fn repeated_criticals(criticals: &[CriticalSpeed]) -> Vec<(f64, usize, usize
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The classic rotor's diagram up to 20 000 rpm in 1 step gives a jump,
+    /// in 2 steps a repeated critical speed: both errors naming the branch;
+    /// 8 steps give its seven critical speeds.
+    #[test]
+    fn critical_speeds_refuses_a_diagram_too_coarse_to_follow_the_modes() {
+        let rotor = Rotor::new(crate::model::RotorModel::default_model()).unwrap();
+        let options = ModalOptions {
+            modes: 8,
+            ..ModalOptions::default()
+        };
+        let top = 20_000.0 * std::f64::consts::PI / 30.0;
+        let found = |steps: usize| {
+            let speeds: Vec<f64> = (0..=steps).map(|k| top * k as f64 / steps as f64).collect();
+            let diagram = campbell(&rotor, &speeds, &options).unwrap();
+            critical_speeds(&rotor, &diagram, 1.0, &options)
+        };
+        let error = found(1).unwrap_err().to_string();
+        assert!(
+            error.contains("branch 7 jumps across the 1× line at 2094.39"),
+            "{error}"
+        );
+        let error = found(2).unwrap_err().to_string();
+        assert!(error.contains("appears on branches 3 and 4"), "{error}");
+        assert_eq!(found(8).unwrap().len(), 7);
+    }
 
     /// Only a definite whirl repeated at one speed (to 1e-6) counts:
     /// opposite whirls, planar (mixed) modes and speeds 2e-6 apart do not.
