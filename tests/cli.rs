@@ -9,6 +9,17 @@ fn rotor() -> Command {
     Command::new(env!("CARGO_BIN_EXE_rotor"))
 }
 
+/// The stdout of `command`, which must succeed (its stderr in the panic otherwise).
+fn succeeded(command: &mut Command) -> String {
+    let out = command.output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
 fn models() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models")
 }
@@ -24,27 +35,21 @@ fn campbell_writes_csv_and_png() {
     let dir = out_dir("campbell");
     let (csv, png) = (dir.join("campbell.csv"), dir.join("campbell.png"));
     let _ = std::fs::remove_file(&png);
-    let out = rotor()
-        .args([
-            "campbell",
-            "--max-rpm",
-            "6000",
-            "--steps",
-            "12",
-            "--modes",
-            "6",
-            "--csv",
-        ])
-        .arg(&csv)
-        .arg("--png")
-        .arg(&png)
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let stdout = succeeded(
+        rotor()
+            .args([
+                "campbell",
+                "--max-rpm",
+                "6000",
+                "--steps",
+                "12",
+                "--modes",
+                "6",
+                "--csv",
+            ])
+            .arg(&csv)
+            .arg("--png")
+            .arg(&png),
     );
     // The first critical speeds of the classic rotor sit at ≈116.4 rad/s (1111 rpm).
     assert!(stdout.contains("1111."), "{stdout}");
@@ -68,17 +73,11 @@ fn campbell_writes_csv_and_png() {
 #[test]
 fn modes_of_a_model_file() {
     let model = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor.toml");
-    let out = rotor()
-        .arg("modes")
-        .arg(&model)
-        .args(["--rpm", "4000", "--modes", "4"])
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let stdout = succeeded(
+        rotor()
+            .arg("modes")
+            .arg(&model)
+            .args(["--rpm", "4000", "--modes", "4"]),
     );
     assert!(
         stdout.contains("437.3") && stdout.contains("488.7"),
@@ -178,18 +177,12 @@ fn coefficients_of_a_tilting_pad_bearing_in_a_model() {
     let text = rotor_bearing::model::DEFAULT_MODEL_TOML.to_string()
         + "\n[[bearings]]\nname = \"guide\"\ntype = \"tilting_pad\"\nnode = 4\nradius = 0.05\njournal_collar = true\nlength = 0.03\nclearance = 1e-4\nviscosity = 0.02\npads = 4\nfirst_pivot_deg = 45.0\npad_arc_deg = 80.0\n";
     std::fs::write(&path, text).unwrap();
-    let out = rotor()
-        .arg("coefficients")
-        .arg(&path)
-        .args(["--bearing", "guide", "--points", "12"])
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let stdout = succeeded(rotor().arg("coefficients").arg(&path).args([
+        "--bearing",
+        "guide",
+        "--points",
+        "12",
+    ]));
     // Load between pads: no cross-coupled stiffness (columns 4 and 5 of the table).
     for line in stdout.lines().skip(2) {
         let v: Vec<f64> = line
@@ -601,19 +594,10 @@ fn simulate_refuses_a_ratio_for_a_run_under_twenty_revolutions() {
 
 #[test]
 fn campbell_refines_a_grid_too_coarse_to_follow_the_modes() {
-    // One step from 0 to 20 000 rpm follows the second forward mode onto the
-    // second backward mode's branch: its 4705.44 rpm found twice, the backward
+    // One step from 0 to 20 000 rpm links the second backward mode's branch
+    // to the second forward mode: its 4705.44 rpm found twice, the backward
     // 4165.40 rpm missed. The study doubles the steps to 8 and says so.
-    let out = rotor()
-        .args(["campbell", "--max-rpm", "20000", "--steps", "1"])
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let stdout = succeeded(rotor().args(["campbell", "--max-rpm", "20000", "--steps", "1"]));
     assert!(
         stdout.contains(
             "speed grid of classic_disk_rotor: 0.00 to 20000.00 rpm in 8 steps (top speed: --max-rpm)\n  (refined from the 1 step asked for: a mode was not followed across a step)"
@@ -633,18 +617,12 @@ fn campbell_lists_overdamped_crossings_apart_from_critical_speeds() {
     // The Jeffcott rotor's rigid-body modes on the films cross the 1× line at
     // 419 rpm with ζ = 0.82: overdamped, no resonance peak.
     let csv = out_dir("campbell_jeffcott").join("c.csv");
-    let out = rotor()
-        .arg("campbell")
-        .arg(models().join("jeffcott.toml"))
-        .arg("--csv")
-        .arg(&csv)
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+    let stdout = succeeded(
+        rotor()
+            .arg("campbell")
+            .arg(models().join("jeffcott.toml"))
+            .arg("--csv")
+            .arg(&csv),
     );
     // Default top speed 1.25 × speed_rpm 3000; fluid films from 1 % of it.
     assert!(
