@@ -48,6 +48,11 @@ pub(crate) struct Polisher<'a> {
 /// most.
 const FOLLOW_STEPS: usize = 8;
 
+/// Whether `z` is finite.
+fn finite(z: C64) -> bool {
+    z.re.is_finite() && z.im.is_finite()
+}
+
 /// `Σ āᵢ bᵢ`.
 fn dot(a: &[C64], b: &[C64]) -> C64 {
     a.iter()
@@ -117,7 +122,6 @@ impl<'a> Polisher<'a> {
     /// `None` after [`FOLLOW_STEPS`] steps, or when a step breaks down.
     /// `x` is scaled to `cᴴx = 1`.
     pub(crate) fn followed(&mut self, guess: C64, seed: &[C64]) -> Option<(C64, Vec<C64>)> {
-        let usable = |z: C64| z.norm() > 0.0 && z.re.is_finite() && z.im.is_finite();
         let (mut lambda, mut x) = (guess, seed.to_vec());
         let mut u = vec![C64::new(0.0, 0.0); seed.len()];
         for _ in 0..FOLLOW_STEPS {
@@ -127,18 +131,12 @@ impl<'a> Polisher<'a> {
             if exact && !self.factored(at) {
                 return Some((lambda, x));
             }
-            self.apply(at, &x, &mut u, None);
-            self.lu.solve_in_place(&mut u);
-            let cu = dot(seed, &u);
-            if !usable(cu) {
-                return None;
-            }
-            let step = dot(seed, &x) / cu;
-            lambda = at - step;
+            let (next, step, cu) = self.inverse_step(at, seed, &x, &mut u)?;
+            lambda = next;
             for (xi, ui) in x.iter_mut().zip(&u) {
                 *xi = ui / cu;
             }
-            if !(lambda.re.is_finite() && lambda.im.is_finite()) {
+            if !finite(lambda) {
                 return None;
             }
             if exact || step.norm() <= 1e-8 * lambda.norm() {
@@ -148,9 +146,29 @@ impl<'a> Polisher<'a> {
         None
     }
 
+    /// One step of nonlinear inverse iteration from `at`, with `Q(at)`
+    /// factored in `self.lu`: `u = Q(at)⁻¹ Q'(at) x`, and
+    /// `(at − step, step, cᴴu)` with `step = cᴴx / cᴴu`; `None` when `cᴴu` is
+    /// zero or not finite.
+    fn inverse_step(
+        &mut self,
+        at: C64,
+        c: &[C64],
+        x: &[C64],
+        u: &mut [C64],
+    ) -> Option<(C64, C64, C64)> {
+        self.apply(at, x, u, None);
+        self.lu.solve_in_place(u);
+        let cu = dot(c, u);
+        if !(cu.norm() > 0.0 && finite(cu)) {
+            return None;
+        }
+        let step = dot(c, x) / cu;
+        Some((at - step, step, cu))
+    }
+
     /// `λ` polished with the Arnoldi vector `x` (see [`Polisher`]).
     pub(crate) fn polished(&mut self, lambda: C64, x: &[C64]) -> C64 {
-        let usable = |z: C64| z.norm() > 0.0 && z.re.is_finite() && z.im.is_finite();
         let offset = C64::new(POLISH_OFFSET * lambda.norm(), 0.0);
         let Some(at) = [lambda + offset, lambda]
             .into_iter()
@@ -160,14 +178,9 @@ impl<'a> Polisher<'a> {
         };
         let c = x;
         let mut u = vec![C64::new(0.0, 0.0); x.len()];
-        self.apply(at, x, &mut u, None);
-        self.lu.solve_in_place(&mut u);
-        let cu = dot(c, &u);
-        if !usable(cu) {
+        let Some((first, step, cu)) = self.inverse_step(at, c, x, &mut u) else {
             return lambda;
-        }
-        let step = dot(c, x) / cu;
-        let first = at - step;
+        };
         if step.norm() <= 1e-15 * first.norm() {
             return first;
         }
@@ -178,7 +191,7 @@ impl<'a> Polisher<'a> {
         self.lu.solve_in_place(&mut u);
         let (ca, cb) = (dot(c, &a), dot(c, &u));
         let second = first - ca / cb;
-        if usable(cb) && second.re.is_finite() && second.im.is_finite() {
+        if cb.norm() > 0.0 && finite(cb) && finite(second) {
             second
         } else {
             first
