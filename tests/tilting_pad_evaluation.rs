@@ -12,7 +12,8 @@
 //! whirl velocities, and speeds from standstill to reverse rotation.
 //!
 //! The front ends' pass (`Bearing::output`: each pad once, the force without
-//! its Jacobians) gives the same forces and report bit for bit, the thinnest
+//! its Jacobians) gives the same forces and report bit for bit, as does the
+//! chord iterations' (`Bearing::forces`), the thinnest
 //! film (now by cross products instead of angles) within 1e-14 of the
 //! clearance of the formula by angles kept here.
 //!
@@ -288,6 +289,10 @@ fn the_hot_path_matches_a_straightforward_evaluation_on_every_pad() {
                             );
                         }
                         assert_eq!(got, report);
+                        // The chord iterations' pass: the same forces, bit for bit.
+                        let mut forces = BearingEval::new(n);
+                        b.forces(&q, &qd, speed, &mut forces).unwrap();
+                        assert_eq!(forces.force, single.force);
                         let thinnest = (0..b.pads.len())
                             .map(|k| min_film_by_angles(b, k, &q))
                             .fold(f64::INFINITY, f64::min)

@@ -284,6 +284,19 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
         BearingReport::default()
     }
 
+    /// The generalized forces of [`Bearing::evaluate`] alone, the same numbers,
+    /// in `out.force`; the Jacobians in `out` are left unspecified, so kinds
+    /// may skip them (what a Newton iteration on frozen Jacobians needs).
+    fn forces(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<(), BearingError> {
+        self.evaluate(q, qdot, speed, out)
+    }
+
     /// What a front end reports at `q`, `q̇`, `speed`: the generalized forces
     /// in `out.force` and the film report, the numbers [`Bearing::evaluate`]
     /// and [`Bearing::report`] give; the Jacobians in `out` are left

@@ -131,13 +131,13 @@ impl Bearing for PlainBearing {
     }
 
     /// The film force without its Jacobians ([`ShortFilm::force_only`]).
-    fn output(
+    fn forces(
         &self,
         q: &[f64],
         qdot: &[f64],
         speed: f64,
         out: &mut BearingEval,
-    ) -> Result<BearingReport, BearingError> {
+    ) -> Result<(), BearingError> {
         check_state(2, q, qdot, speed, out)?;
         let state = JournalState::from_coordinates(q, qdot);
         let (film, _) = self.film().force_only(&state, speed, None)?;
@@ -147,6 +147,19 @@ impl Bearing for PlainBearing {
             .contact_law()
             .evaluate(state.position, state.velocity, speed);
         out.add_force(&contact.force, None);
+        Ok(())
+    }
+
+    /// [`Bearing::forces`], then the report on that force.
+    fn output(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<BearingReport, BearingError> {
+        self.forces(q, qdot, speed, out)?;
+        let state = JournalState::from_coordinates(q, qdot);
         let force = Vector2::new(out.force[0], out.force[1]);
         Ok(self.journal_report(&state, speed, &force))
     }
@@ -170,8 +183,9 @@ mod tests {
     use std::f64::consts::PI;
 
     /// The front ends' pass gives the force and report of `evaluate` then
-    /// `report`, bit for bit, from the centre through saturation into contact,
-    /// at rest, squeezing and whirling, and in reverse.
+    /// `report`, and the chord iterations' pass (`forces`) that force, bit
+    /// for bit, from the centre through saturation into contact, at rest,
+    /// squeezing and whirling, and in reverse.
     #[test]
     fn output_is_evaluate_then_report() {
         let b = PlainBearing {
@@ -192,6 +206,8 @@ mod tests {
                         b.evaluate(&q, &qd, speed, &mut full).unwrap();
                         let report = b.report(&q, &qd, speed, &full);
                         let got = b.output(&q, &qd, speed, &mut single).unwrap();
+                        assert_eq!(single.force, full.force);
+                        b.forces(&q, &qd, speed, &mut single).unwrap();
                         assert_eq!(single.force, full.force);
                         assert_eq!(got, report);
                     }

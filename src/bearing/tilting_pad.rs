@@ -448,13 +448,56 @@ impl Bearing for TiltingPadBearing {
         speed: f64,
         out: &mut BearingEval,
     ) -> Result<BearingReport, BearingError> {
+        let film = self.film();
+        let law = self.contact_law();
+        let mut tally = PadTally::default();
+        self.pad_forces(q, qdot, speed, out, |k, state, whole, contact| {
+            let film_torque = match whole {
+                Some(phi) => film.friction_torque_of(phi, speed),
+                None => film.friction_torque(state, speed, Some(&self.pads[k].window)),
+            };
+            tally.add(&law, film_torque, contact, speed);
+            tally.min_film = tally.min_film.min(self.min_film_at(k, state.position));
+        })?;
+        Ok(self.tally_report(q, out, &tally))
+    }
+
+    /// The forces of [`Bearing::output`] alone.
+    fn forces(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<(), BearingError> {
+        self.pad_forces(q, qdot, speed, out, |_, _, _, _| {})
+    }
+}
+
+impl TiltingPadBearing {
+    /// One pass over the pads for the generalized forces in `out.force`, each
+    /// pad's film force without its Jacobians ([`ShortFilm::force_only`]);
+    /// `each_pad` sees pad `k`'s effective journal state, `∫ dθ/H` over the
+    /// pad when the pressure covers all of it, and its contact.
+    fn pad_forces(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+        mut each_pad: impl FnMut(
+            usize,
+            &JournalState,
+            Option<f64>,
+            Option<&(BearingForce, ContactReport)>,
+        ),
+    ) -> Result<(), BearingError> {
         let n = 2 + self.pads.len();
         check_state(n, q, qdot, speed, out)?;
         out.force.fill(0.0);
         let film = self.film();
         let (c_rest, k_rest) = self.pivot_rest(speed);
         let law = self.contact_law();
-        let mut tally = PadTally::default();
         for (k, pad) in self.pads.iter().enumerate() {
             let (s, c, state) = self.pad_state(k, q, qdot);
             let (force, whole) = film.force_only(&state, speed, Some(&pad.window))?;
@@ -465,18 +508,11 @@ impl Bearing for TiltingPadBearing {
             }
             let i = 2 + k;
             out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
-            let film_torque = match whole {
-                Some(phi) => film.friction_torque_of(phi, speed),
-                None => film.friction_torque(&state, speed, Some(&pad.window)),
-            };
-            tally.add(&law, film_torque, contact.as_ref(), speed);
-            tally.min_film = tally.min_film.min(self.min_film_at(k, state.position));
+            each_pad(k, &state, whole, contact.as_ref());
         }
-        Ok(self.tally_report(q, out, &tally))
+        Ok(())
     }
-}
 
-impl TiltingPadBearing {
     /// The report from the pads' tally and the journal force in `eval`.
     fn tally_report(&self, q: &[f64], eval: &BearingEval, tally: &PadTally) -> BearingReport {
         let position = Vector2::new(q[0], q[1]);
