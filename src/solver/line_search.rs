@@ -137,7 +137,7 @@ pub(super) fn condensed_residual(sites: &Sites, rhs: &[f64]) -> f64 {
     let mut largest = rhs.iter().fold(0.0f64, |a, r| a.max(r.abs()));
     for site in &sites.list {
         let mi = site.internal;
-        for x in &site.kpp_x[2 * mi..3 * mi] {
+        for x in &site.condensation.x[2 * mi..3 * mi] {
             largest = largest.max(x.abs());
         }
     }

@@ -3,10 +3,8 @@
 //! and the modified Newton on the full residual (stale factorization), both
 //! closing with a Schur complement on the bearing DOFs (see [`crate::solver`]).
 
-use crate::bearing::BearingEval;
 use crate::linalg::LinalgError;
 
-use super::condense::condense_internal;
 use super::dense::{lu_in_place, lu_solve};
 use super::factor::Factor;
 use super::line_search::{Backtrack, Trial, condensed_residual, retreat};
@@ -173,6 +171,46 @@ fn converged(increment: f64, previous: f64, tol: f64, damped: bool) -> bool {
         && contraction / (1.0 - contraction) * increment <= tol
 }
 
+/// Largest relative increment after which the condensed Newton keeps its
+/// Jacobians for the next iteration (a chord iteration).
+const CHORD_INCREMENT: f64 = 1e-4;
+
+/// Contraction `δ_k / δ_{k−1}` a chord iteration must reach for the next one
+/// to keep the Jacobians too.
+const CHORD_CONTRACTION: f64 = 0.1;
+
+/// Contraction `δ_k / δ_{k−1}` of the iteration before a chord iteration.
+const NEWTON_CONTRACTION: f64 = 1e-2;
+
+/// Whether the condensed Newton's next iteration keeps this one's Jacobians
+/// (evaluates the bearing forces alone and solves on the condensation and
+/// factors it has). After an increment `δ_k` within [`CHORD_INCREMENT`] of
+/// the displacement scale, the Jacobians at the iterate differ from those at
+/// the solution by `O(δ_k)`, so a chord iteration contracts by `O(δ_k)`
+/// (the hydro unit's first increments are about 1e-6 of its clearance: its
+/// second iteration lands where Newton's does to about 1e-6 of the
+/// tolerance). That holds where Newton converges quadratically, so the
+/// increment must also have contracted by [`CHORD_CONTRACTION`] on the one
+/// before (`previous`: `δ_{k−1}`, infinite at the first iteration); pads
+/// near a double root of their moment balance, whose increments halve, stay
+/// on full Newton. `allowed`: no chord iteration of this step has contracted
+/// by less; the damped retry never keeps them.
+fn keeps_jacobians(increment: f64, previous: f64, allowed: bool, damped: bool) -> bool {
+    allowed && !damped && increment <= CHORD_INCREMENT && increment <= NEWTON_CONTRACTION * previous
+}
+
+/// Error a chord iterate may leave, as a fraction of the tolerance.
+const CHORD_ERROR: f64 = 1e-2;
+
+/// A chord iteration's iterate is taken when, besides [`converged`], the
+/// error it leaves is within [`CHORD_ERROR`] of the tolerance `tol`: a chord
+/// iteration contracts by about `ρ = 2 δ_k/δ_{k−1}` (twice the ratio of
+/// Newton's increments after a fresh Jacobian; the ratio itself after a
+/// chord iteration), so the error left is about `ρ δ_k`.
+fn chord_converged(increment: f64, previous: f64, tol: f64) -> bool {
+    2.0 * increment / previous * increment <= CHORD_ERROR * tol
+}
+
 /// Buffers of the condensed Newton on the journal coordinates: the iterate
 /// `j` (set to the predictor before the first iteration), bearing forces `F_j`,
 /// pad terms `K_jp K_pp⁻¹ (−F_p)`, condensed 2×2 stiffnesses (4 per bearing),
@@ -259,9 +297,13 @@ impl Simulator {
         let singular = || SolverError::Linalg(LinalgError::Singular { column: 0 });
         let length_scale = self.sites.length_scale;
         let mut last = f64::INFINITY;
+        let (mut chord, mut chord_allowed) = (false, true);
         self.condensed.search.reset();
         for _ in 0..self.options.max_iterations {
             self.stats.iterations += 1;
+            if chord {
+                self.stats.chord_iterations += 1;
+            }
             let (s, w, c) = (&self.state, &mut self.newmark, &mut self.condensed);
             for (k, site) in self.sites.list.iter_mut().enumerate() {
                 for (a, coordinate) in site.journal.iter().enumerate() {
@@ -274,19 +316,28 @@ impl Simulator {
                     site.q[2 + m] = w.p[i];
                     site.qd[2 + m] = a1 * (w.p[i] - s.p[i]) - s.pd[i];
                 }
-                site.bearing
-                    .evaluate(&site.q, &site.qd, speed1, &mut site.eval)
-                    .map_err(|source| SolverError::Bearing {
-                        name: site.name.clone(),
-                        time: t1,
-                        source,
-                    })?;
-                let ev: &BearingEval = &site.eval;
-                let (kc, wv) =
-                    condense_internal(ev, a1, &mut site.kpp, &mut site.kpp_piv, &mut site.kpp_x)
+                let bearing_error = |source| SolverError::Bearing {
+                    name: site.name.clone(),
+                    time: t1,
+                    source,
+                };
+                let wv = if chord {
+                    site.bearing
+                        .forces(&site.q, &site.qd, speed1, &mut site.eval)
+                        .map_err(bearing_error)?;
+                    site.condensation.load(&site.eval.force)
+                } else {
+                    site.bearing
+                        .evaluate(&site.q, &site.qd, speed1, &mut site.eval)
+                        .map_err(bearing_error)?;
+                    let (kc, wv) = site
+                        .condensation
+                        .condense(&site.eval, a1)
                         .ok_or_else(singular)?;
-                c.kc[4 * k..4 * k + 4].copy_from_slice(&kc);
-                c.fj[2 * k..2 * k + 2].copy_from_slice(&ev.force[..2]);
+                    c.kc[4 * k..4 * k + 4].copy_from_slice(&kc);
+                    wv
+                };
+                c.fj[2 * k..2 * k + 2].copy_from_slice(&site.eval.force[..2]);
                 c.wv[2 * k..2 * k + 2].copy_from_slice(&wv);
             }
             for (r, coordinate) in self.sites.coordinates.iter().enumerate() {
@@ -296,6 +347,9 @@ impl Simulator {
                     rhs += gc * (fc + wc);
                 }
                 c.cj_rhs[r] = rhs;
+                if chord {
+                    continue;
+                }
                 for k in 0..sj / 2 {
                     for i in 0..2 {
                         let mut v = if r == 2 * k + i { 1.0 } else { 0.0 };
@@ -315,37 +369,46 @@ impl Simulator {
                 retreat(&c.search, back, &mut c.j, &mut w.p);
                 continue;
             }
-            if !lu_in_place(&mut c.cj, sj, &mut c.cj_piv) {
+            // A chord iteration solves with the factors of the last fresh one.
+            if !chord && !lu_in_place(&mut c.cj, sj, &mut c.cj_piv) {
                 return Err(singular());
             }
             lu_solve(&c.cj, sj, &c.cj_piv, &mut c.cj_rhs);
             let (mut inc, mut mag): (f64, f64) = (0.0, 0.0);
-            for ((j, d), step) in
-                c.j.iter_mut()
-                    .zip(&c.cj_rhs)
-                    .zip(c.search.journal.iter_mut())
-            {
+            for ((j, d), step) in c.j.iter().zip(&c.cj_rhs).zip(c.search.journal.iter_mut()) {
                 inc = inc.max(d.abs());
                 mag = mag.max(j.abs());
-                *j += d;
                 *step = *d;
             }
             for (k, site) in self.sites.list.iter().enumerate() {
                 let mi = site.internal;
                 let (dx, dy) = (c.cj_rhs[2 * k], c.cj_rhs[2 * k + 1]);
                 for m in 0..mi {
-                    let x = &site.kpp_x;
+                    let x = &site.condensation.x;
                     let d = -x[2 * mi + m] - x[m] * dx - x[mi + m] * dy;
-                    let p = &mut w.p[site.offset + m];
                     inc = inc.max(d.abs());
-                    mag = mag.max(p.abs());
-                    *p += d;
+                    mag = mag.max(w.p[site.offset + m].abs());
                     c.search.internal[site.offset + m] = d;
                 }
             }
+            let increment = inc / mag.max(length_scale);
+            // A chord iteration that does not contract (a pad the film has just
+            // loaded or unloaded) is not taken: the same iterate gets fresh Jacobians.
+            if chord && increment > CHORD_CONTRACTION * last {
+                chord = false;
+                chord_allowed = false;
+                continue;
+            }
+            for (j, d) in c.j.iter_mut().zip(&c.search.journal) {
+                *j += d;
+            }
+            for (p, d) in w.p.iter_mut().zip(&c.search.internal) {
+                *p += d;
+            }
             c.search.stepped(residual);
-            let scale = mag.max(length_scale);
-            if converged(inc / scale, last, tol, damped) {
+            if converged(increment, last, tol, damped)
+                && (!chord || chord_converged(increment, last, tol))
+            {
                 // u = u_lin + A⁻¹ E F_j with the first-order journal forces.
                 for (k, fk) in c.fj.iter_mut().enumerate() {
                     let (b, i) = (k / 2, k % 2);
@@ -369,7 +432,8 @@ impl Simulator {
                 }
                 return Ok(None);
             }
-            last = inc / scale;
+            chord = keeps_jacobians(increment, last, chord_allowed, damped);
+            last = increment;
             if !damped && c.search.stalled(inc) {
                 break;
             }
@@ -488,7 +552,32 @@ impl Simulator {
 
 #[cfg(test)]
 mod tests {
-    use super::converged;
+    use super::{chord_converged, converged, keeps_jacobians};
+
+    /// A chord iteration follows an increment within 1e-4 of the scale that
+    /// contracted by 1e-2 on the one before (any at the first iteration),
+    /// never in the damped retry nor once a chord iteration of the step has
+    /// failed; its iterate is taken when `2 δ_k²/δ_{k−1}` is within 1e-2 of
+    /// the tolerance.
+    #[test]
+    fn chord_iterations_follow_fast_contraction_only() {
+        let inf = f64::INFINITY;
+        // The hydro unit's first increment, about 1e-6 of its clearance.
+        assert!(keeps_jacobians(1e-6, inf, true, false));
+        assert!(!keeps_jacobians(1e-6, inf, true, true));
+        assert!(!keeps_jacobians(1e-6, inf, false, false));
+        assert!(!keeps_jacobians(2e-4, inf, true, false));
+        // Pads near a double root halve their increments: full Newton.
+        assert!(!keeps_jacobians(1e-6, 2e-6, true, false));
+        assert!(keeps_jacobians(1e-6, 1e-4, true, false));
+        let tol = 1e-8;
+        // 1e-9 after 1e-6 leaves 2e-12; 5e-9 after 1e-6 leaves 5e-11.
+        assert!(chord_converged(1e-9, 1e-6, tol));
+        assert!(chord_converged(5e-9, 1e-6, tol));
+        // After the plain-bearing unit's 1.7e-7, 1e-8 would leave 1.2e-9.
+        assert!(!chord_converged(1e-8, 1.7e-7, tol));
+        assert!(chord_converged(2.4e-9, 1.7e-7, tol));
+    }
 
     /// Within the tolerance always; just above it only on evidence of fast
     /// contraction, never at the first iteration, never damped, never when

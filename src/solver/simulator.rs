@@ -95,6 +95,9 @@ pub struct StepStats {
     pub iterations: usize,
     /// Bearing-Jacobian refreshes after a stall.
     pub refreshes: usize,
+    /// Iterations of the condensed Newton on the Jacobians of the iteration
+    /// before (the bearing forces alone evaluated).
+    pub chord_iterations: usize,
     /// Step halvings.
     pub step_cuts: usize,
     /// Steps solved again by the damped Newton after plain Newton failed.

@@ -13,6 +13,7 @@ use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
 use crate::rotor::Rotor;
 
+use super::condense::Condensation;
 use super::simulator::SolverError;
 
 /// One journal coordinate of a site: a journal DOF, less its housing DOF
@@ -83,11 +84,8 @@ pub(super) struct Site {
     pub q: Vec<f64>,
     /// Their rates (m/s).
     pub qd: Vec<f64>,
-    /// LU of the pad block `K_pp + a1 C_pp` (row-major `m × m`) and its pivots.
-    pub kpp: Vec<f64>,
-    pub kpp_piv: Vec<usize>,
-    /// `K_pp⁻¹ [K_pj | −F_p]`: three columns of length `m`.
-    pub kpp_x: Vec<f64>,
+    /// The pad block `K_pp + a1 C_pp` condensed onto the journal.
+    pub condensation: Condensation,
 }
 
 /// All nonlinear bearings of a rotor, in model order.
@@ -153,9 +151,7 @@ impl Sites {
                 jc: vec![0.0; (2 + internal) * (2 + internal)],
                 q: vec![0.0; 2 + internal],
                 qd: vec![0.0; 2 + internal],
-                kpp: vec![0.0; internal * internal],
-                kpp_piv: vec![0; internal],
-                kpp_x: vec![0.0; 3 * internal],
+                condensation: Condensation::new(internal),
                 bearing,
             });
             offset += internal;

@@ -14,7 +14,6 @@
 use crate::linalg::{ArnoldiOptions, largest_eigenpairs_real};
 use crate::rotor::{Dof, Rotor};
 
-use super::condense::condense_internal;
 use super::simulator::SolverError;
 use super::sites::{Sites, add_coupling};
 
@@ -53,13 +52,7 @@ pub(super) fn check(
     let n = rotor.dof_count();
     let mut a = rotor.stiffness.clone();
     for site in &mut sites.list {
-        let Some((kc, _)) = condense_internal(
-            &site.eval,
-            0.0,
-            &mut site.kpp,
-            &mut site.kpp_piv,
-            &mut site.kpp_x,
-        ) else {
+        let Some((kc, _)) = site.condensation.condense(&site.eval, 0.0) else {
             continue;
         };
         for (i, ci) in site.journal.iter().enumerate() {
