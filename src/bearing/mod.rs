@@ -297,6 +297,14 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
         self.evaluate(q, qdot, speed, out)
     }
 
+    /// Whether [`Bearing::forces`] costs markedly less than
+    /// [`Bearing::evaluate`] (it skips the Jacobians): only then do Newton
+    /// iterations on frozen Jacobians pay. No by default, where `forces` is
+    /// `evaluate`.
+    fn cheap_forces(&self) -> bool {
+        false
+    }
+
     /// What a front end reports at `q`, `q̇`, `speed`: the generalized forces
     /// in `out.force` and the film report, the numbers [`Bearing::evaluate`]
     /// and [`Bearing::report`] give; the Jacobians in `out` are left

@@ -150,6 +150,11 @@ impl Bearing for PlainBearing {
         Ok(())
     }
 
+    /// The film force without its Jacobians is about half the work.
+    fn cheap_forces(&self) -> bool {
+        true
+    }
+
     /// [`Bearing::forces`], then the report on that force.
     fn output(
         &self,

@@ -462,6 +462,11 @@ impl Bearing for TiltingPadBearing {
         Ok(self.tally_report(q, out, &tally))
     }
 
+    /// The film force without its Jacobians is about half the work.
+    fn cheap_forces(&self) -> bool {
+        true
+    }
+
     /// The forces of [`Bearing::output`] alone.
     fn forces(
         &self,

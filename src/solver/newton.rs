@@ -194,7 +194,8 @@ const NEWTON_CONTRACTION: f64 = 1e-2;
 /// before (`previous`: `δ_{k−1}`, infinite at the first iteration); pads
 /// near a double root of their moment balance, whose increments halve, stay
 /// on full Newton. `allowed`: no chord iteration of this step has contracted
-/// by less; the damped retry never keeps them.
+/// by less; the damped retry never keeps them (nor, in the caller, a rotor
+/// with a site whose forces are not cheaper than its evaluation).
 fn keeps_jacobians(increment: f64, previous: f64, allowed: bool, damped: bool) -> bool {
     allowed && !damped && increment <= CHORD_INCREMENT && increment <= NEWTON_CONTRACTION * previous
 }
@@ -432,7 +433,8 @@ impl Simulator {
                 }
                 return Ok(None);
             }
-            chord = keeps_jacobians(increment, last, chord_allowed, damped);
+            chord =
+                self.sites.cheap_forces && keeps_jacobians(increment, last, chord_allowed, damped);
             last = increment;
             if !damped && c.search.stalled(inc) {
                 break;

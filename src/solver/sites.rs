@@ -98,6 +98,9 @@ pub(super) struct Sites {
     pub n_internal: usize,
     /// Every journal coordinate, site by site (`x`, `y`): the columns of `E`.
     pub coordinates: Vec<Coordinate>,
+    /// Every site's forces cost markedly less than its evaluation with the
+    /// Jacobians ([`Bearing::cheap_forces`]), so chord iterations pay.
+    pub cheap_forces: bool,
     /// Displacement scale of the convergence tests: the smallest bearing
     /// clearance (m), 1 µm without fluid-film bearings.
     pub length_scale: f64,
@@ -171,6 +174,7 @@ impl Sites {
             n_journal: 2 * list.len(),
             n_internal: offset,
             coordinates: list.iter().flat_map(|s| s.journal).collect(),
+            cheap_forces: list.iter().all(|s| s.bearing.cheap_forces()),
             length_scale,
             list,
         })
