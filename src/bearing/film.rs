@@ -18,6 +18,8 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
+use super::film_lanes::{ArcLanes, JetLanes, arc_potentials};
+
 /// Truncated bivariate Taylor series `Σ c_k dxⁱ dyʲ`, `i + j ≤ 3`, stored flat in
 /// the monomial order `1, x, y, x², xy, y², x³, x²y, xy², y³`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -61,6 +63,11 @@ impl Jet3 {
         j
     }
 
+    /// The jet of the given Taylor coefficients (monomial order above).
+    pub(crate) fn from_coefficients(c: [f64; 10]) -> Self {
+        Self { c }
+    }
+
     /// Value at the expansion point.
     pub fn value(&self) -> f64 {
         self.c[0]
@@ -82,66 +89,33 @@ impl Jet3 {
         self
     }
 
-    /// `f(u)` from `f` and its first three derivatives at `u0 = self.value()`:
-    /// `f0 + f1 d + f2 d²/2 + f3 d³/6` with `d = u − u0`. As `d` has no constant
-    /// term, `d²` starts at degree 2 and `d³` is pure degree 3; both are written
-    /// out term by term.
-    fn compose(self, f: [f64; 4]) -> Self {
-        let d = &self.c;
-        let (h2, h3) = (0.5 * f[2], f[3] / 6.0);
-        let (a, b) = (d[1], d[2]);
-        // d²: degree 2 and 3 coefficients.
-        let sq = [
-            a * a,
-            2.0 * a * b,
-            b * b,
-            2.0 * a * d[3],
-            2.0 * (a * d[4] + b * d[3]),
-            2.0 * (a * d[5] + b * d[4]),
-            2.0 * b * d[5],
-        ];
-        // d³: degree 3 only.
-        let cube = [a * a * a, 3.0 * a * a * b, 3.0 * a * b * b, b * b * b];
+    /// The jet as the one lane of a [`JetLanes`] (whose operations are the
+    /// ones written out; one arc alone is the one-lane case).
+    fn lane(self) -> JetLanes<1> {
+        JetLanes {
+            c: self.c.map(|v| [v]),
+        }
+    }
+
+    fn from_lane(j: JetLanes<1>) -> Self {
         Self {
-            c: [
-                f[0],
-                f[1] * a,
-                f[1] * b,
-                f[1] * d[3] + h2 * sq[0],
-                f[1] * d[4] + h2 * sq[1],
-                f[1] * d[5] + h2 * sq[2],
-                f[1] * d[6] + h2 * sq[3] + h3 * cube[0],
-                f[1] * d[7] + h2 * sq[4] + h3 * cube[1],
-                f[1] * d[8] + h2 * sq[5] + h3 * cube[2],
-                f[1] * d[9] + h2 * sq[6] + h3 * cube[3],
-            ],
+            c: j.c.map(|[v]| v),
         }
     }
 
     /// Square root (value must be positive).
     pub fn sqrt(self) -> Self {
-        let u = self.value();
-        let r = u.sqrt();
-        self.compose([r, 0.5 / r, -0.25 / (u * r), 0.375 / (u * u * r)])
+        Self::from_lane(self.lane().sqrt())
     }
 
     /// Reciprocal (value must be non-zero).
     pub fn recip(self) -> Self {
-        let u = self.value();
-        let r = 1.0 / u;
-        self.compose([r, -r * r, 2.0 * r * r * r, -6.0 * r * r * r * r])
+        Self::from_lane(self.lane().recip())
     }
 
     /// Arc tangent.
     pub fn atan(self) -> Self {
-        let u = self.value();
-        let q = 1.0 / (1.0 + u * u);
-        self.compose([
-            u.atan(),
-            q,
-            -2.0 * u * q * q,
-            (6.0 * u * u - 2.0) * q * q * q,
-        ])
+        Self::from_lane(self.lane().atan())
     }
 }
 
@@ -171,23 +145,9 @@ impl Neg for Jet3 {
 
 impl Mul for Jet3 {
     type Output = Self;
-    /// Truncated product, written out term by term (the hot path of the bearings).
+    /// Truncated product ([`JetLanes::mul`] on one lane).
     fn mul(self, o: Self) -> Self {
-        let (a, b) = (&self.c, &o.c);
-        Self {
-            c: [
-                a[0] * b[0],
-                a[0] * b[1] + a[1] * b[0],
-                a[0] * b[2] + a[2] * b[0],
-                a[0] * b[3] + a[1] * b[1] + a[3] * b[0],
-                a[0] * b[4] + a[1] * b[2] + a[2] * b[1] + a[4] * b[0],
-                a[0] * b[5] + a[2] * b[2] + a[5] * b[0],
-                a[0] * b[6] + a[1] * b[3] + a[3] * b[1] + a[6] * b[0],
-                a[0] * b[7] + a[1] * b[4] + a[2] * b[3] + a[3] * b[2] + a[4] * b[1] + a[7] * b[0],
-                a[0] * b[8] + a[1] * b[5] + a[2] * b[4] + a[4] * b[2] + a[5] * b[1] + a[8] * b[0],
-                a[0] * b[9] + a[2] * b[5] + a[5] * b[2] + a[9] * b[0],
-            ],
-        }
+        Self::from_lane(self.lane().mul(&o.lane()))
     }
 }
 
@@ -220,41 +180,7 @@ pub fn arc_potential(x: f64, y: f64, theta1: f64, theta2: f64) -> Jet3 {
 /// floating-point operations on the non-zero terms as the generic jet
 /// arithmetic, so the same values (`tests::the_written_out_potential_is_the_generic_one`).
 pub fn arc_potential_sc(x: f64, y: f64, span: f64, end1: (f64, f64), end2: (f64, f64)) -> Jet3 {
-    let m = Jet3 {
-        c: [
-            (1.0 - x * x) - y * y,
-            -2.0 * x,
-            -2.0 * y,
-            -1.0,
-            0.0,
-            -1.0,
-            0.0,
-            0.0,
-            0.0,
-            0.0,
-        ],
-    };
-    let root = m.sqrt();
-    let r = &root.c;
-    let end = |(s, c): (f64, f64)| {
-        let num = [x * s - y * c, s, -c];
-        let den = Jet3 {
-            c: [
-                ((1.0 + r[0]) - x * c) - y * s,
-                r[1] - c,
-                r[2] - s,
-                r[3],
-                r[4],
-                r[5],
-                r[6],
-                r[7],
-                r[8],
-                r[9],
-            ],
-        };
-        mul_linear(num, &den.recip()).atan()
-    };
-    (Jet3::constant(span) + (end(end2) - end(end1)) * 2.0) / root
+    Jet3::from_lane(arc_potentials(&one_arc(x, y, span, end1, end2)))
 }
 
 /// The value of [`arc_potential_sc`] alone, by the same operations on the
@@ -304,7 +230,7 @@ pub fn arc_potential_sc2(
     mul2(&sum, &recip2(root))
 }
 
-/// [`Jet3::compose`] truncated to degree 2.
+/// `JetLanes::compose` truncated to degree 2.
 fn compose2(d: [f64; 6], f: [f64; 3]) -> [f64; 6] {
     let h2 = 0.5 * f[2];
     let (a, b) = (d[1], d[2]);
@@ -351,7 +277,7 @@ fn mul2(a: &[f64; 6], b: &[f64; 6]) -> [f64; 6] {
     ]
 }
 
-/// [`mul_linear`] truncated to degree 2.
+/// `JetLanes::mul_linear` truncated to degree 2.
 fn mul_linear2(a: [f64; 3], b: &[f64; 6]) -> [f64; 6] {
     [
         a[0] * b[0],
@@ -363,24 +289,14 @@ fn mul_linear2(a: [f64; 3], b: &[f64; 6]) -> [f64; 6] {
     ]
 }
 
-/// The product of the linear jet `a0 + a1 dx + a2 dy` and `b`: [`Jet3`]'s
-/// product with the terms of `a`'s zero coefficients left out (they come last
-/// in each sum, so the rounding is the same).
-fn mul_linear(a: [f64; 3], b: &Jet3) -> Jet3 {
-    let b = &b.c;
-    Jet3 {
-        c: [
-            a[0] * b[0],
-            a[0] * b[1] + a[1] * b[0],
-            a[0] * b[2] + a[2] * b[0],
-            a[0] * b[3] + a[1] * b[1],
-            a[0] * b[4] + a[1] * b[2] + a[2] * b[1],
-            a[0] * b[5] + a[2] * b[2],
-            a[0] * b[6] + a[1] * b[3],
-            a[0] * b[7] + a[1] * b[4] + a[2] * b[3],
-            a[0] * b[8] + a[1] * b[5] + a[2] * b[4],
-            a[0] * b[9] + a[2] * b[5],
-        ],
+/// One arc as the one lane of an [`ArcLanes`].
+fn one_arc(x: f64, y: f64, span: f64, end1: (f64, f64), end2: (f64, f64)) -> ArcLanes<1> {
+    ArcLanes {
+        x: [x],
+        y: [y],
+        span: [span],
+        from_sc: ([end1.0], [end1.1]),
+        to_sc: ([end2.0], [end2.1]),
     }
 }
 

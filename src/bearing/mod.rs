@@ -40,6 +40,7 @@ pub mod coefficients;
 pub mod contact;
 pub mod equilibrium;
 pub mod film;
+mod film_lanes;
 pub mod linear;
 pub mod magnetic_pull;
 pub mod plain;

@@ -35,7 +35,8 @@ use std::f64::consts::PI;
 
 use nalgebra::{Matrix2, Vector2};
 
-use super::film::FilmIntegrals;
+use super::film::{FilmIntegrals, Jet3};
+use super::film_lanes::{ArcLanes, arc_potentials};
 use super::{BearingError, BearingForce, JournalState};
 
 /// Eccentricity ratio `ε_a` up to which the film sees the actual journal position.
@@ -106,13 +107,13 @@ impl ShortFilm {
         speed: f64,
         window: Option<&FilmWindow>,
     ) -> Result<BearingForce, BearingError> {
-        let Some(film) = self.integrals(state, speed, window, Terms::WithJacobians) else {
-            return Ok(BearingForce {
-                force: Vector2::zeros(),
-                stiffness: Matrix2::zeros(),
-                damping: Matrix2::zeros(),
-            });
-        };
+        let film = self.prepare(state, speed, window, Terms::WithJacobians);
+        self.force_of(film, speed)
+    }
+
+    /// Force and Jacobians of a [`Film`] (its potential evaluated here if
+    /// [`ShortFilm::complete`] has not).
+    pub(crate) fn force_of(&self, film: Film, speed: f64) -> Result<BearingForce, BearingError> {
         let FilmAt {
             f,
             a,
@@ -120,7 +121,16 @@ impl ShortFilm {
             c,
             saturation,
             ..
-        } = film;
+        } = match self.completed(film, Terms::WithJacobians) {
+            Film::Ready(at) => at,
+            Film::Nothing | Film::Whole { .. } => {
+                return Ok(BearingForce {
+                    force: Vector2::zeros(),
+                    stiffness: Matrix2::zeros(),
+                    damping: Matrix2::zeros(),
+                });
+            }
+        };
         let cl = self.clearance;
         let force = Vector2::new(c * (a * f.xy - b * f.xx), c * (a * f.yy - b * f.xy));
         let dfx_dx = c * (speed * f.xy + (a * f.xxy - b * f.xxx) / cl);
@@ -155,34 +165,34 @@ impl ShortFilm {
         speed: f64,
         window: Option<&FilmWindow>,
     ) -> Result<(Vector2<f64>, Option<f64>), BearingError> {
-        let Some(FilmAt {
-            f, a, b, c, whole, ..
-        }) = self.integrals(state, speed, window, Terms::ForceOnly)
-        else {
-            return Ok((Vector2::zeros(), None));
-        };
-        let force = Vector2::new(c * (a * f.xy - b * f.xx), c * (a * f.yy - b * f.xy));
-        if force.iter().all(|v| v.is_finite()) {
-            Ok((force, whole))
-        } else {
-            Err(BearingError::NotFinite {
-                what: "film force",
-                value: force.norm(),
-            })
-        }
+        let film = self.completed(
+            self.prepare(state, speed, window, Terms::ForceOnly),
+            Terms::ForceOnly,
+        );
+        force_only_of(film)
+    }
+
+    /// `film` with its potential evaluated if it waits for one.
+    fn completed(&self, film: Film, terms: Terms) -> Film {
+        let mut one = [film];
+        self.complete(&mut one, terms);
+        let [film] = one;
+        film
     }
 
     /// The film integrals at `state` over the positive-pressure part of the
     /// window, with the source coefficients `A`, `B`, the force constant
-    /// `μ R L³ / (4 C³)` and the saturation Jacobian; `None` when the pressure
-    /// half circle misses the window.
-    fn integrals(
+    /// `μ R L³ / (4 C³)` and the saturation Jacobian ([`Film::Nothing`] when
+    /// the pressure half circle misses the window), but for the potential
+    /// over a window the pressure covers wholly, which
+    /// [`ShortFilm::complete`] evaluates (several films at once).
+    pub(crate) fn prepare(
         &self,
         state: &JournalState,
         speed: f64,
         window: Option<&FilmWindow>,
         terms: Terms,
-    ) -> Option<FilmAt> {
+    ) -> Film {
         let cl = self.clearance;
         let (position, saturation) = film_position(state.position, cl);
         let state = &JournalState {
@@ -193,28 +203,68 @@ impl ShortFilm {
         let (a, b) = source_coefficients(state, speed);
         let cover = window.map(|w| pressure_cover(w, a, b, state, speed));
         if cover == Some(Cover::Nothing) {
-            return None;
+            return Film::Nothing;
         }
-        let (f, whole) = match (window, cover) {
-            (Some(w), Some(Cover::Whole)) => {
-                terms.over_arc(x, y, w.to - w.from, w.from_sc, w.to_sc)
-            }
-            _ => (
-                integrals_by_angles(x, y, (a, b), state, speed, window, terms),
-                None,
-            ),
-        };
         let c = self.viscosity * self.radius * self.length.powi(3) / (4.0 * cl.powi(3));
-        Some(FilmAt {
-            f,
+        let at = FilmAt {
+            f: FilmIntegrals::default(),
             a,
             b,
             c,
             saturation,
-            whole,
-        })
+            whole: None,
+        };
+        match (window, cover) {
+            (Some(w), Some(Cover::Whole)) => Film::Whole {
+                at,
+                x,
+                y,
+                span: w.to - w.from,
+                from_sc: w.from_sc,
+                to_sc: w.to_sc,
+            },
+            _ => Film::Ready(FilmAt {
+                f: integrals_by_angles(x, y, (a, b), state, speed, window, terms),
+                ..at
+            }),
+        }
     }
 
+    /// Evaluate the potentials that `films` wait for ([`Film::Whole`]),
+    /// making them [`Film::Ready`]: with the Jacobians [`LANES`] at a time on
+    /// the lanes of [`arc_potentials`], the same numbers as one by one; for
+    /// the force alone one by one (its degree-2 jets gained nothing on lanes).
+    pub(crate) fn complete(&self, films: &mut [Film], terms: Terms) {
+        if terms == Terms::ForceOnly || films.len() == 1 {
+            for film in films.iter_mut() {
+                if let Film::Whole {
+                    at,
+                    x,
+                    y,
+                    span,
+                    from_sc,
+                    to_sc,
+                } = *film
+                {
+                    let (f, whole) = terms.over_arc(x, y, span, from_sc, to_sc);
+                    *film = Film::Ready(FilmAt { f, whole, ..at });
+                }
+            }
+            return;
+        }
+        let mut waiting = [0usize; LANES];
+        let mut count = 0;
+        for k in 0..=films.len() {
+            if k < films.len() && matches!(films[k], Film::Whole { .. }) {
+                waiting[count] = k;
+                count += 1;
+            }
+            if count == LANES || (k == films.len() && count > 0) {
+                complete_lanes(films, &waiting[..count]);
+                count = 0;
+            }
+        }
+    }
     /// Couette (Petroff-corrected) friction torque of the film over the window
     /// (`None`: the whole circle),
     /// shear `μωR/h` on the journal surface: `T = (μωR³L/C) ∫ dθ/H` (N·m). The
@@ -242,9 +292,70 @@ impl ShortFilm {
     }
 }
 
+/// The force of a [`Film`] made complete for the force alone, and `∫ dθ/H`
+/// over its window when the pressure covers all of it
+/// ([`ShortFilm::force_only`]).
+fn force_only_of(film: Film) -> Result<(Vector2<f64>, Option<f64>), BearingError> {
+    let Film::Ready(FilmAt {
+        f, a, b, c, whole, ..
+    }) = film
+    else {
+        return Ok((Vector2::zeros(), None));
+    };
+    let force = Vector2::new(c * (a * f.xy - b * f.xx), c * (a * f.yy - b * f.xy));
+    if force.iter().all(|v| v.is_finite()) {
+        Ok((force, whole))
+    } else {
+        Err(BearingError::NotFinite {
+            what: "film force",
+            value: force.norm(),
+        })
+    }
+}
+
+/// The potentials (with the Jacobians' terms) of the wholly covered
+/// `films[k]`, `k` in `which` (at most [`LANES`]), on the lanes of one
+/// [`arc_potentials`]; unused lanes repeat the first arc.
+fn complete_lanes(films: &mut [Film], which: &[usize]) {
+    let arc_of = |film: &Film| match *film {
+        Film::Whole {
+            x,
+            y,
+            span,
+            from_sc,
+            to_sc,
+            ..
+        } => (x, y, span, from_sc, to_sc),
+        _ => unreachable!("complete_lanes is given wholly covered films only"),
+    };
+    let arcs: [_; LANES] =
+        std::array::from_fn(|lane| arc_of(&films[which[lane.min(which.len() - 1)]]));
+    let lanes = ArcLanes {
+        x: arcs.map(|a| a.0),
+        y: arcs.map(|a| a.1),
+        span: arcs.map(|a| a.2),
+        from_sc: (arcs.map(|a| a.3.0), arcs.map(|a| a.3.1)),
+        to_sc: (arcs.map(|a| a.4.0), arcs.map(|a| a.4.1)),
+    };
+    let phi = arc_potentials(&lanes);
+    let integrals: [(FilmIntegrals, f64); LANES] = std::array::from_fn(|lane| {
+        let jet = Jet3::from_coefficients(phi.c.map(|v| v[lane]));
+        (FilmIntegrals::from_potential(jet), jet.value())
+    });
+    for (&k, (f, whole)) in which.iter().zip(integrals) {
+        if let Film::Whole { at, .. } = films[k] {
+            films[k] = Film::Ready(FilmAt {
+                f,
+                whole: Some(whole),
+                ..at
+            });
+        }
+    }
+}
+
 /// Which terms of the film potential a caller needs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Terms {
+pub(crate) enum Terms {
     /// Up to degree 3: the force and its Jacobians.
     WithJacobians,
     /// Up to degree 2: the force alone.
@@ -275,8 +386,33 @@ impl Terms {
     }
 }
 
+/// Arcs evaluated together on the lanes of [`arc_potentials`].
+const LANES: usize = 2;
+
+/// A film on its way to its force: [`ShortFilm::prepare`] leaves the
+/// potential of a wholly covered window to [`ShortFilm::complete`].
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Film {
+    /// The pressure half circle misses the window: no force.
+    Nothing,
+    /// The integrals are known.
+    Ready(FilmAt),
+    /// The pressure covers the window wholly: its potential over the arc of
+    /// length `span` with the given end sines and cosines, at the film
+    /// position `(x, y)` (of the clearance), is still to be evaluated.
+    Whole {
+        at: FilmAt,
+        x: f64,
+        y: f64,
+        span: f64,
+        from_sc: (f64, f64),
+        to_sc: (f64, f64),
+    },
+}
+
 /// The film integrals at a state and what the force is made of.
-struct FilmAt {
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct FilmAt {
     f: FilmIntegrals,
     /// Source coefficients `A`, `B` (m/s).
     a: f64,

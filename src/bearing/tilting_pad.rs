@@ -36,7 +36,7 @@ use nalgebra::Vector2;
 use super::BearingForce;
 use super::contact::{ContactExtent, ContactLaw, ContactReport};
 use super::plain::{attitude_angle, contact_friction_torque};
-use super::short_film::{FilmWindow, ShortFilm};
+use super::short_film::{Film, FilmWindow, ShortFilm, Terms};
 use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, check_state};
 
 /// Relative size of the pivot's restoring moment (see the module docs).
@@ -297,6 +297,9 @@ impl TiltingPadBearing {
     }
 }
 
+/// Pads whose films are prepared, then evaluated together, at a time.
+const PAD_BATCH: usize = 8;
+
 impl Bearing for TiltingPadBearing {
     fn internal_dofs(&self) -> usize {
         self.pads.len()
@@ -315,17 +318,23 @@ impl Bearing for TiltingPadBearing {
         let film = self.film();
         let (c_rest, k_rest) = self.pivot_rest(speed);
         let law = self.contact_law();
-        for (k, pad) in self.pads.iter().enumerate() {
-            let (s, c, state) = self.pad_state(k, q, qdot);
-            let part = film.force(&state, speed, Some(&pad.window))?;
-            out.add_transformed(&part, Some((k, -s, c)));
-            if let Some((contact, _)) = self.pad_contact(&law, k, &state, speed) {
-                out.add_transformed(&contact, Some((k, -s, c)));
+        // Pads in batches: their films' potentials evaluated together
+        // (`ShortFilm::complete`), then each pad's force in pad order.
+        for first in (0..self.pads.len()).step_by(PAD_BATCH) {
+            let batch = first..(first + PAD_BATCH).min(self.pads.len());
+            let (states, films) = self.prepare_films(batch.clone(), q, qdot, speed);
+            for (i, k) in batch.enumerate() {
+                let (s, c, state) = &states[i];
+                let part = film.force_of(films[i], speed)?;
+                out.add_transformed(&part, Some((k, -s, *c)));
+                if let Some((contact, _)) = self.pad_contact(&law, k, state, speed) {
+                    out.add_transformed(&contact, Some((k, -s, *c)));
+                }
+                let i = 2 + k;
+                out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+                out.stiffness[i * n + i] += k_rest;
+                out.damping[i * n + i] += c_rest;
             }
-            let i = 2 + k;
-            out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
-            out.stiffness[i * n + i] += k_rest;
-            out.damping[i * n + i] += c_rest;
         }
         Ok(())
     }
@@ -500,9 +509,9 @@ impl TiltingPadBearing {
         let n = 2 + self.pads.len();
         check_state(n, q, qdot, speed, out)?;
         out.force.fill(0.0);
-        let film = self.film();
         let (c_rest, k_rest) = self.pivot_rest(speed);
         let law = self.contact_law();
+        let film = self.film();
         for (k, pad) in self.pads.iter().enumerate() {
             let (s, c, state) = self.pad_state(k, q, qdot);
             let (force, whole) = film.force_only(&state, speed, Some(&pad.window))?;
@@ -516,6 +525,28 @@ impl TiltingPadBearing {
             each_pad(k, &state, whole, contact.as_ref());
         }
         Ok(())
+    }
+
+    /// The states of the pads `batch` (at most [`PAD_BATCH`]) and their films
+    /// with the potentials (and the Jacobians' terms) evaluated together
+    /// ([`ShortFilm::complete`]).
+    fn prepare_films(
+        &self,
+        batch: std::ops::Range<usize>,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+    ) -> ([(f64, f64, JournalState); PAD_BATCH], [Film; PAD_BATCH]) {
+        let terms = Terms::WithJacobians;
+        let film = self.film();
+        let mut states = [(0.0, 0.0, JournalState::default()); PAD_BATCH];
+        let mut films = [Film::Nothing; PAD_BATCH];
+        for (i, k) in batch.clone().enumerate() {
+            states[i] = self.pad_state(k, q, qdot);
+            films[i] = film.prepare(&states[i].2, speed, Some(&self.pads[k].window), terms);
+        }
+        film.complete(&mut films[..batch.len()], terms);
+        (states, films)
     }
 
     /// The report from the pads' tally and the journal force in `eval`.
