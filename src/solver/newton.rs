@@ -175,8 +175,9 @@ fn converged(increment: f64, previous: f64, tol: f64, damped: bool) -> bool {
 /// Jacobians for the next iteration (a chord iteration).
 const CHORD_INCREMENT: f64 = 1e-4;
 
-/// Contraction `δ_k / δ_{k−1}` a chord iteration must reach for the next one
-/// to keep the Jacobians too.
+/// Contraction `δ_k / δ_{k−1}` a chord iteration must reach to be applied;
+/// one that contracts less is not taken, and the step goes on with full
+/// Newton.
 const CHORD_CONTRACTION: f64 = 0.1;
 
 /// Contraction `δ_k / δ_{k−1}` of the iteration before a chord iteration.
@@ -190,7 +191,7 @@ const NEWTON_CONTRACTION: f64 = 1e-2;
 /// (the hydro unit's first increments are about 1e-6 of its clearance: its
 /// second iteration lands where Newton's does to about 1e-6 of the
 /// tolerance). That holds where Newton converges quadratically, so the
-/// increment must also have contracted by [`CHORD_CONTRACTION`] on the one
+/// increment must also have contracted by [`NEWTON_CONTRACTION`] on the one
 /// before (`previous`: `δ_{k−1}`, infinite at the first iteration); pads
 /// near a double root of their moment balance, whose increments halve, stay
 /// on full Newton. `allowed`: no chord iteration of this step has contracted
