@@ -28,7 +28,7 @@ pub struct Jet3 {
 }
 
 /// Exponents `(i, j)` of the flat monomials.
-const MONOMIALS: [(usize, usize); 10] = [
+pub(crate) const MONOMIALS: [(usize, usize); 10] = [
     (0, 0),
     (1, 0),
     (0, 1),
