@@ -174,6 +174,9 @@ impl ShortFilm {
 
     /// `film` with its potential evaluated if it waits for one.
     fn completed(&self, film: Film, terms: Terms) -> Film {
+        if !matches!(film, Film::Whole { .. }) {
+            return film;
+        }
         let mut one = [film];
         self.complete(&mut one, terms);
         let [film] = one;
