@@ -65,7 +65,10 @@ if [ ${#need[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${need[@]}" >/dev/null
   rust_pkgs_ok || { echo "setup: rustc-web, cargo-web and rust-web-src differ in version after the install" >&2; exit 1; }
   echo "setup: installed ${#need[@]} packages in $((SECONDS - start)) s"
+  # WIN64_SYSROOT is keyed by Debian's compiler, which may have just arrived.
+  . scripts/win64_env.sh
 fi
+[ -n "$WIN64_SYSROOT" ] || { echo "setup: $WIN64_RUSTC missing after the install (rustc-web)" >&2; exit 1; }
 
 # Headless Chromium (Debian's package) for the test that renders the HTML
 # report in a real browser (tests/analyst_report.rs), with a font for its text.
