@@ -137,7 +137,9 @@ impl Simulator {
         let (output, site) = &mut self.output_bearings[index];
         *output = placed.kind.build();
         if let Some(k) = site {
-            self.sites.list[*k].bearing = placed.kind.build();
+            let site = &mut self.sites.list[*k];
+            site.bearing = placed.kind.build();
+            site.memo.clear();
         }
         Ok(())
     }

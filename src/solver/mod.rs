@@ -64,6 +64,7 @@ mod inputs;
 mod line_search;
 mod newmark;
 mod newton;
+mod output_memo;
 mod outputs;
 pub mod reduction_check;
 pub mod run;

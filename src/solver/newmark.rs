@@ -101,6 +101,22 @@ fn pad_predictor(tilt: f64, rate: f64, acceleration: f64, h: f64) -> f64 {
     }
 }
 
+/// Newmark rates at the end of a step of size `h` that moves a coordinate
+/// from `u0` (rate `ud0`, acceleration `udd0`) to `u`:
+/// `u̇ = a1 (u − u₀) − u̇₀`, `ü = a0 (u − u₀) − a2 u̇₀ − ü₀`, with
+/// `[a0, a1, a2] = [4/h², 2/h, 4/h]`.
+#[inline]
+pub(super) fn newmark_rates(
+    [a0, a1, a2]: [f64; 3],
+    u: f64,
+    u0: f64,
+    ud0: f64,
+    udd0: f64,
+) -> (f64, f64) {
+    let d = u - u0;
+    (a1 * d - ud0, a0 * d - a2 * ud0 - udd0)
+}
+
 impl Simulator {
     /// Newmark rates at the iterate `newmark.u`, `newmark.p` of a step of size `h`.
     pub(super) fn update_rates(&mut self, h: f64) {
@@ -120,14 +136,10 @@ impl Simulator {
                 Displacement::LinearPlusCorrection => w.lin[i] + w.mv[i],
             };
             w.u[i] = u;
-            let d = u - s.u[i];
-            w.ud[i] = a1 * d - s.ud[i];
-            w.udd[i] = a0 * d - a2 * s.ud[i] - s.udd[i];
+            (w.ud[i], w.udd[i]) = newmark_rates([a0, a1, a2], u, s.u[i], s.ud[i], s.udd[i]);
         }
         for i in 0..s.p.len() {
-            let d = w.p[i] - s.p[i];
-            w.pd[i] = a1 * d - s.pd[i];
-            w.pdd[i] = a0 * d - a2 * s.pd[i] - s.pdd[i];
+            (w.pd[i], w.pdd[i]) = newmark_rates([a0, a1, a2], w.p[i], s.p[i], s.pd[i], s.pdd[i]);
         }
     }
 

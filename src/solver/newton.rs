@@ -8,7 +8,7 @@ use crate::linalg::LinalgError;
 use super::dense::{lu_in_place, lu_solve};
 use super::factor::Factor;
 use super::line_search::{Backtrack, Trial, condensed_residual, retreat};
-use super::newmark::Displacement;
+use super::newmark::{Displacement, newmark_rates};
 use super::simulator::{Simulator, SolverError};
 use super::sites::Sites;
 
@@ -213,6 +213,24 @@ fn chord_converged(increment: f64, previous: f64, tol: f64) -> bool {
     2.0 * increment / previous * increment <= CHORD_ERROR * tol
 }
 
+/// Error a step that ends on its iterate may leave, as a fraction of the
+/// tolerance.
+const ITERATE_ERROR: f64 = 1e-3;
+
+/// A step ends on the iterate of its first chord iteration, not applying the
+/// chord increment `δ` (relative, `increment`), when `δ` is within
+/// [`ITERATE_ERROR`] of the tolerance `tol`: the chord contracts by at least
+/// [`CHORD_CONTRACTION`] there, so the iterate's error is about `δ`. The
+/// iterate's bearing pass is then the outputs' one. On the hydro unit at 5 ms
+/// in steady running `δ` is 3e-4 to 1e-3 of the tolerance (99.5 % of the
+/// steps end on their iterate); the bound is a tenth of [`CHORD_ERROR`]
+/// because skipping `δ` errs the same way step after step (at 1e-2 the
+/// plain-bearing unit's journals drifted by 1.8e-8 of their range from a run
+/// at a tolerance of 1e-12; at 1e-3, 6.0e-10, as with `δ` applied).
+fn ends_on_iterate(increment: f64, tol: f64) -> bool {
+    increment <= ITERATE_ERROR * tol
+}
+
 /// Buffers of the condensed Newton on the journal coordinates: the iterate
 /// `j` (set to the predictor before the first iteration), bearing forces `F_j`,
 /// pad terms `K_jp K_pp⁻¹ (−F_p)`, condensed 2×2 stiffnesses (4 per bearing),
@@ -300,11 +318,16 @@ impl Simulator {
         let length_scale = self.sites.length_scale;
         let mut last = f64::INFINITY;
         let (mut chord, mut chord_allowed) = (false, true);
+        let mut first_chord = true;
         self.condensed.search.reset();
         for _ in 0..self.options.max_iterations {
             self.stats.iterations += 1;
+            // The step's first chord iteration makes the outputs' pass, so that a
+            // step that ends on its iterate has made it ([`ends_on_iterate`]).
+            let check = chord && first_chord && self.sites.on_ground;
             if chord {
                 self.stats.chord_iterations += 1;
+                first_chord = false;
             }
             let (s, w, c) = (&self.state, &mut self.newmark, &mut self.condensed);
             for (k, site) in self.sites.list.iter_mut().enumerate() {
@@ -324,9 +347,18 @@ impl Simulator {
                     source,
                 };
                 let wv = if chord {
-                    site.bearing
-                        .forces(&site.q, &site.qd, speed1, &mut site.eval)
-                        .map_err(bearing_error)?;
+                    if check {
+                        let report = site
+                            .bearing
+                            .output(&site.q, &site.qd, speed1, &mut site.eval)
+                            .map_err(bearing_error)?;
+                        site.memo
+                            .store(&site.q, &site.qd, speed1, &site.eval.force, report);
+                    } else {
+                        site.bearing
+                            .forces(&site.q, &site.qd, speed1, &mut site.eval)
+                            .map_err(bearing_error)?;
+                    }
                     site.condensation.load(&site.eval.force)
                 } else {
                     site.bearing
@@ -401,6 +433,16 @@ impl Simulator {
                 chord_allowed = false;
                 continue;
             }
+            if check && ends_on_iterate(increment, tol) {
+                // The forces at the iterate, its pads' residual condensed.
+                for (fk, wk) in c.fj.iter_mut().zip(&c.wv) {
+                    *fk += wk;
+                }
+                self.displacement_from_journal_forces(h, f);
+                self.place_journals(h);
+                self.stats.steps_on_iterate += 1;
+                return Ok(None);
+            }
             for (j, d) in c.j.iter_mut().zip(&c.search.journal) {
                 *j += d;
             }
@@ -417,21 +459,7 @@ impl Simulator {
                     let kc = &c.kc[4 * b + 2 * i..4 * b + 2 * i + 2];
                     *fk += c.wv[k] - kc[0] * c.cj_rhs[2 * b] - kc[1] * c.cj_rhs[2 * b + 1];
                 }
-                if f.z.is_empty() {
-                    w.mv.fill(0.0);
-                    for (coordinate, fk) in self.sites.coordinates.iter().zip(&c.fj) {
-                        coordinate.add(&mut w.mv, *fk);
-                    }
-                    f.lu.solve_in_place(&mut w.mv);
-                    self.set_displacement_and_rates(h, Displacement::LinearPlusCorrection);
-                } else {
-                    for (zc, fk) in f.z.chunks_exact(w.lin.len()).zip(&c.fj) {
-                        for (l, z) in w.lin.iter_mut().zip(zc) {
-                            *l += z * fk;
-                        }
-                    }
-                    self.set_displacement_and_rates(h, Displacement::Linear);
-                }
+                self.displacement_from_journal_forces(h, f);
                 return Ok(None);
             }
             chord =
@@ -442,6 +470,42 @@ impl Simulator {
             }
         }
         Ok(Some(last))
+    }
+
+    /// The step's displacement `u = u_lin + A⁻¹ E F_j` and its Newmark rates,
+    /// `F_j` the journal forces in `condensed.fj`.
+    fn displacement_from_journal_forces(&mut self, h: f64, f: &Factor) {
+        let (w, c) = (&mut self.newmark, &self.condensed);
+        if f.z.is_empty() {
+            w.mv.fill(0.0);
+            for (coordinate, fk) in self.sites.coordinates.iter().zip(&c.fj) {
+                coordinate.add(&mut w.mv, *fk);
+            }
+            f.lu.solve_in_place(&mut w.mv);
+            self.set_displacement_and_rates(h, Displacement::LinearPlusCorrection);
+        } else {
+            for (zc, fk) in f.z.chunks_exact(w.lin.len()).zip(&c.fj) {
+                for (l, z) in w.lin.iter_mut().zip(zc) {
+                    *l += z * fk;
+                }
+            }
+            self.set_displacement_and_rates(h, Displacement::Linear);
+        }
+    }
+
+    /// Put the journals (each one rotor DOF: [`Sites::on_ground`]) on the
+    /// iterate `condensed.j` exactly, with their Newmark rates: the
+    /// coordinates and rates the iterate's bearing pass saw, so that
+    /// `Simulator::outputs` finds that pass in the sites' memos. They move
+    /// by the condensed residual, within the chord increment.
+    fn place_journals(&mut self, h: f64) {
+        let a = [4.0 / (h * h), 2.0 / h, 4.0 / h];
+        let (s, w) = (&self.state, &mut self.newmark);
+        for (coordinate, j) in self.sites.coordinates.iter().zip(&self.condensed.j) {
+            let i = coordinate.journal;
+            w.u[i] = *j;
+            (w.ud[i], w.udd[i]) = newmark_rates(a, *j, s.u[i], s.ud[i], s.udd[i]);
+        }
     }
 
     /// Modified Newton–Raphson on the full residual of a step with a possibly

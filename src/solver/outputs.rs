@@ -164,19 +164,29 @@ impl Simulator {
                 vx - housing.vx,
                 vy - housing.vy,
             );
+            let mut memo = None;
             if let Some(si) = site {
                 let s = &self.sites.list[*si];
                 q[2..].copy_from_slice(&self.state.p[s.offset..s.offset + internal]);
                 qd[2..].copy_from_slice(&self.state.pd[s.offset..s.offset + internal]);
+                memo = s.memo.recall(q, qd, speed);
             }
+            // The step's last bearing pass, when it was `output` at these very
+            // inputs (a pure function of them: the same bits).
             let report =
-                bearing
-                    .output(q, qd, speed, eval)
-                    .map_err(|source| SolverError::Bearing {
-                        name: self.rotor.model.bearings[k].name.clone(),
-                        time: t,
-                        source,
-                    })?;
+                match memo {
+                    Some((force, report)) => {
+                        eval.force.copy_from_slice(force);
+                        report
+                    }
+                    None => bearing.output(q, qd, speed, eval).map_err(|source| {
+                        SolverError::Bearing {
+                            name: self.rotor.model.bearings[k].name.clone(),
+                            time: t,
+                            source,
+                        }
+                    })?,
+                };
             friction_torque += report.friction_torque;
             power_loss += report.power_loss;
             bearings.push(BearingOutput {

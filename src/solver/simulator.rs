@@ -98,6 +98,9 @@ pub struct StepStats {
     /// Iterations of the condensed Newton on the Jacobians of the iteration
     /// before (the bearing forces alone evaluated).
     pub chord_iterations: usize,
+    /// Steps that ended on the iterate of their first chord iteration, its
+    /// bearing pass the outputs' one.
+    pub steps_on_iterate: usize,
     /// Step halvings.
     pub step_cuts: usize,
     /// Steps solved again by the damped Newton after plain Newton failed.

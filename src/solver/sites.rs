@@ -14,6 +14,7 @@ use crate::linalg::BandMatrix;
 use crate::rotor::Rotor;
 
 use super::condense::Condensation;
+use super::output_memo::OutputMemo;
 use super::simulator::SolverError;
 
 /// One journal coordinate of a site: a journal DOF, less its housing DOF
@@ -86,6 +87,8 @@ pub(super) struct Site {
     pub qd: Vec<f64>,
     /// The pad block `K_pp + a1 C_pp` condensed onto the journal.
     pub condensation: Condensation,
+    /// The outputs' pass of a step that ended on its iterate.
+    pub memo: OutputMemo,
 }
 
 /// All nonlinear bearings of a rotor, in model order.
@@ -104,6 +107,9 @@ pub(super) struct Sites {
     /// Displacement scale of the convergence tests: the smallest bearing
     /// clearance (m), 1 µm without fluid-film bearings.
     pub length_scale: f64,
+    /// No site stands on a pedestal: each journal coordinate is one rotor
+    /// DOF, so a step can place the journals on its iterate exactly.
+    pub on_ground: bool,
 }
 
 impl Sites {
@@ -155,6 +161,7 @@ impl Sites {
                 q: vec![0.0; 2 + internal],
                 qd: vec![0.0; 2 + internal],
                 condensation: Condensation::new(internal),
+                memo: OutputMemo::default(),
                 bearing,
             });
             offset += internal;
@@ -176,6 +183,9 @@ impl Sites {
             coordinates: list.iter().flat_map(|s| s.journal).collect(),
             cheap_forces: list.iter().all(|s| s.bearing.cheap_forces()),
             length_scale,
+            on_ground: list
+                .iter()
+                .all(|s| s.journal.iter().all(|c| c.housing.is_none())),
             list,
         })
     }

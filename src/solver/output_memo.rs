@@ -1,0 +1,99 @@
+//! The outputs' pass a Newton step has already made for one bearing:
+//! `Bearing::output` at the coordinates, rates and speed it was called with.
+//! `output` is a pure function of those, so when the state's coordinates equal
+//! the key bit for bit, its force and report are what `Simulator::outputs`
+//! would compute again (a restored state, which finds no memo, computes them
+//! and gets the same bits).
+
+use crate::bearing::BearingReport;
+
+/// The last `output` of one site and the inputs it was called with.
+#[derive(Debug, Clone, Default)]
+pub(super) struct OutputMemo {
+    /// Whether `q`, `qd`, `speed`, `force` and `report` belong together.
+    valid: bool,
+    q: Vec<f64>,
+    qd: Vec<f64>,
+    speed: f64,
+    force: Vec<f64>,
+    report: BearingReport,
+}
+
+impl OutputMemo {
+    /// Remember `output(q, qd, speed) = (force, report)`.
+    pub fn store(
+        &mut self,
+        q: &[f64],
+        qd: &[f64],
+        speed: f64,
+        force: &[f64],
+        report: BearingReport,
+    ) {
+        for (memo, value) in [
+            (&mut self.q, q),
+            (&mut self.qd, qd),
+            (&mut self.force, force),
+        ] {
+            memo.clear();
+            memo.extend_from_slice(value);
+        }
+        self.speed = speed;
+        self.report = report;
+        self.valid = true;
+    }
+
+    /// Forget it (the bearing's parameters changed).
+    pub fn clear(&mut self) {
+        self.valid = false;
+    }
+
+    /// The remembered force and report when `q`, `qd` and `speed` are the
+    /// key bit for bit.
+    pub fn recall(&self, q: &[f64], qd: &[f64], speed: f64) -> Option<(&[f64], BearingReport)> {
+        let same = |a: &[f64], b: &[f64]| {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
+        };
+        (self.valid
+            && speed.to_bits() == self.speed.to_bits()
+            && same(q, &self.q)
+            && same(qd, &self.qd))
+        .then_some((&self.force, self.report))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn recalls_only_its_own_inputs_bit_for_bit() {
+        let mut memo = OutputMemo::default();
+        let (q, qd) = ([1e-5, -2e-5, 3e-4], [0.1, 0.2, -0.3]);
+        assert!(memo.recall(&q, &qd, 15.7).is_none());
+        let report = BearingReport {
+            eccentricity: 0.4,
+            ..BearingReport::default()
+        };
+        memo.store(&q, &qd, 15.7, &[10.0, -20.0, 0.5], report);
+        let (force, got) = memo.recall(&q, &qd, 15.7).unwrap();
+        assert_eq!(force, &[10.0, -20.0, 0.5]);
+        assert_eq!(got, report);
+        // One bit off anywhere, or −0 for +0, is another input.
+        let bumped = |v: f64| f64::from_bits(v.to_bits() + 1);
+        assert!(memo.recall(&q, &qd, bumped(15.7)).is_none());
+        for i in 0..3 {
+            let mut other = q;
+            other[i] = bumped(other[i]);
+            assert!(memo.recall(&other, &qd, 15.7).is_none());
+            let mut other = qd;
+            other[i] = bumped(other[i]);
+            assert!(memo.recall(&q, &other, 15.7).is_none());
+        }
+        let zero = BearingReport::default();
+        memo.store(&[0.0, 0.0], &[0.0, 0.0], 1.0, &[0.0, 0.0], zero);
+        assert!(memo.recall(&[-0.0, 0.0], &[0.0, 0.0], 1.0).is_none());
+        assert!(memo.recall(&q, &qd, 15.7).is_none());
+        memo.clear();
+        assert!(memo.recall(&[0.0, 0.0], &[0.0, 0.0], 1.0).is_none());
+    }
+}
