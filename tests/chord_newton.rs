@@ -78,7 +78,8 @@ fn chord_iterations_keep_the_newton_accuracy() {
 
 /// The hydro unit at 5 ms, one second after its static equilibrium: at
 /// least 90 % of the next 200 steps end on their iterate (measured: 195),
-/// and at each the outputs are bit for bit (their `Debug` text, which tells
+/// each of those reports its two bearings from the step's pass, and at
+/// every step the outputs are bit for bit (their `Debug` text, which tells
 /// every bit of a number apart) those of a second simulator given the same
 /// state, which has no bearing pass to recall and evaluates them.
 #[test]
@@ -112,9 +113,10 @@ fn a_step_ending_on_its_iterate_reports_that_iterate_bit_for_bit() {
             "t = {t} s"
         );
     }
-    println!(
-        "{on_iterate} of 200 steps on their iterate; {:?}",
-        sim.stats()
-    );
+    let stats = sim.stats();
+    println!("{on_iterate} of 200 steps on their iterate; {stats:?}");
     assert!(10 * on_iterate >= 9 * 200, "{on_iterate}");
+    // Each of those reports its two bearings from the memo, not afresh.
+    assert_eq!(stats.outputs_recalled, 2 * on_iterate, "{stats:?}");
+    assert_eq!(fresh.stats().outputs_recalled, 0);
 }

@@ -7,11 +7,10 @@
 
 use crate::bearing::BearingReport;
 
-/// The last `output` of one site and the inputs it was called with.
+/// The last `output` of one site and the inputs it was called with (none
+/// while `q` is empty: a bearing has at least its two journal coordinates).
 #[derive(Debug, Clone, Default)]
 pub(super) struct OutputMemo {
-    /// Whether `q`, `qd`, `speed`, `force` and `report` belong together.
-    valid: bool,
     q: Vec<f64>,
     qd: Vec<f64>,
     speed: f64,
@@ -39,12 +38,11 @@ impl OutputMemo {
         }
         self.speed = speed;
         self.report = report;
-        self.valid = true;
     }
 
     /// Forget it (the bearing's parameters changed).
     pub fn clear(&mut self) {
-        self.valid = false;
+        self.q.clear();
     }
 
     /// The remembered force and report when `q`, `qd` and `speed` are the
@@ -53,7 +51,7 @@ impl OutputMemo {
         let same = |a: &[f64], b: &[f64]| {
             a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
         };
-        (self.valid
+        (!self.q.is_empty()
             && speed.to_bits() == self.speed.to_bits()
             && same(q, &self.q)
             && same(qd, &self.qd))

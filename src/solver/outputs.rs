@@ -177,6 +177,7 @@ impl Simulator {
                 match memo {
                     Some((force, report)) => {
                         eval.force.copy_from_slice(force);
+                        self.stats.outputs_recalled += 1;
                         report
                     }
                     None => bearing.output(q, qd, speed, eval).map_err(|source| {

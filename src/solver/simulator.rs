@@ -101,6 +101,9 @@ pub struct StepStats {
     /// Steps that ended on the iterate of their first chord iteration, its
     /// bearing pass the outputs' one.
     pub steps_on_iterate: usize,
+    /// Bearing outputs `Simulator::outputs` took from the last step's pass
+    /// instead of evaluating them.
+    pub outputs_recalled: usize,
     /// Step halvings.
     pub step_cuts: usize,
     /// Steps solved again by the damped Newton after plain Newton failed.
