@@ -221,7 +221,7 @@ const ITERATE_ERROR: f64 = 1e-3;
 /// chord increment `δ` (relative, `increment`), when `δ` is within
 /// [`ITERATE_ERROR`] of the tolerance `tol`: the chord contracts by at least
 /// [`CHORD_CONTRACTION`] there, so the iterate's error is about `δ`. The
-/// iterate's bearing pass is then the outputs' one. On the hydro unit at 5 ms
+/// iterate's force pass is then the one the outputs take. On the hydro unit at 5 ms
 /// in steady running `δ` is 3e-4 to 1e-3 of the tolerance (99.5 % of the
 /// steps end on their iterate); the bound is a tenth of [`CHORD_ERROR`]
 /// because skipping `δ` errs the same way step after step (at 1e-2 the
@@ -247,6 +247,11 @@ pub(super) struct CondensedWork {
     cj_rhs: Vec<f64>,
     /// The last increment, its line search and the stall count.
     search: Backtrack,
+    /// Whether the last step ended on its iterate: the next step's first
+    /// chord iteration then also makes the bearings' reports
+    /// (`Bearing::output`), which such a step's outputs take. Either pass gives
+    /// the same bits, so this choice of work changes no result.
+    last_on_iterate: bool,
 }
 
 impl CondensedWork {
@@ -262,6 +267,7 @@ impl CondensedWork {
             cj: vec![0.0; n_journal * n_journal],
             cj_piv: vec![0; n_journal],
             cj_rhs: vec![0.0; n_journal],
+            last_on_iterate: false,
         }
     }
 }
@@ -319,11 +325,15 @@ impl Simulator {
         let mut last = f64::INFINITY;
         let (mut chord, mut chord_allowed) = (false, true);
         let mut first_chord = true;
+        let report_ahead = self.condensed.last_on_iterate;
+        self.condensed.last_on_iterate = false;
         self.condensed.search.reset();
         for _ in 0..self.options.max_iterations {
             self.stats.iterations += 1;
-            // The step's first chord iteration makes the outputs' pass, so that a
-            // step that ends on its iterate has made it ([`ends_on_iterate`]).
+            // The step's first chord iteration keeps its force pass (with the
+            // reports when the last step ended on its iterate), so that a step
+            // that ends on its iterate has made its outputs' forces
+            // ([`ends_on_iterate`]).
             let check = chord && first_chord && self.sites.on_ground;
             if chord {
                 self.stats.chord_iterations += 1;
@@ -347,17 +357,20 @@ impl Simulator {
                     source,
                 };
                 let wv = if chord {
-                    if check {
+                    let report = if check && report_ahead {
                         let report = site
                             .bearing
-                            .output(&site.q, &site.qd, speed1, &mut site.eval)
-                            .map_err(bearing_error)?;
-                        site.memo
-                            .store(&site.q, &site.qd, speed1, &site.eval.force, report);
+                            .output(&site.q, &site.qd, speed1, &mut site.eval);
+                        Some(report.map_err(bearing_error)?)
                     } else {
                         site.bearing
                             .forces(&site.q, &site.qd, speed1, &mut site.eval)
                             .map_err(bearing_error)?;
+                        None
+                    };
+                    if check {
+                        site.memo
+                            .store(&site.q, &site.qd, speed1, &site.eval.force, report);
                     }
                     site.condensation.load(&site.eval.force)
                 } else {
@@ -441,6 +454,7 @@ impl Simulator {
                 self.displacement_from_journal_forces(h, f);
                 self.place_journals(h);
                 self.stats.steps_on_iterate += 1;
+                self.condensed.last_on_iterate = true;
                 return Ok(None);
             }
             for (j, d) in c.j.iter_mut().zip(&c.search.journal) {

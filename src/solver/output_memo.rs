@@ -1,13 +1,15 @@
-//! The outputs' pass a Newton step has already made for one bearing:
-//! `Bearing::output` at the coordinates, rates and speed it was called with.
-//! `output` is a pure function of those, so when the state's coordinates equal
-//! the key bit for bit, its force and report are what `Simulator::outputs`
-//! would compute again (a restored state, which finds no memo, computes them
-//! and gets the same bits).
+//! The force pass a Newton step has already made for one bearing:
+//! `Bearing::forces` at the coordinates, rates and speed it was called with,
+//! or `Bearing::output` there (the same forces and the report). Both are pure
+//! functions of those inputs, and `report` on `forces` gives `output`'s report
+//! bit for bit, so when the state's coordinates equal the key bit for bit,
+//! `Simulator::outputs` takes the force (and the report, else makes it on that
+//! force): the bits of `output` (a restored state, which finds no memo, calls
+//! `output` and gets them).
 
 use crate::bearing::BearingReport;
 
-/// The last `output` of one site and the inputs it was called with (none
+/// The last `forces` of one site and the inputs it was called with (none
 /// while `q` is empty: a bearing has at least its two journal coordinates).
 #[derive(Debug, Clone, Default)]
 pub(super) struct OutputMemo {
@@ -15,18 +17,19 @@ pub(super) struct OutputMemo {
     qd: Vec<f64>,
     speed: f64,
     force: Vec<f64>,
-    report: BearingReport,
+    report: Option<BearingReport>,
 }
 
 impl OutputMemo {
-    /// Remember `output(q, qd, speed) = (force, report)`.
+    /// Remember `forces(q, qd, speed) = force`, with the report when the
+    /// pass was `output`.
     pub fn store(
         &mut self,
         q: &[f64],
         qd: &[f64],
         speed: f64,
         force: &[f64],
-        report: BearingReport,
+        report: Option<BearingReport>,
     ) {
         for (memo, value) in [
             (&mut self.q, q),
@@ -45,9 +48,14 @@ impl OutputMemo {
         self.q.clear();
     }
 
-    /// The remembered force and report when `q`, `qd` and `speed` are the
-    /// key bit for bit.
-    pub fn recall(&self, q: &[f64], qd: &[f64], speed: f64) -> Option<(&[f64], BearingReport)> {
+    /// The remembered force and report (if made) when `q`, `qd` and `speed`
+    /// are the key bit for bit.
+    pub fn recall(
+        &self,
+        q: &[f64],
+        qd: &[f64],
+        speed: f64,
+    ) -> Option<(&[f64], Option<BearingReport>)> {
         let same = |a: &[f64], b: &[f64]| {
             a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.to_bits() == y.to_bits())
         };
@@ -72,10 +80,12 @@ mod tests {
             eccentricity: 0.4,
             ..BearingReport::default()
         };
-        memo.store(&q, &qd, 15.7, &[10.0, -20.0, 0.5], report);
-        let (force, got) = memo.recall(&q, &qd, 15.7).unwrap();
-        assert_eq!(force, &[10.0, -20.0, 0.5]);
-        assert_eq!(got, report);
+        for kept in [None, Some(report)] {
+            memo.store(&q, &qd, 15.7, &[10.0, -20.0, 0.5], kept);
+            let (force, got) = memo.recall(&q, &qd, 15.7).unwrap();
+            assert_eq!(force, &[10.0, -20.0, 0.5]);
+            assert_eq!(got, kept);
+        }
         // One bit off anywhere, or −0 for +0, is another input.
         let bumped = |v: f64| f64::from_bits(v.to_bits() + 1);
         assert!(memo.recall(&q, &qd, bumped(15.7)).is_none());
@@ -87,8 +97,7 @@ mod tests {
             other[i] = bumped(other[i]);
             assert!(memo.recall(&q, &other, 15.7).is_none());
         }
-        let zero = BearingReport::default();
-        memo.store(&[0.0, 0.0], &[0.0, 0.0], 1.0, &[0.0, 0.0], zero);
+        memo.store(&[0.0, 0.0], &[0.0, 0.0], 1.0, &[0.0, 0.0], None);
         assert!(memo.recall(&[-0.0, 0.0], &[0.0, 0.0], 1.0).is_none());
         assert!(memo.recall(&q, &qd, 15.7).is_none());
         memo.clear();

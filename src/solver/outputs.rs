@@ -171,14 +171,14 @@ impl Simulator {
                 qd[2..].copy_from_slice(&self.state.pd[s.offset..s.offset + internal]);
                 memo = s.memo.recall(q, qd, speed);
             }
-            // The step's last bearing pass, when it was `output` at these very
-            // inputs (a pure function of them: the same bits).
+            // The step's last bearing pass, when it was at these very inputs
+            // (`output`'s bits: [`super::output_memo`]).
             let report =
                 match memo {
                     Some((force, report)) => {
                         eval.force.copy_from_slice(force);
                         self.stats.outputs_recalled += 1;
-                        report
+                        report.unwrap_or_else(|| bearing.report(q, qd, speed, eval))
                     }
                     None => bearing.output(q, qd, speed, eval).map_err(|source| {
                         SolverError::Bearing {

@@ -87,7 +87,7 @@ pub(super) struct Site {
     pub qd: Vec<f64>,
     /// The pad block `K_pp + a1 C_pp` condensed onto the journal.
     pub condensation: Condensation,
-    /// The outputs' pass of a step that ended on its iterate.
+    /// The force pass of a step that ended on its iterate.
     pub memo: OutputMemo,
 }
 
