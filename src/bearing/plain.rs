@@ -171,13 +171,19 @@ impl Bearing for PlainBearing {
 }
 
 /// Angle from the load line (the direction of `−F`, the load the film carries) to
-/// the journal's eccentricity vector, positive in the spin direction, in (−π, π].
+/// the journal's eccentricity vector, positive in the spin direction, in (−π, π]:
+/// with `l = −F`, `atan2(l × e, l · e)`, one `atan2` (0 where either vector is 0).
 pub fn attitude_angle(position: &Vector2<f64>, force: &Vector2<f64>) -> f64 {
     if position.norm() == 0.0 || force.norm() == 0.0 {
         return 0.0;
     }
-    let d = position.y.atan2(position.x) - (-force.y).atan2(-force.x);
-    d.sin().atan2(d.cos())
+    let load = -force;
+    let angle = load.perp(position).atan2(load.dot(position));
+    if angle == -std::f64::consts::PI {
+        std::f64::consts::PI
+    } else {
+        angle
+    }
 }
 
 #[cfg(test)]

@@ -15,6 +15,7 @@ impl Rng {
     }
 
     /// Uniform in `0..n` (`n ≥ 1`).
+    #[allow(dead_code)]
     pub fn below(&mut self, n: usize) -> usize {
         (self.next() % n.max(1) as u64) as usize
     }
