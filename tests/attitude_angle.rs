@@ -11,7 +11,7 @@ use rng::Rng;
 use rotor_bearing::bearing::plain::attitude_angle;
 use std::f64::consts::PI;
 
-/// The definition, two polar angles and a wrap, in exact steps where it can be.
+/// The definition: two polar angles, their difference, wrapped into (−π, π].
 fn by_polar_angles(position: &Vector2<f64>, force: &Vector2<f64>) -> f64 {
     let d = position.y.atan2(position.x) - (-force.y).atan2(-force.x);
     let wrapped = d.sin().atan2(d.cos());
