@@ -172,8 +172,14 @@ fn converged(increment: f64, previous: f64, tol: f64, damped: bool) -> bool {
 }
 
 /// Largest relative increment after which the condensed Newton keeps its
-/// Jacobians for the next iteration (a chord iteration).
-const CHORD_INCREMENT: f64 = 1e-4;
+/// Jacobians for the next iteration (a chord iteration). The three-guide
+/// unit's first increments are 1e-5 to 3e-5 of its scale at equal 5 ms
+/// steps, but 1e-4 to 1e-3 at the same 5 ms under accuracy-controlled steps
+/// (the step-size changes of its start leave its higher modes ringing): at
+/// 1e-4 nearly all of those steps took a second full iteration, at 1e-3 a
+/// chord one; a chord that does not contract is not applied
+/// ([`CHORD_CONTRACTION`]).
+const CHORD_INCREMENT: f64 = 1e-3;
 
 /// Contraction `δ_k / δ_{k−1}` a chord iteration must reach to be applied;
 /// one that contracts less is not taken, and the step goes on with full
