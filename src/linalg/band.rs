@@ -225,6 +225,8 @@ impl<T: Scalar> BandMatrix<T> {
             kl: self.kl,
             ku: self.ku,
             ldab: 0,
+            u_width: 0,
+            interchanged: false,
             data: Vec::new(),
             ipiv: Vec::new(),
         };
@@ -275,10 +277,12 @@ impl<T: Scalar> BandLu<T> {
         }
         let thresh = n as f64 * f64::EPSILON * amax;
         let lu = self;
+        lu.u_width = kv;
+        lu.interchanged = true;
         lu.ipiv.clear();
         lu.ipiv.resize(n, 0);
         let (a, ipiv) = (&mut lu.data, &mut lu.ipiv);
-        let mut ju = 0usize;
+        let (mut ju, mut u_width) = (0usize, 0usize);
         for (j, piv) in ipiv.iter_mut().enumerate() {
             let km = kl.min(n - 1 - j);
             let diag = j * ldab + kv;
@@ -296,6 +300,7 @@ impl<T: Scalar> BandLu<T> {
             }
             *piv = j + p;
             ju = ju.max((j + ku + p).min(n - 1));
+            u_width = u_width.max(ju - j);
             if p != 0 {
                 for c in j..=ju {
                     let k = c * ldab + kv + j - c;
@@ -326,6 +331,8 @@ impl<T: Scalar> BandLu<T> {
             let d = &mut a[j * ldab + kv];
             *d = T::one() / *d;
         }
+        lu.u_width = u_width;
+        lu.interchanged = lu.ipiv.iter().enumerate().any(|(j, &p)| p != j);
         Ok(())
     }
 }
@@ -386,6 +393,8 @@ impl<T: Scalar> Default for BandLu<T> {
             kl: 0,
             ku: 0,
             ldab: 0,
+            u_width: 0,
+            interchanged: false,
             data: Vec::new(),
             ipiv: Vec::new(),
         }
@@ -419,6 +428,13 @@ pub struct BandLu<T> {
     kl: usize,
     ku: usize,
     ldab: usize,
+    /// Upper bandwidth of `U` as filled by the row interchanges,
+    /// `max_j (ju_j − j) ≤ kl + ku` (`ju_j` the last column row `j` reaches in
+    /// the elimination, as in LAPACK `xGBTF2`): `ku` when no row is
+    /// interchanged. Entries of `U` farther from the diagonal are exactly zero.
+    u_width: usize,
+    /// Whether any row was interchanged (`ipiv[j] ≠ j` for some `j`).
+    interchanged: bool,
     data: Vec<T>,
     ipiv: Vec<usize>,
 }
@@ -430,7 +446,9 @@ impl<T: Scalar> BandLu<T> {
     }
 
     /// Solves `A x = b` in place (LAPACK `xGBTRS`, no transpose), no allocation.
-    /// Cost `O(n (2 kl + ku))`.
+    /// Cost `O(n (kl + w))`, `w` the upper bandwidth of `U` (`ku` without
+    /// row interchanges, at most `kl + ku`): the back substitution skips the
+    /// entries beyond it, which are exactly zero.
     ///
     /// # Panics
     /// If `b` does not have length `n`.
@@ -438,7 +456,9 @@ impl<T: Scalar> BandLu<T> {
         let (n, kl, ldab) = (self.n, self.kl, self.ldab);
         check_len("right-hand side", n, b.len());
         let kv = kl + self.ku;
-        if kl > 0 {
+        // `L[i, j]` and `U[i, j]` sit at `j (ldab − 1) + kv + i`.
+        let stride = ldab - 1;
+        if kl > 0 && self.interchanged {
             for j in 0..n.saturating_sub(1) {
                 let lm = kl.min(n - 1 - j);
                 let l = self.ipiv[j];
@@ -452,16 +472,29 @@ impl<T: Scalar> BandLu<T> {
                     *bi -= lr * bj;
                 }
             }
-        }
-        for j in (0..n).rev() {
-            let diag = j * ldab + kv;
-            let bj = b[j] * self.data[diag];
-            b[j] = bj;
-            let i0 = j.saturating_sub(kv);
-            let col = &self.data[diag - (j - i0)..diag];
-            for (bi, &u) in b[i0..j].iter_mut().zip(col) {
-                *bi -= u * bj;
+        } else if kl > 0 {
+            // Without interchanges, row by row: row `i` takes the updates of
+            // columns `i − kl … i − 1` in the order the column sweep above
+            // gives them (the same bits), but only its last one waits for
+            // the row before.
+            for i in 1..n {
+                let j0 = i.saturating_sub(kl);
+                let mut acc = b[i];
+                for (j, &bj) in b[j0..i].iter().enumerate() {
+                    acc -= self.data[(j0 + j) * stride + kv + i] * bj;
+                }
+                b[i] = acc;
             }
+        }
+        // Back substitution row by row, the columns of row `i` from the last
+        // down, as a column sweep from the last column gives them.
+        for i in (0..n).rev() {
+            let j1 = (i + self.u_width).min(n - 1);
+            let mut acc = b[i];
+            for j in (i + 1..=j1).rev() {
+                acc -= self.data[j * stride + kv + i] * b[j];
+            }
+            b[i] = acc * self.data[i * ldab + kv];
         }
     }
 }
@@ -561,6 +594,26 @@ mod tests {
         v.iter().map(|x| x.modulus_squared()).sum::<f64>().sqrt()
     }
 
+    /// LAPACK `xGBTRS` as written: column sweeps, `U` over all `kl + ku`
+    /// superdiagonals.
+    fn column_sweeps<T: Scalar>(lu: &BandLu<T>, b: &mut [T]) {
+        let (n, kl, ldab) = (lu.n, lu.kl, lu.ldab);
+        let kv = kl + lu.ku;
+        for j in 0..n.saturating_sub(1) {
+            let l = lu.ipiv[j];
+            b.swap(l, j);
+            for i in j + 1..=(j + kl).min(n - 1) {
+                b[i] -= lu.data[j * ldab + kv + i - j] * b[j];
+            }
+        }
+        for j in (0..n).rev() {
+            b[j] *= lu.data[j * ldab + kv];
+            for i in j.saturating_sub(kv)..j {
+                b[i] -= lu.data[j * ldab + kv + i - j] * b[j];
+            }
+        }
+    }
+
     fn check_solve<T: Random>(seed: u64, n: usize, kl: usize, ku: usize, pivot: bool) {
         let mut rng = Rng(seed);
         let a: BandMatrix<T> = random_band(&mut rng, n, kl, ku, pivot);
@@ -572,6 +625,21 @@ mod tests {
         }
         let mut x = b.clone();
         lu.solve_in_place(&mut x);
+        // Row by row over U's filled band, the values of LAPACK's column
+        // sweeps over the whole `kl + ku` band (the same operations in the same
+        // order, and products with exact zeros); without interchanges that
+        // band is `ku` wide.
+        assert_eq!(
+            lu.interchanged,
+            lu.ipiv.iter().enumerate().any(|(j, &p)| p != j)
+        );
+        assert!(lu.u_width <= kl + ku && (lu.interchanged || lu.u_width == ku.min(n - 1)));
+        let mut swept = b.clone();
+        column_sweeps(&lu, &mut swept);
+        assert!(
+            x.iter().zip(&swept).all(|(p, q)| p == q),
+            "differs from the column sweeps"
+        );
         let mut ax = vec![T::zero(); n];
         a.mul_vec(&x, &mut ax);
         let r: Vec<T> = ax.iter().zip(&b).map(|(&p, &q)| p - q).collect();
