@@ -27,23 +27,27 @@ use std::process::Command;
 
 use nalgebra::{DMatrix, DVector, Matrix2, Vector2};
 
-use rotor_bearing::bearing::film::{FilmIntegrals, Jet3};
+use rotor_bearing::bearing::film::{FilmIntegrals, Jet3, atan_difference};
 use rotor_bearing::bearing::short_film::film_position;
 use rotor_bearing::bearing::tilting_pad::{Pad, TiltingPadBearing};
 use rotor_bearing::bearing::{Bearing, BearingEval};
 
-/// `Φ(x, y)` over an arc by the generic jet arithmetic (`bearing::film` docs).
+/// `Φ(x, y)` over an arc by the generic jet arithmetic (`bearing::film`
+/// docs), the two arc tangents of its value taken as one
+/// ([`atan_difference`], tested against their difference in the library).
 fn potential(x: f64, y: f64, span: f64, end1: (f64, f64), end2: (f64, f64)) -> Jet3 {
     let (jx, jy) = (Jet3::var_x(x), Jet3::var_y(y));
     let one = Jet3::constant(1.0);
     let m = one - jx * jx - jy * jy;
     let root = m.sqrt();
-    let end = |(s, c): (f64, f64)| {
+    let ratio = |(s, c): (f64, f64)| {
         let num = jx * s - jy * c;
         let den = one + root - jx * c - jy * s;
-        (num / den).atan()
+        num / den
     };
-    (Jet3::constant(span) + (end(end2) - end(end1)) * 2.0) / root
+    let (t2, t1) = (ratio(end2), ratio(end1));
+    let diff = (t2.atan() - t1.atan()).with_value(atan_difference(t2.value(), t1.value()));
+    (Jet3::constant(span) + diff * 2.0) / root
 }
 
 /// Force, `K`, `C` of the short-bearing film at `(p, v)` over the part of the
