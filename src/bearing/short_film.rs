@@ -189,6 +189,7 @@ impl ShortFilm {
     /// the pressure half circle misses the window), but for the potential
     /// over a window the pressure covers wholly, which
     /// [`ShortFilm::complete`] evaluates (several films at once).
+    #[inline(always)]
     pub(crate) fn prepare(
         &self,
         state: &JournalState,

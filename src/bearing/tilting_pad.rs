@@ -320,9 +320,11 @@ impl Bearing for TiltingPadBearing {
         let law = self.contact_law();
         // Pads in batches: their films' potentials evaluated together
         // (`ShortFilm::complete`), then each pad's force in pad order.
+        let mut states = [(0.0, 0.0, JournalState::default()); PAD_BATCH];
+        let mut films = [Film::Nothing; PAD_BATCH];
         for first in (0..self.pads.len()).step_by(PAD_BATCH) {
             let batch = first..(first + PAD_BATCH).min(self.pads.len());
-            let (states, films) = self.prepare_films(batch.clone(), q, qdot, speed);
+            self.prepare_films(batch.clone(), q, qdot, speed, &mut states, &mut films);
             for (i, k) in batch.enumerate() {
                 let (s, c, state) = &states[i];
                 let part = film.force_of(films[i], speed)?;
@@ -529,24 +531,24 @@ impl TiltingPadBearing {
 
     /// The states of the pads `batch` (at most [`PAD_BATCH`]) and their films
     /// with the potentials (and the Jacobians' terms) evaluated together
-    /// ([`ShortFilm::complete`]).
+    /// ([`ShortFilm::complete`]), into the first `batch.len()` entries of
+    /// `states` and `films` (the caller's, so that nothing is copied back).
     fn prepare_films(
         &self,
         batch: std::ops::Range<usize>,
         q: &[f64],
         qdot: &[f64],
         speed: f64,
-    ) -> ([(f64, f64, JournalState); PAD_BATCH], [Film; PAD_BATCH]) {
+        states: &mut [(f64, f64, JournalState); PAD_BATCH],
+        films: &mut [Film; PAD_BATCH],
+    ) {
         let terms = Terms::WithJacobians;
         let film = self.film();
-        let mut states = [(0.0, 0.0, JournalState::default()); PAD_BATCH];
-        let mut films = [Film::Nothing; PAD_BATCH];
         for (i, k) in batch.clone().enumerate() {
             states[i] = self.pad_state(k, q, qdot);
             films[i] = film.prepare(&states[i].2, speed, Some(&self.pads[k].window), terms);
         }
         film.complete(&mut films[..batch.len()], terms);
-        (states, films)
     }
 
     /// The report from the pads' tally and the journal force in `eval`.
