@@ -110,6 +110,9 @@ pub struct StepStats {
     pub retries: usize,
     /// Factorizations of the linear part.
     pub factorizations: usize,
+    /// Factorizations recalled for exactly their step and speed instead of
+    /// being formed again (not in `factorizations`).
+    pub factors_recalled: usize,
     /// Steps rejected by the local error estimate (accuracy-controlled steps).
     pub rejections: usize,
 }
