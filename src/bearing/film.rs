@@ -21,7 +21,7 @@
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 pub use super::film_lanes::atan_difference;
-use super::film_lanes::{ArcLanes, JetLanes, arc_potentials};
+use super::film_lanes::{ArcLanes, JetLanes, arc_potentials, arc_potentials2};
 
 /// Truncated bivariate Taylor series `Σ c_k dxⁱ dyʲ`, `i + j ≤ 3`, stored flat in
 /// the monomial order `1, x, y, x², xy, y², x³, x²y, xy², y³`.
@@ -214,91 +214,7 @@ pub fn arc_potential_sc2(
     end1: (f64, f64),
     end2: (f64, f64),
 ) -> [f64; 6] {
-    let m = [(1.0 - x * x) - y * y, -2.0 * x, -2.0 * y, -1.0, 0.0, -1.0];
-    let root = sqrt2(m);
-    let r = &root;
-    let end = |(s, c): (f64, f64)| {
-        let num = [x * s - y * c, s, -c];
-        let den = [
-            ((1.0 + r[0]) - x * c) - y * s,
-            r[1] - c,
-            r[2] - s,
-            r[3],
-            r[4],
-            r[5],
-        ];
-        mul_linear2(num, &recip2(den))
-    };
-    let (t2, t1) = (end(end2), end(end1));
-    let (e2, e1) = (atan_rates2(t2), atan_rates2(t1));
-    let mut sum = [0.0; 6];
-    for (k, v) in sum.iter_mut().enumerate() {
-        *v = if k == 0 {
-            span + atan_difference(t2[0], t1[0]) * 2.0
-        } else {
-            0.0 + (e2[k] + -e1[k]) * 2.0
-        };
-    }
-    mul2(&sum, &recip2(root))
-}
-
-/// `JetLanes::compose` truncated to degree 2.
-fn compose2(d: [f64; 6], f: [f64; 3]) -> [f64; 6] {
-    let h2 = 0.5 * f[2];
-    let (a, b) = (d[1], d[2]);
-    let sq = [a * a, 2.0 * a * b, b * b];
-    [
-        f[0],
-        f[1] * a,
-        f[1] * b,
-        f[1] * d[3] + h2 * sq[0],
-        f[1] * d[4] + h2 * sq[1],
-        f[1] * d[5] + h2 * sq[2],
-    ]
-}
-
-/// [`Jet3::sqrt`] truncated to degree 2.
-fn sqrt2(d: [f64; 6]) -> [f64; 6] {
-    let u = d[0];
-    let r = u.sqrt();
-    compose2(d, [r, 0.5 / r, -0.25 / (u * r)])
-}
-
-/// [`Jet3::recip`] truncated to degree 2.
-fn recip2(d: [f64; 6]) -> [f64; 6] {
-    let r = 1.0 / d[0];
-    compose2(d, [r, -r * r, 2.0 * r * r * r])
-}
-
-/// [`Jet3::atan`] truncated to degree 2, without its value (left zero).
-fn atan_rates2(d: [f64; 6]) -> [f64; 6] {
-    let u = d[0];
-    let q = 1.0 / (1.0 + u * u);
-    compose2(d, [0.0, q, -2.0 * u * q * q])
-}
-
-/// [`Jet3`]'s product truncated to degree 2.
-fn mul2(a: &[f64; 6], b: &[f64; 6]) -> [f64; 6] {
-    [
-        a[0] * b[0],
-        a[0] * b[1] + a[1] * b[0],
-        a[0] * b[2] + a[2] * b[0],
-        a[0] * b[3] + a[1] * b[1] + a[3] * b[0],
-        a[0] * b[4] + a[1] * b[2] + a[2] * b[1] + a[4] * b[0],
-        a[0] * b[5] + a[2] * b[2] + a[5] * b[0],
-    ]
-}
-
-/// `JetLanes::mul_linear` truncated to degree 2.
-fn mul_linear2(a: [f64; 3], b: &[f64; 6]) -> [f64; 6] {
-    [
-        a[0] * b[0],
-        a[0] * b[1] + a[1] * b[0],
-        a[0] * b[2] + a[2] * b[0],
-        a[0] * b[3] + a[1] * b[1],
-        a[0] * b[4] + a[1] * b[2] + a[2] * b[1],
-        a[0] * b[5] + a[2] * b[2],
-    ]
+    arc_potentials2(&one_arc(x, y, span, end1, end2)).map(|[v]| v)
 }
 
 /// One arc as the one lane of an [`ArcLanes`].

@@ -274,10 +274,127 @@ pub(crate) fn arc_potentials<const L: usize>(arcs: &ArcLanes<L>) -> JetLanes<L> 
     sum.mul(&root.recip())
 }
 
+/// A degree-2 Taylor jet per lane, monomials `1, x, y, x², xy, y²`.
+pub(crate) type Jet2Lanes<const L: usize> = [Lanes<L>; 6];
+
+/// [`JetLanes::compose`] truncated to degree 2.
+#[inline(always)]
+fn compose2<const L: usize>(d: &Jet2Lanes<L>, f: [Lanes<L>; 3]) -> Jet2Lanes<L> {
+    let h2 = scale(0.5, f[2]);
+    let (a, b) = (d[1], d[2]);
+    let sq = [mul(a, a), mul(scale(2.0, a), b), mul(b, b)];
+    [
+        f[0],
+        mul(f[1], a),
+        mul(f[1], b),
+        add(mul(f[1], d[3]), mul(h2, sq[0])),
+        add(mul(f[1], d[4]), mul(h2, sq[1])),
+        add(mul(f[1], d[5]), mul(h2, sq[2])),
+    ]
+}
+
+/// [`JetLanes::sqrt`] truncated to degree 2.
+#[inline(always)]
+fn sqrt2<const L: usize>(d: &Jet2Lanes<L>) -> Jet2Lanes<L> {
+    let u = d[0];
+    let r = map(u, f64::sqrt);
+    compose2(
+        d,
+        [r, map(r, |r| 0.5 / r), zip(u, r, |u, r| -0.25 / (u * r))],
+    )
+}
+
+/// [`JetLanes::recip`] truncated to degree 2.
+#[inline(always)]
+fn recip2<const L: usize>(d: &Jet2Lanes<L>) -> Jet2Lanes<L> {
+    let r = map(d[0], |u| 1.0 / u);
+    compose2(d, [r, map(r, |r| -r * r), map(r, |r| 2.0 * r * r * r)])
+}
+
+/// [`JetLanes::atan_rates`] truncated to degree 2 (the value left zero).
+#[inline(always)]
+fn atan_rates2<const L: usize>(d: &Jet2Lanes<L>) -> Jet2Lanes<L> {
+    let u = d[0];
+    let q = map(u, |u| 1.0 / (1.0 + u * u));
+    compose2(d, [[0.0; L], q, zip(u, q, |u, q| -2.0 * u * q * q)])
+}
+
+/// [`JetLanes::mul`] truncated to degree 2.
+#[inline(always)]
+fn mul2<const L: usize>(a: &Jet2Lanes<L>, b: &Jet2Lanes<L>) -> Jet2Lanes<L> {
+    let m = |i: usize, j: usize| mul(a[i], b[j]);
+    [
+        m(0, 0),
+        add(m(0, 1), m(1, 0)),
+        add(m(0, 2), m(2, 0)),
+        add(add(m(0, 3), m(1, 1)), m(3, 0)),
+        add(add(add(m(0, 4), m(1, 2)), m(2, 1)), m(4, 0)),
+        add(add(m(0, 5), m(2, 2)), m(5, 0)),
+    ]
+}
+
+/// [`JetLanes::mul_linear`] truncated to degree 2.
+#[inline(always)]
+fn mul_linear2<const L: usize>(a: [Lanes<L>; 3], b: &Jet2Lanes<L>) -> Jet2Lanes<L> {
+    [
+        mul(a[0], b[0]),
+        add(mul(a[0], b[1]), mul(a[1], b[0])),
+        add(mul(a[0], b[2]), mul(a[2], b[0])),
+        add(mul(a[0], b[3]), mul(a[1], b[1])),
+        add(add(mul(a[0], b[4]), mul(a[1], b[2])), mul(a[2], b[1])),
+        add(mul(a[0], b[5]), mul(a[2], b[2])),
+    ]
+}
+
+/// [`arc_potentials`] truncated to degree 2 (what the film force needs
+/// without its Jacobians) on every lane of `arcs`: degree-2 coefficients of a
+/// truncated product or composition take no degree-3 terms, so these are the
+/// same floating-point operations on the same numbers as the first six terms
+/// of [`arc_potentials`], the same values.
+#[inline(always)]
+pub(crate) fn arc_potentials2<const L: usize>(arcs: &ArcLanes<L>) -> Jet2Lanes<L> {
+    let (x, y) = (arcs.x, arcs.y);
+    let zero = [0.0; L];
+    let one = [1.0; L];
+    let m = [
+        sub(sub(one, mul(x, x)), mul(y, y)),
+        scale(-2.0, x),
+        scale(-2.0, y),
+        [-1.0; L],
+        zero,
+        [-1.0; L],
+    ];
+    let root = sqrt2(&m);
+    let r = &root;
+    let end = |(s, c): (Lanes<L>, Lanes<L>)| {
+        let num = [sub(mul(x, s), mul(y, c)), s, map(c, |c| -c)];
+        let den = [
+            sub(sub(add(one, r[0]), mul(x, c)), mul(y, s)),
+            sub(r[1], c),
+            sub(r[2], s),
+            r[3],
+            r[4],
+            r[5],
+        ];
+        mul_linear2(num, &recip2(&den))
+    };
+    let (t2, t1) = (end(arcs.to_sc), end(arcs.from_sc));
+    let (e2, e1) = (atan_rates2(&t2), atan_rates2(&t1));
+    let mut sum = [zero; 6];
+    for (k, v) in sum.iter_mut().enumerate() {
+        *v = if k == 0 {
+            add(arcs.span, scale(2.0, zip(t2[0], t1[0], atan_difference)))
+        } else {
+            add(zero, scale(2.0, add(e2[k], map(e1[k], |v| -v))))
+        };
+    }
+    mul2(&sum, &recip2(&root))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bearing::film::{MONOMIALS, arc_potential_sc};
+    use crate::bearing::film::{MONOMIALS, arc_potential_sc, arc_potential_sc2};
 
     /// Uniform numbers in [0, 1) from a 64-bit LCG seeded with `seed`.
     fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
@@ -326,8 +443,9 @@ mod tests {
     }
 
     /// Arcs on lanes give, lane by lane, the jets of the arcs one by one, bit
-    /// for bit: random positions up to `ε = 0.995`, arcs of every length and
-    /// place, two, three and eight lanes.
+    /// for bit, of degree 3 and of degree 2 (the force's alone): random
+    /// positions up to `ε = 0.995`, arcs of every length and place, two,
+    /// three and eight lanes.
     #[test]
     fn lanes_are_the_arcs_one_by_one() {
         let mut rand = uniform(3);
@@ -350,6 +468,7 @@ mod tests {
                 to_sc: (arcs.map(|a| a.3.sin()), arcs.map(|a| a.3.cos())),
             };
             let phi = arc_potentials(&lanes);
+            let phi2 = arc_potentials2(&lanes);
             for (lane, &(x, y, t1, t2)) in arcs.iter().enumerate() {
                 let one = arc_potential_sc(x, y, t2 - t1, t1.sin_cos(), t2.sin_cos());
                 let value = phi.c.map(|v| v[lane]);
@@ -357,6 +476,10 @@ mod tests {
                     let factorial = [1.0, 1.0, 2.0, 6.0];
                     let got = value[k] * factorial[i] * factorial[j];
                     assert_eq!(got.to_bits(), one.derivative(i, j).to_bits(), "term {k}");
+                }
+                let head = arc_potential_sc2(x, y, t2 - t1, t1.sin_cos(), t2.sin_cos());
+                for (k, h) in head.iter().enumerate() {
+                    assert_eq!(phi2[k][lane].to_bits(), h.to_bits(), "degree 2, term {k}");
                 }
             }
         }

@@ -36,7 +36,7 @@ use std::f64::consts::PI;
 use nalgebra::{Matrix2, Vector2};
 
 use super::film::{FilmIntegrals, Jet3};
-use super::film_lanes::{ArcLanes, arc_potentials};
+use super::film_lanes::{ArcLanes, arc_potentials, arc_potentials2};
 use super::{BearingError, BearingForce, JournalState};
 
 /// Eccentricity ratio `ε_a` up to which the film sees the actual journal position.
@@ -235,11 +235,11 @@ impl ShortFilm {
     }
 
     /// Evaluate the potentials that `films` wait for ([`Film::Whole`]),
-    /// making them [`Film::Ready`]: with the Jacobians [`LANES`] at a time on
-    /// the lanes of [`arc_potentials`], the same numbers as one by one; for
-    /// the force alone one by one (its degree-2 jets gained nothing on lanes).
+    /// making them [`Film::Ready`]: [`LANES`] at a time on the lanes of
+    /// [`arc_potentials`] (with the Jacobians) or [`arc_potentials2`] (the
+    /// force alone), the same numbers as one by one.
     pub(crate) fn complete(&self, films: &mut [Film], terms: Terms) {
-        if terms == Terms::ForceOnly || films.len() == 1 {
+        if films.len() == 1 {
             for film in films.iter_mut() {
                 if let Film::Whole {
                     at,
@@ -264,7 +264,7 @@ impl ShortFilm {
                 count += 1;
             }
             if count == LANES || (k == films.len() && count > 0) {
-                complete_lanes(films, &waiting[..count]);
+                complete_lanes(films, &waiting[..count], terms);
                 count = 0;
             }
         }
@@ -299,7 +299,7 @@ impl ShortFilm {
 /// The force of a [`Film`] made complete for the force alone, and `∫ dθ/H`
 /// over its window when the pressure covers all of it
 /// ([`ShortFilm::force_only`]).
-fn force_only_of(film: Film) -> Result<(Vector2<f64>, Option<f64>), BearingError> {
+pub(crate) fn force_only_of(film: Film) -> Result<(Vector2<f64>, Option<f64>), BearingError> {
     let Film::Ready(FilmAt {
         f, a, b, c, whole, ..
     }) = film
@@ -317,10 +317,11 @@ fn force_only_of(film: Film) -> Result<(Vector2<f64>, Option<f64>), BearingError
     }
 }
 
-/// The potentials (with the Jacobians' terms) of the wholly covered
-/// `films[k]`, `k` in `which` (at most [`LANES`]), on the lanes of one
-/// [`arc_potentials`]; unused lanes repeat the first arc.
-fn complete_lanes(films: &mut [Film], which: &[usize]) {
+/// The potentials (up to the Jacobians' terms, or the force's alone, as
+/// `terms` asks) of the wholly covered `films[k]`, `k` in `which` (at most
+/// [`LANES`]), on the lanes of one [`arc_potentials`] or [`arc_potentials2`];
+/// unused lanes repeat the last arc.
+fn complete_lanes(films: &mut [Film], which: &[usize], terms: Terms) {
     let arc_of = |film: &Film| match *film {
         Film::Whole {
             x,
@@ -341,11 +342,22 @@ fn complete_lanes(films: &mut [Film], which: &[usize]) {
         from_sc: (arcs.map(|a| a.3.0), arcs.map(|a| a.3.1)),
         to_sc: (arcs.map(|a| a.4.0), arcs.map(|a| a.4.1)),
     };
-    let phi = arc_potentials(&lanes);
-    let integrals: [(FilmIntegrals, f64); LANES] = std::array::from_fn(|lane| {
-        let jet = Jet3::from_coefficients(phi.c.map(|v| v[lane]));
-        (FilmIntegrals::from_potential(jet), jet.value())
-    });
+    let integrals: [(FilmIntegrals, f64); LANES] = match terms {
+        Terms::WithJacobians => {
+            let phi = arc_potentials(&lanes);
+            std::array::from_fn(|lane| {
+                let jet = Jet3::from_coefficients(phi.c.map(|v| v[lane]));
+                (FilmIntegrals::from_potential(jet), jet.value())
+            })
+        }
+        Terms::ForceOnly => {
+            let phi = arc_potentials2(&lanes);
+            std::array::from_fn(|lane| {
+                let c = phi.map(|v| v[lane]);
+                (FilmIntegrals::from_potential2(c), c[0])
+            })
+        }
+    };
     for (&k, (f, whole)) in which.iter().zip(integrals) {
         if let Film::Whole { at, .. } = films[k] {
             films[k] = Film::Ready(FilmAt {

@@ -36,7 +36,7 @@ use nalgebra::Vector2;
 use super::BearingForce;
 use super::contact::{ContactExtent, ContactLaw, ContactReport};
 use super::plain::{attitude_angle, contact_friction_torque};
-use super::short_film::{Film, FilmWindow, ShortFilm, Terms};
+use super::short_film::{Film, FilmWindow, ShortFilm, Terms, force_only_of};
 use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, check_state};
 
 /// Relative size of the pivot's restoring moment (see the module docs).
@@ -324,7 +324,16 @@ impl Bearing for TiltingPadBearing {
         let mut films = [Film::Nothing; PAD_BATCH];
         for first in (0..self.pads.len()).step_by(PAD_BATCH) {
             let batch = first..(first + PAD_BATCH).min(self.pads.len());
-            self.prepare_films(batch.clone(), q, qdot, speed, &mut states, &mut films);
+            let terms = Terms::WithJacobians;
+            self.prepare_films(
+                batch.clone(),
+                q,
+                qdot,
+                speed,
+                terms,
+                &mut states,
+                &mut films,
+            );
             for (i, k) in batch.enumerate() {
                 let (s, c, state) = &states[i];
                 let part = film.force_of(films[i], speed)?;
@@ -492,8 +501,9 @@ impl Bearing for TiltingPadBearing {
 
 impl TiltingPadBearing {
     /// One pass over the pads for the generalized forces in `out.force`, each
-    /// pad's film force without its Jacobians ([`ShortFilm::force_only`]);
-    /// `each_pad` sees pad `k`'s effective journal state, `∫ dθ/H` over the
+    /// pad's film force without its Jacobians (the numbers of
+    /// [`ShortFilm::force_only`], the potentials of a batch of pads evaluated
+    /// together as in `evaluate`); `each_pad` sees pad `k`'s effective journal state, `∫ dθ/H` over the
     /// pad when the pressure covers all of it, and its contact.
     fn pad_forces(
         &self,
@@ -513,36 +523,52 @@ impl TiltingPadBearing {
         out.force.fill(0.0);
         let (c_rest, k_rest) = self.pivot_rest(speed);
         let law = self.contact_law();
-        let film = self.film();
-        for (k, pad) in self.pads.iter().enumerate() {
-            let (s, c, state) = self.pad_state(k, q, qdot);
-            let (force, whole) = film.force_only(&state, speed, Some(&pad.window))?;
-            out.add_force(&force, Some((k, -s, c)));
-            let contact = self.pad_contact(&law, k, &state, speed);
-            if let Some((contact, _)) = &contact {
-                out.add_force(&contact.force, Some((k, -s, c)));
+        let mut states = [(0.0, 0.0, JournalState::default()); PAD_BATCH];
+        let mut films = [Film::Nothing; PAD_BATCH];
+        for first in (0..self.pads.len()).step_by(PAD_BATCH) {
+            let batch = first..(first + PAD_BATCH).min(self.pads.len());
+            let terms = Terms::ForceOnly;
+            self.prepare_films(
+                batch.clone(),
+                q,
+                qdot,
+                speed,
+                terms,
+                &mut states,
+                &mut films,
+            );
+            for (i, k) in batch.enumerate() {
+                let (s, c, state) = &states[i];
+                let (force, whole) = force_only_of(films[i])?;
+                out.add_force(&force, Some((k, -s, *c)));
+                let contact = self.pad_contact(&law, k, state, speed);
+                if let Some((contact, _)) = &contact {
+                    out.add_force(&contact.force, Some((k, -s, *c)));
+                }
+                let i = 2 + k;
+                out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+                each_pad(k, state, whole, contact.as_ref());
             }
-            let i = 2 + k;
-            out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
-            each_pad(k, &state, whole, contact.as_ref());
         }
         Ok(())
     }
 
     /// The states of the pads `batch` (at most [`PAD_BATCH`]) and their films
-    /// with the potentials (and the Jacobians' terms) evaluated together
-    /// ([`ShortFilm::complete`]), into the first `batch.len()` entries of
-    /// `states` and `films` (the caller's, so that nothing is copied back).
+    /// with the potentials (up to the Jacobians' terms, or the force's alone,
+    /// as `terms` asks) evaluated together ([`ShortFilm::complete`]), into
+    /// the first `batch.len()` entries of `states` and `films` (the caller's,
+    /// so that nothing is copied back).
+    #[allow(clippy::too_many_arguments)]
     fn prepare_films(
         &self,
         batch: std::ops::Range<usize>,
         q: &[f64],
         qdot: &[f64],
         speed: f64,
+        terms: Terms,
         states: &mut [(f64, f64, JournalState); PAD_BATCH],
         films: &mut [Film; PAD_BATCH],
     ) {
-        let terms = Terms::WithJacobians;
         let film = self.film();
         for (i, k) in batch.clone().enumerate() {
             states[i] = self.pad_state(k, q, qdot);
