@@ -300,6 +300,22 @@ impl TiltingPadBearing {
 /// Pads whose films are prepared, then evaluated together, at a time.
 const PAD_BATCH: usize = 8;
 
+/// A batch of pads: each pad's `(sin, cos)` of its pivot angle and its
+/// effective journal state ([`TiltingPadBearing::pad_state`]), and its film.
+struct PadBatch {
+    states: [(f64, f64, JournalState); PAD_BATCH],
+    films: [Film; PAD_BATCH],
+}
+
+impl PadBatch {
+    fn new() -> Self {
+        Self {
+            states: [(0.0, 0.0, JournalState::default()); PAD_BATCH],
+            films: [Film::Nothing; PAD_BATCH],
+        }
+    }
+}
+
 impl Bearing for TiltingPadBearing {
     fn internal_dofs(&self) -> usize {
         self.pads.len()
@@ -320,23 +336,20 @@ impl Bearing for TiltingPadBearing {
         let law = self.contact_law();
         // Pads in batches: their films' potentials evaluated together
         // (`ShortFilm::complete`), then each pad's force in pad order.
-        let mut states = [(0.0, 0.0, JournalState::default()); PAD_BATCH];
-        let mut films = [Film::Nothing; PAD_BATCH];
+        let mut pads = PadBatch::new();
         for first in (0..self.pads.len()).step_by(PAD_BATCH) {
             let batch = first..(first + PAD_BATCH).min(self.pads.len());
-            let terms = Terms::WithJacobians;
             self.prepare_films(
                 batch.clone(),
                 q,
                 qdot,
                 speed,
-                terms,
-                &mut states,
-                &mut films,
+                Terms::WithJacobians,
+                &mut pads,
             );
             for (i, k) in batch.enumerate() {
-                let (s, c, state) = &states[i];
-                let part = film.force_of(films[i], speed)?;
+                let (s, c, state) = &pads.states[i];
+                let part = film.force_of(pads.films[i], speed)?;
                 out.add_transformed(&part, Some((k, -s, *c)));
                 if let Some((contact, _)) = self.pad_contact(&law, k, state, speed) {
                     out.add_transformed(&contact, Some((k, -s, *c)));
@@ -502,9 +515,10 @@ impl Bearing for TiltingPadBearing {
 impl TiltingPadBearing {
     /// One pass over the pads for the generalized forces in `out.force`, each
     /// pad's film force without its Jacobians (the numbers of
-    /// [`ShortFilm::force_only`], the potentials of a batch of pads evaluated
-    /// together as in `evaluate`); `each_pad` sees pad `k`'s effective journal state, `∫ dθ/H` over the
-    /// pad when the pressure covers all of it, and its contact.
+    /// [`ShortFilm::force_only`], a batch of pads' potentials evaluated
+    /// together as in `evaluate`); `each_pad` sees pad `k`'s effective
+    /// journal state, `∫ dθ/H` over the pad when the pressure covers all of
+    /// it, and its contact.
     fn pad_forces(
         &self,
         q: &[f64],
@@ -523,23 +537,13 @@ impl TiltingPadBearing {
         out.force.fill(0.0);
         let (c_rest, k_rest) = self.pivot_rest(speed);
         let law = self.contact_law();
-        let mut states = [(0.0, 0.0, JournalState::default()); PAD_BATCH];
-        let mut films = [Film::Nothing; PAD_BATCH];
+        let mut pads = PadBatch::new();
         for first in (0..self.pads.len()).step_by(PAD_BATCH) {
             let batch = first..(first + PAD_BATCH).min(self.pads.len());
-            let terms = Terms::ForceOnly;
-            self.prepare_films(
-                batch.clone(),
-                q,
-                qdot,
-                speed,
-                terms,
-                &mut states,
-                &mut films,
-            );
+            self.prepare_films(batch.clone(), q, qdot, speed, Terms::ForceOnly, &mut pads);
             for (i, k) in batch.enumerate() {
-                let (s, c, state) = &states[i];
-                let (force, whole) = force_only_of(films[i])?;
+                let (s, c, state) = &pads.states[i];
+                let (force, whole) = force_only_of(pads.films[i])?;
                 out.add_force(&force, Some((k, -s, *c)));
                 let contact = self.pad_contact(&law, k, state, speed);
                 if let Some((contact, _)) = &contact {
@@ -556,9 +560,8 @@ impl TiltingPadBearing {
     /// The states of the pads `batch` (at most [`PAD_BATCH`]) and their films
     /// with the potentials (up to the Jacobians' terms, or the force's alone,
     /// as `terms` asks) evaluated together ([`ShortFilm::complete`]), into
-    /// the first `batch.len()` entries of `states` and `films` (the caller's,
-    /// so that nothing is copied back).
-    #[allow(clippy::too_many_arguments)]
+    /// the first `batch.len()` entries of `pads` (the caller's, so that
+    /// nothing is copied back).
     fn prepare_films(
         &self,
         batch: std::ops::Range<usize>,
@@ -566,15 +569,15 @@ impl TiltingPadBearing {
         qdot: &[f64],
         speed: f64,
         terms: Terms,
-        states: &mut [(f64, f64, JournalState); PAD_BATCH],
-        films: &mut [Film; PAD_BATCH],
+        pads: &mut PadBatch,
     ) {
         let film = self.film();
         for (i, k) in batch.clone().enumerate() {
-            states[i] = self.pad_state(k, q, qdot);
-            films[i] = film.prepare(&states[i].2, speed, Some(&self.pads[k].window), terms);
+            pads.states[i] = self.pad_state(k, q, qdot);
+            pads.films[i] =
+                film.prepare(&pads.states[i].2, speed, Some(&self.pads[k].window), terms);
         }
-        film.complete(&mut films[..batch.len()], terms);
+        film.complete(&mut pads.films[..batch.len()], terms);
     }
 
     /// The report from the pads' tally and the journal force in `eval`.
