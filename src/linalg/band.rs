@@ -457,7 +457,7 @@ impl<T: Scalar> BandLu<T> {
         check_len("right-hand side", n, b.len());
         let kv = kl + self.ku;
         // `L[i, j]` and `U[i, j]` sit at `j (ldab − 1) + kv + i`.
-        let stride = ldab - 1;
+        let stride = ldab.saturating_sub(1);
         if kl > 0 && self.interchanged {
             for j in 0..n.saturating_sub(1) {
                 let lm = kl.min(n - 1 - j);
