@@ -212,6 +212,58 @@ impl<const L: usize> JetLanes<L> {
     }
 }
 
+/// The terms up to degree 2 of `m = 1 − x² − y²` (its higher ones are zero).
+#[inline(always)]
+fn film_m2<const L: usize>(x: Lanes<L>, y: Lanes<L>) -> Jet2Lanes<L> {
+    let (zero, one) = ([0.0; L], [1.0; L]);
+    [
+        sub(sub(one, mul(x, x)), mul(y, y)),
+        scale(-2.0, x),
+        scale(-2.0, y),
+        [-1.0; L],
+        zero,
+        [-1.0; L],
+    ]
+}
+
+/// At an arc end with `(sin θ, cos θ) = (s, c)`: the linear numerator
+/// `N = x sin θ − y cos θ` and the terms up to degree 1 of the denominator
+/// `D = 1 + √m − x cos θ − y sin θ` (`r` the jet of `√m` from degree 0 to 2;
+/// D's higher terms are those of `√m`).
+#[inline(always)]
+fn end_terms<const L: usize>(
+    x: Lanes<L>,
+    y: Lanes<L>,
+    (s, c): (Lanes<L>, Lanes<L>),
+    r: [Lanes<L>; 3],
+) -> ([Lanes<L>; 3], [Lanes<L>; 3]) {
+    let num = [sub(mul(x, s), mul(y, c)), s, map(c, |c| -c)];
+    let den = [
+        sub(sub(add([1.0; L], r[0]), mul(x, c)), mul(y, s)),
+        sub(r[1], c),
+        sub(r[2], s),
+    ];
+    (num, den)
+}
+
+/// Term `k` of `span + (atan t₂ − atan t₁)·2` with the generic jet
+/// arithmetic's operations (`e₂ + (−e₁)`, times 2, then the constant added
+/// to every term); the value's two arc tangents as one ([`atan_difference`]
+/// of the ratios' values `u2`, `u1`), `e2`, `e1` the arc tangents' term `k`.
+#[inline(always)]
+fn potential_sum_term<const L: usize>(
+    k: usize,
+    span: Lanes<L>,
+    (u2, u1): (Lanes<L>, Lanes<L>),
+    (e2, e1): (Lanes<L>, Lanes<L>),
+) -> Lanes<L> {
+    if k == 0 {
+        add(span, scale(2.0, zip(u2, u1, atan_difference)))
+    } else {
+        add([0.0; L], scale(2.0, add(e2, map(e1, |v| -v))))
+    }
+}
+
 /// [`super::film::arc_potential_sc`] on every lane of `arcs`: the jets of `x`
 /// and `y` are linear, so `m = 1 − x² − y²` and the numerators
 /// `N = x sin θ − y cos θ` are written out with the coefficients that are
@@ -220,56 +272,24 @@ impl<const L: usize> JetLanes<L> {
 pub(crate) fn arc_potentials<const L: usize>(arcs: &ArcLanes<L>) -> JetLanes<L> {
     let (x, y) = (arcs.x, arcs.y);
     let zero = [0.0; L];
-    let one = [1.0; L];
+    let [m0, m1, m2, m3, m4, m5] = film_m2(x, y);
     let m = JetLanes {
-        c: [
-            sub(sub(one, mul(x, x)), mul(y, y)),
-            scale(-2.0, x),
-            scale(-2.0, y),
-            [-1.0; L],
-            zero,
-            [-1.0; L],
-            zero,
-            zero,
-            zero,
-            zero,
-        ],
+        c: [m0, m1, m2, m3, m4, m5, zero, zero, zero, zero],
     };
     let root = m.sqrt();
     let r = &root.c;
-    let end = |(s, c): (Lanes<L>, Lanes<L>)| {
-        let num = [sub(mul(x, s), mul(y, c)), s, map(c, |c| -c)];
+    let end = |sc: (Lanes<L>, Lanes<L>)| {
+        let (num, [d0, d1, d2]) = end_terms(x, y, sc, [r[0], r[1], r[2]]);
         let den = JetLanes {
-            c: [
-                sub(sub(add(one, r[0]), mul(x, c)), mul(y, s)),
-                sub(r[1], c),
-                sub(r[2], s),
-                r[3],
-                r[4],
-                r[5],
-                r[6],
-                r[7],
-                r[8],
-                r[9],
-            ],
+            c: [d0, d1, d2, r[3], r[4], r[5], r[6], r[7], r[8], r[9]],
         };
         den.recip().mul_linear(num)
     };
     let (t2, t1) = (end(arcs.to_sc), end(arcs.from_sc));
     let (e2, e1) = (t2.atan_rates(), t1.atan_rates());
-    // (span + (e2 − e1)·2), with the generic jet arithmetic's operations:
-    // e2 + (−e1), times 2, then the constant added to every term; the value's
-    // two arc tangents as one.
     let mut sum = JetLanes { c: [zero; 10] };
     for (k, v) in sum.c.iter_mut().enumerate() {
-        *v = if k == 0 {
-            add(
-                arcs.span,
-                scale(2.0, zip(t2.c[0], t1.c[0], atan_difference)),
-            )
-        } else {
-            add(zero, scale(2.0, add(e2.c[k], map(e1.c[k], |v| -v))))
-        };
+        *v = potential_sum_term(k, arcs.span, (t2.c[0], t1.c[0]), (e2.c[k], e1.c[k]));
     }
     sum.mul(&root.recip())
 }
@@ -354,40 +374,16 @@ fn mul_linear2<const L: usize>(a: [Lanes<L>; 3], b: &Jet2Lanes<L>) -> Jet2Lanes<
 #[inline(always)]
 pub(crate) fn arc_potentials2<const L: usize>(arcs: &ArcLanes<L>) -> Jet2Lanes<L> {
     let (x, y) = (arcs.x, arcs.y);
-    let zero = [0.0; L];
-    let one = [1.0; L];
-    let m = [
-        sub(sub(one, mul(x, x)), mul(y, y)),
-        scale(-2.0, x),
-        scale(-2.0, y),
-        [-1.0; L],
-        zero,
-        [-1.0; L],
-    ];
-    let root = sqrt2(&m);
+    let root = sqrt2(&film_m2(x, y));
     let r = &root;
-    let end = |(s, c): (Lanes<L>, Lanes<L>)| {
-        let num = [sub(mul(x, s), mul(y, c)), s, map(c, |c| -c)];
-        let den = [
-            sub(sub(add(one, r[0]), mul(x, c)), mul(y, s)),
-            sub(r[1], c),
-            sub(r[2], s),
-            r[3],
-            r[4],
-            r[5],
-        ];
-        mul_linear2(num, &recip2(&den))
+    let end = |sc: (Lanes<L>, Lanes<L>)| {
+        let (num, [d0, d1, d2]) = end_terms(x, y, sc, [r[0], r[1], r[2]]);
+        mul_linear2(num, &recip2(&[d0, d1, d2, r[3], r[4], r[5]]))
     };
     let (t2, t1) = (end(arcs.to_sc), end(arcs.from_sc));
     let (e2, e1) = (atan_rates2(&t2), atan_rates2(&t1));
-    let mut sum = [zero; 6];
-    for (k, v) in sum.iter_mut().enumerate() {
-        *v = if k == 0 {
-            add(arcs.span, scale(2.0, zip(t2[0], t1[0], atan_difference)))
-        } else {
-            add(zero, scale(2.0, add(e2[k], map(e1[k], |v| -v))))
-        };
-    }
+    let sum: Jet2Lanes<L> =
+        std::array::from_fn(|k| potential_sum_term(k, arcs.span, (t2[0], t1[0]), (e2[k], e1[k])));
     mul2(&sum, &recip2(&root))
 }
 
