@@ -220,16 +220,7 @@ impl<T: Scalar> BandMatrix<T> {
     /// zero or whose modulus is below `n * EPSILON * max|a_ij|` is reported as
     /// [`LinalgError::Singular`].
     pub fn lu(&self) -> Result<BandLu<T>, LinalgError> {
-        let mut lu = BandLu {
-            n: self.n,
-            kl: self.kl,
-            ku: self.ku,
-            ldab: 0,
-            u_width: 0,
-            interchanged: false,
-            data: Vec::new(),
-            ipiv: Vec::new(),
-        };
+        let mut lu = BandLu::default();
         self.lu_into(&mut lu)?;
         Ok(lu)
     }
@@ -333,7 +324,35 @@ impl<T: Scalar> BandLu<T> {
         }
         lu.u_width = u_width;
         lu.interchanged = lu.ipiv.iter().enumerate().any(|(j, &p)| p != j);
+        lu.copy_rows();
         Ok(())
+    }
+
+    /// Fill [`BandLu::l_rows`] and [`BandLu::u_rows`] from the factors
+    /// (empty when rows were interchanged: the column sweeps read `data`).
+    fn copy_rows(&mut self) {
+        let (n, kl, w) = (self.n, self.kl, self.u_width);
+        let kv = kl + self.ku;
+        let stride = self.ldab.saturating_sub(1);
+        self.l_rows.clear();
+        self.u_rows.clear();
+        if self.interchanged {
+            return;
+        }
+        self.l_rows.resize(n * kl, T::zero());
+        self.u_rows.resize(n * w, T::zero());
+        for i in 0..n {
+            let j0 = i.saturating_sub(kl);
+            let row = &mut self.l_rows[i * kl..(i + 1) * kl];
+            for (dst, j) in row[kl - (i - j0)..].iter_mut().zip(j0..i) {
+                *dst = self.data[j * stride + kv + i];
+            }
+            let j1 = (i + w).min(n - 1);
+            let row = &mut self.u_rows[i * w..(i + 1) * w];
+            for (dst, j) in row.iter_mut().zip(i + 1..=j1) {
+                *dst = self.data[j * stride + kv + i];
+            }
+        }
     }
 }
 
@@ -397,6 +416,8 @@ impl<T: Scalar> Default for BandLu<T> {
             interchanged: false,
             data: Vec::new(),
             ipiv: Vec::new(),
+            l_rows: Vec::new(),
+            u_rows: Vec::new(),
         }
     }
 }
@@ -437,6 +458,14 @@ pub struct BandLu<T> {
     interchanged: bool,
     data: Vec<T>,
     ipiv: Vec<usize>,
+    /// Without interchanges, row `i` of `L` (`L[i, i − kl … i − 1]`, fewer
+    /// in the first rows) in `l_rows[i kl ..][.. kl]`, right-aligned: the
+    /// forward sweep reads each row as one contiguous slice.
+    l_rows: Vec<T>,
+    /// Without interchanges, row `i` of `U` right of the diagonal
+    /// (`U[i, i + 1 … i + u_width]`, fewer in the last rows) in
+    /// `u_rows[i u_width ..]`, left-aligned, for the back substitution.
+    u_rows: Vec<T>,
 }
 
 impl<T: Scalar> BandLu<T> {
@@ -476,25 +505,37 @@ impl<T: Scalar> BandLu<T> {
             // Without interchanges, row by row: row `i` takes the updates of
             // columns `i − kl … i − 1` in the order the column sweep above
             // gives them (the same bits), but only its last one waits for
-            // the row before.
+            // the row before; each row is read as one contiguous slice of
+            // `l_rows` (the columns' entries are `ldab − 1` apart in `data`).
             for i in 1..n {
                 let j0 = i.saturating_sub(kl);
-                let mut acc = b[i];
-                for (j, &bj) in b[j0..i].iter().enumerate() {
-                    acc -= self.data[(j0 + j) * stride + kv + i] * bj;
+                let row = &self.l_rows[(i + 1) * kl - (i - j0)..(i + 1) * kl];
+                let (done, rest) = b.split_at_mut(i);
+                let mut acc = rest[0];
+                for (l, bj) in row.iter().zip(&done[j0..]) {
+                    acc -= *l * *bj;
                 }
-                b[i] = acc;
+                rest[0] = acc;
             }
         }
         // Back substitution row by row, the columns of row `i` from the last
         // down, as a column sweep from the last column gives them.
+        let w = self.u_width;
         for i in (0..n).rev() {
-            let j1 = (i + self.u_width).min(n - 1);
-            let mut acc = b[i];
-            for j in (i + 1..=j1).rev() {
-                acc -= self.data[j * stride + kv + i] * b[j];
+            let j1 = (i + w).min(n - 1);
+            let (head, solved) = b.split_at_mut(i + 1);
+            let mut acc = head[i];
+            if self.interchanged {
+                for j in (i + 1..=j1).rev() {
+                    acc -= self.data[j * stride + kv + i] * solved[j - i - 1];
+                }
+            } else {
+                let row = &self.u_rows[i * w..i * w + (j1 - i)];
+                for (u, bj) in row.iter().zip(&solved[..j1 - i]).rev() {
+                    acc -= *u * *bj;
+                }
             }
-            b[i] = acc * self.data[i * ldab + kv];
+            head[i] = acc * self.data[i * ldab + kv];
         }
     }
 }

@@ -57,9 +57,10 @@ impl FactorWork {
     pub fn new(rotor: &Rotor) -> Self {
         let a = rotor.stiffness.zeroed_like();
         let n = rotor.dof_count();
-        // The LU (2 kl + ku + 1 rows), `C + Ω G` (kl + ku + 1) and `Z`
-        // (at most kl + ku columns) of one factorization.
-        let rows = 4 * (a.kl() + a.ku()) + 2;
+        // The LU (2 kl + ku + 1 rows, and its rows copied for the
+        // substitutions, kl + ku), `C + Ω G` (kl + ku + 1) and `Z` (at most
+        // kl + ku columns) of one factorization.
+        let rows = 5 * (a.kl() + a.ku()) + 2;
         let bytes = (rows * n * std::mem::size_of::<f64>()).max(1);
         Self {
             a,
