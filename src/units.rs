@@ -7,6 +7,9 @@ use std::fmt;
 /// rpm per rad/s: `n [rpm] = Ω [rad/s] · 60 / (2π)`.
 pub const RAD_S_TO_RPM: f64 = 60.0 / (2.0 * std::f64::consts::PI);
 
+/// Standard gravity g₀ (m/s², ISO 80000-3).
+pub const STANDARD_GRAVITY: f64 = 9.80665;
+
 /// How a vibration amplitude is stated: the orbit's semi-axis (zero to peak,
 /// what the analyses compute) or twice it (peak to peak, what proximity-probe
 /// readings and API 684 vibration limits use).

@@ -776,7 +776,8 @@ fn wrong_calls_and_bad_inputs_are_reported() {
 /// 3e-4, 0.2 s) keep the journals off their bushings, the disk on the ring. The disk
 /// goes centimetres "into" the ring at forces far past yield: each contact
 /// and limit is logged once per episode as fmi2Warning, with fmi2Warning
-/// returned by the step that found it, and again after fmi2Reset.
+/// returned by the step that found it, and again after fmi2Reset; every
+/// step that ends with the disk that far in returns fmi2Warning too.
 #[test]
 fn a_rub_with_the_journals_in_contact_is_not_discarded_and_its_contact_is_flagged() {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fmu_rub_model");
@@ -825,13 +826,26 @@ fn a_rub_with_the_journals_in_contact_is_not_discarded_and_its_contact_is_flagge
         let steps = (duration / 0.01) as usize;
         for k in 0..steps {
             let t = k as f64 * 0.01;
+            let before = LOG.lock().unwrap().len();
             let status = fmu.step(t, 0.01);
             assert!(
                 status == fmi2Status_fmi2OK || status == fmi2Status_fmi2Warning,
                 "time step {time_step:?}, t = {t} s: {status} {}",
                 last_log()
             );
-            if status == fmi2Status_fmi2Warning {
+            // A step that found a contact beyond its law returns fmi2Warning;
+            // so does one that ends with the disk far into the ring (a
+            // displacement no machine has), and no other.
+            let contact = !rub_warnings(before).is_empty();
+            let implausible = LOG.lock().unwrap()[before..]
+                .iter()
+                .any(|(s, m)| *s == fmi2Status_fmi2Warning && m.contains("no machine moves so"));
+            assert_eq!(
+                status == fmi2Status_fmi2Warning,
+                contact || implausible,
+                "t = {t} s"
+            );
+            if contact {
                 warned += 1;
             }
             let out = fmu.get(&["rubs.seal.contact_force", "bearings.left.contact_force"]);
@@ -861,8 +875,8 @@ fn a_rub_with_the_journals_in_contact_is_not_discarded_and_its_contact_is_flagge
                 .any(|(_, m)| m.contains("yield onset of steel"))
         );
         assert!(
-            (1..=6).contains(&warned),
-            "{warned} steps returned fmi2Warning"
+            (1..=2).contains(&warned),
+            "{warned} steps found a contact beyond its law"
         );
     }
 }

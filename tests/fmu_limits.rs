@@ -143,13 +143,16 @@ fn restored_states_are_validated() {
         (
             "viscosity",
             craft(&|b| {
-                // The last tuned value, before six empty vectors' lengths
-                // and the previous accelerations of the accuracy-controlled
-                // step taken (a length and one per rotor coordinate).
+                // The last tuned value, before six empty vectors' lengths,
+                // the previous accelerations of the accuracy-controlled
+                // step taken (a length and one per rotor coordinate), the
+                // contact flags (two per bearing), the table flags (one per
+                // bearing) and the full rotor's validity watch (four values).
                 let n = rotor_bearing::rotor::Rotor::new(m.clone())
                     .unwrap()
                     .dof_count();
-                let at = b.len() - 16 - 6 * 8 - 8 * (1 + n);
+                let flags = 8 * (1 + 4) + 8 * (1 + 2) + 8 * (1 + 4);
+                let at = b.len() - 16 - 6 * 8 - 8 * (1 + n) - flags;
                 put(b, at, -0.02)
             }),
         ),

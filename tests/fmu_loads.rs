@@ -61,9 +61,9 @@ fn get(fmu: &mut Instance, m: &RotorModel, name: &str) -> f64 {
 /// After the housings come the pull's excitation, the force and port
 /// inputs (in the order of `RotorModel::load_inputs`, starting at the model
 /// file's values), the ports' motion, the pull's forces and the power
-/// losses; the variables before them are those of the model without
-/// pull, forces and ports. A model with none of these gains only its power
-/// losses.
+/// losses, the step control, then the seals' and the pull's power losses;
+/// the variables before them are those of the model without pull, forces
+/// and ports. A model with none of these gains only its power losses.
 #[test]
 fn load_variables_are_appended_in_channel_order() {
     let m = brackets_with_port();
@@ -107,6 +107,8 @@ fn load_variables_are_appended_in_channel_order() {
             "bearings.turbine_guide.power_loss",
             "power_loss",
             "solver.local_error_tolerance",
+            "seals.runner_seal.power_loss",
+            "magnetic_pull.generator.power_loss",
         ]
     );
     let channels = m.load_inputs();

@@ -31,11 +31,24 @@ fn pedestal_and_seal_outputs_are_appended_after_the_existing_variables() {
     }
     let old = variables(&rigid);
     // The machine on rigid ground has the same variables but for the 27 of
-    // the seal and the housings (its loads and losses come after them).
-    assert_eq!(old.len() + 27, vars.len());
-    for (a, b) in old[last_old + 1..].iter().zip(&vars[last_old + 28..]) {
+    // the seal and the housings (its loads and losses come after them) and
+    // the seal's power loss, appended last.
+    assert_eq!(old.len() + 28, vars.len());
+    assert_eq!(
+        vars.last().unwrap().name,
+        "magnetic_pull.generator.power_loss"
+    );
+    assert_eq!(vars[vars.len() - 2].name, "seals.runner_seal.power_loss");
+    for (a, b) in old[last_old + 1..old.len() - 1]
+        .iter()
+        .zip(&vars[last_old + 28..vars.len() - 2])
+    {
         assert_eq!(a.name, b.name);
     }
+    assert_eq!(
+        old.last().unwrap().name,
+        "magnetic_pull.generator.power_loss"
+    );
     for (a, b) in old[..=last_old].iter().zip(&vars) {
         assert_eq!(
             (a.name.as_str(), a.value_reference),

@@ -29,7 +29,9 @@ fn linear_only(rotor: &Rotor) -> Result<(), LinearError> {
     }
 }
 
-/// Static deflection under gravity, `K q = f_g`, on all DOFs (`4·node + k`).
+/// Static deflection under gravity and the model's static and port forces
+/// (at their start values, as the nonlinear statics take them),
+/// `K q = f_g + f_s`, on all DOFs (`4·node + k`).
 pub fn static_deflection(rotor: &Rotor) -> Result<Vec<f64>, LinearError> {
     linear_only(rotor)?;
     let what = "static deflection";
@@ -38,6 +40,8 @@ pub fn static_deflection(rotor: &Rotor) -> Result<Vec<f64>, LinearError> {
         .lu()
         .map_err(|source| LinearError::Linalg { what, source })?;
     let mut q = rotor.gravity_load.clone();
+    let loads: Vec<f64> = rotor.model.load_inputs().iter().map(|l| l.start).collect();
+    rotor.add_static_loads(&loads, &mut q);
     lu.solve_in_place(&mut q);
     Ok(rotor.dofs.expand(&q))
 }

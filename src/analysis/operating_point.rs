@@ -71,6 +71,16 @@ pub struct FilmState {
     pub pads: Vec<PadState>,
 }
 
+impl FilmState {
+    /// Whether the bearing has a film geometry (a clearance): a table
+    /// bearing has none, so its eccentricity, attitude angle and film
+    /// thickness are not defined (reports leave them empty, not 0, which
+    /// would read as metal contact).
+    pub fn has_geometry(&self) -> bool {
+        self.clearance > 0.0
+    }
+}
+
 /// One bearing at the operating point.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BearingOperatingPoint {

@@ -84,10 +84,14 @@ impl CoefficientTable {
         (self.speeds[0], self.speeds[self.speeds.len() - 1])
     }
 
-    /// Whether `speed` (rad/s) lies within the table (else its end values hold).
+    /// Whether `speed` (rad/s) lies within the table (else its end values
+    /// hold), to the round-off of a speed converted from rpm (1e-12 of the
+    /// table's largest speed): a one-row table covers its own speed however
+    /// the caller converted it.
     pub fn covers(&self, speed: f64) -> bool {
         let (lo, hi) = self.range();
-        (lo..=hi).contains(&speed)
+        let slack = 1e-12 * lo.abs().max(hi.abs());
+        (lo - slack..=hi + slack).contains(&speed)
     }
 
     /// What a front end says when the table is asked for `speed` (rad/s)

@@ -13,6 +13,7 @@
 
 use crate::model::MAX_REDUCED_MODES;
 use crate::solver::SimState;
+use crate::solver::reduction_check::ValidityWatch;
 use crate::units::Short;
 
 use super::instance::Params;
@@ -32,6 +33,11 @@ pub struct Snapshot {
     pub(super) phase: Phase,
     /// The model fingerprint ([`fingerprint`] of the GUID).
     pub(super) fingerprint: u64,
+    /// The reduced rotor's validity watch ([`ValidityWatch::image`]): its
+    /// warnings are part of the state.
+    ///
+    /// [`ValidityWatch::image`]: crate::solver::reduction_check::ValidityWatch::image
+    pub(super) watch: Vec<f64>,
 }
 
 /// Start of every serialized state.
@@ -42,8 +48,10 @@ pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
 /// torsional state of a torque-driven shaft, 6 the initial speed of a
 /// torque-driven shaft and each bearing's tuned value, the field excitation
 /// of a magnetic pull beside the viscosities, 7 the local error tolerance and
-/// the step proposal and previous accelerations of accuracy-controlled steps).
-pub const VERSION: u64 = 7;
+/// the step proposal and previous accelerations of accuracy-controlled steps,
+/// 8 which contact and coefficient-table warnings have been raised and the
+/// reduced rotor's validity watch).
+pub const VERSION: u64 = 8;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -191,7 +199,7 @@ const SCALARS: [Scalar; 18] = [
 ];
 
 /// The vector fields, in image order.
-const VECTORS: [Vector; 17] = [
+const VECTORS: [Vector; 20] = [
     ("u", |s| &s.sim.u, |s| &mut s.sim.u),
     ("ud", |s| &s.sim.ud, |s| &mut s.sim.ud),
     ("udd", |s| &s.sim.udd, |s| &mut s.sim.udd),
@@ -237,7 +245,24 @@ const VECTORS: [Vector; 17] = [
         |s| &s.sim.udd_previous,
         |s| &mut s.sim.udd_previous,
     ),
+    (
+        "contact_reported",
+        |s| &s.sim.contact_reported,
+        |s| &mut s.sim.contact_reported,
+    ),
+    (
+        "table_warned",
+        |s| &s.sim.table_warned,
+        |s| &mut s.sim.table_warned,
+    ),
+    ("validity_watch", |s| &s.watch, |s| &mut s.watch),
 ];
+
+/// The vector of the run's history, of any length its own check accepts.
+const HISTORY: &str = "validity_watch";
+/// The most samples a validity watch holds in a state read back (a watch
+/// keeps a window of a few revolutions).
+const HISTORY_SAMPLES: u64 = 1 << 20;
 
 /// Store a real field (any f64 is in its domain; the simulator checks values).
 fn put(slot: &mut f64, v: f64) -> bool {
@@ -308,6 +333,10 @@ impl Snapshot {
             } else if name == ROTOR_OR_EMPTY {
                 let n = get(self).len();
                 (n, if n == 0 { 0 } else { coordinates })
+            } else if name == HISTORY {
+                ValidityWatch::check_image(get(self))
+                    .map_err(|e| format!("the state does not fit this model ({e})"))?;
+                continue;
             } else {
                 (get(self).len(), get(current).len())
             };
@@ -394,6 +423,9 @@ impl Snapshot {
             if name == ROTOR_OR_EMPTY && (read == 0 || read == n as u64) {
                 get_mut(&mut snap).resize(read as usize, 0.0);
             }
+            if name == HISTORY && read <= 4 + 3 * HISTORY_SAMPLES {
+                get_mut(&mut snap).resize(read as usize, 0.0);
+            }
             let n = read;
             let expected = get_mut(&mut snap).len();
             if n != expected as u64 {
@@ -411,6 +443,7 @@ impl Snapshot {
                 r.bytes.len()
             ));
         }
+        ValidityWatch::check_image(&snap.watch).map_err(|e| format!("corrupt state ({e})"))?;
         Ok(snap)
     }
 }
@@ -447,6 +480,8 @@ mod tests {
                 factor_step: 1e-3,
                 factor_speed: 13.0,
                 udd_previous: v(8, 20.0),
+                contact_reported: vec![0.0, 1.0],
+                table_warned: vec![1.0, 0.0],
                 step_proposal: 2.5e-4,
             },
             params: Params {
@@ -462,6 +497,7 @@ mod tests {
             tuned: v(2, 0.03),
             phase: Phase::StepFailed,
             fingerprint: fingerprint("{guid}"),
+            watch: vec![1.0, 0.5, 2.0, 3.0, 0.1, 4.0, 5.0, 0.2, 6.0, 7.0],
         }
     }
 

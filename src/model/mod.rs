@@ -207,6 +207,20 @@ pub struct LoadInput {
     pub name: String,
     /// Value at the start (the model file's; 0 for ports).
     pub start: f64,
+    /// What it is: a force component, a harmonic amplitude or a torque.
+    pub channel: LoadChannel,
+}
+
+/// What a [`LoadInput`] is, for its physical range
+/// ([`RotorModel::input_force_bound`], [`RotorModel::input_torque_bound`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LoadChannel {
+    /// A component of a static or port force (N), of either sign.
+    Component,
+    /// The amplitude of a harmonic force (N), not negative.
+    Amplitude,
+    /// A drive torque (N·m), of either sign.
+    Torque,
 }
 
 /// How the shaft is driven (`[torsion] drive`).
@@ -487,12 +501,14 @@ impl RotorModel {
                         out.push(LoadInput {
                             name: format!("forces.{}.{axis}", f.name),
                             start,
+                            channel: LoadChannel::Component,
                         });
                     }
                 }
                 ForceKind::Harmonic { magnitude, .. } => out.push(LoadInput {
                     name: format!("forces.{}.magnitude", f.name),
                     start: magnitude,
+                    channel: LoadChannel::Amplitude,
                 }),
             }
         }
@@ -501,6 +517,7 @@ impl RotorModel {
                 out.push(LoadInput {
                     name: format!("ports.{}.{axis}", p.name),
                     start: 0.0,
+                    channel: LoadChannel::Component,
                 });
             }
         }
@@ -508,6 +525,7 @@ impl RotorModel {
             out.push(LoadInput {
                 name: format!("torques.{}", t.name),
                 start: 0.0,
+                channel: LoadChannel::Torque,
             });
         }
         out
@@ -532,6 +550,35 @@ impl RotorModel {
     pub fn total_mass(&self) -> f64 {
         self.elements.iter().map(|e| e.element.mass()).sum::<f64>()
             + self.disks.iter().map(|d| d.disk.mass).sum::<f64>()
+    }
+
+    /// Total polar inertia about the shaft axis: shaft `ρ J_p L` plus the
+    /// disks' (kg·m²).
+    pub fn total_polar_inertia(&self) -> f64 {
+        self.elements
+            .iter()
+            .map(|e| {
+                e.element.material.density * e.element.section.polar_moment() * e.element.length
+            })
+            .sum::<f64>()
+            + self.disks.iter().map(|d| d.disk.polar_inertia).sum::<f64>()
+    }
+
+    /// The largest force input (N) a machine can take, `1000 g m`: the force
+    /// that would accelerate the whole rotor at a thousand times gravity
+    /// (short-circuit pull and hydraulic thrust stay within ten times its
+    /// weight). The FMU declares `±` it on every force and port input.
+    pub fn input_force_bound(&self) -> f64 {
+        1000.0 * crate::units::STANDARD_GRAVITY * self.total_mass()
+    }
+
+    /// The largest torque input (N·m) a machine can take, `J Ω_max / 1 ms`:
+    /// the torque that would take the shaft from rest to `max_speed_rpm` in
+    /// a millisecond (a generator's short-circuit torque is a few times its
+    /// rating and a unit takes seconds to run up). The FMU declares `±` it
+    /// on every torque input.
+    pub fn input_torque_bound(&self) -> f64 {
+        self.total_polar_inertia() * self.max_speed / 1e-3
     }
 
     /// The top speed (rad/s) transients of this model are prepared for (the

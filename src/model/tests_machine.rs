@@ -71,7 +71,7 @@ fn pedestal_seal_and_point_mass_errors_name_file_line_and_field() {
         (
             format!("{bearing}{frame}{}", frame.replace("frame", "spare")),
             "name = \"spare\"",
-            "pedestals[1].name = \"spare\": no bearing or rub stands on this pedestal",
+            "pedestals[1].name = \"spare\": no bearing, rub, seal or magnetic pull stands on this pedestal",
         ),
         (
             format!(

@@ -125,7 +125,8 @@ pub fn coefficients(curve: &[DimensionlessPoint]) -> String {
 /// position (m) and velocity (m/s, what a seismic sensor on it reads); for a
 /// torque-driven shaft each torque node's speed (rpm) and angle (rad) and
 /// each shaft element's torque (N·m); each thrust bearing's friction torque
-/// (N·m) and power loss (W).
+/// (N·m) and power loss (W); each bearing's, rub's, seal's and pull's power
+/// loss (W) and the total power loss (W).
 pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
     let mut out = String::from("time_s,speed_rpm,spin_angle_rad");
     for b in &model.bearings {
@@ -165,7 +166,12 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
     for t in &model.thrust_bearings {
         write!(out, ",{0}_friction_torque_Nm,{0}_power_loss_W", t.name).ok();
     }
-    out.push('\n');
+    // The power each bearing, rub, seal and pull dissipates, and the total
+    // (with the thrust bearings'): the parts add up to the total.
+    for b in &model.bearings {
+        write!(out, ",{}_power_loss_W", b.name).ok();
+    }
+    out.push_str(",power_loss_W\n");
     for o in records {
         write!(
             out,
@@ -216,7 +222,10 @@ pub fn simulation(model: &RotorModel, records: &[Outputs]) -> String {
         for t in &o.thrust_bearings {
             write!(out, ",{},{}", t.friction_torque, t.power_loss).ok();
         }
-        out.push('\n');
+        for b in &o.bearings {
+            write!(out, ",{}", b.report.power_loss).ok();
+        }
+        writeln!(out, ",{}", o.power_loss).ok();
     }
     out
 }
@@ -282,7 +291,8 @@ fn response_table(sweep: &UnbalanceSweep, frequencies: Option<&[f64]>) -> String
 
 /// Bearings at an operating point, one row each: load and force (N), journal
 /// position (m), eccentricity ratio, attitude angle (°), minimum film thickness
-/// (m), friction torque (N·m), power loss (W) (empty for linear bearings), then
+/// (m), friction torque (N·m), power loss (W) (empty for linear bearings; the
+/// eccentricity, attitude and film thickness empty for table bearings), then
 /// K (N/m) and C (N·s/m) row-major.
 pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
     let mut out = String::from(
@@ -296,6 +306,9 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
         )
         .ok();
         match &p.film {
+            Some(f) if !f.has_geometry() => {
+                write!(out, ",,,,{},{}", f.friction_torque, f.power_loss)
+            }
             Some(f) => write!(
                 out,
                 ",{},{},{:e},{},{}",
@@ -590,6 +603,7 @@ mod tests {
                 friction_torque: 0.5,
                 contact_force: 9.5,
                 min_film_thickness: 2.5e-5,
+                power_loss: 0.75,
                 ..BearingReport::default()
             },
             housing: Default::default(),
@@ -605,11 +619,12 @@ mod tests {
             torques: Vec::new(),
             shaft_torques: Vec::new(),
             friction_torque: 1.0,
-            power_loss: 0.0,
+            power_loss: 1.5,
         };
         let text = simulation(&model, &[record.clone(), record]);
         let header = text.lines().next().unwrap();
-        let columns = 3 + 8 * model.bearings.len() + 2 * model.probes.len() + 1;
+        // Each bearing's power loss and the total close the row.
+        let columns = 3 + 9 * model.bearings.len() + 2 * model.probes.len() + 2;
         assert_eq!(header.split(',').count(), columns);
         let b = &model.bearings[1].name;
         assert!(header.contains(&format!(",{b}_fx_N,")));
@@ -621,6 +636,9 @@ mod tests {
             [1e-6, -2e-6, 3.0, -4.0, 0.25, 0.5, 9.5, 2.5e-5]
         );
         assert!(header.contains(&format!(",{b}_contact_force_N,{b}_min_film_thickness_m")));
-        assert_eq!(rows[0][columns - 3..], [7e-6, 8e-6, 1.0]);
+        let losses = columns - model.bearings.len() - 1;
+        assert_eq!(rows[0][losses - 3..losses], [7e-6, 8e-6, 1.0]);
+        assert_eq!(rows[0][losses..], [0.75, 0.75, 1.5]);
+        assert!(header.ends_with(&format!(",{b}_power_loss_W,power_loss_W")));
     }
 }

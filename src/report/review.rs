@@ -249,21 +249,23 @@ pub fn operating_blocks(points: &[BearingOperatingPoint]) -> Vec<Block> {
         .iter()
         .map(|p| {
             let film = p.film.as_ref();
+            // A table bearing has no eccentricity, attitude or film thickness.
+            let geometry = film.filter(|f| f.has_geometry());
             let dash = || Cell::from("—");
             let (load, attitude) = if p.is_unloaded() {
                 ("0 (unloaded)".to_string(), "—".to_string())
             } else {
                 (
                     short(p.load),
-                    film.map_or("—".into(), |f| short(f.attitude_angle.to_degrees())),
+                    geometry.map_or("—".into(), |f| short(f.attitude_angle.to_degrees())),
                 )
             };
             vec![
                 p.name.clone().into(),
                 load.into(),
-                film.map_or_else(dash, |f| short(f.eccentricity).into()),
+                geometry.map_or_else(dash, |f| short(f.eccentricity).into()),
                 attitude.into(),
-                film.map_or_else(dash, |f| short(f.min_film_thickness * 1e6).into()),
+                geometry.map_or_else(dash, |f| short(f.min_film_thickness * 1e6).into()),
                 film.map_or_else(dash, |f| short(f.friction_torque).into()),
                 film.map_or_else(dash, |f| short(f.power_loss).into()),
                 text::coefficient_matrix(&p.stiffness).into(),

@@ -86,6 +86,8 @@ impl SimState {
             factor_speed,
             udd_previous,
             step_proposal,
+            contact_reported,
+            table_warned,
         } = other;
         for (dst, src) in [
             (&mut self.u, u),
@@ -104,6 +106,8 @@ impl SimState {
             (&mut self.twist_accel, twist_accel),
             (&mut self.twist_torque, twist_torque),
             (&mut self.udd_previous, udd_previous),
+            (&mut self.contact_reported, contact_reported),
+            (&mut self.table_warned, table_warned),
         ] {
             dst.clone_from(src);
         }
@@ -275,5 +279,8 @@ impl Simulator {
     fn restore_step_start(&mut self) {
         self.state.copy_from(&self.step_start);
         self.record_factor();
+        // The contact warnings of the undone step go with it (its state
+        // raises them again where the step is taken anew).
+        self.drop_contact_warnings_after(self.state.time);
     }
 }

@@ -31,22 +31,14 @@ pub struct ContactWarning {
     pub message: String,
 }
 
-/// Per nonlinear bearing (site order), whether each limit has been reported,
-/// and the warnings not yet taken.
+/// The warnings not yet taken. Which limits each site has been reported on
+/// is part of the state ([`SimState::contact_reported`]), so a restored
+/// state raises a warning again.
+///
+/// [`SimState::contact_reported`]: super::SimState::contact_reported
 #[derive(Debug, Default)]
 pub(super) struct ContactWatch {
-    reported: Vec<[bool; 2]>,
     pending: Vec<ContactWarning>,
-}
-
-impl ContactWatch {
-    /// Nothing reported yet for `sites` nonlinear bearings.
-    pub fn new(sites: usize) -> Self {
-        Self {
-            reported: vec![[false; 2]; sites],
-            pending: Vec::new(),
-        }
-    }
 }
 
 impl Simulator {
@@ -55,10 +47,11 @@ impl Simulator {
     /// each contact beyond each limit is queued. A contact reported on both
     /// limits is not evaluated again.
     pub(super) fn watch_contacts(&mut self, t: f64, speed: f64) {
-        let (s, watch) = (&self.state, &mut self.contact_watch);
+        let (s, watch) = (&mut self.state, &mut self.contact_watch);
         for (k, site) in self.sites.list.iter_mut().enumerate() {
-            let done = &mut watch.reported[k];
-            if done[0] && done[1] {
+            let [penetration_done, force_done] =
+                [2 * k, 2 * k + 1].map(|i| s.contact_reported[i] != 0.0);
+            if penetration_done && force_done {
                 continue;
             }
             for (a, c) in site.journal.iter().enumerate() {
@@ -76,8 +69,8 @@ impl Simulator {
             } else {
                 "bearing"
             };
-            if !done[0] && extent.penetration > extent.penetration_limit {
-                done[0] = true;
+            if !penetration_done && extent.penetration > extent.penetration_limit {
+                s.contact_reported[2 * k] = 1.0;
                 let gap = extent.penetration_limit
                     / crate::bearing::contact::ContactLaw::PENETRATION_LIMIT;
                 watch.pending.push(ContactWarning {
@@ -96,8 +89,8 @@ impl Simulator {
                     ),
                 });
             }
-            if !done[1] && extent.force > extent.force_limit {
-                done[1] = true;
+            if !force_done && extent.force > extent.force_limit {
+                s.contact_reported[2 * k + 1] = 1.0;
                 watch.pending.push(ContactWarning {
                     name: site.name.clone(),
                     limit: ContactLimit::Force,
@@ -121,5 +114,11 @@ impl Simulator {
     /// each reported once in the life of the simulator (an episode).
     pub fn take_contact_warnings(&mut self) -> Vec<ContactWarning> {
         std::mem::take(&mut self.contact_watch.pending)
+    }
+
+    /// Forget the pending warnings raised after time `t` (s): their step
+    /// was undone.
+    pub(super) fn drop_contact_warnings_after(&mut self, t: f64) {
+        self.contact_watch.pending.retain(|w| w.time <= t);
     }
 }

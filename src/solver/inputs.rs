@@ -3,7 +3,7 @@
 //! parameters (viscosity, field excitation).
 
 use super::simulator::{Simulator, SolverError};
-use crate::units::Short;
+use crate::units::{RAD_S_TO_RPM, Short};
 
 impl Simulator {
     /// Set the spin speed (rad/s) now and its rate of change (rad/s²) from now on.
@@ -18,8 +18,10 @@ impl Simulator {
         let max = self.rotor.model.max_speed;
         if speed.abs() > max {
             return Err(SolverError::Input(format!(
-                "speed {} rad/s exceeds the model's max_speed_rpm ({max} rad/s)",
-                Short(speed)
+                "speed {} rad/s ({} rpm) exceeds the model's max_speed_rpm ({} rpm)",
+                Short(speed),
+                Short(speed * RAD_S_TO_RPM),
+                Short(max * RAD_S_TO_RPM)
             )));
         }
         if self.torsion.is_some() {

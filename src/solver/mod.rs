@@ -66,6 +66,7 @@ mod newmark;
 mod newton;
 mod output_memo;
 mod outputs;
+pub mod plausible;
 pub mod reduction_check;
 pub mod run;
 mod simulator;

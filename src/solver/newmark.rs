@@ -5,7 +5,7 @@
 
 use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
-use crate::units::Short;
+use crate::units::{RAD_S_TO_RPM, Short};
 
 use super::simulator::{Simulator, SolverError, SolverOptions, inf_norm};
 
@@ -285,18 +285,24 @@ impl Simulator {
         }
         let max = self.rotor.model.max_speed;
         let end_speed = self.speed_at(t_end);
-        if end_speed.abs() > max {
+        // A torque-driven shaft has no ramp: each step checks its own speed
+        // (`Simulator::check_overspeed`).
+        if self.torsion.is_none() && end_speed.abs() > max {
             return Err(SolverError::Budget(format!(
-                "the speed ramp reaches {} rad/s at {} s, beyond the model's max_speed_rpm ({max} rad/s)",
-                Short(end_speed),
-                Short(t_end)
+                "the speed ramp reaches {} rpm at {} s, beyond the model's max_speed_rpm ({} rpm)",
+                Short(end_speed * RAD_S_TO_RPM),
+                Short(t_end),
+                Short(max * RAD_S_TO_RPM)
             )));
         }
         // Speeds vary linearly within a call: its ends bound them.
         let start_speed = self.speed_at(self.state.time);
         let now = self.state.time;
-        self.warnings.check_tables(&self.rotor, start_speed, now);
-        self.warnings.check_tables(&self.rotor, end_speed, t_end);
+        let warned = &mut self.state.table_warned;
+        self.warnings
+            .check_tables(&self.rotor, warned, start_speed, now);
+        self.warnings
+            .check_tables(&self.rotor, warned, end_speed, t_end);
         if self.options.local_error_tolerance > 0.0 {
             return self.advance_adaptive(t_end);
         }
@@ -323,12 +329,23 @@ impl Simulator {
     /// A step of size `h` (s), halved recursively on failure down to
     /// `max_step_cuts` halvings (`depth` counts the halvings so far), and
     /// never below [`SolverOptions::MIN_SPAN`].
+    ///
+    /// A step that fails with an error (a singular matrix, a bearing or the
+    /// torsional Newton giving up, an overspeed) is cut like one whose Newton
+    /// did not converge, as accuracy-controlled steps do; at the last
+    /// halving its error is the call's.
     fn step_with_cuts(&mut self, h: f64, depth: usize) -> Result<(), SolverError> {
-        match self.try_step(h)? {
+        // Never below the shortest span the integrator resolves.
+        let floor = depth >= self.options.max_step_cuts || 0.5 * h < SolverOptions::MIN_SPAN;
+        let outcome = match self.try_step(h) {
+            Ok(outcome) => outcome,
+            Err(e) if floor => return Err(e),
+            Err(_) => Some(f64::INFINITY),
+        };
+        match outcome {
             None => Ok(()),
             Some(residual) => {
-                // Never below the shortest span the integrator resolves.
-                if depth >= self.options.max_step_cuts || 0.5 * h < SolverOptions::MIN_SPAN {
+                if floor {
                     return Err(SolverError::NotConverged {
                         time: self.state.time,
                         step: h,

@@ -283,6 +283,58 @@ impl ValidityWatch {
         self.outside = false;
     }
 
+    /// The watch as numbers, for the FMU state (a restored state then warns
+    /// exactly as the run that saved it): whether it is outside (1) or not
+    /// (0), the motion window (s), the two integrals, then `(t, |u̇|², |ü|²)`
+    /// of each sample.
+    pub fn image(&self) -> Vec<f64> {
+        let m = &self.motion;
+        let mut out = vec![
+            f64::from(u8::from(self.outside)),
+            m.window,
+            m.integrals.0,
+            m.integrals.1,
+        ];
+        for &(t, v, a) in &m.samples {
+            out.extend_from_slice(&[t, v, a]);
+        }
+        out
+    }
+
+    /// Why `image` is not one [`ValidityWatch::image`] gives, if it is not:
+    /// its length, a non-finite or negative value, a flag other than 0 or 1,
+    /// or times out of order.
+    pub fn check_image(image: &[f64]) -> Result<(), String> {
+        if image.len() < 4 || (image.len() - 4) % 3 != 0 {
+            return Err(format!(
+                "validity watch of {} values (4 plus 3 per sample)",
+                image.len()
+            ));
+        }
+        if image[0] != 0.0 && image[0] != 1.0 {
+            return Err(format!("validity watch flag {}", image[0]));
+        }
+        if let Some(x) = image.iter().find(|x| !x.is_finite()) {
+            return Err(format!("validity watch value {x}"));
+        }
+        let samples: Vec<&[f64]> = image[4..].chunks(3).collect();
+        if samples.windows(2).any(|w| w[1][0] < w[0][0]) {
+            return Err("validity watch samples out of time order".into());
+        }
+        Ok(())
+    }
+
+    /// Take the watch of `image` (checked by [`ValidityWatch::check_image`]).
+    pub fn set_image(&mut self, image: &[f64]) -> Result<(), String> {
+        Self::check_image(image)?;
+        self.outside = image[0] == 1.0;
+        let m = &mut self.motion;
+        m.window = image[1];
+        m.integrals = (image[2], image[3]);
+        m.samples = image[4..].chunks(3).map(|s| (s[0], s[1], s[2])).collect();
+        Ok(())
+    }
+
     /// Add the state reached at spin `speed` (rad/s); `Some` when the speed
     /// or the motion's frequency has just left the validated range.
     pub fn check(&mut self, speed: f64, state: &SimState) -> Option<Excursion> {
@@ -396,6 +448,8 @@ mod tests {
             factor_step: 0.0,
             factor_speed: 0.0,
             udd_previous: vec![],
+            contact_reported: vec![],
+            table_warned: vec![],
             step_proposal: 0.0,
         };
         for &node in &rotor.reduction.as_ref().unwrap().kept_nodes {

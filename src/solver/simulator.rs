@@ -261,6 +261,8 @@ impl Simulator {
             factor_step: 0.0,
             factor_speed: 0.0,
             udd_previous: Vec::new(),
+            contact_reported: vec![0.0; 2 * sites.list.len()],
+            table_warned: vec![0.0; rotor.model.bearings.len()],
             step_proposal: 0.0,
         };
         if let Some(t) = &torsion {
@@ -295,9 +297,9 @@ impl Simulator {
             schur: SchurSolve::new(n, &sites),
             condensed: CondensedWork::new(&sites),
             stats: StepStats::default(),
-            warnings: Warnings::new(&rotor),
+            warnings: Warnings::default(),
             torsion,
-            contact_watch: ContactWatch::new(sites.list.len()),
+            contact_watch: ContactWatch::default(),
             rotor,
             options,
             state,
@@ -368,6 +370,8 @@ impl Simulator {
             || state.twist_rate.len() != s.twist_rate.len()
             || state.twist_accel.len() != s.twist_accel.len()
             || state.twist_torque.len() != s.twist_torque.len()
+            || state.contact_reported.len() != s.contact_reported.len()
+            || state.table_warned.len() != s.table_warned.len()
             || !(state.udd_previous.is_empty() || state.udd_previous.len() == s.u.len())
         {
             return Err(SolverError::Input(
@@ -461,8 +465,9 @@ impl Simulator {
     /// current displacement).
     pub fn settle_static(&mut self) -> Result<(), SolverError> {
         let speed = self.speed_at(self.state.time);
+        let time = self.state.time;
         self.warnings
-            .check_tables(&self.rotor, speed, self.state.time);
+            .check_tables(&self.rotor, &mut self.state.table_warned, speed, time);
         let mut sites = Sites::new(&self.rotor)?;
         let t = self.state.time;
         let loads: Vec<f64> = (0..self.state.loads.len())

@@ -2,7 +2,7 @@
 //! the solver holds) and its validation when a front end restores it.
 
 use super::simulator::SolverError;
-use crate::units::Short;
+use crate::units::{RAD_S_TO_RPM, Short};
 
 /// The complete dynamic state: restoring it reproduces a run bit for bit.
 #[derive(Debug, Clone, PartialEq)]
@@ -63,6 +63,14 @@ pub struct SimState {
     /// The next step accuracy-controlled stepping proposes (s); 0 before the
     /// first such step (then the largest step is tried).
     pub step_proposal: f64,
+    /// For each nonlinear bearing site (site order), whether its contact has
+    /// gone beyond the penetration and the force limit of its law (1) or not
+    /// (0), two entries a site: a warning is raised once, and a restored
+    /// state raises it again ([`super::contact_watch`]).
+    pub contact_reported: Vec<f64>,
+    /// For each model bearing, whether its coefficient table has warned of a
+    /// speed outside its rows (1) or not (0).
+    pub table_warned: Vec<f64>,
 }
 
 impl SimState {
@@ -80,7 +88,7 @@ impl SimState {
             ("stuck", self.stuck),
             ("step_proposal", self.step_proposal),
         ];
-        let vectors: [(&str, &[f64]); 16] = [
+        let vectors: [(&str, &[f64]); 18] = [
             ("u", &self.u),
             ("ud", &self.ud),
             ("udd", &self.udd),
@@ -97,6 +105,8 @@ impl SimState {
             ("twist_accel", &self.twist_accel),
             ("twist_torque", &self.twist_torque),
             ("udd_previous", &self.udd_previous),
+            ("contact_reported", &self.contact_reported),
+            ("table_warned", &self.table_warned),
         ];
         let bad = scalars
             .iter()
@@ -119,6 +129,17 @@ impl SimState {
                 Short(*m)
             )));
         }
+        for (name, flags) in [
+            ("contact_reported", &self.contact_reported),
+            ("table_warned", &self.table_warned),
+        ] {
+            if let Some(v) = flags.iter().find(|v| **v != 0.0 && **v != 1.0) {
+                return Err(SolverError::Input(format!(
+                    "state field {name} = {} is neither 0 nor 1",
+                    Short(*v)
+                )));
+            }
+        }
         if self.step_proposal < 0.0 {
             return Err(SolverError::Input(format!(
                 "state field step_proposal = {} s is negative",
@@ -127,8 +148,10 @@ impl SimState {
         }
         if self.speed.abs() > max_speed {
             return Err(SolverError::Input(format!(
-                "state field speed = {} rad/s exceeds the model's max_speed_rpm ({max_speed} rad/s)",
-                Short(self.speed)
+                "state field speed = {} rad/s ({} rpm) exceeds the model's max_speed_rpm ({} rpm)",
+                Short(self.speed),
+                Short(self.speed * RAD_S_TO_RPM),
+                Short(max_speed * RAD_S_TO_RPM)
             )));
         }
         Ok(())

@@ -27,9 +27,10 @@
 //! breakaway torque (the thrust bearings' `μ_b W R_m` plus the journals'
 //! contact friction at standstill, `μ N R`) every node stays at exactly zero
 //! speed; past it the shaft breaks away, and a mean speed that reaches zero
-//! with the input torque within the breakaway torque sticks again. (A stuck
-//! shaft holds its twist: the static wind-up under the drive is not
-//! modelled.)
+//! with the input torque within the breakaway torque sticks again. A stuck
+//! shaft takes the static wind-up of its inputs against the friction that
+//! holds it ([`Simulator::static_wind_up`]), so its section torques are
+//! what a coupling carries at start.
 //!
 //! [`Bearing::report`]: crate::bearing::Bearing::report
 //! [`ThrustBearing`]: crate::bearing::thrust::ThrustBearing
@@ -40,6 +41,7 @@ use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::{BandLu, BandMatrix};
 use crate::rotor::Rotor;
 use crate::rotor::torsion::TorsionalRotor;
+use crate::units::{RAD_S_TO_RPM, Short};
 
 use super::simulator::{Simulator, SolverError};
 use super::state::SimState;
@@ -278,8 +280,29 @@ impl Simulator {
             *v = self.load_at(k, t1);
         }
         let outcome = torsional_newton(&mut tors, &self.state, h);
+        let speed = tors.mean(&tors.omega);
         self.torsion = Some(tors);
-        outcome
+        outcome?;
+        self.check_overspeed(speed, t1)
+    }
+
+    /// A torque-driven shaft whose mean speed `speed` (rad/s) at `t1` (s)
+    /// would exceed the model's `max_speed_rpm` fails its step: the state
+    /// stays at or below the limit (so it can be saved and restored), and a
+    /// step that cannot be cut below the crossing is the call's error,
+    /// named in the torque and in rpm.
+    fn check_overspeed(&self, speed: f64, t1: f64) -> Result<(), SolverError> {
+        let max = self.rotor.model.max_speed;
+        if speed.abs() <= max {
+            return Ok(());
+        }
+        Err(SolverError::Budget(format!(
+            "the torque inputs (net {} N·m) would accelerate the shaft to {:.1} rpm by t = {:.6} s, beyond the model's max_speed_rpm ({:.0} rpm): the state is kept at or below it",
+            Short(self.input_torque(t1)),
+            speed * RAD_S_TO_RPM,
+            t1,
+            max * RAD_S_TO_RPM
+        )))
     }
 
     /// Point the lateral step at the speed profile of the torsional iterate:
@@ -321,7 +344,7 @@ impl Simulator {
             let at_rest = self.site_friction(0.0, true, false)?;
             let capacity = self.torsion.as_ref().map_or(0.0, |t| t.breakaway(at_rest));
             if drive.abs() <= capacity {
-                return self.hold_at_rest(h);
+                return self.hold_at_rest(h, t1);
             }
             self.state.stuck = 0.0;
             self.breakaway_acceleration(drive)?;
@@ -471,24 +494,96 @@ impl Simulator {
         Ok(outcome?)
     }
 
-    /// A step of the shaft held at rest by static friction: no twist motion,
-    /// the lateral step at zero speed.
-    fn hold_at_rest(&mut self, h: f64) -> Result<Option<f64>, SolverError> {
+    /// A step of the shaft held at rest by static friction: no twist motion
+    /// but its static wind-up under the inputs at the step's end `t1`
+    /// ([`Simulator::static_wind_up`]), the lateral step at zero speed.
+    fn hold_at_rest(&mut self, h: f64, t1: f64) -> Result<Option<f64>, SolverError> {
         let s = &mut self.state;
         s.speed = 0.0;
         s.speed_rate = 0.0;
         s.speed_time = s.time;
-        if let Some(tors) = self.torsion.as_mut() {
-            tors.theta.copy_from_slice(&s.twist);
-            tors.omega.fill(0.0);
-            tors.alpha.fill(0.0);
-        }
+        self.static_wind_up(t1)?;
         self.drive_lateral(h);
         let outcome = self.solve_lateral_step(h)?;
         if outcome.is_none() {
             self.commit_lateral_step(h);
+            if let Some(tors) = self.torsion.as_ref() {
+                let s = &mut self.state;
+                s.twist.copy_from_slice(&tors.theta);
+                s.twist_rate.fill(0.0);
+                s.twist_accel.fill(0.0);
+            }
         }
         Ok(outcome)
+    }
+
+    /// The twist of a shaft that static friction holds at rest, into
+    /// `torsion.theta` (rates zero): `K_t φ = T_in(t1) + T_r`, where the
+    /// reactions `T_r` of the elements that hold it (each thrust bearing and
+    /// each bearing, rub, seal or pull in contact at rest) balance the net
+    /// input torque in proportion to each one's breakaway torque; a chain
+    /// that no support fixes keeps its inertia-weighted mean twist (the shaft
+    /// does not turn). Opposing torques at the two ends of a stuck shaft so
+    /// twist it by `T L / (G J)` (tests/reliability.rs).
+    fn static_wind_up(&mut self, t1: f64) -> Result<(), SolverError> {
+        if let Some(t) = self.torsion.as_mut() {
+            t.fresh.fill(0.0);
+        }
+        // The sites' friction at rest, as torques on the shaft at their DOFs:
+        // their magnitudes are the capacities.
+        self.site_friction(0.0, true, true)?;
+        let Some(mut tors) = self.torsion.take() else {
+            return Ok(());
+        };
+        let n = tors.chain.dof_count();
+        for c in tors.fresh.iter_mut() {
+            *c = c.abs();
+        }
+        for (dof, t) in &tors.thrust {
+            if let Some(i) = *dof {
+                tors.fresh[i] += t.breakaway_torque();
+            }
+        }
+        tors.rhs.fill(0.0);
+        for &(k, dof) in &tors.inputs {
+            if let Some(i) = dof {
+                tors.rhs[i] += self.load_at(k, t1);
+            }
+        }
+        let free = tors.chain.dofs.iter().all(Option::is_some);
+        let net: f64 = tors.rhs.iter().sum();
+        let capacity: f64 = tors.fresh.iter().sum();
+        if free && capacity > 0.0 {
+            for (r, c) in tors.rhs.iter_mut().zip(&tors.fresh) {
+                *r -= net * c / capacity;
+            }
+        }
+        tors.a.assign(&tors.chain.stiffness);
+        if free && n > 0 {
+            // The rigid-body rotation: pin the first twist, then shift.
+            tors.a.set(0, 0, 1.0);
+            if n > 1 {
+                tors.a.set(0, 1, 0.0);
+                tors.a.set(1, 0, 0.0);
+            }
+            tors.rhs[0] = 0.0;
+        }
+        let outcome = tors.a.lu_into(&mut tors.lu);
+        if outcome.is_ok() {
+            tors.lu.solve_in_place(&mut tors.rhs);
+            if free {
+                let shift = tors.mean(&self.state.twist) - tors.mean(&tors.rhs);
+                for (theta, r) in tors.theta.iter_mut().zip(&tors.rhs) {
+                    *theta = r + shift;
+                }
+            } else {
+                tors.theta.copy_from_slice(&tors.rhs);
+            }
+            tors.omega.fill(0.0);
+            tors.alpha.fill(0.0);
+        }
+        self.torsion = Some(tors);
+        Ok(outcome?)
     }
 }
 

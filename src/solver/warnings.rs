@@ -24,33 +24,29 @@ impl fmt::Display for SolverWarning {
     }
 }
 
-/// The warnings raised so far, and which elements have warned.
+/// The warnings raised and not yet taken. Which elements have warned is
+/// part of the state ([`SimState::table_warned`]), so a restored state warns
+/// again.
+///
+/// [`SimState::table_warned`]: super::SimState::table_warned
 #[derive(Debug, Clone, Default)]
 pub(super) struct Warnings {
     pending: Vec<SolverWarning>,
-    /// Per model bearing: its coefficient table has warned.
-    table_warned: Vec<bool>,
 }
 
 impl Warnings {
-    pub fn new(rotor: &Rotor) -> Self {
-        Self {
-            pending: Vec::new(),
-            table_warned: vec![false; rotor.model.bearings.len()],
-        }
-    }
-
     /// Warn (once per element) about every coefficient table of `rotor`
     /// that does not cover `speed` (rad/s) at time `time` (s).
-    pub fn check_tables(&mut self, rotor: &Rotor, speed: f64, time: f64) {
+    /// `warned` holds, per model bearing, 1 once its table has warned.
+    pub fn check_tables(&mut self, rotor: &Rotor, warned: &mut [f64], speed: f64, time: f64) {
         for (k, b) in rotor.model.bearings.iter().enumerate() {
             let Some(table) = b.kind.coefficient_table() else {
                 continue;
             };
-            if self.table_warned[k] || table.covers(speed) {
+            if warned[k] != 0.0 || table.covers(speed) {
                 continue;
             }
-            self.table_warned[k] = true;
+            warned[k] = 1.0;
             self.pending.push(SolverWarning {
                 time,
                 element: b.name.clone(),

@@ -41,7 +41,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand};
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
-use rotor_bearing::units::Amplitude;
+use rotor_bearing::units::{Amplitude, RAD_S_TO_RPM};
 
 #[derive(Parser)]
 #[command(
@@ -229,9 +229,9 @@ enum Command {
     OperatingPoint {
         #[command(flatten)]
         model: ModelArg,
-        /// Spin speed (rpm).
+        /// Spin speed (rpm); default the model's speed_rpm.
         #[arg(long)]
-        rpm: f64,
+        rpm: Option<f64>,
         /// Write one row per bearing to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
@@ -245,9 +245,9 @@ enum Command {
     Stability {
         #[command(flatten)]
         model: ModelArg,
-        /// Spin speed (rpm).
+        /// Spin speed (rpm); default the model's speed_rpm.
         #[arg(long)]
-        rpm: f64,
+        rpm: Option<f64>,
         #[command(flatten)]
         stages: StageArgs,
         /// Largest cross-coupled stiffness Q (N/m); default 10 × Q_A with stage data,
@@ -406,6 +406,18 @@ pub(crate) fn warn_table_speeds(model: &RotorModel, speeds: &[f64]) {
     }
 }
 
+/// The speed (rpm) of `--rpm`, else the model's `speed_rpm`.
+pub(crate) fn model_rpm(model: &RotorModel, rpm: Option<f64>) -> Result<f64, String> {
+    match rpm {
+        Some(r) => Ok(r),
+        None if model.nominal_speed != 0.0 => Ok(model.nominal_speed * RAD_S_TO_RPM),
+        None => Err(format!(
+            "{}: the model states no speed_rpm: give --rpm",
+            model.source
+        )),
+    }
+}
+
 /// Read a model file and print its plausibility warnings on stderr.
 fn read_model(path: &Path) -> Result<RotorModel, String> {
     let model = RotorModel::from_file(path).map_err(|e| e.to_string())?;
@@ -557,7 +569,11 @@ fn run(cli: Cli) -> Result<(), String> {
             rpm,
             csv,
             pads_csv,
-        } => operating_point::run(&load(&model)?, rpm, csv, pads_csv),
+        } => {
+            let rotor = load(&model)?;
+            let rpm = model_rpm(&rotor.model, rpm)?;
+            operating_point::run(&rotor, rpm, csv, pads_csv)
+        }
         Command::Stability {
             model,
             rpm,
@@ -567,19 +583,23 @@ fn run(cli: Cli) -> Result<(), String> {
             modes,
             csv,
             png,
-        } => stability::run(
-            &load(&model)?,
-            stability::Request {
-                rpm,
-                q_max: cross_coupling_max,
-                points,
-                modes,
-                stages: stages.stages()?,
-                at: stages.at,
-                csv,
-                png,
-            },
-        ),
+        } => {
+            let rotor = load(&model)?;
+            let rpm = model_rpm(&rotor.model, rpm)?;
+            stability::run(
+                &rotor,
+                stability::Request {
+                    rpm,
+                    q_max: cross_coupling_max,
+                    points,
+                    modes,
+                    stages: stages.stages()?,
+                    at: stages.at,
+                    csv,
+                    png,
+                },
+            )
+        }
         Command::Ucs {
             model,
             min_stiffness,

@@ -28,6 +28,12 @@ pub struct SimulateArgs {
     /// initial speed (default 0: from rest).
     #[arg(long = "torque", value_name = "NAME=N·m")]
     pub torques: Vec<String>,
+    /// How the shaft is driven in this run, overriding the model's
+    /// `[torsion] drive`: `speed` (the speed options prescribe its speed) or
+    /// `torque` (the `--torque` inputs drive it; --rpm is its initial speed;
+    /// the model needs `[[torques]]` nodes).
+    #[arg(long, value_parser = ["speed", "torque"])]
+    pub drive: Option<String>,
     /// Simulated time (s).
     #[arg(long, default_value_t = 1.0)]
     pub duration: f64,
@@ -77,6 +83,29 @@ pub struct SimulateArgs {
     pub amplitude: Amplitude,
 }
 
+/// `rotor` with its shaft driven as `--drive` says (the model's own drive
+/// when not given).
+fn with_drive(rotor: Rotor, drive: Option<&str>) -> Result<Rotor, String> {
+    use rotor_bearing::model::Drive;
+    let wanted = match drive {
+        None => return Ok(rotor),
+        Some("speed") => Drive::Speed,
+        Some(_) => Drive::Torque,
+    };
+    if rotor.model.drive == wanted {
+        return Ok(rotor);
+    }
+    let mut model = rotor.model.clone();
+    if wanted == Drive::Torque && model.torques.is_empty() {
+        return Err(format!(
+            "--drive torque: {} has no [[torques]] nodes to apply the torques at",
+            model.source
+        ));
+    }
+    model.drive = wanted;
+    Rotor::new(model).map_err(|e| e.to_string())
+}
+
 /// Run `rotor simulate` on `rotor` as `args` ask.
 pub fn run(rotor: Rotor, args: SimulateArgs) -> Result<(), String> {
     let SimulateArgs {
@@ -84,6 +113,7 @@ pub fn run(rotor: Rotor, args: SimulateArgs) -> Result<(), String> {
         ramp_rpm,
         speed_csv,
         torques,
+        drive,
         duration,
         step,
         local_error_tolerance,
@@ -96,7 +126,30 @@ pub fn run(rotor: Rotor, args: SimulateArgs) -> Result<(), String> {
         plots,
         amplitude,
     } = args;
+    let rotor = with_drive(rotor, drive.as_deref())?;
     let torque_driven = rotor.model.drive == rotor_bearing::model::Drive::Torque;
+    if torque_driven {
+        let name = &rotor.model.name;
+        if ramp_rpm.is_some() || speed_csv.is_some() {
+            let option = if ramp_rpm.is_some() {
+                "--ramp-rpm"
+            } else {
+                "--speed-csv"
+            };
+            return Err(format!(
+                "{option}: the shaft of {name} is torque-driven: its speed comes from the torques (--torque NAME=N·m), so a speed profile cannot be prescribed; give --drive speed to prescribe it"
+            ));
+        }
+        if torques.is_empty() {
+            eprintln!(
+                "note: the shaft of {name} is torque-driven and no --torque is given: {} it coasts under its bearings' friction (give --torque NAME=N·m to drive it, or --drive speed to hold the speed)",
+                match rpm {
+                    Some(r) if r != 0.0 => format!("from its initial speed --rpm {r}"),
+                    _ => "from rest".to_string(),
+                }
+            );
+        }
+    }
     let rpm = match (rpm, ramp_rpm.is_none() && speed_csv.is_none()) {
         (None, true) if torque_driven => Some(0.0),
         (rpm, _) => rpm,

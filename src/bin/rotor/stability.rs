@@ -5,7 +5,7 @@
 use std::path::PathBuf;
 
 use rotor_bearing::analysis::stability::{
-    StabilityRequest, StageData, site_label, stability_study,
+    StabilityRequest, StageData, mid_span_node, site_label, stability_study,
 };
 use rotor_bearing::plot::{RAD_S_TO_RPM, stability_png};
 use rotor_bearing::report::{csv as report_csv, text};
@@ -117,5 +117,37 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         eprintln!("wrote {}", path.display());
     }
     print!("{out}");
+    if req.at.is_none() {
+        placement_note(rotor, &request, &result)?;
+    }
+    Ok(())
+}
+
+/// Where the default cross-coupling acts changed on 2026-12-01 (ff560cb):
+/// from the node nearest mid-span to the disks and seals. When the two
+/// differ, the verdict is followed by the threshold the earlier default gives,
+/// so that a published figure can be traced (CHANGELOG.md).
+fn placement_note(
+    rotor: &Rotor,
+    request: &StabilityRequest,
+    result: &rotor_bearing::analysis::stability::Stability,
+) -> Result<(), String> {
+    let mid = mid_span_node(rotor);
+    if result.sites == [mid] {
+        return Ok(());
+    }
+    let earlier = StabilityRequest {
+        sites: vec![mid],
+        ..request.clone()
+    };
+    let before = stability_study(rotor, &earlier).map_err(|e| e.to_string())?;
+    let threshold = match before.threshold {
+        Some(q) => format!("threshold Q = {} N/m", text::short(q)),
+        None => format!("stable up to Q = {} N/m", text::short(before.q_max)),
+    };
+    println!(
+        "placement: the default since 2026-12-01 (CHANGELOG.md) is the disks and seals; before, it was the node nearest mid-span, {}, where the same study gives {threshold}; give --at to choose",
+        site_label(rotor, mid)
+    );
     Ok(())
 }

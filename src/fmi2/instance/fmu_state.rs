@@ -18,6 +18,7 @@ impl Instance {
             tuned: self.tuned.clone(),
             phase: self.phase,
             fingerprint: self.fingerprint,
+            watch: self.watch.image(),
         }
     }
 
@@ -105,8 +106,13 @@ impl Instance {
                 let line = self.sim.rotor().coordinates();
                 self.messages.push((Status::Ok, category(Status::Ok), line));
             }
-            Ok(None) => self.watch.reset(),
+            Ok(None) => {}
             Err(e) => return self.report(Status::Error, format!("{}: {e}", call.name())),
+        }
+        // Checked by `fits` and on reading: the watch of the state's run.
+        if let Err(e) = self.watch.set_image(&snap.watch) {
+            self.watch.reset();
+            return self.report(Status::Error, format!("{}: {e}", call.name()));
         }
         self.params = snap.params;
         self.tuned = snap.tuned.clone();

@@ -146,6 +146,9 @@ pub struct Instance {
     step_statistics: bool,
     /// Whether the reduced rotor runs inside its validated range.
     watch: ValidityWatch,
+    /// The outputs' displacement no machine can have, when they hold one
+    /// ([`crate::solver::plausible`]): each step that ends so warns.
+    implausible: Option<String>,
 }
 
 fn category(status: Status) -> &'static str {
@@ -205,6 +208,7 @@ impl Instance {
             outputs,
             messages,
             step_statistics: false,
+            implausible: None,
         })
     }
 
@@ -361,7 +365,10 @@ impl Instance {
         match self.settle() {
             Ok(()) => {
                 self.phase = Phase::StepComplete;
-                Status::Ok
+                match self.refresh_outputs() {
+                    Ok(()) => self.warn_implausible("fmi2ExitInitializationMode", Status::Ok),
+                    Err(s) => s,
+                }
             }
             Err(s) => s,
         }
@@ -479,7 +486,8 @@ impl Instance {
         }
     }
 
-    /// fmi2SetRealInputDerivatives (first order: a ramp over the next step).
+    /// fmi2SetRealInputDerivatives (first order: a ramp over the next step;
+    /// higher orders are accepted and not used).
     pub fn set_input_derivative(&mut self, vr: u32, order: i32, value: f64) -> Status {
         if let Err(s) = self.check(Call::SetRealInputDerivatives) {
             return s;
@@ -489,11 +497,11 @@ impl Instance {
             Ok(v) => v,
             Err(s) => return s,
         };
-        if order != 1 {
+        if order < 1 {
             return self.report(
                 Status::Error,
                 format!(
-                    "{call}: order {order} for {}: only first derivatives are supported",
+                    "{call}: order {order} for {}: derivative orders start at 1",
                     v.name
                 ),
             );
@@ -508,15 +516,29 @@ impl Instance {
                 ),
             );
         }
+        if v.causality != Causality::Input {
+            return self.report(
+                Status::Error,
+                format!("{call}: {} is not a continuous input", v.name),
+            );
+        }
+        if order > 1 {
+            // The inputs are interpolated linearly within a step: a higher
+            // derivative is accepted and not used (FMI 2.0, 4.2.1).
+            self.messages.push((
+                Status::Ok,
+                category(Status::Ok),
+                format!(
+                    "{call}: order {order} derivative of {} = {} ignored: inputs are interpolated to first order within a step",
+                    v.name,
+                    Short(value)
+                ),
+            ));
+            return Status::Ok;
+        }
         let s = self.sim.state();
         let now = s.time;
         let result = match v.binding {
-            _ if v.causality != Causality::Input => {
-                return self.report(
-                    Status::Error,
-                    format!("{call}: {} is not a continuous input", v.name),
-                );
-            }
             Binding::Speed => {
                 let w = self.sim.speed_at(now);
                 self.sim.set_speed(w, value)

@@ -101,10 +101,13 @@ impl Instance {
         }
         match result {
             Ok(()) => match self.refresh_outputs() {
-                Ok(_) => match self.watch_reduction(call) {
-                    Status::Ok if warned => Status::Warning,
-                    status => status,
-                },
+                Ok(_) => {
+                    let status = match self.watch_reduction(call) {
+                        Status::Ok if warned => Status::Warning,
+                        status => status,
+                    };
+                    self.warn_implausible(call, status)
+                }
                 Err(s) => s,
             },
             Err(e) => {

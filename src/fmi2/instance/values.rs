@@ -8,11 +8,12 @@
 //! [`Simulator::outputs`]: crate::solver::Simulator::outputs
 
 use crate::solver::Outputs;
+use crate::solver::plausible::implausible_displacement;
 use crate::units::Short;
 
 use super::super::states::Call;
 use super::super::variables::{Binding, Causality, Kind, Variable};
-use super::{Instance, Phase, Status};
+use super::{Instance, Phase, Status, category};
 
 /// The outputs at the current state, by value reference.
 #[derive(Debug, Clone)]
@@ -109,11 +110,31 @@ impl Instance {
     pub(super) fn refresh_outputs(&mut self) -> Result<(), Status> {
         if !self.outputs.is_fresh() {
             match self.sim.outputs() {
-                Ok(o) => self.outputs.fill(&o),
+                Ok(o) => {
+                    self.outputs.fill(&o);
+                    self.implausible = implausible_displacement(&self.model, &o);
+                }
                 Err(e) => return Err(self.report(Status::Error, format!("outputs: {e}"))),
             }
         }
         Ok(())
+    }
+
+    /// `status`, or fmi2Warning with the message when the outputs hold a
+    /// displacement no machine can have (after `call`).
+    pub(super) fn warn_implausible(&mut self, call: &str, status: Status) -> Status {
+        let Some(text) = self.implausible.clone() else {
+            return status;
+        };
+        self.messages.push((
+            Status::Warning,
+            category(Status::Warning),
+            format!("{call}: {text}"),
+        ));
+        match status {
+            Status::Ok => Status::Warning,
+            other => other,
+        }
     }
 
     /// fmi2Error for a read or write of `vr` as a `kind`: unknown, or of another type.

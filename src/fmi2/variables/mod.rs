@@ -6,13 +6,14 @@
 //! (packing) and inside the FMU (from the model file in `resources/`), so the
 //! two can never drift apart; a GUID hashed from the description ties them.
 
-use crate::model::{Drive, RotorModel};
+use crate::model::{Drive, LoadChannel, RotorModel};
 use crate::solver::SolverOptions;
 pub use crate::solver::time_step::DEFAULT_LOCAL_ERROR_TOLERANCE;
 use crate::solver::time_step::largest_adaptive_step;
 
 mod drive;
 mod loads;
+mod losses;
 mod machine;
 mod stepping;
 
@@ -203,6 +204,18 @@ pub fn value_range(binding: Binding, model: &RotorModel) -> (Option<f64>, Option
         Binding::Excitation(_) => pair(EXCITATION_RANGE),
         Binding::Speed => (Some(-model.max_speed), Some(model.max_speed)),
         Binding::Unbalance(_) => (Some(0.0), None),
+        Binding::Load(i) => match model.load_inputs().get(i).map(|l| l.channel) {
+            Some(LoadChannel::Component) => {
+                let f = model.input_force_bound();
+                (Some(-f), Some(f))
+            }
+            Some(LoadChannel::Amplitude) => (Some(0.0), Some(model.input_force_bound())),
+            Some(LoadChannel::Torque) => {
+                let t = model.input_torque_bound();
+                (Some(-t), Some(t))
+            }
+            None => (None, None),
+        },
         _ => (None, None),
     }
 }
@@ -324,5 +337,6 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
     loads::add(&mut t);
     drive::add(&mut t);
     stepping::add(&mut t);
+    losses::add(&mut t);
     t.out
 }

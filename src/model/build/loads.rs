@@ -185,3 +185,34 @@ pub(super) fn ports(
     }
     Ok(out)
 }
+
+/// Every force of `model` within the range the FMU declares for its inputs,
+/// `±` [`RotorModel::input_force_bound`](crate::model::RotorModel::input_force_bound)
+/// (a thousand times the rotor's weight): a larger one is a unit slip.
+pub(super) fn check_force_bounds(
+    ctx: &Ctx,
+    root: &FieldPath,
+    model: &crate::model::RotorModel,
+) -> Result<(), ModelError> {
+    let bound = model.input_force_bound();
+    for (i, f) in model.forces.iter().enumerate() {
+        let p = root.key("forces").index(i);
+        let values: Vec<(&str, f64)> = match f.kind {
+            ForceKind::Static([fx, fy]) => vec![("fx", fx), ("fy", fy)],
+            ForceKind::Harmonic { magnitude, .. } => vec![("magnitude", magnitude)],
+        };
+        for (key, v) in values {
+            if v.abs() > bound {
+                return Err(ctx.err(
+                    p.key(key),
+                    v,
+                    &format!(
+                        "exceeds {bound:.4e} N, the force that would accelerate the whole rotor ({:.4e} kg) at 1000 g: no machine carries it (a unit slip?)",
+                        model.total_mass()
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(())
+}

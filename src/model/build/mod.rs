@@ -91,7 +91,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
             }
         }),
     };
-    Ok(RotorModel {
+    let model = RotorModel {
         reduction,
         nominal_speed,
         max_speed,
@@ -116,7 +116,9 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         supports,
         pedestals,
         gravity,
-    })
+    };
+    loads::check_force_bounds(ctx, &root, &model)?;
+    Ok(model)
 }
 
 /// The model name must be an identifier (it becomes the FMU's model name).

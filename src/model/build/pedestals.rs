@@ -103,7 +103,7 @@ pub(super) fn lookup(
         })
 }
 
-/// Every pedestal must carry a bearing, directly or through the pedestals
+/// Every pedestal must carry a bearing, rub, seal or pull stator, directly or through the pedestals
 /// standing on it: one that carries nothing is a mass on a spring that no
 /// force reaches, almost certainly a misspelt or forgotten `pedestal` key.
 pub(super) fn check_carried(
@@ -125,7 +125,7 @@ pub(super) fn check_carried(
         Some(i) => Err(ctx.err(
             root.key("pedestals").index(i).key("name"),
             format!("{:?}", pedestals[i].name),
-            "no bearing or rub stands on this pedestal (give it as pedestal = \"<name>\" in their entries)",
+            "no bearing, rub, seal or magnetic pull stands on this pedestal (give it as pedestal = \"<name>\" in their entries)",
         )),
     }
 }

@@ -384,7 +384,15 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
             )
             .ok();
         }
-        if let Some(f) = &p.film {
+        if let Some(f) = p.film.as_ref().filter(|f| !f.has_geometry()) {
+            writeln!(
+                s,
+                "  coefficient table: no film geometry, so no eccentricity or film thickness; friction torque {} N·m, power loss {} W",
+                short(f.friction_torque),
+                short(f.power_loss)
+            )
+            .ok();
+        } else if let Some(f) = &p.film {
             let (eccentricity, attitude) = if p.is_unloaded() {
                 let e = if f.eccentricity <= ROUND_OFF_LOAD {
                     "0".to_string()
