@@ -23,81 +23,59 @@
 
 #![allow(non_snake_case)]
 
-use std::ffi::{CString, c_char, c_void};
+use std::ffi::{CStr, CString, c_char, c_void};
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
 use fmi_sys::fmi2::*;
-use quick_xml::Reader;
-use quick_xml::events::Event;
 
-#[path = "../tests/common/rng.rs"]
+mod description;
+mod invariants;
+#[path = "../../tests/common/rng.rs"]
 mod rng;
+use description::{Var, read_description};
 use rng::Rng;
 
-#[derive(Debug, Clone)]
-struct Var {
-    name: String,
-    vr: u32,
-    causality: String,
-    variability: String,
-    kind: &'static str,
-    start: Option<f64>,
-}
+/// Every message the instances of this process logged: status and text
+/// (the rollback invariant compares a step's warnings with its replay's).
+static LOG: Mutex<Vec<(fmi2Status, String)>> = Mutex::new(Vec::new());
 
-fn attr(e: &quick_xml::events::BytesStart, key: &[u8]) -> Option<String> {
-    e.attributes()
-        .flatten()
-        .find(|a| a.key.as_ref() == key)
-        .map(|a| String::from_utf8_lossy(&a.value).into_owned())
-}
-
-/// GUID and scalar variables of a model description.
-fn read_description(path: &Path) -> Result<(String, Vec<Var>), String> {
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let mut reader = Reader::from_str(&text);
-    let mut guid = String::new();
-    let mut vars = Vec::new();
-    let mut current: Option<Var> = None;
-    loop {
-        match reader.read_event().map_err(|e| e.to_string())? {
-            Event::Start(e) | Event::Empty(e) => match e.name().as_ref() {
-                b"fmiModelDescription" => guid = attr(&e, b"guid").unwrap_or_default(),
-                b"ScalarVariable" => {
-                    current = Some(Var {
-                        name: attr(&e, b"name").unwrap_or_default(),
-                        vr: attr(&e, b"valueReference")
-                            .and_then(|v| v.parse().ok())
-                            .ok_or("valueReference")?,
-                        causality: attr(&e, b"causality").unwrap_or("local".into()),
-                        variability: attr(&e, b"variability").unwrap_or("continuous".into()),
-                        kind: "Real",
-                        start: None,
-                    })
-                }
-                tag @ (b"Real" | b"Integer" | b"Boolean") => {
-                    if let Some(v) = current.as_mut() {
-                        v.kind = match tag {
-                            b"Real" => "Real",
-                            b"Integer" => "Integer",
-                            _ => "Boolean",
-                        };
-                        v.start = attr(&e, b"start").and_then(|s| match s.as_str() {
-                            "true" => Some(1.0),
-                            "false" => Some(0.0),
-                            other => other.parse().ok(),
-                        });
-                    }
-                }
-                _ => {}
-            },
-            Event::End(e) if e.name().as_ref() == b"ScalarVariable" => {
-                vars.extend(current.take());
-            }
-            Event::Eof => break,
-            _ => {}
-        }
+/// Logger with the fixed arguments of the variadic `fmi2CallbackLogger` (the
+/// FMU's messages carry no format arguments; extra variadic slots are ignored
+/// by the C ABI).
+extern "C" fn logger(
+    _env: *mut c_void,
+    _name: fmi2String,
+    status: fmi2Status,
+    _category: fmi2String,
+    message: fmi2String,
+) {
+    if message.is_null() {
+        return;
     }
-    Ok((guid, vars))
+    // SAFETY: the FMU passes a NUL-terminated message that lives for the call.
+    let text = unsafe { CStr::from_ptr(message) };
+    let text = text.to_string_lossy().replace("%%", "%");
+    if let Ok(mut log) = LOG.lock() {
+        log.push((status, text));
+    }
+}
+
+/// The callbacks every instance gets: the logger above.
+fn callbacks() -> fmi2CallbackFunctions {
+    fmi2CallbackFunctions {
+        // SAFETY: the same fixed-argument prefix as the variadic type; see `logger`.
+        logger: unsafe {
+            std::mem::transmute::<
+                extern "C" fn(*mut c_void, fmi2String, fmi2Status, fmi2String, fmi2String),
+                fmi2CallbackLogger,
+            >(logger)
+        },
+        allocateMemory: None,
+        freeMemory: None,
+        stepFinished: None,
+        componentEnvironment: std::ptr::null_mut::<c_void>(),
+    }
 }
 
 /// The importer's view of the FMI 2.0 Co-Simulation state machine.
@@ -115,12 +93,18 @@ enum Phase {
 struct Fuzz<'a> {
     lib: &'a Fmi2Binding,
     c: fmi2Component,
+    /// GUID and resource URI, for the fresh instances the state invariant
+    /// restores into.
+    guid: CString,
+    uri: CString,
     vars: &'a [Var],
     rng: Rng,
     phase: Phase,
     time: f64,
     stop_time: Option<f64>,
     states: Vec<fmi2FMUstate>,
+    /// The phase each state was saved in (restoring it restores the phase).
+    state_phases: Vec<Phase>,
     log: Vec<String>,
     /// Print every call as it is made (set by `ROTOR_FUZZ_TRACE`, used by the
     /// parent to show the call a hang is stuck in).
@@ -161,6 +145,12 @@ impl Fuzz<'_> {
             text.push_str(line);
             text.push('\n');
         }
+        if let Ok(log) = LOG.lock() {
+            text.push_str("last messages the FMU logged (newest first):\n");
+            for (s, m) in log.iter().rev().take(8) {
+                text.push_str(&format!("  [{}] {m}\n", status_name(*s)));
+            }
+        }
         text
     }
 
@@ -190,6 +180,18 @@ impl Fuzz<'_> {
 
     fn interesting_real(&mut self, var: &Var) -> f64 {
         let start = var.start.unwrap_or(1.0);
+        // Inputs with a declared range (forces, ports, torques, excitations):
+        // often a value within it, of any size down to a millionth of it.
+        if let (Some(hi), true) = (var.max, self.rng.chance(0.4)) {
+            let lo = var.min.unwrap_or(-hi);
+            let size = hi.abs().max(lo.abs()) * self.rng.log_uniform(1e-6, 1.0);
+            let signed = if lo < 0.0 && self.rng.chance(0.5) {
+                -size
+            } else {
+                size
+            };
+            return signed.clamp(lo, hi);
+        }
         match self.rng.below(14) {
             0 => f64::NAN,
             1 => f64::INFINITY,
@@ -220,6 +222,8 @@ impl Fuzz<'_> {
                 variability: "none".into(),
                 kind: "Real",
                 start: None,
+                min: None,
+                max: None,
             }
         } else {
             let v = self.random_var().clone();
@@ -306,6 +310,7 @@ impl Fuzz<'_> {
         };
         self.note(format!("fmi2GetReal(all) → {}", status_name(s)));
         self.check_status("fmi2GetReal", s)?;
+        self.after(s);
         if s <= fmi2Status_fmi2Warning {
             for (v, x) in reals.iter().zip(&values) {
                 if !x.is_finite() {
@@ -316,6 +321,7 @@ impl Fuzz<'_> {
                     )));
                 }
             }
+            self.check_power_losses()?;
         }
         let mut t = 0.0;
         let s = unsafe {
@@ -327,6 +333,7 @@ impl Fuzz<'_> {
             status_name(s)
         ));
         self.check_status("fmi2GetRealStatus", s)?;
+        self.after(s);
         if s <= fmi2Status_fmi2Warning && !t.is_finite() {
             return Err(self.fail(format!(
                 "fmi2GetRealStatus(LastSuccessfulTime) = {t} with {}",
@@ -350,13 +357,23 @@ impl Fuzz<'_> {
         } else {
             self.time + self.rng.log_uniform(1e-6, 1.0)
         };
-        self.calling(&format!("fmi2DoStep(t = {t}, h = {h:e})"));
-        let s = unsafe { self.lib.fmi2DoStep(self.c, t, h, fmi2True as fmi2Boolean) };
-        self.note(format!(
-            "fmi2DoStep(t = {t}, h = {h:e}) → {}",
-            status_name(s)
-        ));
-        self.check_status("fmi2DoStep", s)?;
+        let s = if self.phase == Phase::StepComplete
+            && t == self.time
+            && h >= 1e-6
+            && self.rng.chance(0.25)
+        {
+            // Replayed from a state saved before it: the same step twice.
+            self.replayed_step(t, h)?
+        } else {
+            self.calling(&format!("fmi2DoStep(t = {t}, h = {h:e})"));
+            let s = unsafe { self.lib.fmi2DoStep(self.c, t, h, fmi2True as fmi2Boolean) };
+            self.note(format!(
+                "fmi2DoStep(t = {t}, h = {h:e}) → {}",
+                status_name(s)
+            ));
+            self.check_status("fmi2DoStep", s)?;
+            s
+        };
         if self.phase != Phase::Error {
             if self.phase != Phase::StepComplete {
                 self.expect_error(
@@ -400,6 +417,8 @@ impl Fuzz<'_> {
                 self.check_status("fmi2GetFMUstate", s)?;
                 if s == fmi2Status_fmi2OK && !state.is_null() {
                     self.states.push(state);
+                    self.state_phases.push(self.phase);
+                    self.check_restorable(state)?;
                 }
                 self.after(s);
             }
@@ -408,23 +427,16 @@ impl Fuzz<'_> {
                 let s = unsafe { self.lib.fmi2SetFMUstate(self.c, self.states[k]) };
                 self.note(format!("fmi2SetFMUstate(#{k}) → {}", status_name(s)));
                 self.check_status("fmi2SetFMUstate", s)?;
-                // The importer does not track which phase the state was saved in.
                 if s == fmi2Status_fmi2OK {
-                    self.phase = Phase::StepComplete;
-                    let mut t = 0.0;
-                    unsafe {
-                        self.lib.fmi2GetRealStatus(
-                            self.c,
-                            fmi2StatusKind_fmi2LastSuccessfulTime,
-                            &mut t,
-                        )
-                    };
-                    self.time = t;
+                    self.phase = self.state_phases[k];
+                    self.time = self.restored_time();
                 }
             }
             2 => self.serialize_round_trip()?,
             _ if !self.states.is_empty() => {
-                let mut state = self.states.swap_remove(self.rng.below(self.states.len()));
+                let k = self.rng.below(self.states.len());
+                let mut state = self.states.swap_remove(k);
+                self.state_phases.swap_remove(k);
                 let s = unsafe { self.lib.fmi2FreeFMUstate(self.c, &mut state) };
                 self.note(format!("fmi2FreeFMUstate → {}", status_name(s)));
                 self.check_status("fmi2FreeFMUstate", s)?;
@@ -432,6 +444,24 @@ impl Fuzz<'_> {
             _ => {}
         }
         Ok(())
+    }
+
+    /// The time of a state just restored: its last successful time where
+    /// the status query is allowed, else the start (before initialization).
+    fn restored_time(&mut self) -> f64 {
+        if !matches!(
+            self.phase,
+            Phase::StepComplete | Phase::StepFailed | Phase::Terminated
+        ) {
+            return 0.0;
+        }
+        let mut t = 0.0;
+        // SAFETY: `c` is live; `t` receives the time.
+        unsafe {
+            self.lib
+                .fmi2GetRealStatus(self.c, fmi2StatusKind_fmi2LastSuccessfulTime, &mut t)
+        };
+        t
     }
 
     fn serialize_round_trip(&mut self) -> Result<(), String> {
@@ -444,6 +474,7 @@ impl Fuzz<'_> {
                 .fmi2SerializedFMUstateSize(self.c, state, &mut size)
         };
         self.check_status("fmi2SerializedFMUstateSize", s)?;
+        self.after(s);
         if s != fmi2Status_fmi2OK || size > 1 << 30 {
             return Ok(());
         }
@@ -453,6 +484,7 @@ impl Fuzz<'_> {
                 .fmi2SerializeFMUstate(self.c, state, bytes.as_mut_ptr(), size)
         };
         self.check_status("fmi2SerializeFMUstate", s)?;
+        self.after(s);
         let how = match self.rng.below(5) {
             0 => {
                 let cut = self.rng.below(size.max(1));
@@ -482,8 +514,11 @@ impl Fuzz<'_> {
             status_name(s)
         ));
         self.check_status("fmi2DeSerializeFMUstate", s)?;
+        self.after(s);
         if s == fmi2Status_fmi2OK && !restored.is_null() {
             self.states.push(restored);
+            let phase = self.state_phases[self.state_phases.len() - 1];
+            self.state_phases.push(phase);
         }
         Ok(())
     }
@@ -543,6 +578,7 @@ impl Fuzz<'_> {
                 {
                     self.phase = Phase::Terminated;
                 }
+                self.after(s);
             }
             4 => {
                 let s = unsafe { self.lib.fmi2Reset(self.c) };
@@ -554,33 +590,7 @@ impl Fuzz<'_> {
                     self.stop_time = None;
                 }
             }
-            _ => {
-                let value = [self.rng.log_uniform(1.0, 100.0)];
-                let inputs: Vec<&Var> = self
-                    .vars
-                    .iter()
-                    .filter(|v| v.causality == "input")
-                    .collect();
-                if let Some(v) = inputs.first() {
-                    let order: fmi2Integer = 1;
-                    let s = unsafe {
-                        self.lib.fmi2SetRealInputDerivatives(
-                            self.c,
-                            &v.vr,
-                            1,
-                            &order,
-                            value.as_ptr(),
-                        )
-                    };
-                    self.note(format!(
-                        "fmi2SetRealInputDerivatives({}) → {}",
-                        v.name,
-                        status_name(s)
-                    ));
-                    self.check_status("fmi2SetRealInputDerivatives", s)?;
-                    self.after(s);
-                }
-            }
+            _ => self.input_derivative()?,
         }
         Ok(())
     }
@@ -657,16 +667,8 @@ impl Fuzz<'_> {
                     ));
                     self.check_status("fmi2SetFMUstate", s)?;
                     if s == fmi2Status_fmi2OK {
-                        self.phase = Phase::StepComplete;
-                        let mut t = 0.0;
-                        unsafe {
-                            self.lib.fmi2GetRealStatus(
-                                self.c,
-                                fmi2StatusKind_fmi2LastSuccessfulTime,
-                                &mut t,
-                            )
-                        };
-                        self.time = t;
+                        self.phase = self.state_phases[0];
+                        self.time = self.restored_time();
                     }
                 } else {
                     let s = unsafe { self.lib.fmi2Reset(self.c) };
@@ -719,13 +721,11 @@ fn run_sequence(
         tail[((seed / 5) % 4) as usize]
     );
     let uri = CString::new(uri).unwrap();
-    let callbacks = fmi2CallbackFunctions {
-        logger: None,
-        allocateMemory: None,
-        freeMemory: None,
-        stepFinished: None,
-        componentEnvironment: std::ptr::null_mut::<c_void>(),
-    };
+    let callbacks = callbacks();
+    if let Ok(mut log) = LOG.lock() {
+        log.clear();
+    }
+    // Logging on: the rollback invariant compares the warnings logged.
     let c = unsafe {
         lib.fmi2Instantiate(
             name.as_ptr(),
@@ -734,7 +734,7 @@ fn run_sequence(
             uri.as_ptr(),
             &callbacks,
             0,
-            0,
+            1,
         )
     };
     if c.is_null() {
@@ -745,12 +745,15 @@ fn run_sequence(
     let mut fuzz = Fuzz {
         lib,
         c,
+        guid: guid.clone(),
+        uri: uri.clone(),
         vars,
         rng,
         phase: Phase::Instantiated,
         time: 0.0,
         stop_time: None,
         states: Vec::new(),
+        state_phases: Vec::new(),
         log: Vec::new(),
         trace: std::env::var_os("ROTOR_FUZZ_TRACE").is_some(),
     };
