@@ -1,10 +1,11 @@
 //! The model reference is complete and kept complete: every key the model
 //! parser accepts has a row in `docs/model_file.md` (the keys read from the
 //! parser by `model::schema`, not from a list kept by hand), every row names
-//! a key the parser accepts.
+//! a key the parser accepts, and `rotor info` names every section of every
+//! shipped model.
 
 use std::collections::BTreeMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use rotor_bearing::model::schema::{SchemaSection, schema};
 
@@ -285,4 +286,112 @@ fn every_key_of_the_shipped_models_is_in_the_discovered_schema() {
         }
     }
     assert!(seen > 300, "{seen} keys checked");
+}
+
+/// What `rotor info` calls each section's entries: every line of an entry
+/// starts with it. Every section the parser accepts must be here, so a new
+/// section cannot be added without saying how `rotor info` shows it.
+fn info_label(section: &str, entry: &toml::Table) -> String {
+    match section {
+        "materials" => "material".into(),
+        "shaft" => "shaft section".into(),
+        "disks" => "disk".into(),
+        "point_masses" => "point mass".into(),
+        "bearings" => "bearing".into(),
+        "rubs" => "rub".into(),
+        "seals" => "seal".into(),
+        "magnetic_pull" => "magnetic pull".into(),
+        "pedestals" => "pedestal".into(),
+        "supports" => "support".into(),
+        "unbalance" => "unbalance".into(),
+        "forces" => "force".into(),
+        "ports" => "port".into(),
+        "probes" => "probe".into(),
+        // `[torsion] drive = "torque"` is the `torque drive:` line.
+        "torsion" => format!(
+            "{} drive",
+            entry
+                .get("drive")
+                .and_then(|d| d.as_str())
+                .unwrap_or("speed")
+        ),
+        "torques" => "torque".into(),
+        "couplings" => "coupling".into(),
+        "thrust_bearings" => "thrust bearing".into(),
+        "reduction" => "reduction".into(),
+        other => panic!("no `rotor info` label for the section [{other}]"),
+    }
+}
+
+#[test]
+fn every_section_of_the_parser_has_an_info_label() {
+    for section in schema().iter().filter(|s| !s.path.is_empty()) {
+        info_label(&section.path.join("."), &toml::Table::new());
+    }
+}
+
+/// Issue 48: `rotor info` did not show `[[forces]]`. For every shipped model
+/// (and the torque-and-ports test model), each section the TOML file holds
+/// has a line in `rotor info` starting with its label, and each named entry
+/// a line with its label and name.
+#[test]
+fn rotor_info_names_every_section_of_every_shipped_model() {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(root().join("models"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    files.push(root().join("tests/data/torque_ports.toml"));
+    let mut checked = 0;
+    for file in &files {
+        let info = info(file);
+        let table: toml::Table = std::fs::read_to_string(file).unwrap().parse().unwrap();
+        for (section, value) in &table {
+            let entries: Vec<&toml::Table> = match value {
+                toml::Value::Table(t) => vec![t],
+                toml::Value::Array(a) => a.iter().filter_map(|v| v.as_table()).collect(),
+                _ => continue,
+            };
+            for entry in entries {
+                let label = info_label(section, entry);
+                let lines: Vec<&str> = info
+                    .lines()
+                    .map(str::trim_start)
+                    .filter(|l| {
+                        l.strip_prefix(label.as_str())
+                            .is_some_and(|rest| rest.starts_with([' ', ':']))
+                    })
+                    .collect();
+                assert!(
+                    !lines.is_empty(),
+                    "{file:?}: [{section}] has no `{label}` line in rotor info:\n{info}"
+                );
+                if let Some(name) = entry.get("name").and_then(|n| n.as_str()) {
+                    assert!(
+                        lines
+                            .iter()
+                            .any(|l| l.starts_with(&format!("{label} {name}"))),
+                        "{file:?}: [{section}] {name}: no `{label} {name}` line in rotor info:\n{info}"
+                    );
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 100, "{checked} entries");
+}
+
+fn info(file: &Path) -> String {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("info")
+        .arg(file)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{file:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
 }
