@@ -533,3 +533,61 @@ fn a_refinement_that_meets_the_undamped_resonance_reports_it_unbounded() {
         "{row}"
     );
 }
+
+/// Issue 48: `--amplitude pk-pk` changed the table and the figure but not the
+/// CSV, whose `*_major_semi_axis_m` stayed 0-pk metres under a pk-pk heading
+/// of the printed table. Peak to peak, the CSV's amplitude columns are named
+/// `…_x_amplitude_pk_pk_m`, `…_y_amplitude_pk_pk_m`, `…_major_axis_pk_pk_m`
+/// and hold exactly twice the 0-pk file's values (doubling is exact in
+/// binary); the phases and speeds are the same numbers.
+#[test]
+fn a_peak_to_peak_csv_names_and_doubles_its_amplitude_columns() {
+    let dir = out_dir("unbalance_pk_pk_csv");
+    let model =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor_damped.toml");
+    let csv = |convention: &str| {
+        let path = dir.join(format!("{convention}.csv"));
+        let out = rotor_cli()
+            .arg("unbalance")
+            .arg(&model)
+            .args(["--max-rpm", "3000", "--amplitude", convention, "--csv"])
+            .arg(&path)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        read_csv(&path)
+    };
+    let ((zero_header, zero), (pk_header, pk)) = (csv("0-pk"), csv("pk-pk"));
+    assert_eq!(zero_header.len(), pk_header.len());
+    assert_eq!(zero.len(), pk.len());
+    let mut doubled = 0;
+    for (c, (name, pk_name)) in zero_header.iter().zip(&pk_header).enumerate() {
+        let renamed = if let Some(stem) = name.strip_suffix("_major_semi_axis_m") {
+            Some(format!("{stem}_major_axis_pk_pk_m"))
+        } else {
+            name.strip_suffix("_amplitude_m")
+                .map(|stem| format!("{stem}_amplitude_pk_pk_m"))
+        };
+        match renamed {
+            Some(want) => {
+                assert_eq!(*pk_name, want);
+                for (a, b) in zero.iter().zip(&pk) {
+                    assert_eq!(b[c], 2.0 * a[c], "{pk_name}");
+                }
+                doubled += 1;
+            }
+            None => {
+                assert_eq!(pk_name, name);
+                for (a, b) in zero.iter().zip(&pk) {
+                    assert_eq!(b[c], a[c], "{name}");
+                }
+            }
+        }
+    }
+    // Three points (probe and two bearings), three amplitudes each.
+    assert_eq!(doubled, 9, "{pk_header:?}");
+}
