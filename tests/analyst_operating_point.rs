@@ -382,3 +382,77 @@ fn centred_vertical_journals_print_as_unloaded() {
     let points = operating_point(&rotor, 3000.0 / RAD_S_TO_RPM).unwrap();
     assert!(points.iter().all(|p| !p.is_unloaded() && p.load > 100.0));
 }
+
+/// Issue 48: a tilting-pad bearing's "eccentricity" is `e/C_b`, the journal's
+/// offset over the assembled clearance `C_b = C (1 − m)`, not over the pad
+/// clearance `C`, and the documents did not say so (an engineer read 1.24 at
+/// rest as a journal through its pads). The four-pad bearing of the oracle
+/// with preload m = 0.4, loaded between two pads, at rest: the reported
+/// eccentricity is `√(x² + y²)/(C (1 − m))` of the reported journal position
+/// (1e-12), above 1 although `e/C` is below 1 and the film is not crossed
+/// (thinnest film ≥ 0); the operating-point paragraph of `docs/commands.md`,
+/// the FMU outputs of `docs/fmu.md`, `docs/bearings.md` and the FMU's own
+/// variable description say `e/C_b`.
+#[test]
+fn a_tilting_pad_eccentricity_is_over_the_assembled_clearance_and_says_so() {
+    let (c, m) = (1e-4, 0.4);
+    let bearing = format!(
+        "type = \"tilting_pad\"\nradius = 0.05\nlength = 0.03\nclearance = {c:?}\nviscosity = 0.02\npad_arc_deg = 80.0\npivots_deg = [45.0, 135.0, 225.0, 315.0]\npreload = {m:?}"
+    );
+    let (text, model) = one_bearing_rotor(&bearing, 600.0);
+    let dir = out_dir("operating_point_preload");
+    let (path, csv) = (dir.join("preload.toml"), dir.join("preload.csv"));
+    std::fs::write(&path, text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("operating-point")
+        .arg(&path)
+        .args(["--rpm", "0", "--csv"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let row = &read_csv(&csv)[0];
+    let get = |k: &str| -> f64 { row[k].parse().unwrap() };
+    let e = get("x_m").hypot(get("y_m"));
+    let ratio = get("eccentricity");
+    assert!(
+        rel(ratio, e / (c * (1.0 - m))) < 1e-12,
+        "{ratio} against e/C_b = {}",
+        e / (c * (1.0 - m))
+    );
+    assert!(
+        ratio > 1.0 && e / c < 1.0,
+        "e/C_b = {ratio}, e/C = {}",
+        e / c
+    );
+    assert!(get("min_film_thickness_m") >= 0.0);
+    let doc = |name: &str| {
+        std::fs::read_to_string(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(name)).unwrap()
+    };
+    let commands = doc("docs/commands.md");
+    let paragraph = commands
+        .split("\n\n")
+        .find(|p| p.starts_with("`operating-point` puts the rotor"))
+        .expect("the operating-point paragraph");
+    assert!(paragraph.contains("e/C_b"), "{paragraph}");
+    let fmu = doc("docs/fmu.md");
+    let outputs = fmu
+        .lines()
+        .skip_while(|l| !l.contains("`bearings.<b>.{x,y,fx,fy,eccentricity,friction_torque}`"))
+        .take(8)
+        .collect::<Vec<_>>()
+        .join("\n");
+    assert!(outputs.contains("e/C_b"), "{outputs}");
+    assert!(doc("docs/bearings.md").contains("e/C_b"));
+    let vars = rotor_bearing::fmi2::variables::variables(&model);
+    let described = vars
+        .iter()
+        .find(|v| v.name == "bearings.journal.eccentricity")
+        .map(|v| v.description.clone())
+        .unwrap();
+    assert!(described.contains("e/C_b"), "{described}");
+}

@@ -533,3 +533,124 @@ fn a_refinement_that_meets_the_undamped_resonance_reports_it_unbounded() {
         "{row}"
     );
 }
+
+/// Issue 48: `--amplitude pk-pk` changed the table and the figure but not the
+/// CSV, whose `*_major_semi_axis_m` stayed 0-pk metres under a pk-pk heading
+/// of the printed table. Peak to peak, the CSV's amplitude columns are named
+/// `…_x_amplitude_pk_pk_m`, `…_y_amplitude_pk_pk_m`, `…_major_axis_pk_pk_m`
+/// and hold exactly twice the 0-pk file's values (doubling is exact in
+/// binary); the phases and speeds are the same numbers.
+#[test]
+fn a_peak_to_peak_csv_names_and_doubles_its_amplitude_columns() {
+    let dir = out_dir("unbalance_pk_pk_csv");
+    let model =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/classic_disk_rotor_damped.toml");
+    let csv = |convention: &str| {
+        let path = dir.join(format!("{convention}.csv"));
+        let out = rotor_cli()
+            .arg("unbalance")
+            .arg(&model)
+            .args(["--max-rpm", "3000", "--amplitude", convention, "--csv"])
+            .arg(&path)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        read_csv(&path)
+    };
+    let ((zero_header, zero), (pk_header, pk)) = (csv("0-pk"), csv("pk-pk"));
+    assert_eq!(zero_header.len(), pk_header.len());
+    assert_eq!(zero.len(), pk.len());
+    let mut doubled = 0;
+    for (c, (name, pk_name)) in zero_header.iter().zip(&pk_header).enumerate() {
+        let renamed = if let Some(stem) = name.strip_suffix("_major_semi_axis_m") {
+            Some(format!("{stem}_major_axis_pk_pk_m"))
+        } else {
+            name.strip_suffix("_amplitude_m")
+                .map(|stem| format!("{stem}_amplitude_pk_pk_m"))
+        };
+        match renamed {
+            Some(want) => {
+                assert_eq!(*pk_name, want);
+                for (a, b) in zero.iter().zip(&pk) {
+                    assert_eq!(b[c], 2.0 * a[c], "{pk_name}");
+                }
+                doubled += 1;
+            }
+            None => {
+                assert_eq!(pk_name, name);
+                for (a, b) in zero.iter().zip(&pk) {
+                    assert_eq!(b[c], a[c], "{name}");
+                }
+            }
+        }
+    }
+    // Three points (probe and two bearings), three amplitudes each.
+    assert_eq!(doubled, 9, "{pk_header:?}");
+}
+
+/// Issue 48: a peak well inside the sweep was reported as "half-power speed
+/// outside the sweep". The single-DOF rotor at ζ = 0.4 peaks at
+/// `r = 1/√(1 − 2ζ²)` (1.213 ω_n) with `A = 1/(2ζ√(1 − ζ²))` = 1.364 `e`,
+/// and above it the closed form `r²/√((1 − r²)² + (2ζr)²)` falls toward 1,
+/// never to the half-power level `A/√2` = 0.964: there is no upper
+/// half-power speed however wide the sweep. The row says so, and on which
+/// side, with the sweep's end.
+#[test]
+fn a_heavily_damped_peak_says_where_its_response_stays_above_half_power() {
+    let zeta = 0.4;
+    let c_each = zeta * (2.0 * K_EACH * MASS).sqrt();
+    let model: String = sdof_model()
+        .lines()
+        .map(|l| {
+            if l.starts_with("cxx =") || l.starts_with("cyy =") {
+                format!("{} = {c_each}\n", &l[..3])
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect();
+    let path = out_dir("unbalance_heavily_damped").join("sdof_damped.toml");
+    std::fs::write(&path, model).unwrap();
+    let wn = (2.0 * K_EACH / MASS).sqrt();
+    let top_rpm = (4.0 * wn * RAD_S_TO_RPM).round();
+    // The closed form: above the peak, up to the sweep's end, over the level.
+    let a = |r: f64| r * r / ((1.0 - r * r).powi(2) + (2.0 * zeta * r).powi(2)).sqrt();
+    let rp = 1.0 / (1.0 - 2.0 * zeta * zeta).sqrt();
+    let level = a(rp) / 2f64.sqrt();
+    let r_top = top_rpm / RAD_S_TO_RPM / wn;
+    assert!((0..=1000).all(|k| a(rp + (r_top - rp) * k as f64 / 1000.0) > level));
+    let out = rotor_cli()
+        .arg("unbalance")
+        .arg(&path)
+        .args(["--max-rpm", &top_rpm.to_string()])
+        .args(["--operating-rpm", "3000:3600"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let row = stdout
+        .lines()
+        .find(|l| l.starts_with("probe disk"))
+        .unwrap_or_else(|| panic!("no probe row in\n{stdout}"));
+    let speed: f64 = row.split_whitespace().nth(2).unwrap().parse().unwrap();
+    assert!(
+        (speed / (rp * wn * RAD_S_TO_RPM) - 1.0).abs() < 1e-3,
+        "{row}: closed form {} rpm",
+        rp * wn * RAD_S_TO_RPM
+    );
+    assert!(
+        row.ends_with(&format!(
+            "no AF: above the peak the response stays above 1/√2 of it up to the sweep's end, {top_rpm} rpm (a heavily damped mode, or a sweep that ends too soon)"
+        )),
+        "{row}"
+    );
+    assert!(!stdout.contains("outside the sweep"), "{stdout}");
+}

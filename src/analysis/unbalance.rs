@@ -502,6 +502,25 @@ pub struct Peak {
     /// the refinement met the undamped resonance exactly (singular dynamic
     /// stiffness; `amplitude` is then the grid's largest).
     pub amplification_factor: Option<f64>,
+    /// Where a peak without half-power speeds keeps above its half-power
+    /// level `amplitude/√2` all the way to the end of the sweep; `None` when
+    /// both half-power speeds were found (or the peak is undamped).
+    pub level_kept: Option<LevelKept>,
+}
+
+/// The side(s) of a peak on which the response stays above the peak's
+/// half-power level to the end of the sweep (a heavily damped mode, whose
+/// response above the peak tends to `m e / M` without falling to `1/√2` of
+/// the peak, or a sweep that ends too soon): no half-power speed there, so
+/// no amplification factor.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LevelKept {
+    /// From the peak down to the sweep's lowest speed.
+    Below,
+    /// From the peak up to the sweep's highest speed.
+    Above,
+    /// Over the whole sweep.
+    Both,
 }
 
 /// Amplification factor above which a peak is an undamped resonance
@@ -576,6 +595,7 @@ pub fn peaks(rotor: &Rotor, sweep: &UnbalanceSweep, p: usize) -> Result<Vec<Peak
                 amplitude: a[k],
                 half_power: None,
                 amplification_factor: Some(f64::INFINITY),
+                level_kept: None,
             });
             continue;
         }
@@ -591,12 +611,19 @@ pub fn peaks(rotor: &Rotor, sweep: &UnbalanceSweep, p: usize) -> Result<Vec<Peak
             }
             _ => None,
         };
+        let level_kept = match (below, above) {
+            (None, None) => Some(LevelKept::Both),
+            (None, Some(_)) => Some(LevelKept::Below),
+            (Some(_), None) => Some(LevelKept::Above),
+            (Some(_), Some(_)) => None,
+        };
         found.push(Peak {
             point: p,
             speed,
             amplitude,
             half_power,
             amplification_factor: half_power.map(|(n1, n2)| speed / (n2 - n1)),
+            level_kept,
         });
     }
     Ok(found)

@@ -11,6 +11,7 @@ mod error;
 pub mod file;
 pub mod limits;
 mod plausibility;
+pub mod schema;
 mod source_map;
 pub mod speed_table;
 

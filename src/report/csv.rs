@@ -16,7 +16,7 @@ use crate::analysis::unbalance::UnbalanceSweep;
 use crate::bearing::coefficients::DimensionlessPoint;
 use crate::model::RotorModel;
 use crate::solver::Outputs;
-use crate::units::RAD_S_TO_RPM;
+use crate::units::{Amplitude, RAD_S_TO_RPM};
 
 /// Node displacements `q` (`4·node + k`: x, y in m; rx, ry in rad) at the nodes
 /// at axial positions `node_z` (m); nodes numbered from 1.
@@ -238,31 +238,44 @@ pub fn column_stem(label: &str) -> String {
 /// An unbalance response sweep: speed (rpm, rad/s), then per point the x and y
 /// amplitudes `|X|`, `|Y|` (m) and phases `arg X`, `arg Y` (°, with
 /// `x(t) = |X| cos(Ωt + arg X)`, spin angle `Ωt` from +x toward +y), and the
-/// major semi-axis of the orbit (m).
-pub fn unbalance(sweep: &UnbalanceSweep) -> String {
-    response_table(sweep, None)
+/// major semi-axis of the orbit (m). With [`Amplitude::PeakToPeak`] the three
+/// amplitudes are doubled and their columns say so: `…_x_amplitude_pk_pk_m`,
+/// `…_y_amplitude_pk_pk_m` and `…_major_axis_pk_pk_m` (the orbit's major
+/// axis, peak to peak).
+pub fn unbalance(sweep: &UnbalanceSweep, amplitude: Amplitude) -> String {
+    response_table(sweep, None, amplitude)
 }
 
 /// The response to one harmonic force over speed: as [`unbalance`], with
 /// the force's frequency (Hz) after the speed; the phases are of
 /// `x(t) = |X| cos(ωt + φ)` at the force's own frequency `ω`.
 pub fn forced(frequencies: &[f64], sweep: &UnbalanceSweep) -> String {
-    response_table(sweep, Some(frequencies))
+    response_table(sweep, Some(frequencies), Amplitude::ZeroToPeak)
 }
 
 /// The table of [`unbalance`] and [`forced`]: speed, the excitation
 /// frequency (Hz) when given (rad/s per speed), then per point the
-/// amplitude and phase of x and y and the major semi-axis.
-fn response_table(sweep: &UnbalanceSweep, frequencies: Option<&[f64]>) -> String {
+/// amplitude and phase of x and y and the major semi-axis (or, peak to
+/// peak, twice the amplitudes and the major axis).
+fn response_table(
+    sweep: &UnbalanceSweep,
+    frequencies: Option<&[f64]>,
+    amplitude: Amplitude,
+) -> String {
     let mut out = String::from("speed_rpm,speed_rad_s");
     if frequencies.is_some() {
         out.push_str(",frequency_hz");
     }
+    let (size, major) = match amplitude {
+        Amplitude::ZeroToPeak => ("amplitude_m", "major_semi_axis_m"),
+        Amplitude::PeakToPeak => ("amplitude_pk_pk_m", "major_axis_pk_pk_m"),
+    };
+    let factor = amplitude.factor();
     for p in &sweep.points {
         let n = column_stem(&p.label);
         write!(
             out,
-            ",{n}_x_amplitude_m,{n}_x_phase_deg,{n}_y_amplitude_m,{n}_y_phase_deg,{n}_major_semi_axis_m"
+            ",{n}_x_{size},{n}_x_phase_deg,{n}_y_{size},{n}_y_phase_deg,{n}_{major}"
         )
         .ok();
     }
@@ -276,11 +289,11 @@ fn response_table(sweep: &UnbalanceSweep, frequencies: Option<&[f64]>) -> String
             write!(
                 out,
                 ",{:e},{},{:e},{},{:e}",
-                x.norm(),
+                factor * x.norm(),
                 x.arg().to_degrees(),
-                y.norm(),
+                factor * y.norm(),
                 y.arg().to_degrees(),
-                crate::analysis::unbalance::major_semi_axis((x, y))
+                factor * crate::analysis::unbalance::major_semi_axis((x, y))
             )
             .ok();
         }

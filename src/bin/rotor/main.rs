@@ -368,7 +368,7 @@ enum Command {
         /// Operating speed range MIN:MAX (rpm) for the separation margins; default: the model's speed_rpm.
         #[arg(long)]
         operating_rpm: Option<String>,
-        /// Amplitudes as the orbit's semi-axis (0-pk) or twice it (pk-pk), in tables and on axes.
+        /// Amplitudes as the orbit's semi-axis (0-pk) or twice it (pk-pk), in tables, on axes and in the CSV's amplitude columns.
         #[arg(long, default_value = "0-pk", value_parser = parse_amplitude)]
         amplitude: Amplitude,
         /// Write the response to this CSV file.

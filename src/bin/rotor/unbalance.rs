@@ -79,7 +79,7 @@ pub fn unbalance(rotor: &Rotor, req: Request) -> Result<(), String> {
     };
     let out = text::unbalance_study(&rotor.model.name, &what, &study, req.amplitude);
     if let Some(path) = req.csv {
-        write_file(&path, &report_csv::unbalance(&study.sweep))?;
+        write_file(&path, &report_csv::unbalance(&study.sweep, req.amplitude))?;
     }
     if let Some(path) = req.png {
         let title = format!("Unbalance response: {} ({what})", rotor.model.name);

@@ -184,7 +184,13 @@ pub(super) fn add(t: &mut Table) {
             ),
             (
                 "eccentricity",
-                format!("Eccentricity ratio e/C of bearing {n} (0 for linear bearings)"),
+                if matches!(b.kind, crate::bearing::BearingKind::TiltingPad(_)) {
+                    format!(
+                        "Eccentricity ratio e/C_b of bearing {n}: journal offset over the assembled clearance C_b = C (1 - preload), above 1 on the pads with preload"
+                    )
+                } else {
+                    format!("Eccentricity ratio e/C of bearing {n} (0 for linear bearings)")
+                },
                 Some("1"),
                 None,
                 Binding::BearingEccentricity(k),

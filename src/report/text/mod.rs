@@ -10,172 +10,20 @@ use crate::analysis::operating_point::{
 use crate::analysis::stability::{LEVEL_I_MIN_LOG_DEC, LEVEL_I_MIN_RATIO, Stability};
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::bearing::{BearingKind, CoefficientTable};
-use crate::model::{Drive, RotorModel};
-use crate::rotor::Rotor;
-use crate::rotor::torsion::TorsionalRotor;
+use crate::model::RotorModel;
 use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
 
 mod modal;
+mod summary;
 mod unbalance;
 
 pub use modal::{
     ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
     overdamped_roots, overdamped_summary, torsional_modes, zeta_and_log_dec,
 };
+pub use summary::model_summary;
 pub use unbalance::{peak_cells, peak_table, unbalance_study};
-
-/// What `rotor info` prints: sizes, disks, bearings, unbalances, probes, gravity.
-pub fn model_summary(rotor: &Rotor) -> String {
-    let m = &rotor.model;
-    let mut s = String::new();
-    writeln!(s, "model {} ({})", m.name, m.source).ok();
-    if !m.description.is_empty() {
-        writeln!(s, "  {}", m.description).ok();
-    }
-    writeln!(
-        s,
-        "  {} nodes, {} shaft elements, {} free DOFs, length {:.4} m, rotating mass {:.3} kg",
-        m.node_count(),
-        m.elements.len(),
-        rotor.dof_count(),
-        m.node_z[m.node_z.len() - 1] - m.node_z[0],
-        m.total_mass()
-    )
-    .ok();
-    // Node positions, eight to a line: where `node = N` in the file sits.
-    for (row, chunk) in m.node_z.chunks(8).enumerate() {
-        let cells: Vec<String> = chunk
-            .iter()
-            .enumerate()
-            .map(|(k, z)| format!("{}: {}", row * 8 + k + 1, short(*z)))
-            .collect();
-        let head = if row == 0 { "node z (m):" } else { "" };
-        writeln!(s, "  {head:<11} {}", cells.join(", ")).ok();
-    }
-    for d in &m.disks {
-        writeln!(
-            s,
-            "  disk {} at node {}: m = {:.4} kg, Ip = {:.5} kg·m², Id = {:.5} kg·m²",
-            d.name,
-            d.node + 1,
-            d.disk.mass,
-            d.disk.polar_inertia,
-            d.disk.diametral_inertia
-        )
-        .ok();
-    }
-    for pm in &m.point_masses {
-        writeln!(
-            s,
-            "  point mass {} at node {}: mx = {} kg, my = {} kg (not rotating)",
-            pm.name,
-            pm.node + 1,
-            short(pm.mass[0]),
-            short(pm.mass[1])
-        )
-        .ok();
-    }
-    for b in &m.bearings {
-        let what = match &b.kind {
-            k if k.is_seal() => "seal",
-            k if k.is_rub() => "rub",
-            k if k.is_magnetic_pull() => "magnetic pull",
-            _ => "bearing",
-        };
-        let on = match b.pedestal {
-            Some(p) => format!(" on pedestal {}", m.pedestals[p].name),
-            None => String::new(),
-        };
-        writeln!(
-            s,
-            "  {what} {} at node {}{on}: {}",
-            b.name,
-            b.node + 1,
-            describe_bearing(&b.kind)
-        )
-        .ok();
-    }
-    for p in &m.pedestals {
-        let on = match p.on {
-            Some(q) => format!("pedestal {}", m.pedestals[q].name),
-            None => "ground".to_string(),
-        };
-        let carried: Vec<&str> = m
-            .bearings
-            .iter()
-            .filter(|b| b.pedestal.is_some_and(|q| m.pedestals[q].name == p.name))
-            .map(|b| b.name.as_str())
-            .collect();
-        writeln!(
-            s,
-            "  pedestal {}: m = {} kg on {on}, K = {} N/m, C = {} N·s/m, carrying {}",
-            p.name,
-            short(p.mass),
-            coefficient_matrix(&p.stiffness),
-            coefficient_matrix(&p.damping),
-            if carried.is_empty() {
-                "other pedestals".to_string()
-            } else {
-                carried.join(", ")
-            }
-        )
-        .ok();
-    }
-    for u in &m.unbalances {
-        writeln!(
-            s,
-            "  unbalance {} at node {}: {} kg·m at {:.1}°",
-            u.name,
-            u.node + 1,
-            u.magnitude,
-            u.phase.to_degrees()
-        )
-        .ok();
-    }
-    for p in &m.probes {
-        writeln!(s, "  probe {} at node {}", p.name, p.node + 1).ok();
-    }
-    let [gx, gy, gz] = m.gravity.map(short);
-    writeln!(s, "  gravity ({gx}, {gy}, {gz}) m/s²").ok();
-    if m.drive == Drive::Torque {
-        drive_summary(&mut s, m);
-    }
-    s
-}
-
-/// A torque-driven shaft's lines of `rotor info`: where the torques act, the
-/// polar inertia `J = Σ` (disks' `I_p` + shaft elements' `ρ J_p L`) over the
-/// free twist DOFs (the inertia a plant model's swing equation would need), and
-/// each thrust bearing's load and breakaway torque `μ_b W R_m`.
-fn drive_summary(s: &mut String, m: &RotorModel) {
-    let torques: Vec<String> = m
-        .torques
-        .iter()
-        .map(|t| format!("{} at node {}", t.name, t.node + 1))
-        .collect();
-    writeln!(
-        s,
-        "  torque drive: {}; polar inertia {:.1} kg·m² (shaft and disks)",
-        torques.join(", "),
-        TorsionalRotor::new(m).total_inertia()
-    )
-    .ok();
-    for t in &m.thrust_bearings {
-        let b = &t.bearing;
-        writeln!(
-            s,
-            "  thrust bearing {} at node {}: load W = {} N, R_m = {} m, breakaway torque μ_b W R_m = {} N·m{}",
-            t.name,
-            t.node + 1,
-            short(b.load),
-            short(b.mean_radius()),
-            short(b.breakaway_torque()),
-            if b.oil_lift { " (oil lift)" } else { "" }
-        )
-        .ok();
-    }
-}
 
 /// A number without float noise: at most 6 significant digits, no trailing zeros.
 pub fn short(x: f64) -> String {

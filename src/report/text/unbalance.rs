@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use crate::analysis::unbalance::{
-    Peak, REFINE_AMPLITUDE_RATIO, REFINE_ANGLE_DEG, SeparationMargin, UnbalanceStudy,
+    LevelKept, Peak, REFINE_AMPLITUDE_RATIO, REFINE_ANGLE_DEG, SeparationMargin, UnbalanceStudy,
     UnbalanceSweep,
 };
 use crate::units::{Amplitude, RAD_S_TO_RPM};
@@ -39,12 +39,14 @@ pub fn peak_cells(
             m.required
                 .map_or("none".to_string(), |r| format!("{:.1} %", 100.0 * r)),
             format!("{:.1} %", 100.0 * m.actual),
-            if m.pass { "pass" } else { "FAIL" },
+            if m.pass { "pass" } else { "FAIL" }.to_string(),
         ),
-        None if peak.amplification_factor.is_none() => {
-            ("—".into(), "—".into(), "half-power speed outside the sweep")
-        }
-        None => ("—".into(), "—".into(), "no operating range"),
+        None if peak.amplification_factor.is_none() => (
+            "—".into(),
+            "—".into(),
+            no_half_power(sweep, peak.level_kept),
+        ),
+        None => ("—".into(), "—".into(), "no operating range".into()),
     };
     [
         sweep.points[peak.point].label.clone(),
@@ -53,17 +55,37 @@ pub fn peak_cells(
         af,
         required,
         actual,
-        verdict.to_string(),
+        verdict,
     ]
+}
+
+/// Why a peak has no AF: on which side, and up to which end of the sweep,
+/// the response stays above `1/√2` of the peak (the sweep's ends in rpm).
+fn no_half_power(sweep: &UnbalanceSweep, kept: Option<LevelKept>) -> String {
+    let rpm = |s: Option<&f64>| short(s.copied().unwrap_or(0.0) * RAD_S_TO_RPM);
+    let (lo, hi) = (rpm(sweep.speeds.first()), rpm(sweep.speeds.last()));
+    let hint = "a heavily damped mode, or a sweep that ends too soon";
+    match kept {
+        Some(LevelKept::Below) => format!(
+            "no AF: below the peak the response stays above 1/√2 of it down to the sweep's start, {lo} rpm ({hint})"
+        ),
+        Some(LevelKept::Above) => format!(
+            "no AF: above the peak the response stays above 1/√2 of it up to the sweep's end, {hi} rpm ({hint})"
+        ),
+        Some(LevelKept::Both) | None => format!(
+            "no AF: the response stays above 1/√2 of the peak over the whole sweep, {lo} … {hi} rpm ({hint})"
+        ),
+    }
 }
 
 /// The table of unbalance response peaks `rotor unbalance` prints: point, peak
 /// speed (rpm), major semi-axis (µm), amplification factor, required and actual
 /// separation margins (%) and the verdict. An undamped resonance
 /// ([`Peak::is_undamped`]) shows amplitude "unbounded" and AF "∞" (its margin
-/// is the one required for any AF past the cap). A peak without both half-power
-/// speeds inside the sweep has no AF (and no margin); a row with an AF but no
-/// margin had no operating range to measure from.
+/// is the one required for any AF past the cap). A peak whose response stays
+/// above its half-power level to an end of the sweep has no AF (and no
+/// margin), and the row says on which side; a row with an AF but no margin
+/// had no operating range to measure from.
 pub fn peak_table(
     sweep: &UnbalanceSweep,
     rows: &[(Peak, Option<SeparationMargin>)],
@@ -144,7 +166,7 @@ mod tests {
     fn peak_table_prints_every_column_and_the_verdict() {
         use crate::analysis::unbalance::{ResponsePoint, UnbalanceSweep};
         let sweep = UnbalanceSweep {
-            speeds: vec![],
+            speeds: vec![0.0, 6000.0 / RAD_S_TO_RPM],
             points: vec![ResponsePoint {
                 label: "probe disk".into(),
                 node: 3,
@@ -157,6 +179,7 @@ mod tests {
             amplitude: 12.5e-6,
             half_power: Some((1.0, 2.0)),
             amplification_factor: Some(4.0),
+            level_kept: None,
         };
         let margin = SeparationMargin {
             required: Some(0.16),
@@ -165,6 +188,8 @@ mod tests {
         };
         let no_af = Peak {
             amplification_factor: None,
+            half_power: None,
+            level_kept: Some(LevelKept::Above),
             ..peak
         };
         let rows = [(peak, Some(margin)), (peak, None), (no_af, None)];
@@ -185,6 +210,12 @@ mod tests {
             ]
         );
         assert!(lines[2].ends_with("no operating range"), "{}", lines[2]);
-        assert!(lines[3].ends_with("half-power speed outside the sweep"));
+        assert!(
+            lines[3].ends_with(
+                "no AF: above the peak the response stays above 1/√2 of it up to the sweep's end, 6000 rpm (a heavily damped mode, or a sweep that ends too soon)"
+            ),
+            "{}",
+            lines[3]
+        );
     }
 }

@@ -1,0 +1,330 @@
+//! What `rotor info` prints: one line for every element of the model file,
+//! each starting with what it is (`material`, `shaft section`, `disk`,
+//! `bearing`, `seal`, `magnetic pull`, `force`, `port`, `coupling`, …) and
+//! its name, in engineering units.
+
+use std::fmt::Write;
+
+use super::{coefficient_matrix, describe_bearing, short};
+use crate::model::{
+    Drive, ForceKind, HarmonicDirection, HarmonicFrequency, ReductionRequest, RotorModel,
+};
+use crate::rotor::Rotor;
+use crate::rotor::torsion::TorsionalRotor;
+use crate::units::RAD_S_TO_RPM;
+
+/// What `rotor info` prints: sizes and node positions, then every element
+/// of the model — materials, shaft sections, disks, point masses, bearings,
+/// rubs, seals, magnetic pulls, pedestals, supports, unbalances, forces,
+/// ports, probes, the drive, torques, couplings, thrust bearings, the
+/// reduction — and gravity.
+pub fn model_summary(rotor: &Rotor) -> String {
+    let m = &rotor.model;
+    let mut s = String::new();
+    writeln!(s, "model {} ({})", m.name, m.source).ok();
+    if !m.description.is_empty() {
+        writeln!(s, "  {}", m.description).ok();
+    }
+    writeln!(
+        s,
+        "  {} nodes, {} shaft elements, {} free DOFs, length {:.4} m, rotating mass {:.3} kg",
+        m.node_count(),
+        m.elements.len(),
+        rotor.dof_count(),
+        m.node_z[m.node_z.len() - 1] - m.node_z[0],
+        m.total_mass()
+    )
+    .ok();
+    // Node positions, eight to a line: where `node = N` in the file sits.
+    for (row, chunk) in m.node_z.chunks(8).enumerate() {
+        let cells: Vec<String> = chunk
+            .iter()
+            .enumerate()
+            .map(|(k, z)| format!("{}: {}", row * 8 + k + 1, short(*z)))
+            .collect();
+        let head = if row == 0 { "node z (m):" } else { "" };
+        writeln!(s, "  {head:<11} {}", cells.join(", ")).ok();
+    }
+    shaft_summary(&mut s, m);
+    for d in &m.disks {
+        writeln!(
+            s,
+            "  disk {} at node {}: m = {:.4} kg, Ip = {:.5} kg·m², Id = {:.5} kg·m²",
+            d.name,
+            d.node + 1,
+            d.disk.mass,
+            d.disk.polar_inertia,
+            d.disk.diametral_inertia
+        )
+        .ok();
+    }
+    for pm in &m.point_masses {
+        writeln!(
+            s,
+            "  point mass {} at node {}: mx = {} kg, my = {} kg (not rotating)",
+            pm.name,
+            pm.node + 1,
+            short(pm.mass[0]),
+            short(pm.mass[1])
+        )
+        .ok();
+    }
+    for b in &m.bearings {
+        let what = match &b.kind {
+            k if k.is_seal() => "seal",
+            k if k.is_rub() => "rub",
+            k if k.is_magnetic_pull() => "magnetic pull",
+            _ => "bearing",
+        };
+        let on = match b.pedestal {
+            Some(p) => format!(" on pedestal {}", m.pedestals[p].name),
+            None => String::new(),
+        };
+        writeln!(
+            s,
+            "  {what} {} at node {}{on}: {}",
+            b.name,
+            b.node + 1,
+            describe_bearing(&b.kind)
+        )
+        .ok();
+    }
+    for p in &m.pedestals {
+        let on = match p.on {
+            Some(q) => format!("pedestal {}", m.pedestals[q].name),
+            None => "ground".to_string(),
+        };
+        let carried: Vec<&str> = m
+            .bearings
+            .iter()
+            .filter(|b| b.pedestal.is_some_and(|q| m.pedestals[q].name == p.name))
+            .map(|b| b.name.as_str())
+            .collect();
+        writeln!(
+            s,
+            "  pedestal {}: m = {} kg on {on}, K = {} N/m, C = {} N·s/m, carrying {}",
+            p.name,
+            short(p.mass),
+            coefficient_matrix(&p.stiffness),
+            coefficient_matrix(&p.damping),
+            if carried.is_empty() {
+                "other pedestals".to_string()
+            } else {
+                carried.join(", ")
+            }
+        )
+        .ok();
+    }
+    for sup in &m.supports {
+        let mut fixed: Vec<&str> = ["x", "y", "rx", "ry"]
+            .iter()
+            .zip(sup.fixed)
+            .filter(|(_, f)| *f)
+            .map(|(name, _)| *name)
+            .collect();
+        if sup.twist {
+            fixed.push("rz");
+        }
+        writeln!(
+            s,
+            "  support at node {}: fixes {}",
+            sup.node + 1,
+            fixed.join(", ")
+        )
+        .ok();
+    }
+    for u in &m.unbalances {
+        writeln!(
+            s,
+            "  unbalance {} at node {}: {} kg·m at {:.1}°",
+            u.name,
+            u.node + 1,
+            u.magnitude,
+            u.phase.to_degrees()
+        )
+        .ok();
+    }
+    loads_summary(&mut s, m);
+    for p in &m.probes {
+        writeln!(s, "  probe {} at node {}", p.name, p.node + 1).ok();
+    }
+    drive_summary(&mut s, m);
+    if let Some(r) = m.reduction {
+        let modes = match r {
+            ReductionRequest::Modes(n) => format!("{n} fixed-interface modes"),
+            ReductionRequest::FromSpeedRange => {
+                "as many fixed-interface modes as the speed range needs".to_string()
+            }
+        };
+        writeln!(s, "  reduction: transients run on a reduced rotor, {modes}").ok();
+    }
+    let [gx, gy, gz] = m.gravity.map(short);
+    writeln!(s, "  gravity ({gx}, {gy}, {gz}) m/s²").ok();
+    s
+}
+
+/// The materials the shaft uses, then the shaft's uniform runs: elements of
+/// one length, section, material and axial force between two nodes (a
+/// `[[shaft]]` section, or adjacent equal ones).
+fn shaft_summary(s: &mut String, m: &RotorModel) {
+    let mut named: Vec<&crate::fe::section::Material> = Vec::new();
+    for e in &m.elements {
+        if !named.iter().any(|x| x.name == e.element.material.name) {
+            named.push(&e.element.material);
+        }
+    }
+    for mat in named {
+        writeln!(
+            s,
+            "  material {}: E = {} Pa, G = {} Pa, ρ = {} kg/m³",
+            mat.name,
+            short(mat.youngs_modulus),
+            short(mat.shear_modulus),
+            short(mat.density)
+        )
+        .ok();
+    }
+    let mut start = 0;
+    while start < m.elements.len() {
+        let first = &m.elements[start];
+        let end = start
+            + m.elements[start..]
+                .iter()
+                .take_while(|e| e.element == first.element && e.axial_force == first.axial_force)
+                .count();
+        let section = &first.element.section;
+        writeln!(
+            s,
+            "  shaft section nodes {}–{}: {} × {} m, outer diameter {} mm, inner {} mm, {}, axial force {} N",
+            first.node + 1,
+            m.elements[end - 1].node + 2,
+            end - start,
+            short(first.element.length),
+            short(section.outer_diameter * 1e3),
+            short(section.inner_diameter * 1e3),
+            first.element.material.name,
+            short(first.axial_force)
+        )
+        .ok();
+        start = end;
+    }
+}
+
+/// One line per external force and per force port.
+fn loads_summary(s: &mut String, m: &RotorModel) {
+    for f in &m.forces {
+        let what = match f.kind {
+            ForceKind::Static([fx, fy]) => {
+                format!("static, (fx, fy) = ({}, {}) N", short(fx), short(fy))
+            }
+            ForceKind::Harmonic {
+                magnitude,
+                phase,
+                frequency,
+                direction,
+            } => {
+                let frequency = match frequency {
+                    HarmonicFrequency::Ratio(r) => format!("{}× the running speed", short(r)),
+                    HarmonicFrequency::Fixed(w) => {
+                        format!("{} Hz", short(w / std::f64::consts::TAU))
+                    }
+                };
+                let direction = match direction {
+                    HarmonicDirection::Forward => "forward".to_string(),
+                    HarmonicDirection::Backward => "backward".to_string(),
+                    HarmonicDirection::Fixed(a) => {
+                        format!("along a fixed line at {}°", short(a.to_degrees()))
+                    }
+                };
+                format!(
+                    "harmonic, {} N at {frequency}, {direction}, phase {}°",
+                    short(magnitude),
+                    short(phase.to_degrees())
+                )
+            }
+        };
+        writeln!(s, "  force {} at node {}: {what}", f.name, f.node + 1).ok();
+    }
+    for p in &m.ports {
+        writeln!(
+            s,
+            "  port {} at node {}: FMU inputs ports.{0}.fx, fy (N), outputs x, y (m), vx, vy (m/s)",
+            p.name,
+            p.node + 1
+        )
+        .ok();
+    }
+}
+
+/// The drive, and the torsional chain's parts: for a torque-driven shaft
+/// where the torques act and the polar inertia `J = Σ` (disks' `I_p` + shaft
+/// elements' `ρ J_p L`) over the free twist DOFs (the inertia a plant model's
+/// swing equation would need); each torque node, coupling and thrust bearing
+/// (its load and breakaway torque `μ_b W R_m`).
+fn drive_summary(s: &mut String, m: &RotorModel) {
+    match m.drive {
+        Drive::Torque => {
+            let torques: Vec<String> = m
+                .torques
+                .iter()
+                .map(|t| format!("{} at node {}", t.name, t.node + 1))
+                .collect();
+            writeln!(
+                s,
+                "  torque drive: {}; polar inertia {:.1} kg·m² (shaft and disks)",
+                torques.join(", "),
+                TorsionalRotor::new(m).total_inertia()
+            )
+            .ok();
+        }
+        Drive::Speed => {
+            writeln!(
+                s,
+                "  speed drive: the shaft follows the prescribed speed (shaft.speed)"
+            )
+            .ok();
+        }
+    }
+    for t in &m.torques {
+        writeln!(
+            s,
+            "  torque {} at node {}: FMU input torques.{0} (N·m){}",
+            t.name,
+            t.node + 1,
+            if m.drive == Drive::Torque {
+                ""
+            } else {
+                ", used when the shaft is torque-driven"
+            }
+        )
+        .ok();
+    }
+    for c in &m.couplings {
+        let node = m.elements[c.element].node;
+        writeln!(
+            s,
+            "  coupling {} between nodes {} and {}: torsional stiffness {} N·m/rad, damping {} N·m·s/rad",
+            c.name,
+            node + 1,
+            node + 2,
+            short(c.stiffness),
+            short(c.damping)
+        )
+        .ok();
+    }
+    for t in &m.thrust_bearings {
+        let b = &t.bearing;
+        writeln!(
+            s,
+            "  thrust bearing {} at node {}: load W = {} N, R_m = {} m, breakaway torque μ_b W R_m = {} N·m{}, lift-off {} rpm",
+            t.name,
+            t.node + 1,
+            short(b.load),
+            short(b.mean_radius()),
+            short(b.breakaway_torque()),
+            if b.oil_lift { " (oil lift)" } else { "" },
+            short(b.lift_off_speed * RAD_S_TO_RPM)
+        )
+        .ok();
+    }
+}
