@@ -3,7 +3,9 @@
 //! processes with a timeout so that a crash or a hang fails the test with the
 //! seed that caused it.
 //!
-//! `ROTOR_FUZZ_SEQUENCES` sets the number of sequences per FMU (default 2000),
+//! `ROTOR_FUZZ_SEQUENCES` sets the number of sequences per shipped FMU
+//! (default 2000), `ROTOR_FUZZ_INPUT_SEQUENCES` those of the FMU with every
+//! input kind, `tests/data/torque_ports.toml` (default 5000),
 //! `ROTOR_FUZZ_SEED` the first seed (default 1). A failing seed replays with
 //! `target/debug/examples/fmu_fuzz DIR SEED 1`.
 
@@ -177,12 +179,20 @@ fn run_batch(
 
 #[test]
 fn random_call_sequences_on_every_shipped_fmu() {
-    let sequences = env_u64("ROTOR_FUZZ_SEQUENCES", 2000);
+    let shipped = env_u64("ROTOR_FUZZ_SEQUENCES", 2000);
+    // The FMU with every input kind (torques, ports, forces, the pull's
+    // excitation) gets more.
+    let inputs = env_u64("ROTOR_FUZZ_INPUT_SEQUENCES", 5000);
     let first = env_u64("ROTOR_FUZZ_SEED", 1);
     let batch = 250;
     let mut failures = Vec::new();
     for fmu in shipped_fmus() {
         let dir = unpack(&fmu);
+        let sequences = if fmu.ends_with("torque_ports.fmu") {
+            inputs
+        } else {
+            shipped
+        };
         eprintln!(
             "fuzzing {}: seeds {first}..{}",
             fmu.display(),
