@@ -162,7 +162,10 @@ impl Quadratic {
             C64::new(eye, 0.0) + s * self.d[i] * dot(&self.u[i], &w[j])
         });
         let h = DVector::from_fn(k, |i, _| s * self.d[i] * dot(&self.u[i], &r));
-        let z = g.lu().solve(&h).ok_or(LinalgError::Singular { column: 0 })?;
+        let z = g
+            .lu()
+            .solve(&h)
+            .ok_or(LinalgError::Singular { column: 0 })?;
         for (wj, zj) in w.iter().zip(z.iter()) {
             r.iter_mut().zip(wj).for_each(|(p, q)| *p -= zj * q);
         }
@@ -172,14 +175,16 @@ impl Quadratic {
     /// Rayleigh-functional iteration from `(s, x)`: the root, or `None`
     /// when 60 steps do not settle it.
     fn root(&self, mut s: C64, mut x: Vec<C64>) -> Result<Option<C64>, LinalgError> {
-        for _ in 0..60 {
+        for iteration in 0..60 {
             let next = self.rayleigh(&x, s);
             let step = (next - s).norm();
             s = next;
             if !s.is_finite() {
                 return Err(LinalgError::NotFinite);
             }
-            if step <= STEP * s.norm() {
+            // The first functional of the undamped mode is the start itself
+            // (`s₀` is its root): only a step after a new `x` tells.
+            if iteration > 0 && step <= STEP * s.norm() {
                 return Ok(Some(s));
             }
             let mut t = self.k.clone();
