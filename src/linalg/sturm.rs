@@ -72,7 +72,11 @@ pub fn eigenvalues_below(
 /// magnitude below `pivmin` taken as `−pivmin` (Kahan's count as in LAPACK's
 /// `dstebz`; backward stable, so it never refuses a shift: a shift on an
 /// eigenvalue counts it on one side or the other).
-pub fn tridiagonal_eigenvalues_below(k: &BandMatrix<f64>, mass: &BandMatrix<f64>, shift: f64) -> usize {
+pub fn tridiagonal_eigenvalues_below(
+    k: &BandMatrix<f64>,
+    mass: &BandMatrix<f64>,
+    shift: f64,
+) -> usize {
     let n = k.n();
     assert_eq!(mass.n(), n, "Sturm count: K and M of different orders");
     let e = |j: usize| k.get(j, j - 1) - shift * mass.get(j, j - 1);
