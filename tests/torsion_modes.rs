@@ -475,3 +475,61 @@ fn torsional_damping_keys_are_validated() {
     let negative_ratio = shaft(1.0, 0.05, 4, 7850.0, "[torsion]\ndamping_ratio = -0.1\n");
     bad(&negative_ratio, "torsion.damping_ratio", "-0.1");
 }
+
+/// `rotor modes` prints, for a damped coupling between two disks, the
+/// undamped frequency, the damping ratio `c/(2√(k J_r))` and the damped
+/// frequency `√(4 k J_r − c²)/(4π J_r)` (to the printed digits), under a
+/// header that says which are undamped; the shapes CSV carries both.
+#[test]
+fn the_cli_prints_undamped_and_damped_torsional_frequencies() {
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("torsion_modes_cli");
+    std::fs::create_dir_all(&dir).unwrap();
+    let (path, csv) = (dir.join("damped.toml"), dir.join("twist.csv"));
+    let (j1, j2, k, c) = (2.0, 5.0, 1e5, 30.0);
+    let text = format!(
+        "{}{}{}[[couplings]]\nnode = 1\ntorsional_stiffness = {k}\ntorsional_damping = {c}\n",
+        shaft(0.001, 0.001, 1, 7810.0, ""),
+        disk(1, j1),
+        disk(2, j2)
+    );
+    std::fs::write(&path, text).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["modes", path.to_str().unwrap(), "--torsional-modes", "2"])
+        .args(["--torsional-shapes-csv", csv.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert!(stdout.contains("ω and f undamped, f_d damped"), "{stdout}");
+    let row: Vec<f64> = stdout
+        .lines()
+        .find(|l| l.trim_end().ends_with("torsional"))
+        .unwrap()
+        .split_whitespace()
+        .take(6)
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let jr = j1 * j2 / (j1 + j2);
+    let (wn, zeta) = ((k / jr).sqrt(), c / (2.0 * (k * jr).sqrt()));
+    let fd = (4.0 * k * jr - c * c).sqrt() / (2.0 * jr) / (2.0 * PI);
+    assert!((row[2] - wn / (2.0 * PI)).abs() < 5e-5, "{stdout}");
+    assert!((row[3] / zeta - 1.0).abs() < 5e-5, "{stdout}");
+    assert!((row[5] - fd).abs() < 5e-5, "{stdout}");
+    let shapes = std::fs::read_to_string(&csv).unwrap();
+    let first: Vec<f64> = shapes
+        .lines()
+        .nth(1)
+        .unwrap()
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    assert!((first[3] / fd - 1.0).abs() < 1e-9, "{shapes}");
+    assert!(
+        (first[1] / (wn / (2.0 * PI)) - 1.0).abs() < 1e-9,
+        "{shapes}"
+    );
+}
