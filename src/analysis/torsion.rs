@@ -79,7 +79,7 @@ pub fn torsional_modes(
     let rigid = usize::from(n == model.node_count());
     let wanted = count.min(n - rigid);
     let pairs = match arnoldi(&chain, count, rigid == 1) {
-        Ok(pairs) if verified(&chain, rigid, wanted, &pairs) => pairs,
+        Ok((pairs, next)) if verified(&chain, rigid, wanted, &pairs, next) => pairs,
         _ => bisection(&chain, rigid, wanted)?,
     };
     if pairs.len() != wanted {
@@ -117,8 +117,13 @@ pub fn torsional_modes(
 pub(super) type Pairs = Vec<(f64, Vec<f64>)>;
 
 /// Shift-invert Arnoldi with the shift and rigid-body filter scaled by the
-/// stiffest element (fast; its result is checked by [`verified`]).
-fn arnoldi(chain: &TorsionalRotor, count: usize, free_free: bool) -> Result<Pairs, LinalgError> {
+/// stiffest element (fast; its result is checked by [`verified`]): the
+/// lowest `count` modes it finds and the next frequency it found, if any.
+fn arnoldi(
+    chain: &TorsionalRotor,
+    count: usize,
+    free_free: bool,
+) -> Result<(Pairs, Option<f64>), LinalgError> {
     let n = chain.dof_count();
     // Shift below zero by a fraction of the stiffest element's frequency
     // scale, so that K − σM factors even with the rigid-body mode.
@@ -151,8 +156,9 @@ fn arnoldi(chain: &TorsionalRotor, count: usize, free_free: bool) -> Result<Pair
         .filter(|(w, _)| *w * *w > 1e-9 * scale)
         .collect();
     modes.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let next = modes.get(count).map(|p| p.0);
     modes.truncate(count);
-    Ok(modes)
+    Ok((modes, next))
 }
 
 /// `max K_ii / M_ii` (rad²/s²): the stiffest element's frequency scale.
@@ -177,9 +183,17 @@ pub(super) fn quadratic(a: &BandMatrix<f64>, x: &[f64], y: &[f64]) -> f64 {
 }
 
 /// True when the `wanted` reported modes are the lowest elastic ones: the
-/// Sturm count of `K − λ M` is `rigid` below the first `ω²`, `rigid + i`
-/// between the `i`-th and the next, `rigid + m` just above the last.
-fn verified(chain: &TorsionalRotor, rigid: usize, wanted: usize, pairs: &Pairs) -> bool {
+/// Sturm count of `K − λ M` is `rigid` below half the first `ω²`, `rigid + i`
+/// midway between the `i`-th and the next, `rigid + m` midway between the last
+/// and the next frequency Arnoldi found (`next`; without one, 1e-6 above the
+/// last). A shift that falls on an eigenvalue fails the check.
+fn verified(
+    chain: &TorsionalRotor,
+    rigid: usize,
+    wanted: usize,
+    pairs: &Pairs,
+    next: Option<f64>,
+) -> bool {
     if pairs.len() != wanted {
         return false;
     }
@@ -187,7 +201,9 @@ fn verified(chain: &TorsionalRotor, rigid: usize, wanted: usize, pairs: &Pairs) 
     let below = |shift: f64| eigenvalues_below(&chain.stiffness, &chain.mass, shift).ok();
     let mut checks = vec![(0.5 * l[0], rigid)];
     checks.extend((1..l.len()).map(|i| (0.5 * (l[i - 1] + l[i]), rigid + i)));
-    checks.push((l[l.len() - 1] * (1.0 + 1e-6), rigid + l.len()));
+    let last = l[l.len() - 1];
+    let above = next.map_or(last * (1.0 + 1e-6), |w| 0.5 * (last + w * w));
+    checks.push((above, rigid + l.len()));
     checks.iter().all(|&(shift, n)| below(shift) == Some(n))
 }
 
