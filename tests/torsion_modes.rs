@@ -299,6 +299,43 @@ fn heavy_inertias_on_a_fine_steel_mesh_keep_their_first_mode() {
     assert!((closed[0] - 9.846).abs() < 1e-3 && (closed[1] - 25.075).abs() < 1e-3);
 }
 
+/// The same train with a stiff flexible coupling (1e9 N·m/rad) in place of
+/// the second element: the coupling's frequency scale, not the mesh, set the
+/// old shift and filter, which lost the first disk mode (10.38 rad/s here)
+/// already at 9 elements, listing 27.60 rad/s as mode 1, and both at 40. With the coupling's compliance in series,
+/// `1/k₁ = (m − 1) L_e/(G J) + 1/k_c` over the `m` elements to mid-span, the
+/// massless closed form holds to 1e-5 (the shaft's inertia, as above) at
+/// 9, 40 and 180 elements.
+#[test]
+fn a_stiff_coupling_on_a_coarse_mesh_keeps_the_disk_modes() {
+    let (length, diameter, rho, kc): (f64, f64, f64, f64) = (1.0, 0.1, 7850.0, 1e9);
+    let gj = G * PI * diameter.powi(4) / 32.0;
+    let (j1, j2, j3) = (16360.0, 5964.0, 16360.0);
+    for n in [9, 40, 180] {
+        let mid = n / 2;
+        let le = length / n as f64;
+        let extra = disk(1, j1)
+            + &disk(mid + 1, j2)
+            + &disk(n + 1, j3)
+            + &format!("[[couplings]]\nnode = 2\ntorsional_stiffness = {kc}\n");
+        let modes = modes_of(&shaft(length, diameter, n, rho, &extra), 3);
+        assert_eq!(modes.len(), 3, "n {n}");
+        let k1 = 1.0 / ((mid - 1) as f64 * le / gj + 1.0 / kc);
+        let k2 = gj / ((n - mid) as f64 * le);
+        let b = k1 * (j1 + j2) / (j1 * j2) + k2 * (j2 + j3) / (j2 * j3);
+        let c = k1 * k2 * (j1 + j2 + j3) / (j1 * j2 * j3);
+        let big = 0.5 * (b + (b * b - 4.0 * c).sqrt());
+        for (k, want) in [(c / big).sqrt(), big.sqrt()].iter().enumerate() {
+            let got = modes[k].natural_frequency;
+            assert!(
+                (got / want - 1.0).abs() < 1e-5,
+                "n {n}, mode {}: {got} against {want} rad/s",
+                k + 1
+            );
+        }
+    }
+}
+
 /// Two disks `J₁`, `J₂` on a coupling of stiffness `k` and viscous damping
 /// `c` (on a vanishing shaft, 1e-12 of their inertia): the relative twist
 /// obeys `J_r θ̈ + c θ̇ + k θ = 0`, `J_r = J₁J₂/(J₁ + J₂)`, so the damped
