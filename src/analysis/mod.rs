@@ -19,5 +19,6 @@ pub mod spectrum;
 pub mod speed_range;
 pub mod stability;
 pub mod torsion;
+mod torsion_damped;
 pub mod ucs;
 pub mod unbalance;

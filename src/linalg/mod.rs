@@ -19,7 +19,7 @@ pub use arnoldi::{
     largest_eigenpairs_real,
 };
 pub use band::{BandLu, BandMatrix, Scalar, map_to_complex};
-pub use sturm::eigenvalues_below;
+pub use sturm::{eigenvalues_below, tridiagonal_eigenvalues_below};
 pub use subspace::lowest_eigenpairs;
 
 /// Numerical failures of the linear-algebra routines. Programming errors (an

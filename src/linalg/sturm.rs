@@ -65,6 +65,38 @@ pub fn eigenvalues_below(
     Ok(negative)
 }
 
+/// Number of eigenvalues of a symmetric tridiagonal pencil `(k, mass)`
+/// (`mass` positive definite; only the diagonal and first sub-diagonal are
+/// read) below `shift`, for bisection: the negative pivots of
+/// `d_j = a_jj − e_j²/d_{j−1}` with `a = k − shift · mass`, a pivot of
+/// magnitude below `pivmin` taken as `−pivmin` (Kahan's count as in LAPACK's
+/// `dstebz`; backward stable, so it never refuses a shift: a shift on an
+/// eigenvalue counts it on one side or the other).
+pub fn tridiagonal_eigenvalues_below(
+    k: &BandMatrix<f64>,
+    mass: &BandMatrix<f64>,
+    shift: f64,
+) -> usize {
+    let n = k.n();
+    assert_eq!(mass.n(), n, "Sturm count: K and M of different orders");
+    let e = |j: usize| k.get(j, j - 1) - shift * mass.get(j, j - 1);
+    let largest = (1..n).map(|j| e(j) * e(j)).fold(1.0, f64::max);
+    let pivmin = f64::MIN_POSITIVE * largest;
+    let mut negative = 0;
+    let mut d = 1.0;
+    for j in 0..n {
+        let a = k.get(j, j) - shift * mass.get(j, j);
+        d = if j == 0 { a } else { a - e(j) * e(j) / d };
+        if d.abs() < pivmin || d.is_nan() {
+            d = -pivmin;
+        }
+        if d < 0.0 {
+            negative += 1;
+        }
+    }
+    negative
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -113,5 +145,33 @@ mod tests {
         ));
         assert_eq!(eigenvalues_below(&k, &m, 1.0 + 1e-7), Ok(2));
         assert_eq!(eigenvalues_below(&k, &m, 1.0 - 1e-7), Ok(0));
+    }
+    /// The tridiagonal count agrees with the refusing one off the
+    /// eigenvalues, and on an eigenvalue counts it on one side: never fails.
+    #[test]
+    fn the_tridiagonal_count_brackets_every_eigenvalue() {
+        let n = 9;
+        let mut k = BandMatrix::new(n, 1, 1);
+        let mut m = BandMatrix::new(n, 1, 1);
+        for i in 0..n {
+            k.set(i, i, 2.0);
+            m.set(i, i, 1.0);
+            if i + 1 < n {
+                k.set(i, i + 1, -1.0);
+                k.set(i + 1, i, -1.0);
+            }
+        }
+        for j in 1..=n {
+            let exact = 2.0 - 2.0 * (j as f64 * std::f64::consts::PI / (n + 1) as f64).cos();
+            let below = tridiagonal_eigenvalues_below(&k, &m, exact * (1.0 - 1e-12));
+            let above = tridiagonal_eigenvalues_below(&k, &m, exact * (1.0 + 1e-12));
+            assert_eq!((below, above), (j - 1, j), "eigenvalue {j}");
+            let on = tridiagonal_eigenvalues_below(&k, &m, exact);
+            assert!(on == j - 1 || on == j, "on eigenvalue {j}: {on}");
+            let off = exact * 1.01;
+            if let Ok(c) = eigenvalues_below(&k, &m, off) {
+                assert_eq!(tridiagonal_eigenvalues_below(&k, &m, off), c);
+            }
+        }
     }
 }

@@ -137,6 +137,9 @@ pub struct ShaftEntry {
     pub elements: Option<usize>,
     /// Axial tension in this section (N, compression negative).
     pub axial_force: Option<f64>,
+    /// Viscous torsional damping of the whole section (N·m·s/rad), in
+    /// parallel with its torsional stiffness; default 0.
+    pub torsional_damping: Option<f64>,
 }
 
 /// `[[disks]]`: either inertias (`mass`, `polar_inertia`, `diametral_inertia`) or
@@ -519,6 +522,8 @@ pub struct TorsionEntry {
     /// `"speed"` (the shaft follows a prescribed speed, default) or
     /// `"torque"` (torques at the `[[torques]]` nodes drive it).
     pub drive: Option<String>,
+    /// Modal damping ratio of the listed torsional modes (–), default 0.
+    pub damping_ratio: Option<f64>,
 }
 
 /// `[[probes]]`: a named node whose displacements are reported.

@@ -65,6 +65,10 @@ pub struct PlacedElement {
     pub element: ShaftElement,
     /// Axial tension carried by the element (N, compression negative).
     pub axial_force: f64,
+    /// Viscous torsional damping of the element (N·m·s/rad) between its two
+    /// nodes' twists: its section's `torsional_damping` times the section's
+    /// element count, so that the elements in series give the section's.
+    pub torsional_damping: f64,
 }
 
 /// A disk on a node.
@@ -324,6 +328,9 @@ pub struct RotorModel {
     pub thrust_bearings: Vec<PlacedThrustBearing>,
     /// How the shaft is driven.
     pub drive: Drive,
+    /// Modal damping ratio `ζ_m` of the listed torsional modes (–,
+    /// `[torsion] damping_ratio`; `analysis::torsion`).
+    pub torsional_damping_ratio: f64,
     /// Ideal supports.
     pub supports: Vec<Support>,
     /// Bearing supports (pedestals, brackets, foundations) in series with bearings.

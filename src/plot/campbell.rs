@@ -214,7 +214,7 @@ pub fn campbell_png(path: &Path, title: &str, study: &CampbellStudy) -> Result<(
         let shown = if f <= f_max { "" } else { ", above the chart" };
         legend.push((
             Swatch::Dashed(torsion, 2),
-            format!("torsional mode {f:.2} Hz{shown}"),
+            format!("torsional mode {f:.2} Hz (undamped){shown}"),
         ));
     }
     for (k, m) in study.margins.iter().enumerate() {

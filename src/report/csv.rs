@@ -403,18 +403,22 @@ pub fn mode_shapes(model: &RotorModel, modes: &[Mode]) -> String {
     out
 }
 
-/// Torsional mode shapes: per mode its natural frequency (Hz) and damping
-/// ratio, per node its position and twist (rad, the largest twist 1).
+/// Torsional mode shapes: per mode its undamped natural frequency (Hz),
+/// damping ratio and damped frequency (Hz), per node its position and twist
+/// (rad, the largest twist 1; the undamped shape).
 pub fn torsional_mode_shapes(model: &RotorModel, modes: &[TorsionalMode]) -> String {
-    let mut out = String::from("mode,natural_frequency_hz,damping_ratio,node,z_m,twist\n");
+    let mut out = String::from(
+        "mode,natural_frequency_hz,damping_ratio,damped_frequency_hz,node,z_m,twist\n",
+    );
     for (k, m) in modes.iter().enumerate() {
         for (node, twist) in m.shape.iter().enumerate() {
             writeln!(
                 out,
-                "{},{},{},{},{},{}",
+                "{},{},{},{},{},{},{}",
                 k + 1,
                 m.natural_frequency / (2.0 * PI),
                 m.damping_ratio,
+                m.damped_frequency() / (2.0 * PI),
                 node + 1,
                 model.node_z[node],
                 twist

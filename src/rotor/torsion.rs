@@ -17,7 +17,7 @@ pub struct TorsionalRotor {
     pub mass: BandMatrix<f64>,
     /// Torsional stiffness (N·m/rad).
     pub stiffness: BandMatrix<f64>,
-    /// Torsional damping of the couplings (N·m·s/rad).
+    /// Torsional damping of the couplings and shaft sections (N·m·s/rad).
     pub damping: BandMatrix<f64>,
     /// Free twist DOF of each node, `None` where a support fixes it.
     pub dofs: Vec<Option<usize>>,
@@ -63,12 +63,15 @@ impl TorsionalRotor {
         for (k, placed) in model.elements.iter().enumerate() {
             let (m, mut kt) = torsion_matrices(&placed.element);
             let pair = [placed.node, placed.node + 1];
-            let mut c_element = 0.0;
+            // A coupling replaces the element's stiffness and damping.
+            let mut c_element = placed.torsional_damping;
             if let Some(c) = model.couplings.iter().find(|c| c.element == k) {
                 kt = [[c.stiffness, -c.stiffness], [-c.stiffness, c.stiffness]];
-                let ct = [[c.damping, -c.damping], [-c.damping, c.damping]];
-                scatter(&mut damping, pair, ct);
                 c_element = c.damping;
+            }
+            if c_element != 0.0 {
+                let ct = [[c_element, -c_element], [-c_element, c_element]];
+                scatter(&mut damping, pair, ct);
             }
             elements.push((kt[0][0], c_element));
             scatter(&mut mass, pair, m);

@@ -45,6 +45,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     let ports = loads::ports(ctx, &root, raw.ports, &node_z)?;
     let couplings = torsion::couplings(ctx, &root, raw.couplings, &node_z, &shaft.elements)?;
     let torques = torsion::torques(ctx, &root, raw.torques, &node_z)?;
+    let torsional_damping_ratio = torsion::damping_ratio(ctx, &root, raw.torsion.as_ref())?;
     let drive = torsion::drive(ctx, &root, raw.torsion, &torques)?;
     let supports = supports::supports(ctx, &root, raw.supports, &node_z)?;
     let gravity = loads::gravity(ctx, &root, raw.gravity)?;
@@ -113,6 +114,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         torques,
         thrust_bearings,
         drive,
+        torsional_damping_ratio,
         supports,
         pedestals,
         gravity,

@@ -93,6 +93,11 @@ pub(super) fn shaft(
             Some(f) => ctx.within(p.key("axial_force"), f, &AXIAL_FORCE)?,
             None => default_axial,
         };
+        // Series dampers: `count` elements of `c · count` give the section's `c`.
+        let torsional_damping = ctx.non_negative(
+            p.key("torsional_damping"),
+            s.torsional_damping.unwrap_or(0.0),
+        )? * count as f64;
         let element = ShaftElement {
             length: length / count as f64,
             section: CircularSection {
@@ -108,6 +113,7 @@ pub(super) fn shaft(
                 node: node_z.len() - 1,
                 element: element.clone(),
                 axial_force,
+                torsional_damping,
             });
             node_z.push(z0 + length * (k + 1) as f64 / count as f64);
         }

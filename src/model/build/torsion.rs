@@ -131,6 +131,27 @@ pub(super) fn thrust_bearings(
     Ok(out)
 }
 
+/// `[torsion] damping_ratio`: the modal damping ratio of the listed
+/// torsional modes, in `[0, 1)` (1 is critical damping: no mode left).
+pub(super) fn damping_ratio(
+    ctx: &Ctx,
+    root: &FieldPath,
+    entry: Option<&TorsionEntry>,
+) -> Result<f64, ModelError> {
+    let Some(z) = entry.and_then(|e| e.damping_ratio) else {
+        return Ok(0.0);
+    };
+    let z = ctx.non_negative(root.key("torsion").key("damping_ratio"), z)?;
+    if z >= 1.0 {
+        return Err(ctx.err(
+            root.key("torsion").key("damping_ratio"),
+            z,
+            "must be less than 1 (a modal damping ratio of 1 or more leaves no oscillating mode)",
+        ));
+    }
+    Ok(z)
+}
+
 /// The drive: `"speed"` (default) or `"torque"`, which needs `[[torques]]`.
 pub(super) fn drive(
     ctx: &Ctx,

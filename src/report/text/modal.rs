@@ -114,7 +114,7 @@ pub fn campbell_study(rotor: &Rotor, study: &CampbellStudy) -> String {
             .collect();
         writeln!(
             s,
-            "torsional modes (horizontal lines, independent of the speed): {}",
+            "torsional modes (horizontal lines, independent of the speed): {} (undamped)",
             lines.join(", ")
         )
         .ok();
@@ -123,14 +123,16 @@ pub fn campbell_study(rotor: &Rotor, study: &CampbellStudy) -> String {
 }
 
 /// The torsional modes `rotor modes` prints after the lateral ones, in the
-/// same columns: natural frequency (rad/s, Hz), the couplings' modal damping
-/// ratio and log decrement `2πζ/√(1 − ζ²)`, labelled "torsional".
+/// same columns: the undamped natural frequency `ω` (rad/s, Hz), the damping
+/// ratio `ζ = −Re s/|s|` of the damped eigenvalue `s` and its log decrement
+/// `2πζ/√(1 − ζ²)`, then the damped frequency `Im s/2π` (Hz), labelled
+/// "torsional". The header says which columns are undamped.
 pub fn torsional_modes(modes: &[TorsionalMode]) -> String {
     if modes.is_empty() {
         return String::new();
     }
     let mut s = String::from(
-        "torsional modes (twist about the shaft axis, independent of the speed):\n mode    ω (rad/s)      f (Hz)   damping ratio  log dec   whirl\n",
+        "torsional modes (twist about the shaft axis, independent of the speed; ω and f undamped, f_d damped, ζ from the damped eigenvalue):\n mode    ω (rad/s)      f (Hz)   damping ratio  log dec    f_d (Hz)   whirl\n",
     );
     for (k, m) in modes.iter().enumerate() {
         let z = m.damping_ratio;
@@ -147,12 +149,13 @@ pub fn torsional_modes(modes: &[TorsionalMode]) -> String {
         };
         writeln!(
             s,
-            "{:5} {:12.4} {:11.4} {:>14} {:>9} {:>9}",
+            "{:5} {:12.4} {:11.4} {:>14} {:>9} {:11.4} {:>9}",
             k + 1,
             m.natural_frequency,
             m.natural_frequency / (2.0 * std::f64::consts::PI),
             zeta,
             delta,
+            m.damped_frequency() / (2.0 * std::f64::consts::PI),
             "torsional"
         )
         .ok();
