@@ -110,6 +110,13 @@ impl OverdampedRoot {
         -self.eigenvalue.re
     }
 
+    /// Whether the root grows (`Re λ > 0`): a static divergence, the rotor
+    /// linearized about an equilibrium its supports cannot hold (a magnetic
+    /// pull stiffer than the unloaded films, a negative-stiffness seal).
+    pub fn is_growing(&self) -> bool {
+        self.eigenvalue.re > 0.0
+    }
+
     /// Time constant `1/|Re λ|` (s).
     pub fn time_constant(&self) -> f64 {
         1.0 / self.eigenvalue.re.abs()

@@ -32,7 +32,7 @@ use crate::fe::{DOF_X, DOF_Y};
 use crate::rotor::{AssemblyError, Rotor};
 
 use super::linearize::{LinearizeError, linearized};
-use super::modal::{ModalError, ModalOptions, Mode, Whirl, modes};
+use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis, modes};
 use super::operating_point::{OperatingPointError, operating_point};
 
 /// Why a stability check failed.
@@ -283,12 +283,17 @@ pub struct Stability {
     /// The largest `Q` swept (N/m).
     pub q_max: f64,
     /// `Q` (N/m) where that mode's log decrement is zero: `Some(0)`
-    /// when it is unstable already, `None` when stable up to `Q_max`.
+    /// when it is unstable already (or the rotor statically unstable,
+    /// [`Stability::diverging`]), `None` when stable up to `Q_max`.
     pub threshold: Option<f64>,
     /// That mode at the threshold.
     pub threshold_mode: Option<Mode>,
     /// The Level I screening, when the machine's stage data were given.
     pub level_one: Option<LevelOne>,
+    /// The growing non-oscillating roots without cross-coupling: a static
+    /// divergence (then `threshold` is `Some(0)` whatever the forward modes
+    /// do).
+    pub diverging: Vec<OverdampedRoot>,
 }
 
 /// What a stability study is asked for.
@@ -386,7 +391,15 @@ pub fn stability_study(
         modes: count,
         ..ModalOptions::default()
     };
-    let at_zero = modes(&linear, speed, &options)?;
+    let analysis = modal_analysis(&linear, speed, &options)?;
+    let at_zero = analysis.modes;
+    // A growing non-oscillating root: statically unstable without any
+    // cross-coupling, whatever the forward modes' log decrements say.
+    let diverging: Vec<OverdampedRoot> = analysis
+        .overdamped
+        .into_iter()
+        .filter(OverdampedRoot::is_growing)
+        .collect();
     let forward = |q: f64| -> Result<Mode, StabilityError> {
         least_stable_forward(&with_cross_coupling(&linear, &sites, q)?, speed, count)
     };
@@ -397,7 +410,9 @@ pub fn stability_study(
     }
     let mut threshold = None;
     let mut threshold_mode = None;
-    if curve[0].1.log_decrement <= 0.0 {
+    if !diverging.is_empty() {
+        threshold = Some(0.0);
+    } else if curve[0].1.log_decrement <= 0.0 {
         threshold = Some(0.0);
         threshold_mode = Some(curve[0].1.clone());
     } else if let Some(w) = curve
@@ -462,5 +477,6 @@ pub fn stability_study(
         threshold,
         threshold_mode,
         level_one,
+        diverging,
     })
 }

@@ -222,7 +222,7 @@ mod tests {
         let pull = find("magnetic_pull", None);
         assert!(pull.array && pull.keys.contains(&"gap".to_string()));
         let torsion = find("torsion", None);
-        assert!(!torsion.array && torsion.keys == ["drive"]);
+        assert!(!torsion.array && torsion.keys == ["drive", "damping_ratio"]);
         let pads = find("bearings", Some("tilting_pad"));
         assert_eq!(pads.keys[0], "type");
         assert!(pads.keys.contains(&"preload".to_string()));

@@ -476,6 +476,19 @@ pub fn summary(inputs: &SummaryInputs) -> Table {
     }
     match &inputs.stability {
         Ok(s) => {
+            if let Some(root) = s.diverging.first() {
+                rows.push(vec![
+                    "static stability".into(),
+                    format!(
+                        "{} non-oscillating root(s) growing (divergence)",
+                        s.diverging.len()
+                    )
+                    .into(),
+                    format!("growth rate {} 1/s", short(-root.decay_rate())).into(),
+                    "no growing root".into(),
+                    Cell::verdict(Verdict::Fail),
+                ]);
+            }
             let least = &s.curve[0].1;
             let delta = if least.is_undamped() {
                 "log dec 0 (no damping)".to_string()

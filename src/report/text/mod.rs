@@ -20,7 +20,7 @@ mod unbalance;
 
 pub use modal::{
     ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
-    overdamped_roots, overdamped_summary, torsional_modes, zeta_and_log_dec,
+    overdamped_roots, overdamped_summary, static_divergence, torsional_modes, zeta_and_log_dec,
 };
 pub use summary::model_summary;
 pub use unbalance::{peak_cells, peak_table, unbalance_study};
@@ -360,7 +360,19 @@ pub fn stability(result: &Stability, sites: &[String]) -> String {
         )
         .ok();
     }
+    if !result.diverging.is_empty() {
+        let growing: Vec<&crate::analysis::modal::OverdampedRoot> =
+            result.diverging.iter().collect();
+        s.push_str(&static_divergence(&growing));
+        writeln!(
+            s,
+            "unstable without cross-coupling: the rotor is statically unstable at {} rpm (threshold Q = 0)",
+            short(result.speed.abs() * RAD_S_TO_RPM)
+        )
+        .ok();
+    }
     match (result.threshold, &result.threshold_mode) {
+        _ if !result.diverging.is_empty() => {}
         (Some(0.0), Some(m)) if m.is_undamped() => {
             writeln!(
                 s,

@@ -219,13 +219,16 @@ pub fn modes(name: &str, rpm: f64, modes: &[Mode]) -> String {
 /// decay rate `−Re λ` (1/s) and time constant of each, or nothing when there
 /// are none.
 pub fn overdamped_roots(roots: &[OverdampedRoot]) -> String {
-    if roots.is_empty() {
-        return String::new();
+    let (growing, decaying): (Vec<&OverdampedRoot>, Vec<&OverdampedRoot>) =
+        roots.iter().partition(|r| r.is_growing());
+    let mut s = static_divergence(&growing);
+    if decaying.is_empty() {
+        return s;
     }
-    let mut s = format!(
+    s.push_str(&format!(
         "non-oscillating (overdamped) roots, not modes (ζ ≥ {NON_OSCILLATING_DAMPING_RATIO}, not counted in --modes):\n  decay rate (1/s)  time constant (s)\n"
-    );
-    for r in roots {
+    ));
+    for r in decaying {
         writeln!(
             s,
             "  {:>16} {:>18}",
@@ -237,10 +240,55 @@ pub fn overdamped_roots(roots: &[OverdampedRoot]) -> String {
     s
 }
 
+/// The growing non-oscillating roots of a linearization, as what they are:
+/// a static divergence, never "overdamped roots" (nothing when none).
+pub fn static_divergence(growing: &[&OverdampedRoot]) -> String {
+    if growing.is_empty() {
+        return String::new();
+    }
+    let mut s = format!(
+        "STATICALLY UNSTABLE: {} non-oscillating root(s) grow (divergence): the equilibrium this linearization is taken about is not one the bearings can hold (a magnetic pull stiffer than its unloaded films, a negative-stiffness seal); the transient leaves it\n  growth rate (1/s)  doubling time (s)\n",
+        growing.len()
+    );
+    for r in growing {
+        writeln!(
+            s,
+            "  {:>17} {:>17}",
+            short(-r.decay_rate()),
+            short(std::f64::consts::LN_2 / -r.decay_rate())
+        )
+        .ok();
+    }
+    s
+}
+
 /// How many non-oscillating roots the speeds of a Campbell diagram had (they
 /// are not branches), or nothing when none.
 pub fn overdamped_summary(diagram: &[CampbellPoint]) -> String {
-    let counts: Vec<usize> = diagram.iter().map(|p| p.overdamped.len()).collect();
+    // Growing roots first: speeds at which the linearization diverges.
+    let unstable: Vec<&CampbellPoint> = diagram
+        .iter()
+        .filter(|p| p.overdamped.iter().any(|r| r.is_growing()))
+        .collect();
+    let mut divergence = String::new();
+    if let (Some(first), Some(last)) = (unstable.first(), unstable.last()) {
+        divergence = format!(
+            "STATICALLY UNSTABLE at {} of {} speeds ({} to {} rpm): a non-oscillating root grows (divergence), the linearization's equilibrium is not one the bearings can hold; the modes there describe no running machine\n",
+            unstable.len(),
+            diagram.len(),
+            short(first.speed * RAD_S_TO_RPM),
+            short(last.speed * RAD_S_TO_RPM)
+        );
+    }
+    divergence + &decaying_summary(diagram)
+}
+
+/// How many decaying non-oscillating roots the speeds had.
+fn decaying_summary(diagram: &[CampbellPoint]) -> String {
+    let counts: Vec<usize> = diagram
+        .iter()
+        .map(|p| p.overdamped.iter().filter(|r| !r.is_growing()).count())
+        .collect();
     let (lo, hi) = (
         counts.iter().copied().min().unwrap_or(0),
         counts.iter().copied().max().unwrap_or(0),
