@@ -111,3 +111,103 @@ fn a_statically_unstable_linearization_is_flagged_not_called_overdamped() {
         }
     }
 }
+
+/// A 1 m, 50 mm steel shaft with a 40 kg disk at a third of its span (its
+/// gyroscopic moment splits the forward and backward bending modes) on
+/// linear bearings, `kxx`/`kyy` (N/m) and 500 N·s/m, unbalanced at the disk.
+fn overhung_disk(kxx: f64, kyy: f64) -> Rotor {
+    let text = format!(
+        r#"
+name = "split"
+speed_rpm = 3000
+max_speed_rpm = 6000
+[[materials]]
+name = "steel"
+youngs_modulus = 211e9
+shear_modulus = 81.2e9
+density = 7810.0
+[[shaft]]
+length = 1.0
+outer_diameter = 0.05
+material = "steel"
+elements = 9
+[[disks]]
+name = "disk"
+node = 4
+mass = 40.0
+polar_inertia = 0.8
+diametral_inertia = 0.4
+[[bearings]]
+name = "a"
+type = "linear"
+node = 1
+kxx = {kxx}
+kyy = {kyy}
+cxx = 500.0
+cyy = 500.0
+[[bearings]]
+name = "b"
+type = "linear"
+node = 10
+kxx = {kxx}
+kyy = {kyy}
+cxx = 500.0
+cyy = 500.0
+[[unbalance]]
+name = "disk"
+node = 4
+magnitude = 1e-3
+[[probes]]
+name = "disk"
+node = 4
+"#
+    );
+    Rotor::new(RotorModel::from_toml(&text, "split.toml").unwrap()).unwrap()
+}
+
+/// API 684 judgement of backward crossings: with the operating speed set on
+/// the first backward critical speed (no separation at all), the rotor on
+/// isotropic bearings passes it — unbalance does not excite a circular
+/// backward whirl, and its response has no peak there — while the same rotor
+/// on anisotropic bearings (elliptic backward orbits) has a peak there and
+/// fails. Forward criticals are judged as before.
+#[test]
+fn a_backward_crossing_without_an_unbalance_peak_passes_its_margin() {
+    use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
+    use rotor_bearing::analysis::modal::Whirl;
+    use rotor_bearing::analysis::unbalance::OperatingRange;
+    for (kxx, kyy, excited) in [(2e7, 2e7, false), (0.5e7, 4e7, true)] {
+        let rotor = overhung_disk(kxx, kyy);
+        let first = campbell_study(&rotor, &CampbellRequest::default_for(None)).unwrap();
+        let backward = first
+            .criticals
+            .iter()
+            .find(|c| c.whirl == Whirl::Backward && !c.is_overdamped())
+            .unwrap_or_else(|| panic!("no backward critical: {:?}", first.criticals))
+            .speed;
+        let at = OperatingRange {
+            min: backward,
+            max: backward,
+        };
+        let study = campbell_study(&rotor, &CampbellRequest::default_for(Some(at))).unwrap();
+        let margin = study
+            .margins
+            .iter()
+            .find(|m| (m.critical.speed - backward).abs() <= 1e-9 * backward)
+            .unwrap();
+        assert_eq!(margin.unbalance_peak, Some(excited), "kxx {kxx}, kyy {kyy}");
+        let judged = margin.margin.unwrap();
+        assert_eq!(judged.pass, !excited, "kxx {kxx}, kyy {kyy}: {judged:?}");
+        assert!(
+            judged.required.is_some(),
+            "a lightly damped mode needs a margin"
+        );
+        for m in study
+            .margins
+            .iter()
+            .filter(|m| m.critical.whirl != Whirl::Backward)
+        {
+            assert_eq!(m.unbalance_peak, None);
+        }
+    }
+}

@@ -34,6 +34,7 @@ pub fn speed_grid(rotor: &Rotor, top: f64, steps: usize) -> Vec<f64> {
         .collect()
 }
 
+use super::backward_crossing::unbalance_peak_at;
 use super::critical_refine::{Bracket, Known, Refined, refine};
 use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis_at};
 use super::mode_tracking::{link, translations};
@@ -120,6 +121,10 @@ pub struct CriticalMargin {
     /// `(Nc − N_max)/N_max` from the maximum (trip or runaway) speed, when the
     /// model states one: positive when the critical lies above it.
     pub from_max_speed: Option<f64>,
+    /// For a backward-whirl critical, whether the unbalance response peaks
+    /// there ([`unbalance_peak_at`]); one without a peak passes its margin
+    /// (API 684). `None` for forward and mixed whirl, or when not known.
+    pub unbalance_peak: Option<bool>,
 }
 
 /// The critical speeds of `criticals` that are not overdamped crossings,
@@ -145,6 +150,7 @@ pub fn critical_margins(
                 amplification_factor: af,
                 margin: range.map(|r| separation_margin(c.speed, af, r)),
                 from_max_speed: max_speed.map(|m| (c.speed - m) / m),
+                unbalance_peak: None,
             }
         })
         .collect()
@@ -467,7 +473,17 @@ pub fn campbell_study(
     };
     let model = &rotor.model;
     let max_speed = model.max_speed_stated.then_some(model.max_speed);
-    let margins = critical_margins(&criticals, request.operating.as_ref(), max_speed);
+    let mut margins = critical_margins(&criticals, request.operating.as_ref(), max_speed);
+    // A backward crossing that unbalance does not excite is listed, not judged.
+    for m in &mut margins {
+        if m.critical.whirl != Whirl::Backward {
+            continue;
+        }
+        m.unbalance_peak = unbalance_peak_at(rotor, m.critical.speed, m.critical.damping_ratio);
+        if let (Some(false), Some(sm)) = (m.unbalance_peak, m.margin.as_mut()) {
+            sm.pass = true;
+        }
+    }
     let torsional = if model.models_torsion() {
         torsional_modes(model, request.modes)
             .map_err(|source| ModalError::Linalg { speed: 0.0, source })?

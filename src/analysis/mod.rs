@@ -3,6 +3,7 @@
 //! them: unbalance sweeps with peaks and separation margins, bearing operating
 //! points, mode-shape orbits, cross-coupling stability and the critical speed map.
 
+pub mod backward_crossing;
 pub mod campbell;
 mod critical_refine;
 pub mod forced;

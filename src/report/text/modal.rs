@@ -318,7 +318,12 @@ pub fn margin_cells(m: &CriticalMargin) -> [String; 6] {
             sm.required
                 .map_or("none".to_string(), |r| format!("{:.1} %", 100.0 * r)),
             format!("{:.1} %", 100.0 * sm.actual),
-            if sm.pass { "pass" } else { "FAIL" },
+            match (sm.pass, m.unbalance_peak) {
+                // API 684: a backward crossing unbalance does not excite.
+                (true, Some(false)) => "pass (backward, no unbalance peak)",
+                (true, _) => "pass",
+                (false, _) => "FAIL",
+            },
         ),
         None => ("—".into(), "—".into(), "not judged"),
     };
