@@ -15,6 +15,7 @@ pub mod operating_point;
 pub mod orbit;
 pub mod parallel;
 mod polish;
+pub mod ring_down;
 pub mod shapes;
 pub mod spectrum;
 pub mod speed_range;

@@ -4,6 +4,7 @@
 
 use std::path::PathBuf;
 
+use rotor_bearing::analysis::ring_down::{RingDown, ring_down};
 use rotor_bearing::analysis::stability::{
     StabilityRequest, StageData, mid_span_node, site_label, stability_study,
 };
@@ -23,6 +24,8 @@ pub struct Request {
     pub stages: Option<StageData>,
     pub csv: Option<PathBuf>,
     pub png: Option<PathBuf>,
+    /// Ring the least-damped modes down in the nonlinear transient.
+    pub verify: bool,
 }
 
 /// `--at 6,9` or `--at impeller,runner`: node numbers (from 1) or disk names,
@@ -120,8 +123,31 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     if req.at.is_none() {
         placement_note(rotor, &request, &result)?;
     }
+    if req.verify {
+        let checks = verify(rotor, result.speed, &result.modes)?;
+        print!("{}", text::ring_downs(&checks));
+    }
     Ok(())
 }
+
+/// The three least-damped oscillating modes rung down in the transient.
+fn verify(
+    rotor: &Rotor,
+    speed: f64,
+    modes: &[rotor_bearing::analysis::modal::Mode],
+) -> Result<Vec<RingDown>, String> {
+    let mut least: Vec<_> = modes.iter().collect();
+    least.sort_by(|a, b| a.log_decrement.total_cmp(&b.log_decrement));
+    least
+        .into_iter()
+        .take(VERIFIED_MODES)
+        .map(|m| ring_down(rotor, speed, m, VERIFY_PERIODS).map_err(|e| e.to_string()))
+        .collect()
+}
+
+/// Modes `--verify` rings down, and over how many periods.
+const VERIFIED_MODES: usize = 3;
+const VERIFY_PERIODS: usize = 12;
 
 /// Where the default cross-coupling acts changed on 2026-12-01 (ff560cb):
 /// from the node nearest mid-span to the disks and seals. When the two

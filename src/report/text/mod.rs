@@ -15,6 +15,7 @@ use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
 
 mod modal;
+mod ring_down;
 mod summary;
 mod unbalance;
 
@@ -22,6 +23,7 @@ pub use modal::{
     ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
     overdamped_roots, overdamped_summary, static_divergence, torsional_modes, zeta_and_log_dec,
 };
+pub use ring_down::{RING_DOWN_AGREEMENT, ring_downs};
 pub use summary::model_summary;
 pub use unbalance::{peak_cells, peak_table, unbalance_study};
 
