@@ -111,7 +111,7 @@ fn a_load_sweep_reports_every_load_and_follows_the_oracle_branch() {
         // A sweep up to the oracle's load: every point is reported, solved or not,
         // and the last one lands on the oracle's equilibrium.
         let loads: Vec<f64> = (1..=6).map(|i| load * i as f64 / 6.0).collect();
-        let points = coefficient_points(&b, w, b.clearance, &loads);
+        let points = coefficient_points(&b, (w, w), b.clearance, &loads);
         assert_eq!(points.len(), loads.len(), "{name}: a load was dropped");
         let (last_load, last) = points.last().unwrap();
         assert_eq!(*last_load, load);

@@ -24,3 +24,4 @@ pub mod torsion;
 mod torsion_damped;
 pub mod ucs;
 pub mod unbalance;
+pub mod whirl_modes;

@@ -31,9 +31,12 @@
 use crate::fe::{DOF_X, DOF_Y};
 use crate::rotor::{AssemblyError, Rotor};
 
-use super::linearize::{LinearizeError, linearized};
+type C64 = nalgebra::Complex<f64>;
+
+use super::linearize::{LinearizeError, linearized_from};
 use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis, modes};
 use super::operating_point::{OperatingPointError, operating_point};
+use super::whirl_modes::{coefficients_at, own_frequency, with_pads};
 
 /// Why a stability check failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -386,13 +389,26 @@ pub fn stability_study(
             rotor.model.node_count()
         )));
     }
-    let linear = linearized(rotor, speed, speed)?;
+    let (linear, equilibrium) = linearized_from(rotor, speed, speed, None)?;
+    // Tilting pads: every mode with the pads condensed at its own eigenvalue
+    // (the pad tilts as coordinates of the eigenproblem, [`own_frequency`]).
+    let pads = with_pads(equilibrium);
     let options = ModalOptions {
         modes: count,
         ..ModalOptions::default()
     };
     let analysis = modal_analysis(&linear, speed, &options)?;
-    let at_zero = analysis.modes;
+    let mut at_zero = analysis.modes;
+    if let Some(eq) = &pads {
+        let linear_at = |s: C64| -> Result<Rotor, StabilityError> {
+            Ok(rotor.with_bearing_coefficients(&coefficients_at(eq, s))?)
+        };
+        at_zero = at_zero
+            .into_iter()
+            .map(|m| own_frequency(&linear_at, speed, m))
+            .collect::<Result<_, _>>()?;
+        at_zero.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
+    }
     // A growing non-oscillating root: statically unstable without any
     // cross-coupling, whatever the forward modes' log decrements say.
     let diverging: Vec<OverdampedRoot> = analysis
@@ -401,7 +417,35 @@ pub fn stability_study(
         .filter(OverdampedRoot::is_growing)
         .collect();
     let forward = |q: f64| -> Result<Mode, StabilityError> {
-        least_stable_forward(&with_cross_coupling(&linear, &sites, q)?, speed, count)
+        let coupled = with_cross_coupling(&linear, &sites, q)?;
+        let Some(eq) = &pads else {
+            return least_stable_forward(&coupled, speed, count);
+        };
+        let linear_at = |s: C64| -> Result<Rotor, StabilityError> {
+            with_cross_coupling(
+                &rotor.with_bearing_coefficients(&coefficients_at(eq, s))?,
+                &sites,
+                q,
+            )
+        };
+        let mut least: Option<Mode> = None;
+        for m in modes(&coupled, speed, &options)?
+            .into_iter()
+            .filter(|m| m.whirl == Whirl::Forward)
+        {
+            let m = own_frequency(&linear_at, speed, m)?;
+            if least
+                .as_ref()
+                .is_none_or(|l| m.log_decrement < l.log_decrement)
+            {
+                least = Some(m);
+            }
+        }
+        least.ok_or_else(|| {
+            StabilityError::Options(format!(
+                "no forward mode among the first {count} at {speed} rad/s (a spinning rotor is needed: give a speed)"
+            ))
+        })
     };
     let mut curve = Vec::with_capacity(points);
     for k in 0..points {

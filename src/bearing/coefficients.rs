@@ -52,18 +52,19 @@ pub fn load_sweep(k0: f64, points: usize) -> Vec<f64> {
 }
 
 /// Dimensionless coefficients of the fluid-film bearing `kind` at spin `speed`
-/// (rad/s) over [`load_sweep`] of `points` loads, each load (N) with its point
-/// or the reason it has no equilibrium (never dropped). `None` for a linear
-/// bearing (its coefficients are constant).
+/// (rad/s), pad tilts condensed for whirl at `whirl` (rad/s; `speed` for the
+/// synchronous ones), over [`load_sweep`] of `points` loads, each load (N)
+/// with its point or the reason it has no equilibrium (never dropped). `None`
+/// for a linear bearing (its coefficients are constant).
 pub fn dimensionless_curve(
     kind: &BearingKind,
-    speed: f64,
+    (speed, whirl): (f64, f64),
     points: usize,
 ) -> Option<Vec<(f64, Result<DimensionlessPoint, EquilibriumError>)>> {
     let film = kind.film_geometry()?;
     let loads = load_sweep(film.load_scale(speed), points);
     let bearing = kind.build();
-    let curve = coefficient_points(bearing.as_ref(), speed, film.clearance, &loads);
+    let curve = coefficient_points(bearing.as_ref(), (speed, whirl), film.clearance, &loads);
     Some(
         curve
             .into_iter()
@@ -101,7 +102,7 @@ mod tests {
             viscosity: 0.02,
             contact: None,
         });
-        let curve: Vec<DimensionlessPoint> = dimensionless_curve(&kind, 314.159, 12)
+        let curve: Vec<DimensionlessPoint> = dimensionless_curve(&kind, (314.159, 314.159), 12)
             .unwrap()
             .into_iter()
             .map(|(w, p)| p.unwrap_or_else(|e| panic!("{w} N: {e}")))
@@ -124,6 +125,6 @@ mod tests {
             stiffness: [[1e7, 0.0], [0.0, 1e7]],
             damping: [[0.0; 2]; 2],
         };
-        assert!(dimensionless_curve(&linear, 314.159, 12).is_none());
+        assert!(dimensionless_curve(&linear, (314.159, 314.159), 12).is_none());
     }
 }

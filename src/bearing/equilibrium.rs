@@ -270,6 +270,34 @@ pub fn condensed_coefficients(eval: &BearingEval, frequency: f64) -> (Matrix2<f6
     }
 }
 
+/// Stiffness and damping of a bearing whose internal coordinates (pad
+/// tilts, massless) are condensed at the complex frequency `s` (1/s) of a
+/// mode, `λ = σ + iω`: `Z(s) = K + sC`, `Z_red = Z_jj − Z_jp Z_pp⁻¹ Z_pj`,
+/// and the one real pair with `K_eff + s C_eff = Z_red(s)`:
+/// `C_eff = Im Z_red / ω`, `K_eff = Re Z_red − σ C_eff`. A mode computed
+/// with them at its own eigenvalue is a mode of the rotor with the pads as
+/// coordinates (the reduction is exact at `s`); at `s = iΩ` this is
+/// [`condensed_coefficients`] at `Ω`, bit for bit.
+pub fn condensed_at(eval: &BearingEval, s: Complex<f64>) -> (Matrix2<f64>, Matrix2<f64>) {
+    let n = eval.n();
+    if n == 2 || s.im == 0.0 {
+        return condensed_coefficients(eval, s.im);
+    }
+    let z = DMatrix::from_fn(n, n, |i, j| {
+        Complex::new(eval.k(i, j) + s.re * eval.c(i, j), s.im * eval.c(i, j))
+    });
+    let zpp = z.view((2, 2), (n - 2, n - 2)).into_owned();
+    let zpj = z.view((2, 0), (n - 2, 2)).into_owned();
+    let zjp = z.view((0, 2), (2, n - 2)).into_owned();
+    let Some(x) = zpp.lu().solve(&zpj) else {
+        return condensed_coefficients(eval, s.im);
+    };
+    let red = z.view((0, 0), (2, 2)).into_owned() - zjp * x;
+    let c = Matrix2::from_fn(|i, j| red[(i, j)].im / s.im);
+    let k = Matrix2::from_fn(|i, j| red[(i, j)].re - s.re * c[(i, j)]);
+    (k, c)
+}
+
 /// A point of a bearing's coefficient curve: equilibrium under a load along −y
 /// and the linearized coefficients there (internal coordinates condensed
 /// synchronously).
@@ -288,12 +316,13 @@ pub struct CoefficientPoint {
 }
 
 /// Equilibrium and coefficients at every load of `loads` (N, along −y) at spin
-/// `speed`, each load continued from the previous equilibrium (a fresh
-/// [`journal_equilibrium`] when that fails). Every load is returned with its
-/// point or the reason it has none.
+/// `speed`, internal coordinates (pad tilts) condensed for whirl at `whirl`
+/// (rad/s; `speed` for the synchronous coefficients), each load continued
+/// from the previous equilibrium (a fresh [`journal_equilibrium`] when that
+/// fails). Every load is returned with its point or the reason it has none.
 pub fn coefficient_points(
     bearing: &dyn Bearing,
-    speed: f64,
+    (speed, whirl): (f64, f64),
     scale: f64,
     loads: &[f64],
 ) -> Vec<(f64, Result<CoefficientPoint, EquilibriumError>)> {
@@ -310,7 +339,7 @@ pub fn coefficient_points(
                 _ => journal_equilibrium(bearing, load, speed, scale),
             };
             let point = eq.map(|eq| {
-                let (stiffness, damping) = condensed_coefficients(&eq.eval, speed);
+                let (stiffness, damping) = condensed_coefficients(&eq.eval, whirl);
                 let report = bearing.report(&eq.q, &vec![0.0; eq.q.len()], speed, &eq.eval);
                 previous = Some(eq.q);
                 CoefficientPoint {

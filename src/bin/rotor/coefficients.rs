@@ -23,7 +23,7 @@ const REFERENCE_BEARING: PlainBearing = PlainBearing {
 pub fn coefficients(
     model: Option<PathBuf>,
     bearing: Option<String>,
-    rpm: f64,
+    (rpm, whirl_hz): (f64, Option<f64>),
     points: usize,
     csv: Option<PathBuf>,
     png: Option<PathBuf>,
@@ -60,7 +60,16 @@ pub fn coefficients(
         }
     };
     let speed = rpm / RAD_S_TO_RPM;
-    let Some(sweep) = dimensionless_curve(&kind, speed, points) else {
+    let whirl = match whirl_hz {
+        None => speed,
+        Some(hz) if hz.is_finite() && hz >= 0.0 => hz * std::f64::consts::TAU,
+        Some(hz) => {
+            return Err(format!(
+                "--whirl-frequency must be a frequency ≥ 0 Hz, got {hz}"
+            ));
+        }
+    };
+    let Some(sweep) = dimensionless_curve(&kind, (speed, whirl), points) else {
         return Err(format!("{label} is linear: its coefficients are constant"));
     };
     let mut curve = Vec::with_capacity(sweep.len());
@@ -73,7 +82,12 @@ pub fn coefficients(
     if curve.len() < 2 {
         return Err(format!("{label}: fewer than two equilibria found"));
     }
-    let mut out = format!("{label} at {rpm} rpm (load along −y; K̄ = K C/W, C̄ = C ω C/W):\n");
+    let condensed = match whirl_hz {
+        None => "pads condensed at the running speed (synchronous)".to_string(),
+        Some(hz) => format!("pads condensed at a whirl of {hz} Hz"),
+    };
+    let mut out =
+        format!("{label} at {rpm} rpm, {condensed} (load along −y; K̄ = K C/W, C̄ = C ω C/W):\n");
     out.push_str(
         "    ε     φ (°)     K̄xx     K̄xy     K̄yx     K̄yy     C̄xx     C̄xy     C̄yx     C̄yy\n",
     );

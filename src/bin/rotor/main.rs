@@ -214,6 +214,10 @@ enum Command {
         /// Spin speed (rpm).
         #[arg(long, default_value_t = 3000.0)]
         rpm: f64,
+        /// Whirl frequency (Hz) the pad tilts of a tilting-pad bearing are
+        /// condensed at; default the running speed (synchronous coefficients).
+        #[arg(long)]
+        whirl_frequency: Option<f64>,
         /// Number of load steps.
         #[arg(long, default_value_t = 60)]
         points: usize,
@@ -521,10 +525,11 @@ fn run(cli: Cli) -> Result<(), String> {
             model,
             bearing,
             rpm,
+            whirl_frequency,
             points,
             csv,
             png,
-        } => coefficients::coefficients(model, bearing, rpm, points, csv, png),
+        } => coefficients::coefficients(model, bearing, (rpm, whirl_frequency), points, csv, png),
         Command::Response {
             model,
             force,

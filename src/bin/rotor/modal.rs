@@ -4,8 +4,9 @@ use rotor_bearing::analysis::torsion::torsional_modes;
 use std::path::PathBuf;
 
 use rotor_bearing::analysis::campbell::{self, campbell_study};
-use rotor_bearing::analysis::modal::{ModalOptions, modal_analysis_at};
+use rotor_bearing::analysis::modal::ModalOptions;
 use rotor_bearing::analysis::unbalance::{OperatingRange, model_operating_range};
+use rotor_bearing::analysis::whirl_modes::modal_analysis_own;
 use rotor_bearing::plot::{RAD_S_TO_RPM, campbell_png, mode_shapes_png};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
@@ -34,7 +35,7 @@ pub fn modes(
         modes: count,
         ..ModalOptions::default()
     };
-    let result = modal_analysis_at(rotor, speed, &options).map_err(|e| e.to_string())?;
+    let result = modal_analysis_own(rotor, speed, &options).map_err(|e| e.to_string())?;
     let ms = &result.modes;
     let mut out = text::modes(&rotor.model.name, rpm, ms);
     out.push_str(&text::overdamped_roots(&result.overdamped));

@@ -10,7 +10,7 @@
 use std::path::{Path, PathBuf};
 
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
-use rotor_bearing::analysis::modal::{ModalOptions, modal_analysis_at};
+use rotor_bearing::analysis::modal::ModalOptions;
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::analysis::speed_range::default_top_speed;
 use rotor_bearing::analysis::stability::{
@@ -23,6 +23,7 @@ use rotor_bearing::analysis::ucs::{
 use rotor_bearing::analysis::unbalance::{
     DEFAULT_POINTS, OperatingRange, UnbalanceRequest, unbalance_study, with_unbalance_at,
 };
+use rotor_bearing::analysis::whirl_modes::modal_analysis_own;
 use rotor_bearing::model::DEFAULT_MODEL_TOML;
 use rotor_bearing::plot::{
     PlotError, RAD_S_TO_RPM, campbell_png, mode_shapes_png, rotor_png, stability_png, ucs_png,
@@ -162,7 +163,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         modes: 8,
         ..ModalOptions::default()
     };
-    let modes = modal_analysis_at(rotor, speed, &options).map_err(|e| err(&e));
+    let modes = modal_analysis_own(rotor, speed, &options).map_err(|e| err(&e));
     let stability = stability_study(
         rotor,
         &StabilityRequest {
