@@ -327,8 +327,18 @@ fn inputs_have_a_physical_range_and_implausible_displacements_warn() {
             _ => None,
         };
         if let Some((lo, hi)) = expected {
-            let low = if lo == 0.0 { v.min == Some(0.0) } else { close(v.min, lo) };
-            assert!(low && close(v.max, hi), "{}: {:?} {:?}", v.name, v.min, v.max);
+            let low = if lo == 0.0 {
+                v.min == Some(0.0)
+            } else {
+                close(v.min, lo)
+            };
+            assert!(
+                low && close(v.max, hi),
+                "{}: {:?} {:?}",
+                v.name,
+                v.min,
+                v.max
+            );
         }
     }
     let mut fmu = Instance::new("d7", m.clone()).unwrap();
