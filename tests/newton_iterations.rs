@@ -183,7 +183,7 @@ fn every_shipped_model_takes_at_most_three_iterations_a_step() {
 #[test]
 fn the_runs_not_yet_at_the_target_keep_the_rules_gain() {
     let bound = |name: &str, field: Option<f64>| match (name, field) {
-        ("hydro_unit_brackets", Some(f)) if f == 0.0 => BRACKETS_OFF,
+        ("hydro_unit_brackets", Some(0.0)) => BRACKETS_OFF,
         ("hydro_unit_brackets", _) => BRACKETS_ON,
         ("vertical_rotor", _) => VERTICAL_PLAIN,
         _ => VERTICAL_PADS,
