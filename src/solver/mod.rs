@@ -71,6 +71,7 @@ pub mod reduction_check;
 pub mod run;
 mod simulator;
 mod sites;
+mod slow_pads;
 mod state;
 mod static_stability;
 pub mod statics;

@@ -11,6 +11,7 @@ use super::line_search::{Backtrack, Trial, condensed_residual, retreat};
 use super::newmark::{Displacement, newmark_rates};
 use super::simulator::{Simulator, SolverError};
 use super::sites::Sites;
+use super::slow_pads::SlowPads;
 
 /// Schur solve of a factored `A` bordered by the frozen bearing blocks, on the
 /// `s = s_j + s_p` bearing DOFs (journal, then pad).
@@ -253,6 +254,8 @@ pub(super) struct CondensedWork {
     cj_rhs: Vec<f64>,
     /// The last increment, its line search and the stall count.
     search: Backtrack,
+    /// The pads' previous increments, for the slow-contraction rule.
+    slow: SlowPads,
     /// Whether the last step ended on its iterate: the next step's first
     /// chord iteration then also makes the bearings' reports
     /// (`Bearing::output`), which such a step's outputs take. Either pass gives
@@ -267,6 +270,7 @@ impl CondensedWork {
         Self {
             j: vec![0.0; n_journal],
             search: Backtrack::new(n_journal, sites.n_internal),
+            slow: SlowPads::new(sites.n_internal),
             fj: vec![0.0; n_journal],
             wv: vec![0.0; n_journal],
             kc: vec![0.0; 2 * n_journal],
@@ -331,9 +335,13 @@ impl Simulator {
         let mut last = f64::INFINITY;
         let (mut chord, mut chord_allowed) = (false, true);
         let mut first_chord = true;
+        // The slow-contraction rule moved a pad at the last iteration: the
+        // contraction of the next increment says nothing about the error left.
+        let mut moved = false;
         let report_ahead = self.condensed.last_on_iterate;
         self.condensed.last_on_iterate = false;
         self.condensed.search.reset();
+        self.condensed.slow.reset();
         for _ in 0..self.options.max_iterations {
             self.stats.iterations += 1;
             // The step's first chord iteration keeps its force pass (with the
@@ -470,7 +478,7 @@ impl Simulator {
                 *p += d;
             }
             c.search.stepped(residual);
-            if converged(increment, last, tol, damped)
+            if converged(increment, last, tol, damped || moved)
                 && (!chord || chord_converged(increment, last, tol))
             {
                 // u = u_lin + A⁻¹ E F_j with the first-order journal forces.
@@ -482,6 +490,18 @@ impl Simulator {
                 self.displacement_from_journal_forces(h, f);
                 return Ok(None);
             }
+            // Pads converging linearly (near a double root) move on by their
+            // extrapolated tail when the iteration contracts slowly.
+            let contraction = if chord || damped {
+                0.0
+            } else {
+                increment / last
+            };
+            let count = c
+                .slow
+                .extrapolate(&c.search.internal, &mut w.p, contraction);
+            self.stats.extrapolations += count;
+            moved = count > 0;
             chord =
                 self.sites.cheap_forces && keeps_jacobians(increment, last, chord_allowed, damped);
             last = increment;

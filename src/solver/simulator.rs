@@ -104,6 +104,9 @@ pub struct StepStats {
     /// Bearing outputs `Simulator::outputs` took from the last step's pass
     /// instead of evaluating them.
     pub outputs_recalled: usize,
+    /// Pad tilts moved on by their extrapolated tail where the condensed
+    /// Newton contracted slowly (`solver::slow_pads`).
+    pub extrapolations: usize,
     /// Step halvings.
     pub step_cuts: usize,
     /// Steps solved again by the damped Newton after plain Newton failed.

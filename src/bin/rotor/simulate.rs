@@ -20,7 +20,7 @@ use rotor_bearing::solver::time_step::{
     ADAPTIVE_STEPS_PER_REVOLUTION, MAX_ADAPTIVE_TIME_STEP, MAX_DEFAULT_TIME_STEP,
     STEPS_PER_REVOLUTION,
 };
-use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, record_into};
+use rotor_bearing::solver::{Simulator, SolverOptions, SpeedProfile, StepStats, record_into};
 use rotor_bearing::units::Amplitude;
 
 use crate::write_file;
@@ -331,12 +331,14 @@ pub fn simulate(
         ));
     }
     eprintln!(
-        "{}simulated {} s of {} in {:.4} s wall-clock ({:?})",
+        "{}{}",
         if terminal { "\r" } else { "" },
-        duration,
-        model.name,
-        started.elapsed().as_secs_f64(),
-        sim.stats()
+        run_line(
+            duration,
+            &model.name,
+            started.elapsed().as_secs_f64(),
+            &sim.stats()
+        )
     );
     excursions.warn(&model.name, full.as_ref(), sim.rotor());
     match &csv {
@@ -475,4 +477,80 @@ pub fn simulate(
         print!("{out}");
     }
     Ok(())
+}
+
+/// The run's summary line: `simulated D s of NAME in W s wall-clock` (the
+/// prefix `bench/ross_compare.py` reads), the real-time factor `D / W`,
+/// then the steps, Newton iterations a step, factorizations (recalled ones
+/// besides), step cuts, and damped retries and rejected steps when there
+/// were any.
+fn run_line(duration: f64, name: &str, wall: f64, stats: &StepStats) -> String {
+    let plural =
+        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
+    let per_step = stats.iterations as f64 / stats.steps.max(1) as f64;
+    let mut line = format!(
+        "simulated {duration} s of {name} in {wall:.4} s wall-clock, {:.1}x real time: {}, {per_step:.2} Newton iterations a step, {}",
+        duration / wall,
+        plural(stats.steps, "step", "steps"),
+        plural(stats.factorizations, "factorization", "factorizations"),
+    );
+    if stats.factors_recalled > 0 {
+        line += &format!(" (+{} recalled)", stats.factors_recalled);
+    }
+    line += &format!(", {}", plural(stats.step_cuts, "step cut", "step cuts"));
+    if stats.retries > 0 {
+        line += &format!(
+            ", {}",
+            plural(stats.retries, "damped retry", "damped retries")
+        );
+    }
+    if stats.rejections > 0 {
+        line += &format!(
+            ", {}",
+            plural(stats.rejections, "rejected step", "rejected steps")
+        );
+    }
+    line
+}
+
+#[cfg(test)]
+mod tests {
+    use super::run_line;
+    use rotor_bearing::solver::StepStats;
+
+    /// One readable line, not a `Debug` dump; the counts as given, the
+    /// iterations a step and the real-time factor worked out.
+    #[test]
+    fn the_run_line_reads_as_a_sentence() {
+        let stats = StepStats {
+            steps: 5000,
+            iterations: 72730,
+            factorizations: 1,
+            ..StepStats::default()
+        };
+        assert_eq!(
+            run_line(10.0, "hydro_unit_brackets", 0.25, &stats),
+            "simulated 10 s of hydro_unit_brackets in 0.2500 s wall-clock, 40.0x real time: \
+             5000 steps, 14.55 Newton iterations a step, 1 factorization, 0 step cuts"
+        );
+        let stats = StepStats {
+            steps: 591,
+            iterations: 8025,
+            factorizations: 59,
+            factors_recalled: 76,
+            step_cuts: 1,
+            retries: 2,
+            rejections: 17,
+            ..StepStats::default()
+        };
+        let line = run_line(2.0, "m", 4.0, &stats);
+        assert!(
+            line.ends_with(
+                "0.5x real time: 591 steps, 13.58 Newton iterations a step, \
+             59 factorizations (+76 recalled), 1 step cut, 2 damped retries, 17 rejected steps"
+            ),
+            "{line}"
+        );
+        assert!(!line.contains("StepStats"));
+    }
 }
