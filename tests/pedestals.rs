@@ -480,6 +480,23 @@ fn hydro_unit_brackets() -> RotorModel {
 /// (overdamped pad roots; with the field on, a slow real root that the
 /// synchronously condensed pads give the pull's zero-frequency mode) left
 /// out.
+/// As [`first_forward_hz`], each mode with the tilting pads condensed at its
+/// own eigenvalue (what `rotor modes` lists).
+fn first_forward_hz_own(model: RotorModel, rpm: f64) -> f64 {
+    use rotor_bearing::analysis::modal::Whirl;
+    let rotor = Rotor::new(model).unwrap();
+    let options = ModalOptions {
+        modes: 12,
+        target_frequency: 0.0,
+    };
+    rotor_bearing::analysis::whirl_modes::modes_at_own_frequency(&rotor, rpm * RPM, &options)
+        .unwrap()
+        .iter()
+        .filter(|m| m.whirl == Whirl::Forward && m.damping_ratio.abs() < 0.5)
+        .map(|m| m.damped_frequency / std::f64::consts::TAU)
+        .fold(f64::INFINITY, f64::min)
+}
+
 fn first_forward_hz(model: RotorModel, rpm: f64) -> f64 {
     use rotor_bearing::analysis::modal::Whirl;
     let rotor = Rotor::new(model).unwrap();
@@ -638,7 +655,8 @@ fn the_excitation_option_sets_every_magnetic_pull() {
             .fold(f64::INFINITY, f64::min)
     };
     for (args, on) in [(vec!["--excitation", "1"], true), (vec![], false)] {
-        let want = first_forward_hz(hydro_field(on), 300.0);
+        // `rotor modes` lists each mode with its pads at its own frequency.
+        let want = first_forward_hz_own(hydro_field(on), 300.0);
         let got = printed(&run(&args));
         assert!(
             (got - want).abs() < 1e-4,

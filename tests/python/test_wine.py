@@ -73,6 +73,15 @@ SHAFT_TORQUE_TOLERANCE = 1e-8
 # differ by 2e-11).
 ROUNDOFF = 1e-14
 ROUNDOFF_FACTOR = 3.0
+# The unit on brackets' run-up passes its nearly unloaded pads through the
+# slow-contraction rule of docs/solver.md (solver/slow_pads.rs), whose choice
+# to extrapolate a pad follows the last digits of its contraction ratios: the
+# binaries take different iterations to the same Newton tolerance, and agree
+# to that tolerance's reach, not to round-off (measured 8.5e-8 of the largest
+# relative housing displacement; Newton stops at 1e-8 of the displacement
+# scale, at least the smallest clearance).
+SLOW_PAD_RUNS = {"hydro_unit_brackets"}
+SLOW_PAD_TOLERANCE = 1e-7
 # The torque that drives a torque-driven model's run-up and state runs (N·m):
 # past the breakaway torque of the shipped torque-driven unit's thrust bearing
 # (1.16e6 N·m, models/hydro_unit_torque.toml), so that the shaft turns.
@@ -298,6 +307,9 @@ def main(root):
                 moved = compare(simulate_fmu(fmus[stem], input=scaled, **dict(kwargs)), lin, outputs)[0]
                 floor = ROUNDOFF_FACTOR * moved
                 note = f"; inputs scaled by 1 + {ROUNDOFF:g} move the linux64 run by {moved:.3e}"
+            if stem in SLOW_PAD_RUNS:
+                floor = max(floor, SLOW_PAD_TOLERANCE)
+                note += f"; the slow-pad rule's iterations: {SLOW_PAD_TOLERANCE:g} allowed"
             worst, where, same, total, bad = compare(win, lin, outputs, floor=floor)
             print(f"{label}: {len(lin)} points × {len(outputs)} outputs, win64 (Wine) vs linux64: largest "
                   f"relative difference {worst:.3e} ({where}), {same} of {total} values bit-identical{note}")
