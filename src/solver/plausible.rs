@@ -2,9 +2,9 @@
 //! bore (twice its radial clearance from the bearing centre), or, where no
 //! clearance is modelled (linear and table bearings, probes, ports), a node
 //! displaced by more than the shaft's own outer diameter there. The FMU
-//! returns fmi2Warning with this text at every step that ends so, and the
-//! CLI prints it: a force, port or torque input that large is a unit or sign
-//! slip, never a machine's motion.
+//! returns fmi2Warning with this text at every step that ends so (the bounds
+//! found once per instance, [`DisplacementLimits`]): a force, port or torque
+//! input that large is a unit or sign slip, never a machine's motion.
 
 use crate::model::RotorModel;
 
@@ -20,58 +20,74 @@ fn shaft_diameter_at(model: &RotorModel, node: usize) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// The first displacement of `outputs` that no machine can have, with what
-/// bounds it and how many others exceed theirs; `None` when all are plausible.
-pub fn implausible_displacement(model: &RotorModel, outputs: &Outputs) -> Option<String> {
-    let mut found: Vec<String> = Vec::new();
-    let mut check = |what: String, r: f64, limit: f64, why: &str| {
-        if r > limit || r.is_nan() {
-            found.push(format!(
-                "{what} is {r:.3e} m from its centre, beyond {limit:.3e} m ({why})"
-            ));
+/// The bound of each displacement of a model's outputs, found once (the
+/// check runs after every FMU step: a pass over the outputs, no search of
+/// the shaft).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DisplacementLimits {
+    /// Per bearing: its name, bound (m) and what sets it.
+    bearings: Vec<(String, f64, &'static str)>,
+    /// Per probe, then per port: name and bound (m).
+    probes: Vec<(String, f64)>,
+    ports: Vec<(String, f64)>,
+}
+
+const DIAMETER: &str = "the shaft's outer diameter there";
+
+impl DisplacementLimits {
+    /// The bounds of `model`'s journals, probes and ports.
+    pub fn new(model: &RotorModel) -> Self {
+        let bearings = model
+            .bearings
+            .iter()
+            .map(|b| match b.kind.journal_clearance() {
+                Some(c) => (b.name.clone(), 2.0 * c, "twice its radial clearance"),
+                None => (b.name.clone(), shaft_diameter_at(model, b.node), DIAMETER),
+            })
+            .collect();
+        let at = |name: &str, node: usize| (name.to_string(), shaft_diameter_at(model, node));
+        Self {
+            bearings,
+            probes: model.probes.iter().map(|p| at(&p.name, p.node)).collect(),
+            ports: model.ports.iter().map(|p| at(&p.name, p.node)).collect(),
         }
-    };
-    for (b, out) in model.bearings.iter().zip(&outputs.bearings) {
-        let (x, y) = out.relative();
-        let r = x.hypot(y);
-        match b.kind.journal_clearance() {
-            Some(c) => check(
-                format!("the journal of {}", b.name),
-                r,
-                2.0 * c,
-                "twice its radial clearance",
-            ),
-            None => check(
-                format!("the journal of {}", b.name),
-                r,
-                shaft_diameter_at(model, b.node),
-                "the shaft's outer diameter there",
-            ),
+    }
+
+    /// The first displacement of `outputs` that no machine can have, with
+    /// what bounds it and how many others exceed theirs; `None` when all are
+    /// plausible.
+    pub fn check(&self, outputs: &Outputs) -> Option<String> {
+        let mut found: Vec<String> = Vec::new();
+        let mut check = |what: String, r: f64, limit: f64, why: &str| {
+            if r > limit || r.is_nan() {
+                found.push(format!(
+                    "{what} is {r:.3e} m from its centre, beyond {limit:.3e} m ({why})"
+                ));
+            }
+        };
+        for ((name, limit, why), out) in self.bearings.iter().zip(&outputs.bearings) {
+            let (x, y) = out.relative();
+            check(format!("the journal of {name}"), x.hypot(y), *limit, why);
         }
+        for ((name, limit), out) in self.probes.iter().zip(&outputs.probes) {
+            check(
+                format!("probe {name}"),
+                out.x.hypot(out.y),
+                *limit,
+                DIAMETER,
+            );
+        }
+        for ((name, limit), out) in self.ports.iter().zip(&outputs.ports) {
+            check(format!("port {name}"), out.x.hypot(out.y), *limit, DIAMETER);
+        }
+        let first = found.first()?;
+        let more = match found.len() - 1 {
+            0 => String::new(),
+            n => format!(" ({n} more displacements beyond their bounds)"),
+        };
+        Some(format!(
+            "at t = {} s {first}{more}: no machine moves so; check the force, port and torque inputs (units, signs)",
+            outputs.time
+        ))
     }
-    for (p, out) in model.probes.iter().zip(&outputs.probes) {
-        check(
-            format!("probe {}", p.name),
-            out.x.hypot(out.y),
-            shaft_diameter_at(model, p.node),
-            "the shaft's outer diameter there",
-        );
-    }
-    for (p, out) in model.ports.iter().zip(&outputs.ports) {
-        check(
-            format!("port {}", p.name),
-            out.x.hypot(out.y),
-            shaft_diameter_at(model, p.node),
-            "the shaft's outer diameter there",
-        );
-    }
-    let first = found.first()?;
-    let more = match found.len() - 1 {
-        0 => String::new(),
-        n => format!(" ({n} more displacements beyond their bounds)"),
-    };
-    Some(format!(
-        "at t = {} s {first}{more}: no machine moves so; check the force, port and torque inputs (units, signs)",
-        outputs.time
-    ))
 }

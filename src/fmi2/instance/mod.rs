@@ -32,6 +32,7 @@
 
 use crate::model::{DEFAULT_REDUCED_MODES, Drive, RotorModel};
 use crate::rotor::Rotor;
+use crate::solver::plausible::DisplacementLimits;
 use crate::solver::reduction_check::ValidityWatch;
 use crate::solver::{Simulator, SolverError, SolverOptions};
 use crate::units::Short;
@@ -149,6 +150,8 @@ pub struct Instance {
     /// The outputs' displacement no machine can have, when they hold one
     /// ([`crate::solver::plausible`]): each step that ends so warns.
     implausible: Option<String>,
+    /// The bounds of those displacements, found once.
+    limits: DisplacementLimits,
 }
 
 fn category(status: Status) -> &'static str {
@@ -195,7 +198,6 @@ impl Instance {
         Ok(Self {
             watch,
             name: name.to_string(),
-            model,
             fingerprint: fingerprint(&guid),
             guid,
             vars,
@@ -209,6 +211,8 @@ impl Instance {
             messages,
             step_statistics: false,
             implausible: None,
+            limits: DisplacementLimits::new(&model),
+            model,
         })
     }
 

@@ -8,7 +8,6 @@
 //! [`Simulator::outputs`]: crate::solver::Simulator::outputs
 
 use crate::solver::Outputs;
-use crate::solver::plausible::implausible_displacement;
 use crate::units::Short;
 
 use super::super::states::Call;
@@ -112,7 +111,7 @@ impl Instance {
             match self.sim.outputs() {
                 Ok(o) => {
                     self.outputs.fill(&o);
-                    self.implausible = implausible_displacement(&self.model, &o);
+                    self.implausible = self.limits.check(&o);
                 }
                 Err(e) => return Err(self.report(Status::Error, format!("outputs: {e}"))),
             }
