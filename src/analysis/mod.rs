@@ -13,6 +13,7 @@ pub mod modal;
 pub mod mode_tracking;
 pub mod operating_point;
 pub mod orbit;
+pub mod pad_eigen;
 pub mod parallel;
 mod polish;
 pub mod ring_down;

@@ -355,6 +355,13 @@ pub(crate) fn mode_near(
     Some((make_mode(rotor, &d, speed, lambda, &x), x))
 }
 
+/// The mode of a linear `rotor` at `speed` (rad/s) with eigenvalue `lambda`
+/// and vector `x` (free DOFs) found elsewhere (e.g. with the pad
+/// coordinates, [`super::pad_eigen`]): its shape, whirl and residual here.
+pub(crate) fn mode_from_pair(rotor: &Rotor, speed: f64, lambda: C64, x: &[C64]) -> Mode {
+    make_mode(rotor, &damping_at_speed(rotor, speed), speed, lambda, x)
+}
+
 /// The lowest (or nearest-target) oscillating modes of `rotor` at spin speed
 /// `speed` (rad/s), by increasing damped frequency. Non-oscillating eigenvalues
 /// (rigid-body motion of a free rotor, overdamped modes) are not listed.

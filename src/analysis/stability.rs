@@ -36,7 +36,8 @@ type C64 = nalgebra::Complex<f64>;
 use super::linearize::{LinearizeError, linearized_from};
 use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis, modes};
 use super::operating_point::{OperatingPointError, operating_point};
-use super::whirl_modes::{coefficients_at, own_frequency, with_pads};
+use super::pad_eigen::PadEigenError;
+use super::whirl_modes::{coefficients_at, own_frequency, reconcile, with_pads};
 
 /// Why a stability check failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -53,6 +54,9 @@ pub enum StabilityError {
     /// The bearings' coefficients could not be found.
     #[error(transparent)]
     OperatingPoint(#[from] OperatingPointError),
+    /// The eigenvalues with the pad coordinates could not be found.
+    #[error(transparent)]
+    PadEigen(#[from] PadEigenError),
     /// Bad input or no forward mode.
     #[error("{0}")]
     Options(String),
@@ -397,18 +401,21 @@ pub fn stability_study(
         modes: count,
         ..ModalOptions::default()
     };
-    let analysis = modal_analysis(&linear, speed, &options)?;
-    let mut at_zero = analysis.modes;
+    let mut analysis = modal_analysis(&linear, speed, &options)?;
     if let Some(eq) = &pads {
         let linear_at = |s: C64| -> Result<Rotor, StabilityError> {
             Ok(rotor.with_bearing_coefficients(&coefficients_at(eq, s))?)
         };
-        at_zero = at_zero
+        let mut own: Vec<Mode> = analysis
+            .modes
             .into_iter()
             .map(|m| own_frequency(&linear_at, speed, m))
             .collect::<Result<_, _>>()?;
-        at_zero.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
+        own.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
+        analysis.modes = own;
+        analysis = reconcile(analysis, (rotor, eq, speed), &linear_at)?;
     }
+    let at_zero = analysis.modes;
     // A growing non-oscillating root: statically unstable without any
     // cross-coupling, whatever the forward modes' log decrements say.
     let diverging: Vec<OverdampedRoot> = analysis
@@ -454,8 +461,17 @@ pub fn stability_study(
     }
     let mut threshold = None;
     let mut threshold_mode = None;
+    // A growing mode at Q = 0 of any whirl (with the pad coordinates: one
+    // the forward sweep's seeds may not reach) is unstable as it stands.
+    let growing = at_zero
+        .iter()
+        .filter(|m| m.log_decrement <= 0.0)
+        .min_by(|a, b| a.log_decrement.total_cmp(&b.log_decrement));
     if !diverging.is_empty() {
         threshold = Some(0.0);
+    } else if let Some(m) = growing {
+        threshold = Some(0.0);
+        threshold_mode = Some(m.clone());
     } else if curve[0].1.log_decrement <= 0.0 {
         threshold = Some(0.0);
         threshold_mode = Some(curve[0].1.clone());

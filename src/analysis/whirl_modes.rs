@@ -17,12 +17,17 @@
 
 use nalgebra::Complex;
 
+type C64 = Complex<f64>;
+
 use crate::bearing::equilibrium::condensed_at;
 use crate::rotor::{JournalCoefficients, Rotor};
 use crate::solver::Equilibrium;
 
 use super::linearize::{LinearizeError, linearized_from};
+use super::modal::mode_from_pair;
 use super::modal::{ModalError, ModalOptions, ModalResult, Mode, modal_analysis};
+use super::modal::{NON_OSCILLATING_DAMPING_RATIO, OverdampedRoot};
+use super::pad_eigen::{PadEigenError, eigenvalues_of, rotor_vector, state_matrix_with_pads};
 
 /// Why the modes could not be found.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -37,6 +42,9 @@ pub enum WhirlModesError {
     /// assembled.
     #[error("pads condensed at a mode's eigenvalue: {0}")]
     Assembly(#[from] crate::rotor::AssemblyError),
+    /// The eigenvalues with the pad coordinates could not be found.
+    #[error(transparent)]
+    PadEigen(#[from] PadEigenError),
 }
 
 /// Iterations allowed per mode.
@@ -72,8 +80,8 @@ pub fn modes_at_own_frequency(
 }
 
 /// [`modal_analysis`] of `rotor` linearized at `speed` (rad/s), its modes
-/// with the pads condensed at their own eigenvalues; the non-oscillating
-/// roots are the synchronous linearization's. What `rotor modes`, the
+/// with the pads condensed at their own eigenvalues, held against every
+/// eigenvalue with the pad coordinates ([`reconcile`]). What `rotor modes`, the
 /// report and the stability study list.
 pub fn modal_analysis_own(
     rotor: &Rotor,
@@ -102,10 +110,14 @@ pub fn modal_analysis_own(
         out.push(own_frequency(&linear_at, speed, start)?);
     }
     out.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
-    Ok(ModalResult {
-        modes: out,
-        overdamped,
-    })
+    reconcile(
+        ModalResult {
+            modes: out,
+            overdamped,
+        },
+        (rotor, &eq, speed),
+        &linear_at,
+    )
 }
 
 /// The equilibrium, when one of its bearings has internal coordinates (pad
@@ -151,4 +163,87 @@ where
         }
     }
     Ok(current)
+}
+
+/// `result` (modes iterated to their own frequencies, `linear_at(s)` the
+/// rotor with the pads condensed at `s`) held against every eigenvalue of
+/// the rotor with the pad coordinates at `equilibrium` ([`pad_eigen`]): its
+/// non-oscillating roots become the exact ones (every growing one, and the
+/// decaying ones no farther from the origin than the last listed mode); a
+/// root two seeds were iterated to is listed once, the other seed's place
+/// taken by the unmatched exact root nearest it, and every growing
+/// oscillating root no listed mode matches (1e-6 relative) is added, each
+/// with its exact vector: no instability of the transient's linearization
+/// goes unlisted.
+pub fn reconcile<E>(
+    result: ModalResult,
+    (rotor, equilibrium, speed): (&Rotor, &Equilibrium, f64),
+    linear_at: &dyn Fn(C64) -> Result<Rotor, E>,
+) -> Result<ModalResult, E>
+where
+    E: From<ModalError> + From<PadEigenError>,
+{
+    let ModalResult { modes, .. } = result;
+    let f = state_matrix_with_pads(rotor, equilibrium, speed)?;
+    let exact = eigenvalues_of(&f)?;
+    let real_part = (1.0 - NON_OSCILLATING_DAMPING_RATIO.powi(2)).sqrt();
+    let scale = exact.iter().fold(0.0_f64, |a, l| a.max(l.norm()));
+    let oscillating = |l: &C64| l.im > real_part * l.norm() + 1e-12 * scale;
+    let reach = modes
+        .iter()
+        .map(|m| m.eigenvalue.norm())
+        .fold(0.0, f64::max);
+    let mut overdamped: Vec<OverdampedRoot> = exact
+        .iter()
+        .filter(|l| {
+            l.im.abs() <= real_part * l.norm() + 1e-12 * scale
+                && (l.im >= 0.0 || l.im.abs() <= 1e-12 * scale)
+                && l.norm() > 1e-12 * scale
+                && (l.re > 0.0 || modes.is_empty() || l.norm() <= reach)
+        })
+        .map(|&eigenvalue| OverdampedRoot { eigenvalue })
+        .collect();
+    overdamped.sort_by(|a, b| a.eigenvalue.norm().total_cmp(&b.eigenvalue.norm()));
+    // Two seeds iterated to one root list it once; the root the second one
+    // missed is the unmatched exact root nearest it.
+    let matched = |list: &[C64], l: &C64| list.iter().any(|m| (m - l).norm() <= 1e-6 * l.norm());
+    let mut kept: Vec<Mode> = Vec::with_capacity(modes.len());
+    let mut lost: Vec<C64> = Vec::new();
+    for m in modes {
+        let listed: Vec<C64> = kept.iter().map(|k| k.eigenvalue).collect();
+        if matched(&listed, &m.eigenvalue) {
+            lost.push(m.eigenvalue);
+        } else {
+            kept.push(m);
+        }
+    }
+    let mut modes = kept;
+    let mut taken: Vec<C64> = modes.iter().map(|m| m.eigenvalue).collect();
+    let mut missing: Vec<C64> = Vec::new();
+    for l in exact.iter().filter(|l| oscillating(l) && l.re > 0.0) {
+        if !matched(&taken, l) {
+            taken.push(*l);
+            missing.push(*l);
+        }
+    }
+    for seed in lost {
+        let Some(l) = exact
+            .iter()
+            .filter(|l| oscillating(l) && !matched(&taken, l))
+            .min_by(|a, b| (**a - seed).norm().total_cmp(&(**b - seed).norm()))
+        else {
+            continue;
+        };
+        taken.push(*l);
+        missing.push(*l);
+    }
+    let n = rotor.dof_count();
+    for lambda in missing {
+        let Some(x) = rotor_vector(&f, n, lambda) else {
+            continue;
+        };
+        modes.push(mode_from_pair(&linear_at(lambda)?, speed, lambda, &x));
+    }
+    modes.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
+    Ok(ModalResult { modes, overdamped })
 }

@@ -382,6 +382,16 @@ pub fn stability(result: &Stability, sites: &[String]) -> String {
             )
             .ok();
         }
+        (Some(0.0), Some(m)) if m.log_decrement < 0.0 => {
+            writeln!(
+                s,
+                "unstable without cross-coupling (threshold Q = 0): the {} mode at {} Hz grows (log dec {:.4})",
+                m.whirl.label(),
+                short(m.damped_frequency / (2.0 * std::f64::consts::PI)),
+                m.log_decrement
+            )
+            .ok();
+        }
         (Some(0.0), _) => {
             writeln!(
                 s,

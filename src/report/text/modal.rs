@@ -228,16 +228,42 @@ pub fn overdamped_roots(roots: &[OverdampedRoot]) -> String {
     s.push_str(&format!(
         "non-oscillating (overdamped) roots, not modes (ζ ≥ {NON_OSCILLATING_DAMPING_RATIO}, not counted in --modes):\n  decay rate (1/s)  time constant (s)\n"
     ));
-    for r in decaying {
+    for (r, count) in repeated(&decaying) {
         writeln!(
             s,
-            "  {:>16} {:>18}",
+            "  {:>16} {:>18}{}",
             short(r.decay_rate()),
-            short(r.time_constant())
+            short(r.time_constant()),
+            times(count)
         )
         .ok();
     }
     s
+}
+
+/// Equal roots (1e-6 relative, e.g. the like pads of one bearing) once each,
+/// with their count.
+fn repeated<'a>(roots: &[&'a OverdampedRoot]) -> Vec<(&'a OverdampedRoot, usize)> {
+    let mut out: Vec<(&OverdampedRoot, usize)> = Vec::new();
+    for r in roots {
+        match out
+            .iter_mut()
+            .find(|(q, _)| (q.eigenvalue - r.eigenvalue).norm() <= 1e-6 * r.eigenvalue.norm())
+        {
+            Some((_, count)) => *count += 1,
+            None => out.push((r, 1)),
+        }
+    }
+    out
+}
+
+/// ` (×n)` for a root found `n > 1` times.
+fn times(count: usize) -> String {
+    if count > 1 {
+        format!("  (×{count})")
+    } else {
+        String::new()
+    }
 }
 
 /// The growing non-oscillating roots of a linearization, as what they are:
@@ -250,12 +276,13 @@ pub fn static_divergence(growing: &[&OverdampedRoot]) -> String {
         "STATICALLY UNSTABLE: {} non-oscillating root(s) grow (divergence): the equilibrium this linearization is taken about is not one the bearings can hold (a magnetic pull stiffer than its unloaded films, a negative-stiffness seal); the transient leaves it\n  growth rate (1/s)  doubling time (s)\n",
         growing.len()
     );
-    for r in growing {
+    for (r, count) in repeated(growing) {
         writeln!(
             s,
-            "  {:>17} {:>17}",
+            "  {:>17} {:>17}{}",
             short(-r.decay_rate()),
-            short(std::f64::consts::LN_2 / -r.decay_rate())
+            short(std::f64::consts::LN_2 / -r.decay_rate()),
+            times(count)
         )
         .ok();
     }
