@@ -354,7 +354,14 @@ fn cross_coupling_at_named_nodes() {
     let named = run(&["stability", pump, "--rpm", "3600", "--at", "impeller"]);
     assert!(named.contains("at node 6 (disk impeller)"), "{named}");
     let default = run(&["stability", pump, "--rpm", "3600"]);
-    assert_eq!(named, default, "the disks are the default sites");
+    assert_eq!(
+        named.replace(
+            "(disk impeller)",
+            "(disk impeller) (API 617: mid-span, the rotor's impellers lie between its bearings)"
+        ),
+        default,
+        "the impeller at mid-span is API 617's site of a between-bearing pump"
+    );
     let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
         .args(["stability", pump, "--rpm", "3600", "--at", "runner"])
         .output()
@@ -377,19 +384,78 @@ fn cross_coupling_at_named_nodes() {
     );
 }
 
-/// Seals are where swirling leakage drives whirl: the default cross-coupling
-/// sites are the disks' and the seals' nodes, each named in messages.
+/// API 617's placement of the anticipated cross-coupling (7th ed., 2.6.5):
+/// mid-span for a rotor between bearings, seals or not; on an overhung rotor
+/// the overhung impellers, each at once, the disks tagged
+/// `role = "impeller"` when any is, else every overhung disk; the earlier
+/// default (disks and seals) kept for the placement note. A 1 m shaft in 10
+/// elements on bearings at nodes 2 and 8 (z = 0.1, 0.7 m).
 #[test]
-fn seals_are_default_cross_coupling_sites() {
-    use rotor_bearing::analysis::stability::{default_sites, site_label};
+fn the_default_cross_coupling_sits_where_api_617_places_it() {
+    use rotor_bearing::analysis::stability::{
+        api617_placement, default_sites, disks_and_seals, site_label,
+    };
+    let rotor_with = |disks: &str| {
+        let text = format!(
+            "name = \"placement\"\nspeed_rpm = 3000\n[[materials]]\nname = \"steel\"\nyoungs_modulus = 2.1e11\npoisson_ratio = 0.3\ndensity = 7850.0\n[[shaft]]\nlength = 1.0\nouter_diameter = 0.05\nmaterial = \"steel\"\nelements = 10\n[[bearings]]\nname = \"a\"\ntype = \"linear\"\nnode = 2\nkxx = 1e7\nkyy = 1e7\n[[bearings]]\nname = \"b\"\ntype = \"linear\"\nnode = 8\nkxx = 1e7\nkyy = 1e7\n[[seals]]\nname = \"eye\"\nnode = 4\nspeeds_rpm = [0.0, 5000.0]\nkxx = 1e5\nkyy = 1e5\nkxy = 2e4\nkyx = -2e4\n{disks}"
+        );
+        Rotor::new(RotorModel::from_toml(&text, "placement.toml").unwrap()).unwrap()
+    };
+    let disk = |name: &str, node: usize, role: &str| {
+        format!(
+            "[[disks]]\nname = \"{name}\"\nnode = {node}\nmass = 10.0\npolar_inertia = 0.1\ndiametral_inertia = 0.05\n{role}"
+        )
+    };
+    let impeller = "role = \"impeller\"\n";
+    // Between bearings (a disk at node 4, a seal at node 4): mid-span, node 5.
+    let between = rotor_with(&disk("wheel", 4, impeller));
+    let (sites, why) = api617_placement(&between);
+    assert_eq!(sites, [5 - 1]);
+    assert!(why.contains("mid-span"), "{why}");
+    assert_eq!(
+        site_label(&between, 4),
+        "node 5 (mid-span between the bearings)"
+    );
+    assert_eq!(disks_and_seals(&between), [3]);
+    // Single overhung: the tagged impeller at node 11, not the coupling hub
+    // at node 1 (overhung too, but not an impeller) nor the seal.
+    let single = rotor_with(&(disk("hub", 1, "") + &disk("stage", 11, impeller)));
+    let (sites, why) = api617_placement(&single);
+    assert_eq!(sites, [10]);
+    assert!(why.contains("overhung impellers"), "{why}");
+    // Double overhung: both impellers at once.
+    let double = rotor_with(&(disk("one", 1, impeller) + &disk("two", 11, impeller)));
+    assert_eq!(default_sites(&double), [0, 10]);
+    // Nothing tagged: every overhung disk, said so.
+    let untagged = rotor_with(&(disk("one", 1, "") + &disk("mid", 5, "")));
+    let (sites, why) = api617_placement(&untagged);
+    assert_eq!(sites, [0]);
+    assert!(why.contains("no disk has role"), "{why}");
+    // A role the file cannot have is refused, naming the field.
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/models/classic_disk_rotor_damped.toml"
     ))
     .unwrap()
-        + "\n[[seals]]\nname = \"labyrinth\"\nnode = 2\nspeeds_rpm = [0.0, 5000.0]\nkxx = 1e5\nkyy = 1e5\nkxy = 2e4\nkyx = -2e4\n";
-    let rotor = Rotor::new(RotorModel::from_toml(&text, "sealed.toml").unwrap()).unwrap();
-    assert_eq!(default_sites(&rotor), [1, 3]);
-    assert_eq!(site_label(&rotor, 1), "node 2 (seal labyrinth)");
-    assert_eq!(site_label(&rotor, 3), "node 4 (disk disk)");
+    .replacen("[[disks]]", "[[disks]]\nrole = \"propeller\"", 1);
+    let err = RotorModel::from_toml(&text, "bad.toml")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains("bad.toml") && err.contains("disks[0].role") && err.contains("\"propeller\""),
+        "{err}"
+    );
+    // The verdict states the placement.
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args([
+            "stability",
+            concat!(env!("CARGO_MANIFEST_DIR"), "/models/hydro_unit.toml"),
+        ])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("split equally over node 5 (disk generator), node 20 (disk runner) (API 617: at the overhung disks"),
+        "{stdout}"
+    );
 }

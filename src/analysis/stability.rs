@@ -168,11 +168,63 @@ impl LevelOne {
     }
 }
 
-/// Where the cross-coupling acts by default: the nodes of the disks
-/// (impellers, runners) and of the seals (labyrinths and wear rings, where
-/// the swirling leakage drives whirl), else the node nearest mid-span
-/// ([`mid_span_node`]).
+/// Where the cross-coupling acts by default: [`api617_placement`].
 pub fn default_sites(rotor: &Rotor) -> Vec<usize> {
+    api617_placement(rotor).0
+}
+
+/// Where API 617 (7th ed., 2.6.5; API 684 Level I) places the anticipated
+/// cross-coupling, with the reason stated: at the rotor's mid-span for a
+/// rotor between bearings ([`mid_span_node`]); for an overhung rotor at its
+/// overhung impellers, each at once (a double-overhung rotor at both ends).
+/// The impellers are the disks with `role = "impeller"`, else every disk; a
+/// disk is overhung outside the span of the supporting bearings (seals,
+/// pulls and rubs are not supports).
+pub fn api617_placement(rotor: &Rotor) -> (Vec<usize>, String) {
+    let m = &rotor.model;
+    let supports: Vec<f64> = m
+        .bearings
+        .iter()
+        .filter(|b| b.kind.is_bearing())
+        .map(|b| m.node_z[b.node])
+        .collect();
+    let tagged = m.disks.iter().any(|d| d.impeller);
+    let mut overhung: Vec<usize> = Vec::new();
+    if supports.len() >= 2 {
+        let lo = supports.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = supports.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        overhung = m
+            .disks
+            .iter()
+            .filter(|d| d.impeller || !tagged)
+            .map(|d| d.node)
+            .filter(|&n| m.node_z[n] < lo || m.node_z[n] > hi)
+            .collect();
+        overhung.sort_unstable();
+        overhung.dedup();
+    }
+    let impellers = if tagged {
+        "impellers (role = \"impeller\")"
+    } else {
+        "disks (no disk has role = \"impeller\")"
+    };
+    if overhung.is_empty() {
+        (
+            vec![mid_span_node(rotor)],
+            "API 617: mid-span, the rotor's impellers lie between its bearings".to_string(),
+        )
+    } else {
+        (
+            overhung,
+            format!("API 617: at the overhung {impellers}, the rotor is overhung"),
+        )
+    }
+}
+
+/// The default placement from 2026-12-01 to 2026-12-05, kept so that a
+/// figure published then can be traced: the nodes of the disks and of the
+/// seals, else the node nearest mid-span.
+pub fn disks_and_seals(rotor: &Rotor) -> Vec<usize> {
     let seals = rotor.model.bearings.iter().filter(|b| b.kind.is_seal());
     let mut nodes: Vec<usize> = rotor
         .model
@@ -283,6 +335,9 @@ pub struct Stability {
     pub speed: f64,
     /// Nodes of the cross-coupled stiffness (0-based), `Q` split equally.
     pub sites: Vec<usize>,
+    /// Why there, for the default placement ([`api617_placement`]); `None`
+    /// for nodes the request named.
+    pub placement: Option<String>,
     /// The first `count` modes without cross-coupling.
     pub modes: Vec<Mode>,
     /// `(Q, least stable forward mode)` over `0 … Q_max` (N/m).
@@ -381,10 +436,11 @@ pub fn stability_study(
             "--cross-coupling-max must be positive (got {q_max} N/m) with at least 2 points (got {points})"
         )));
     }
-    let sites = if request.sites.is_empty() {
-        default_sites(rotor)
+    let (sites, placement) = if request.sites.is_empty() {
+        let (sites, why) = api617_placement(rotor);
+        (sites, Some(why))
     } else {
-        request.sites.clone()
+        (request.sites.clone(), None)
     };
     if let Some(&bad) = sites.iter().find(|&&n| n >= rotor.model.node_count()) {
         return Err(StabilityError::Options(format!(
@@ -531,6 +587,7 @@ pub fn stability_study(
     Ok(Stability {
         speed,
         sites,
+        placement,
         modes: at_zero,
         curve,
         q_max,

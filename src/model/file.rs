@@ -164,6 +164,10 @@ pub struct DiskEntry {
     pub inner_diameter: Option<f64>,
     /// Axial width (m).
     pub width: Option<f64>,
+    /// What the disk is: `"impeller"` (a compressor, pump or turbine stage,
+    /// a hydro runner: where API 617 places the stability study's
+    /// cross-coupling on an overhung rotor) or `"other"` (the default).
+    pub role: Option<String>,
 }
 
 /// `[[bearings]]`, selected by `type`.

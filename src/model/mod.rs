@@ -80,6 +80,8 @@ pub struct PlacedDisk {
     pub node: usize,
     /// Inertia properties.
     pub disk: Disk,
+    /// An impeller (stage, runner): `role = "impeller"`.
+    pub impeller: bool,
 }
 
 /// A bearing between a shaft node (the journal) and its housing: ground, or

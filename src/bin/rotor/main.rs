@@ -70,7 +70,7 @@ struct ModelArg {
 #[derive(Args)]
 struct StageArgs {
     /// Where the cross-coupling acts: node numbers or disk names, comma-separated,
-    /// Q split equally; default the disks, else mid-span.
+    /// Q split equally; default where API 617 places it: mid-span between the bearings, or the overhung impellers (disks with role = "impeller", else every disk) of an overhung rotor.
     #[arg(long)]
     at: Option<String>,
     /// Rated power of the stages (W), for Wachel's anticipated cross-coupling Q_A.
@@ -243,8 +243,8 @@ enum Command {
         #[arg(long)]
         pads_csv: Option<PathBuf>,
     },
-    /// Log decrements at a speed, the threshold of cross-coupled stiffness at the
-    /// disks (or --at) where the least stable forward mode turns unstable, and with
+    /// Log decrements at a speed, the threshold of cross-coupled stiffness where API 617
+    /// places it (mid-span, or the overhung impellers; or --at) where the least stable forward mode turns unstable, and with
     /// --power/--impeller-diameter/--flow-width the API 617 / API 684 Level I screening.
     Stability {
         #[command(flatten)]

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use rotor_bearing::analysis::ring_down::{RingDown, ring_down};
 use rotor_bearing::analysis::stability::{
-    StabilityRequest, StageData, mid_span_node, site_label, stability_study,
+    StabilityRequest, StageData, disks_and_seals, site_label, stability_study,
 };
 use rotor_bearing::plot::{RAD_S_TO_RPM, stability_png};
 use rotor_bearing::report::{csv as report_csv, text};
@@ -149,21 +149,22 @@ fn verify(
 const VERIFIED_MODES: usize = 3;
 const VERIFY_PERIODS: usize = 12;
 
-/// Where the default cross-coupling acts changed on 2026-12-01 (ff560cb):
-/// from the node nearest mid-span to the disks and seals. When the two
-/// differ, the verdict is followed by the threshold the earlier default gives,
-/// so that a published figure can be traced (CHANGELOG.md).
+/// Where the default cross-coupling acts changed on 2026-12-05 from the
+/// disks and seals (the default since 2026-12-01, ff560cb; before, the node
+/// nearest mid-span) to API 617's placement. When the two differ, the
+/// verdict is followed by the threshold the earlier default gives, so that
+/// a published figure can be traced (CHANGELOG.md).
 fn placement_note(
     rotor: &Rotor,
     request: &StabilityRequest,
     result: &rotor_bearing::analysis::stability::Stability,
 ) -> Result<(), String> {
-    let mid = mid_span_node(rotor);
-    if result.sites == [mid] {
+    let earlier_sites = disks_and_seals(rotor);
+    if result.placement.is_none() || result.sites == earlier_sites {
         return Ok(());
     }
     let earlier = StabilityRequest {
-        sites: vec![mid],
+        sites: earlier_sites.clone(),
         ..request.clone()
     };
     let before = stability_study(rotor, &earlier).map_err(|e| e.to_string())?;
@@ -171,9 +172,13 @@ fn placement_note(
         Some(q) => format!("threshold Q = {} N/m", text::short(q)),
         None => format!("stable up to Q = {} N/m", text::short(before.q_max)),
     };
+    let labels: Vec<String> = earlier_sites
+        .iter()
+        .map(|&n| site_label(rotor, n))
+        .collect();
     println!(
-        "placement: the default since 2026-12-01 (CHANGELOG.md) is the disks and seals; before, it was the node nearest mid-span, {}, where the same study gives {threshold}; give --at to choose",
-        site_label(rotor, mid)
+        "placement: API 617's since 2026-12-05 (CHANGELOG.md); from 2026-12-01 the default was the disks and seals, {}, where the same study gives {threshold}; give --at to choose",
+        labels.join(", ")
     );
     Ok(())
 }

@@ -13,7 +13,8 @@ use crate::model::{ModelError, PlacedDisk};
 /// Check each disk: unique name, its node, and either `mass`, `polar_inertia`,
 /// `diametral_inertia` (kg > 0, kg·m² ≥ 0: zero inertias make a point mass
 /// that spins with the rotor) or `material`, `outer_diameter`,
-/// `inner_diameter`, `width` (m) — not a mix.
+/// `inner_diameter`, `width` (m) — not a mix; `role` `"impeller"` or
+/// `"other"`.
 pub(super) fn disks(
     ctx: &Ctx,
     root: &FieldPath,
@@ -119,10 +120,22 @@ pub(super) fn disks(
                 ));
             }
         };
+        let impeller = match d.role.as_deref().unwrap_or("other") {
+            "impeller" => true,
+            "other" => false,
+            other => {
+                return Err(ctx.err(
+                    p.key("role"),
+                    format!("{other:?}"),
+                    "must be \"impeller\" (a stage or runner) or \"other\"",
+                ));
+            }
+        };
         disks.push(PlacedDisk {
             name: names.claim(ctx, &p, default_name(d.name, "disk", i), "disk")?,
             node,
             disk,
+            impeller,
         });
     }
 

@@ -347,17 +347,22 @@ pub fn stability(result: &Stability, sites: &[String]) -> String {
         )
         .ok();
     }
+    let why = result
+        .placement
+        .as_ref()
+        .map(|p| format!(" ({p})"))
+        .unwrap_or_default();
     if sites.len() == 1 {
         writeln!(
             s,
-            "cross-coupled stiffness [[0, Q], [-Q, 0]] at {}",
+            "cross-coupled stiffness [[0, Q], [-Q, 0]] at {}{why}",
             sites[0]
         )
         .ok();
     } else {
         writeln!(
             s,
-            "cross-coupled stiffness [[0, Q], [-Q, 0]] split equally over {}",
+            "cross-coupled stiffness [[0, Q], [-Q, 0]] split equally over {}{why}",
             sites.join(", ")
         )
         .ok();
