@@ -74,14 +74,19 @@ fn map_csv(model: &str, args: &[&str], name: &str) -> Vec<Vec<f64>> {
     assert_eq!(&std::fs::read(&png).unwrap()[..8], b"\x89PNG\r\n\x1a\n");
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
+    let header = lines.next().unwrap();
     assert!(
-        lines
-            .next()
-            .unwrap()
-            .starts_with("support_stiffness_N_m,critical_1_rpm,")
+        header.starts_with("support_stiffness_N_m,critical_1_rpm,")
+            && header.ends_with(",statically_unstable_modes")
     );
+    // Stiffness and critical speeds; the last column (no statically
+    // unstable mode on these rotors) apart.
     lines
-        .map(|l| l.split(',').map(|c| c.parse().unwrap()).collect())
+        .map(|l| {
+            let (row, unstable) = l.rsplit_once(',').unwrap();
+            assert_eq!(unstable, "0", "{l}");
+            row.split(',').map(|c| c.parse().unwrap()).collect()
+        })
         .collect()
 }
 

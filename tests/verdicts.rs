@@ -527,3 +527,40 @@ fn the_unit_on_brackets_grows_at_the_frequency_of_its_growing_mode() {
         assert!((r.frequency / least.damped_frequency - 1.0).abs() <= 0.02);
     }
 }
+
+/// `rotor ucs` of the unit on brackets with the field on: where the
+/// isotropic supports are softer than the pull (1.73e8 N/m at the
+/// generator) the sprung rotor has modes of negative net stiffness — as
+/// many as the dense symmetric eigen-solve of its stiffness matrix finds
+/// negative eigenvalues — and the map flags the row instead of listing
+/// critical speeds; with stiff supports, or the field off, every row has
+/// its critical speeds.
+#[test]
+fn the_critical_speed_map_flags_supports_the_pull_overcomes() {
+    use rotor_bearing::analysis::ucs::{critical_speed_map, with_isotropic_supports};
+    let stiffness = [1e6, 1e8, 1e9, 1e10];
+    for (excitation, flagged) in [(1.0, 2usize), (0.0, 0)] {
+        let rotor = brackets(excitation);
+        let map = critical_speed_map(&rotor, &stiffness, 3, &[]).unwrap();
+        for (i, &k) in stiffness.iter().enumerate() {
+            let dense = with_isotropic_supports(&rotor, k)
+                .unwrap()
+                .stiffness
+                .to_dense()
+                .symmetric_eigenvalues()
+                .iter()
+                .filter(|&&l| l < 0.0)
+                .count();
+            assert_eq!(map.unstable[i], dense, "k = {k:e}, excitation {excitation}");
+            assert_eq!(map.speeds[i].is_empty(), dense > 0);
+        }
+        assert_eq!(map.unstable[0], flagged, "excitation {excitation}");
+        assert_eq!(map.unstable[3], 0);
+        let printed = text::critical_speed_map("brackets", &map, 1);
+        assert_eq!(
+            printed.contains("STATICALLY UNSTABLE"),
+            flagged > 0,
+            "{printed}"
+        );
+    }
+}

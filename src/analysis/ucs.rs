@@ -20,6 +20,7 @@ use nalgebra::Complex;
 
 use crate::bearing::BearingKind;
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
+use crate::linalg::sturm::eigenvalues_below;
 use crate::linalg::{ArnoldiOptions, LinalgError, largest_eigenpairs, map_to_complex};
 use crate::rotor::{AssemblyError, Rotor};
 
@@ -131,8 +132,13 @@ pub struct BearingStiffness {
 pub struct CriticalSpeedMap {
     /// Support stiffnesses (N/m).
     pub stiffness: Vec<f64>,
-    /// `speeds[i]`: the forward critical speeds (rad/s) at `stiffness[i]`.
+    /// `speeds[i]`: the forward critical speeds (rad/s) at `stiffness[i]`;
+    /// none where the rotor is statically unstable.
     pub speeds: Vec<Vec<f64>>,
+    /// `unstable[i]`: the number of modes of negative net static stiffness
+    /// at `stiffness[i]` (a magnetic pull stiffer than the supports): the
+    /// rotor diverges from the centre there and has no critical speed.
+    pub unstable: Vec<usize>,
     /// The model's bearings over the speed range.
     pub bearings: Vec<BearingStiffness>,
 }
@@ -185,14 +191,22 @@ pub fn critical_speed_map(
         )));
     }
     let mut map = Vec::with_capacity(stiffness.len());
+    let mut unstable = Vec::with_capacity(stiffness.len());
     for &k in stiffness {
         let sprung = with_isotropic_supports(rotor, k)?;
-        map.push(
-            synchronous_critical_speeds(&sprung, count).map_err(|source| UcsError::Linalg {
-                stiffness: k,
-                source,
-            })?,
-        );
+        let linalg = |source| UcsError::Linalg {
+            stiffness: k,
+            source,
+        };
+        // Negative eigenvalues of the (symmetric) sprung stiffness: the
+        // negative pivots of K = L D Lᵀ (Sylvester's inertia).
+        let negative = eigenvalues_below(&sprung.stiffness, &sprung.mass, 0.0).map_err(linalg)?;
+        unstable.push(negative);
+        if negative > 0 {
+            map.push(Vec::new());
+            continue;
+        }
+        map.push(synchronous_critical_speeds(&sprung, count).map_err(linalg)?);
     }
     let mut bearings: Vec<BearingStiffness> = rotor
         .model
@@ -212,6 +226,7 @@ pub fn critical_speed_map(
     Ok(CriticalSpeedMap {
         stiffness: stiffness.to_vec(),
         speeds: map,
+        unstable,
         bearings,
     })
 }

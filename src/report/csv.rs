@@ -448,15 +448,16 @@ pub fn stability(result: &Stability) -> String {
 }
 
 /// A critical speed map: per support stiffness (N/m) the forward synchronous
-/// critical speeds in rpm (`critical_k_rpm`, increasing; empty where fewer exist).
+/// critical speeds in rpm (`critical_k_rpm`, increasing; empty where fewer
+/// exist) and the number of statically unstable modes (none where any).
 pub fn critical_speed_map(map: &CriticalSpeedMap) -> String {
     let count = map.speeds.iter().map(Vec::len).max().unwrap_or(0);
     let mut out = String::from("support_stiffness_N_m");
     for k in 1..=count {
         write!(out, ",critical_{k}_rpm").ok();
     }
-    out.push('\n');
-    for (k, speeds) in map.stiffness.iter().zip(&map.speeds) {
+    out.push_str(",statically_unstable_modes\n");
+    for ((k, speeds), unstable) in map.stiffness.iter().zip(&map.speeds).zip(&map.unstable) {
         write!(out, "{k}").ok();
         for j in 0..count {
             match speeds.get(j) {
@@ -465,7 +466,7 @@ pub fn critical_speed_map(map: &CriticalSpeedMap) -> String {
             }
             .ok();
         }
-        out.push('\n');
+        writeln!(out, ",{unstable}").ok();
     }
     out
 }

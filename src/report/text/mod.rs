@@ -474,7 +474,16 @@ pub fn stability(result: &Stability, sites: &[String]) -> String {
 pub fn critical_speed_map(name: &str, map: &CriticalSpeedMap, step: usize) -> String {
     let mut s =
         format!("forward critical speeds (rpm) of {name} against isotropic support stiffness:\n");
-    for (k, speeds) in map.stiffness.iter().zip(&map.speeds).step_by(step.max(1)) {
+    let rows = map.stiffness.iter().zip(&map.speeds).zip(&map.unstable);
+    for ((k, speeds), &unstable) in rows.step_by(step.max(1)) {
+        if unstable > 0 {
+            writeln!(
+                s,
+                "  k = {k:9.3e} N/m: STATICALLY UNSTABLE ({unstable} mode(s) of negative net stiffness: the magnetic pull exceeds what the supports hold; no critical speed)"
+            )
+            .ok();
+            continue;
+        }
         let rpm: Vec<String> = speeds
             .iter()
             .map(|v| format!("{:10.1}", v * RAD_S_TO_RPM))
