@@ -9,7 +9,7 @@
 # Builds the release library for each platform (linux64: the host toolchain;
 # win64: the cross toolchain of scripts/setup.sh, docs/platforms.md), generates
 # modelDescription.xml, resources/model.toml and documentation/index.html from
-# the model (one source: the variable table in src/fmi2/variables.rs), checks
+# the model (one source: the variable table in src/fmu/variables/), checks
 # that every binary exports the 34 fmi2 functions of a co-simulation FMU and
 # that the DLL imports system DLLs only (scripts/fmu_binary_check.sh), zips the
 # FMU, then validates it with FMPy and fails on any problem.

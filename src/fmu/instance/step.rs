@@ -17,7 +17,7 @@ impl Instance {
         if let Err(s) = self.check(Call::DoStep) {
             return s;
         }
-        let call = Call::DoStep.name();
+        let call = Call::DoStep.name_in(self.version);
         let now = self.sim.time();
         let (t, h) = (Short(current), Short(step));
         if !(step.is_finite() && step > 0.0) {
@@ -61,9 +61,10 @@ impl Instance {
             return self.report(
                 Status::Error,
                 format!(
-                    "{call}: the step from {t} s by {h} s ends at {} s, past the stop time {} s of fmi2SetupExperiment",
+                    "{call}: the step from {t} s by {h} s ends at {} s, past the stop time {} s of {}",
                     Short(end),
-                    Short(stop)
+                    Short(stop),
+                    self.version.setup_call()
                 ),
             );
         }
@@ -116,8 +117,9 @@ impl Instance {
                 self.report(
                     Status::Discard,
                     format!(
-                        "{call} from {t} s by {h} s discarded at {} s: {e}. Roll back with fmi2SetFMUstate or reset.",
-                        Short(reached)
+                        "{call} from {t} s by {h} s discarded at {} s: {e}. Roll back with {} or reset.",
+                        Short(reached),
+                        self.version.set_state_call()
                     ),
                 )
             }
