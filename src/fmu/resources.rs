@@ -2,7 +2,7 @@
 //! load `model.toml` from that folder, check it against the GUID the importer
 //! read from `modelDescription.xml`, and build the [`Instance`].
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use super::instance::Instance;
 use crate::model::RotorModel;
@@ -77,7 +77,17 @@ pub fn instantiate(
     uri: &str,
     new: impl FnOnce(&str, RotorModel) -> Result<Instance, String>,
 ) -> Result<Instance, String> {
-    let dir = resource_dir(uri)?;
+    instantiate_in(name, guid, &resource_dir(uri)?, new)
+}
+
+/// [`instantiate`] from the resources folder `dir` itself (FMI 3.0's
+/// `resourcePath`).
+pub fn instantiate_in(
+    name: &str,
+    guid: &str,
+    dir: &Path,
+    new: impl FnOnce(&str, RotorModel) -> Result<Instance, String>,
+) -> Result<Instance, String> {
     let model = RotorModel::from_file(&dir.join(MODEL_FILE)).map_err(|e| e.to_string())?;
     let instance = new(name, model)?;
     if instance.guid() != guid {

@@ -288,6 +288,12 @@ impl Instance {
         self.version
     }
 
+    /// The simulator's time (s): after a step, the time it reached (the
+    /// communication point, or where a discarded step stopped).
+    pub fn time(&self) -> f64 {
+        self.sim.time()
+    }
+
     /// Current phase.
     pub fn phase(&self) -> Phase {
         self.phase
