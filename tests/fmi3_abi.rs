@@ -2,7 +2,9 @@
 //! `fmi-sys` bindings of the official FMI 3.0 headers, loaded with
 //! libloading): a Co-Simulation run equals the safe FMI 2.0 instance to the
 //! bit, the `fmi3DoStep` out-parameters say no event, no early return and the
-//! communication point; misuse (wrong state, NULL, wrong token, counts that do
+//! communication point; with `earlyReturnAllowed`, a step inside which a
+//! journal touches its bearing returns early at that internal step, and the
+//! run continued from there follows the run that never stopped; misuse (wrong state, NULL, wrong token, counts that do
 //! not match, NaN, a negative step, functions the FMU does not provide) gives
 //! fmi3Error with a message, never a crash. Needs the cdylib
 //! (`cargo build --lib`, which scripts/test.sh runs).
@@ -67,6 +69,16 @@ fn model() -> (RotorModel, PathBuf) {
 }
 
 fn instantiate(lib: &Fmi3Binding, token: &str, dir: &std::path::Path, tag: usize) -> fmi3Instance {
+    instantiate_with(lib, token, dir, tag, false)
+}
+
+fn instantiate_with(
+    lib: &Fmi3Binding,
+    token: &str,
+    dir: &std::path::Path,
+    tag: usize,
+    early_return_allowed: bool,
+) -> fmi3Instance {
     let name = CString::new("abi").unwrap();
     let token = CString::new(token).unwrap();
     let resources = CString::new(format!("{}/", dir.display())).unwrap();
@@ -80,7 +92,7 @@ fn instantiate(lib: &Fmi3Binding, token: &str, dir: &std::path::Path, tag: usize
             false,
             true,
             false,
-            false,
+            early_return_allowed,
             null(),
             0,
             tag as *mut c_void,
@@ -360,5 +372,128 @@ fn misuse_gives_fmi3_error_with_a_message() {
         lib.fmi3FreeInstance(null_mut());
         let version = CStr::from_ptr(lib.fmi3GetVersion() as *const c_char);
         assert_eq!(version.to_str().unwrap(), "3.0");
+    }
+}
+
+/// The Jeffcott rotor at 3000 rpm with 0.5 kg·m of unbalance on equal 1 ms
+/// internal steps: its orbit grows from the equilibrium until the journals
+/// reach their bearings at 42 ms, inside a 10 ms communication step.
+fn start_rub(lib: &Fmi3Binding, i: fmi3Instance, model: &RotorModel) {
+    let vr = |name: &str| {
+        variables(model)
+            .iter()
+            .find(|v| v.name == name)
+            .unwrap()
+            .value_reference
+    };
+    let names = [
+        "shaft.speed",
+        "unbalance.disk",
+        "solver.local_error_tolerance",
+        "solver.time_step",
+    ];
+    let refs: Vec<u32> = names.iter().map(|n| vr(n)).collect();
+    let values = [3000.0 * std::f64::consts::PI / 30.0, 0.5, 0.0, 1e-3];
+    assert_eq!(set(lib, i, &refs, &values), fmi3Status_fmi3OK);
+    // SAFETY: a live instance.
+    unsafe {
+        assert_eq!(
+            lib.fmi3EnterInitializationMode(i, false, 0.0, 0.0, false, 0.0),
+            fmi3Status_fmi3OK
+        );
+        assert_eq!(lib.fmi3ExitInitializationMode(i), fmi3Status_fmi3OK);
+    }
+}
+
+#[test]
+fn a_step_returns_early_where_a_journal_touches_its_bearing() {
+    let lib = library();
+    let (model, dir) = model();
+    let (_, token) = model_description(&model);
+    let vars = variables(&model);
+    let outputs: Vec<u32> = vars
+        .iter()
+        .filter(|v| v.causality == Causality::Output)
+        .map(|v| v.value_reference)
+        .collect();
+    let contact: Vec<u32> = vars
+        .iter()
+        .filter(|v| v.name.ends_with(".contact_force"))
+        .map(|v| v.value_reference)
+        .collect();
+    let stop = 0.1;
+
+    // The run that never stops, one internal step a communication step: the
+    // first step that ends in contact.
+    let a = instantiate_with(&lib, &token, &dir, 20, false);
+    start_rub(&lib, a, &model);
+    let mut never = vec![get(&lib, a, &outputs).1];
+    let mut touch = None;
+    for k in 0..100 {
+        let t = k as f64 * 1e-3;
+        let (s, _, _, early, _) = do_step(&lib, a, t, 1e-3);
+        assert_eq!(s, fmi3Status_fmi3OK, "{:?}", logged(20));
+        assert!(!early, "no early return unless allowed");
+        never.push(get(&lib, a, &outputs).1);
+        if touch.is_none() && get(&lib, a, &contact).1.iter().any(|&f| f > 0.0) {
+            touch = Some(t + 1e-3);
+        }
+    }
+    let touch = touch.expect("the journals reach their bearings within 0.1 s");
+
+    // Early return allowed, 10 ms communication steps.
+    let b = instantiate_with(&lib, &token, &dir, 21, true);
+    start_rub(&lib, b, &model);
+    let (mut t, mut first, mut returns) = (0.0f64, None, 0);
+    let mut worst = 0.0f64;
+    while t < stop - 1e-12 {
+        let next = ((t / 0.01 + 1e-9).floor() + 1.0) * 0.01;
+        let (s, event, terminate, early, last) = do_step(&lib, b, t, next - t);
+        assert_eq!(s, fmi3Status_fmi3OK, "{:?}", logged(21));
+        assert!(!event && !terminate);
+        let forces = get(&lib, b, &contact).1;
+        if early {
+            returns += 1;
+            assert!(
+                last < next && last > t,
+                "early return at {last} in ({t}, {next})"
+            );
+            assert!(forces.iter().any(|&f| f > 0.0), "in contact at {last}");
+            first.get_or_insert(last);
+        } else {
+            assert!((last - next).abs() < 1e-12, "{last} vs {next}");
+        }
+        // Where the run that never stopped has a point, the outputs agree.
+        let k = (last / 1e-3).round() as usize;
+        if (last - k as f64 * 1e-3).abs() < 1e-9 {
+            for (j, (x, y)) in get(&lib, b, &outputs).1.iter().zip(&never[k]).enumerate() {
+                let scale = never.iter().map(|row| row[j].abs()).fold(1e-12, f64::max);
+                worst = worst.max((x - y).abs() / scale);
+            }
+        }
+        t = last;
+    }
+    let first = first.expect("a step returned early");
+    eprintln!(
+        "journal touches at {touch} s (1 ms steps); first early return at {first} s; {returns} early returns in {stop} s; worst output difference {worst:.2e} of each output's largest value"
+    );
+    assert!(
+        (first - touch).abs() <= 1e-3 * (1.0 + 1e-9),
+        "{first} vs {touch}"
+    );
+    assert!(
+        logged(21)
+            .iter()
+            .any(|m| m.contains("returns early at") && m.contains("contact begins at")),
+        "{:?}",
+        logged(21)
+    );
+    // The continued run takes the same internal steps up to round-off in
+    // their times (measured 1.2e-11).
+    assert!(worst < 1e-9, "{worst}");
+    // SAFETY: live instances, freed once.
+    unsafe {
+        lib.fmi3FreeInstance(a);
+        lib.fmi3FreeInstance(b);
     }
 }

@@ -51,7 +51,7 @@ const CO_SIMULATION: [(&str, &str); 16] = [
     ("maxOutputDerivativeOrder", "0"),
     ("recommendedIntermediateInputSmoothness", "0"),
     ("providesIntermediateUpdate", "false"),
-    ("mightReturnEarlyFromDoStep", "false"),
+    ("mightReturnEarlyFromDoStep", "true"),
     ("canReturnEarlyAfterIntermediateUpdate", "false"),
     ("hasEventMode", "false"),
     ("providesEvaluateDiscreteStates", "false"),

@@ -29,6 +29,7 @@ struct Request {
     resources: Option<String>,
     logging_on: bool,
     event_mode_used: bool,
+    early_return_allowed: bool,
     environment: fmi3InstanceEnvironment,
     logger: fmi3LogMessageCallback,
 }
@@ -69,6 +70,7 @@ fn instantiate(r: Request) -> fmi3Instance {
                 logging_on: r.logging_on,
                 categories: [true; LOG_CATEGORIES.len()],
             });
+            comp.instance.set_early_return(r.early_return_allowed);
             comp.sync_step_statistics();
             comp.flush();
             Box::into_raw(comp).cast()
@@ -78,10 +80,11 @@ fn instantiate(r: Request) -> fmi3Instance {
 }
 
 /// `fmi3InstantiateCoSimulation`: a Co-Simulation instance of the model in
-/// the resources folder (NULL with a logged message on failure). The FMU
-/// provides no intermediate updates and never returns early, so
-/// `earlyReturnAllowed`, the required intermediate variables and the
-/// intermediate-update callback are not used.
+/// the resources folder (NULL with a logged message on failure). With
+/// `earlyReturnAllowed`, `fmi3DoStep` returns early where a contact begins
+/// (`mightReturnEarlyFromDoStep`); the FMU provides no intermediate updates,
+/// so the required intermediate variables and the intermediate-update
+/// callback are not used.
 ///
 /// # Safety
 ///
@@ -94,7 +97,7 @@ pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
     _visible: fmi3Boolean,
     loggingOn: fmi3Boolean,
     eventModeUsed: fmi3Boolean,
-    _earlyReturnAllowed: fmi3Boolean,
+    earlyReturnAllowed: fmi3Boolean,
     _requiredIntermediateVariables: *const fmi3ValueReference,
     _nRequiredIntermediateVariables: usize,
     instanceEnvironment: fmi3InstanceEnvironment,
@@ -115,6 +118,7 @@ pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
         resources,
         logging_on: loggingOn,
         event_mode_used: eventModeUsed,
+        early_return_allowed: earlyReturnAllowed,
         environment: instanceEnvironment,
         logger: logMessage,
     };
@@ -307,9 +311,11 @@ pub unsafe extern "C" fn fmi3Reset(instance: fmi3Instance) -> fmi3Status {
 }
 
 /// `fmi3DoStep`: the same step as fmi2DoStep. It never asks for event
-/// handling or the end of the simulation and never returns early; the last
-/// successful time is where the simulator stands (the communication point,
-/// or where a discarded step stopped).
+/// handling or the end of the simulation; with `earlyReturnAllowed` it
+/// returns early (`earlyReturn = true`) after the first internal step at
+/// which a bearing's or rub's contact begins. The last successful time is
+/// where the simulator stands (the communication point, the early return's
+/// internal time, or where a discarded step stopped).
 ///
 /// # Safety
 ///
@@ -345,7 +351,7 @@ pub unsafe extern "C" fn fmi3DoStep(
         let status = i.do_step(currentCommunicationPoint, communicationStepSize);
         *event = false;
         *terminate = false;
-        *early = false;
+        *early = matches!(status, Status::Ok | Status::Warning) && i.early_return_at().is_some();
         *last = i.time();
         status
     })

@@ -106,6 +106,7 @@ impl Instance {
             Ok(Some(sim)) => {
                 self.watch = ValidityWatch::new(sim.rotor());
                 self.sim = sim;
+                self.sim.set_stop_at_contact(self.early_return);
                 let line = self.sim.rotor().coordinates();
                 self.messages.push((Status::Ok, category(Status::Ok), line));
             }

@@ -153,6 +153,10 @@ pub struct Instance {
     implausible: Option<String>,
     /// The bounds of those displacements, found once.
     limits: DisplacementLimits,
+    /// Whether steps stop where a contact begins ([`Instance::set_early_return`]).
+    early_return: bool,
+    /// Where the last step stopped because a contact began.
+    early_return_at: Option<f64>,
 }
 
 fn category(status: Status) -> &'static str {
@@ -222,6 +226,8 @@ impl Instance {
             step_statistics: false,
             implausible: None,
             limits: DisplacementLimits::new(&model),
+            early_return: false,
+            early_return_at: None,
             model,
         })
     }
@@ -266,6 +272,7 @@ impl Instance {
         }
         self.watch = ValidityWatch::new(sim.rotor());
         self.sim = sim;
+        self.sim.set_stop_at_contact(self.early_return);
         self.params.reduced_modes = modes;
         let line = self.sim.rotor().coordinates();
         self.messages.push((Status::Ok, category(Status::Ok), line));
@@ -614,6 +621,7 @@ impl Instance {
             Ok(sim) => {
                 self.watch = ValidityWatch::new(sim.rotor());
                 self.sim = sim;
+                self.sim.set_stop_at_contact(self.early_return);
                 self.params = params;
                 self.tuned = model_tuned(&self.model);
                 self.phase = Phase::Instantiated;
