@@ -69,7 +69,7 @@ for stem in stems:
         os.makedirs(fmu_dir)
         fmu = os.path.join(fmu_dir, stem + ".fmu")
         shutil.copy(source, fmu)
-        outputs = [v.name for v in md.modelVariables if v.causality == "output"]
+        outputs = [v.name for v in md.modelVariables if v.causality == "output" and not v.dimensions]
         signal = None
         if any(v.name == "shaft.speed" and v.causality == "input" for v in md.modelVariables):
             w = model["speed_rpm"] * np.pi / 30.0

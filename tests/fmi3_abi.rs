@@ -267,7 +267,7 @@ fn misuse_gives_fmi3_error_with_a_message() {
     let s = unsafe { lib.fmi3GetFloat64(i, [speed].as_ptr(), 1, two.as_mut_ptr(), 2) };
     assert_eq!(s, error);
     assert!(
-        last(12).contains("2 values for 1 value references"),
+        last(12).contains("2 values for 1 scalar values"),
         "{}",
         last(12)
     );
@@ -496,4 +496,60 @@ fn a_step_returns_early_where_a_journal_touches_its_bearing() {
         lib.fmi3FreeInstance(a);
         lib.fmi3FreeInstance(b);
     }
+}
+
+#[test]
+fn an_input_array_writes_its_elements_and_an_output_array_reads_them() {
+    let lib = library();
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/data/torque_ports.toml");
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fmi3_abi_ports");
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::copy(&path, dir.join("model.toml")).unwrap();
+    let model = RotorModel::from_file(&path).unwrap();
+    let (_, token) = model_description(&model);
+    let vars = variables(&model);
+    let list = rotor_bearing::fmi3::arrays::arrays(&vars);
+    let array = |name: &str| list.iter().find(|a| a.name == name).unwrap().clone();
+    let i = instantiate(&lib, &token, &dir, 30);
+    assert!(!i.is_null(), "{:?}", logged(30));
+    // ports.fx = [ports.amb.fx]: a write through the array is the scalar's.
+    let fx = array("ports.fx");
+    assert_eq!(
+        set(&lib, i, &[fx.value_reference], &[12.5]),
+        fmi3Status_fmi3OK
+    );
+    // SAFETY: a live instance.
+    unsafe {
+        assert_eq!(
+            lib.fmi3EnterInitializationMode(i, false, 0.0, 0.0, false, 0.0),
+            fmi3Status_fmi3OK
+        );
+    }
+    assert_eq!(get(&lib, i, &fx.elements).1, vec![12.5]);
+    // SAFETY: a live instance.
+    unsafe { assert_eq!(lib.fmi3ExitInitializationMode(i), fmi3Status_fmi3OK) };
+    assert_eq!(
+        do_step(&lib, i, 0.0, 0.01).0,
+        fmi3Status_fmi3OK,
+        "{:?}",
+        logged(30)
+    );
+    // bearings.x and a scalar beside it in one call: the array's elements
+    // in model order, then the scalar.
+    let x = array("bearings.x");
+    assert_eq!(x.elements.len(), 2);
+    let mut out = [f64::NAN; 3];
+    let refs = [x.value_reference, x.elements[0]];
+    // SAFETY: two references, three writable values (the array has two).
+    let s = unsafe { lib.fmi3GetFloat64(i, refs.as_ptr(), 2, out.as_mut_ptr(), 3) };
+    assert_eq!(s, fmi3Status_fmi3OK);
+    let scalars = get(&lib, i, &x.elements).1;
+    assert_eq!(out[..2], scalars[..]);
+    assert_eq!(out[2], scalars[0]);
+    assert!(
+        scalars.iter().all(|v| v.is_finite() && *v != 0.0),
+        "{scalars:?}"
+    );
+    // SAFETY: a live instance, freed once.
+    unsafe { lib.fmi3FreeInstance(i) };
 }

@@ -3,6 +3,8 @@
 //!
 //! - [`xml`]: the FMI 3.0 `modelDescription.xml` generated from the variable
 //!   table, with an instantiation token hashed from the description;
+//! - [`arrays`]: `fmi3Float64` arrays over the table's per-bearing, per-probe
+//!   and per-port inputs and outputs (`bearings.x`, `ports.fx`, ...);
 //! - [`resources`]: an FMI 3.0 instance (`Instance::new_fmi3`) and the
 //!   instantiation from the `resourcePath` folder, checked against the token;
 //! - `exports`: the C ABI (`fmi3*` symbols, every function of
@@ -17,6 +19,7 @@
 //! `fmi3DoStep` is held over the whole step (zero-order hold), exactly as an
 //! FMI 2.0 input set without `fmi2SetRealInputDerivatives`.
 
+pub mod arrays;
 mod exports;
 pub mod resources;
 pub mod xml;

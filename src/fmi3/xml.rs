@@ -9,6 +9,7 @@
 use quick_xml::Writer;
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, Event};
 
+use super::arrays::{Array, arrays};
 use crate::fmu::description::{
     GUID_PLACEHOLDER, MODEL_IDENTIFIER, fmt_real, guid_of, log_category_events, model_text,
     unit_events,
@@ -103,20 +104,47 @@ fn render(model: &RotorModel, vars: &[Variable], token: &str) -> String {
     for v in vars {
         emit(Event::Empty(variable(v)));
     }
+    let arrays = arrays(vars);
+    for a in &arrays {
+        emit(Event::Start(array(a, vars)));
+        let mut dim = BytesStart::new("Dimension");
+        dim.push_attribute(("start", a.elements.len().to_string().as_str()));
+        emit(Event::Empty(dim));
+        emit(Event::End(BytesEnd::new("Float64")));
+    }
     emit(Event::End(BytesEnd::new("ModelVariables")));
 
     let speed = vars
         .iter()
         .find(|v| v.binding == Binding::Speed)
         .map(|v| v.value_reference.to_string());
+    // Each output, then each output array (fed through from the speed when
+    // any element is).
+    let outputs: Vec<(u32, bool)> = vars
+        .iter()
+        .filter(|v| v.causality == Causality::Output)
+        .map(|v| (v.value_reference, v.feedthrough_speed))
+        .chain(
+            arrays
+                .iter()
+                .filter(|a| a.causality == Causality::Output)
+                .map(|a| {
+                    let through = a
+                        .elements
+                        .iter()
+                        .any(|&e| vars[e as usize].feedthrough_speed);
+                    (a.value_reference, through)
+                }),
+        )
+        .collect();
     emit(Event::Start(BytesStart::new("ModelStructure")));
     for section in ["Output", "InitialUnknown"] {
-        for v in vars.iter().filter(|v| v.causality == Causality::Output) {
+        for &(vr, feedthrough) in &outputs {
             let mut u = BytesStart::new(section);
-            u.push_attribute(("valueReference", v.value_reference.to_string().as_str()));
+            u.push_attribute(("valueReference", vr.to_string().as_str()));
             if section == "Output" {
                 // Outputs follow the state; film forces and friction also the speed directly.
-                match (&speed, v.feedthrough_speed) {
+                match (&speed, feedthrough) {
                     (Some(vr), true) => {
                         u.push_attribute(("dependencies", vr.as_str()));
                         u.push_attribute(("dependenciesKind", "dependent"));
@@ -132,6 +160,48 @@ fn render(model: &RotorModel, vars: &[Variable], token: &str) -> String {
     let mut text = String::from_utf8(w.into_inner()).unwrap_or_default();
     text.push('\n');
     text
+}
+
+/// The `<Float64>` start element of an array (its `<Dimension>` follows).
+fn array(a: &Array, vars: &[Variable]) -> BytesStart<'static> {
+    let mut t = BytesStart::new("Float64");
+    t.push_attribute(("name", a.name.as_str()));
+    t.push_attribute(("valueReference", a.value_reference.to_string().as_str()));
+    let names: Vec<&str> = a
+        .elements
+        .iter()
+        .map(|&e| vars[e as usize].name.as_str())
+        .collect();
+    let description = format!("Array of {}", names.join(", "));
+    t.push_attribute(("description", description.as_str()));
+    let inputs = a.causality == Causality::Input;
+    t.push_attribute(("causality", if inputs { "input" } else { "output" }));
+    t.push_attribute((
+        "variability",
+        match a.variability {
+            Variability::Fixed => "fixed",
+            Variability::Tunable => "tunable",
+            Variability::Continuous => "continuous",
+        },
+    ));
+    if !inputs {
+        t.push_attribute(("initial", "calculated"));
+    }
+    if let Some(u) = a.unit {
+        t.push_attribute(("unit", u));
+    }
+    if let Some(d) = a.display_unit {
+        t.push_attribute(("displayUnit", d));
+    }
+    if inputs {
+        let starts: Vec<String> = a
+            .elements
+            .iter()
+            .map(|&e| fmt_real(vars[e as usize].start.unwrap_or(0.0)))
+            .collect();
+        t.push_attribute(("start", starts.join(" ").as_str()));
+    }
+    t
 }
 
 /// The element of one table variable (`<Float64>`, `<Int32>`, `<Boolean>`).

@@ -46,7 +46,7 @@ class Run:
             self.fmu = FMU2Slave(guid=self.md.guid, unzipDirectory=self.dir,
                                  modelIdentifier=ident, instanceName=name)
         self.vr = {v.name: v.valueReference for v in self.md.modelVariables}
-        self.outputs = [v.name for v in self.md.modelVariables if v.causality == "output"]
+        self.outputs = [v.name for v in self.md.modelVariables if v.causality == "output" and not v.dimensions]
         self.speed = self.vr.get("shaft.speed") if any(
             v.name == "shaft.speed" and v.causality == "input" for v in self.md.modelVariables) else None
         self.fmu.instantiate()
@@ -128,6 +128,24 @@ for stem in stems:
         differ += sum(bits(x) != bits(y) for x, y in zip(ya, yb))
     print(f"{stem}: {STEPS} steps of {H} s, {len(a.outputs)} outputs: {differ} values differ "
           "between FMI 2.0 and FMI 3.0")
+    # The arrays read (and write) as their elements, to the bit.
+    arrays = [v for v in b.md.modelVariables if v.dimensions]
+    wrong = []
+    for arr in arrays:
+        n = int(arr.dimensions[0].start)
+        names = [x.strip() for x in arr.description[len("Array of "):].split(",")]
+        whole = b.fmu.getFloat64([arr.valueReference], nValues=n)
+        parts = b.get([b.vr[x] for x in names])
+        if len(names) != n or [bits(x) for x in whole] != [bits(x) for x in parts]:
+            wrong.append(arr.name)
+        if arr.causality == "input":
+            b.fmu.setFloat64([arr.valueReference], [x + 1.0 for x in parts])
+            if b.get([b.vr[x] for x in names]) != [x + 1.0 for x in parts]:
+                wrong.append(arr.name + " (set)")
+            b.fmu.setFloat64([arr.valueReference], parts)
+    print(f"{stem}: {len(arrays)} arrays ({', '.join(a.name for a in arrays[:4])}, ...) read as their elements")
+    if wrong or not arrays:
+        failures.append(f"{stem}: arrays {wrong} differ from their elements (of {len(arrays)})")
     if differ:
         failures.append(f"{stem}: {differ} output values differ between the FMI 2.0 and FMI 3.0 FMUs")
     a.close()

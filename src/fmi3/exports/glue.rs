@@ -7,6 +7,7 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use fmi_sys::fmi3::*;
 
+use crate::fmi3::arrays::{ARRAY_BASE, Array};
 use crate::fmu::description::LOG_CATEGORIES;
 use crate::fmu::instance::{Instance, Status};
 use crate::fmu::snapshot::Snapshot;
@@ -15,6 +16,8 @@ use crate::fmu::states::Call;
 /// The C-side wrapper of an instance.
 pub(super) struct Component {
     pub(super) instance: Instance,
+    /// The `fmi3Float64` arrays over the table ([`crate::fmi3::arrays`]).
+    pub(super) arrays: Vec<Array>,
     pub(super) environment: fmi3InstanceEnvironment,
     pub(super) logger: fmi3LogMessageCallback,
     pub(super) logging_on: bool,
@@ -210,4 +213,21 @@ pub(super) fn null_argument(inst: &mut Instance, call: Call) -> Status {
 /// provide (`name`, and why).
 pub(super) fn not_provided(comp: Option<&mut Component>, name: &str, why: &str) -> fmi3Status {
     guarded(comp, |i| i.report(Status::Error, format!("{name}: {why}")))
+}
+
+/// `refs` with every array's reference replaced by its elements' (`None`
+/// when `refs` names no array: they stand as they are).
+pub(super) fn expand(comp: &Option<&mut Component>, refs: Option<&[u32]>) -> Option<Vec<u32>> {
+    let (comp, refs) = (comp.as_deref()?, refs?);
+    if refs.iter().all(|&r| r < ARRAY_BASE) {
+        return None;
+    }
+    let mut out = Vec::with_capacity(refs.len());
+    for &r in refs {
+        match comp.arrays.iter().find(|a| a.value_reference == r) {
+            Some(a) => out.extend_from_slice(&a.elements),
+            None => out.push(r),
+        }
+    }
+    Some(out)
 }

@@ -7,6 +7,7 @@ use std::path::PathBuf;
 
 use fmi_sys::fmi3::*;
 
+use crate::fmi3::arrays::arrays;
 use crate::fmi3::resources;
 use crate::fmu::description::LOG_CATEGORIES;
 use crate::fmu::instance::{Instance, Status};
@@ -63,7 +64,9 @@ fn instantiate(r: Request) -> fmi3Instance {
     let token = r.token.unwrap_or_default();
     match resources::instantiate(&name, &token, &PathBuf::from(dir)) {
         Ok(instance) => {
+            let arrays = arrays(instance.variables());
             let mut comp = Box::new(Component {
+                arrays,
                 instance,
                 environment: r.environment,
                 logger: r.logger,

@@ -1,7 +1,8 @@
 //! Exports reading and writing variables: fmi3GetFloat64/Int32/Boolean and
 //! their setters over the table's Real, Integer and Boolean variables (plus
-//! the independent variable `time`, read only), and the other types, which
-//! the FMU has no variable of.
+//! the independent variable `time`, read only, and the `fmi3Float64` arrays,
+//! each read or written as its elements), and the other types, which the FMU
+//! has no variable of.
 
 use fmi_sys::fmi3::*;
 
@@ -43,7 +44,7 @@ fn counts_match(
     Err(i.report(
         Status::Error,
         format!(
-            "{name}: {n_values} values for {n_refs} value references (every variable of this FMU is a scalar)"
+            "{name}: {n_values} values for {n_refs} scalar values (arrays counted by their elements)"
         ),
     ))
 }
@@ -164,6 +165,8 @@ pub unsafe extern "C" fn fmi3GetFloat64(
             slice_from_mut(values, nValues),
         )
     };
+    let expanded = expand(&comp, refs);
+    let refs = expanded.as_deref().or(refs);
     get_values(comp, refs, out, nValues, Kind::Real, |v| v)
 }
 
@@ -239,6 +242,8 @@ pub unsafe extern "C" fn fmi3SetFloat64(
             slice_from(values, nValues),
         )
     };
+    let expanded = expand(&comp, refs);
+    let refs = expanded.as_deref().or(refs);
     set_checked(comp, refs, vals, Kind::Real, |v| v)
 }
 

@@ -290,6 +290,11 @@ impl Instance {
         &self.guid
     }
 
+    /// The variable table of the instance's model.
+    pub fn variables(&self) -> &[Variable] {
+        &self.vars
+    }
+
     /// The FMI version the instance speaks.
     pub fn version(&self) -> Version {
         self.version
