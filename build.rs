@@ -1,6 +1,6 @@
 //! Build script: tells Cargo which inputs outside `src/` the crate embeds.
 //! The FMI interface is generated the other way round — `modelDescription.xml`
-//! comes from the variable table in `src/fmi2/variables.rs`, and the test
+//! comes from the variable table in `src/fmu/variables/`, and the test
 //! `tests/fmu.rs` proves the file at the repo root is exactly that output.
 //!
 //! It also records the source tree's `git describe --always --dirty --tags`

@@ -5,12 +5,18 @@
 #   ./fmu_pack.sh --model FILE.toml    # any model → out/<model name>.fmu
 #   ./fmu_pack.sh --model F --out X.fmu
 #   ./fmu_pack.sh --platforms linux64  # one platform only (default: linux64,win64)
+#   ./fmu_pack.sh --fmi 3              # an FMI 3.0 FMU: out/<name>_fmi3.fmu (--out names it)
+#   ./fmu_pack.sh --fmi 2,3            # both: out/<name>.fmu and out/<name>_fmi3.fmu
+#                                      # (FMI 2.0 is the default; with --out X.fmu: X_fmi3.fmu)
 #
 # Builds the release library for each platform (linux64: the host toolchain;
-# win64: the cross toolchain of scripts/setup.sh, docs/platforms.md), generates
+# win64: the cross toolchain of scripts/setup.sh, docs/platforms.md; one library
+# carries the fmi2* and the fmi3* functions, packed without its debug
+# information), generates
 # modelDescription.xml, resources/model.toml and documentation/index.html from
-# the model (one source: the variable table in src/fmi2/variables.rs), checks
-# that every binary exports the 34 fmi2 functions of a co-simulation FMU and
+# the model (one source: the variable table in src/fmu/variables/), checks
+# that every binary exports the 34 fmi2 functions of a co-simulation FMU (for
+# FMI 3.0 the 75 fmi3 functions) and
 # that the DLL imports system DLLs only (scripts/fmu_binary_check.sh), zips the
 # FMU, then validates it with FMPy and fails on any problem.
 set -euo pipefail
@@ -18,15 +24,17 @@ cd "$(dirname "$0")"
 model=models/hydro_unit.toml
 out=""
 platforms=linux64,win64
+fmi=2
 while [ $# -gt 0 ]; do
   case "$1" in
-    --model|--out|--platforms) [ $# -ge 2 ] || { echo "fmu_pack.sh: $1 needs a value" >&2; exit 2; } ;;
+    --model|--out|--platforms|--fmi) [ $# -ge 2 ] || { echo "fmu_pack.sh: $1 needs a value" >&2; exit 2; } ;;
   esac
   case "$1" in
     --model) model="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
     --platforms) platforms="$2"; shift 2 ;;
-    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
+    --fmi) fmi="$2"; shift 2 ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
     *) echo "fmu_pack.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
@@ -40,6 +48,16 @@ for p in "${chosen[@]}"; do
     *) echo "fmu_pack.sh: --platforms $platforms: unknown platform \"$p\" (linux64, win64)" >&2; exit 2 ;;
   esac
 done
+fmi2="" fmi3=""
+IFS=, read -r -a versions <<< "$fmi"
+for v in "${versions[@]}"; do
+  case "$v" in
+    2) fmi2=1 ;;
+    3) fmi3=1 ;;
+    *) echo "fmu_pack.sh: --fmi $fmi: unknown FMI version \"$v\" (2, 3)" >&2; exit 2 ;;
+  esac
+done
+[ -n "$fmi2$fmi3" ] || { echo "fmu_pack.sh: --fmi \"$fmi\" names no FMI version (2, 3)" >&2; exit 2; }
 [ -n "$linux64$win64" ] || { echo "fmu_pack.sh: --platforms \"$platforms\" names no platform (linux64, win64)" >&2; exit 2; }
 # Packing installs nothing: scripts/setup.sh and scripts/python_env.sh (run by
 # both README commands) provide the toolchains, libclang and the venv with FMPy.
@@ -69,27 +87,35 @@ fi
 
 # Exports and (for the DLL) imports of each binary (scripts/fmu_binary_check.sh).
 checked=()
-if [ -n "$linux64" ]; then checked+=("$(bash scripts/fmu_binary_check.sh "$so")"); fi
-if [ -n "$win64" ]; then checked+=("$(bash scripts/fmu_binary_check.sh "$dll")"); fi
+for v in ${fmi2:+2} ${fmi3:+3}; do
+  if [ -n "$linux64" ]; then checked+=("$(bash scripts/fmu_binary_check.sh --fmi "$v" "$so")"); fi
+  if [ -n "$win64" ]; then checked+=("$(bash scripts/fmu_binary_check.sh --fmi "$v" "$dll")"); fi
+done
+if [ -n "$linux64" ] && [ -n "$win64" ]; then
+  packed="linux64 and win64"
+else
+  packed="${linux64:+linux64}${win64:+win64} only (--platforms $platforms)"
+fi
 
-stage=$(mktemp -d)
-trap 'rm -rf "$stage"' EXIT
-read -r name guid < <(target/release/rotor fmu-stage "$model" "$stage" 2>/dev/null)
-rm -rf "$stage/binaries"
-if [ -n "$linux64" ]; then
-  mkdir -p "$stage/binaries/linux64"
-  cp "$so" "$stage/binaries/linux64/RotorBearing.so"
-fi
-if [ -n "$win64" ]; then
-  mkdir -p "$stage/binaries/win64"
-  cp "$dll" "$stage/binaries/win64/RotorBearing.dll"
-fi
-if [ -z "$out" ]; then
-  if [ "$model" = models/hydro_unit.toml ]; then out=out/RotorBearing.fmu; else out="out/$name.fmu"; fi
-fi
-mkdir -p "$(dirname "$out")"
-rm -f "$out"
-.venv/bin/python - "$stage" "$out" <<'PY'
+# pack VERSION OUT: stage, copy the binaries (debug information stripped), zip,
+# validate with FMPy.
+pack() {
+  local version=$1 target=$2 stage="$work/fmi$1" linux_dir win_dir name guid
+  mkdir -p "$stage"
+  read -r name guid < <(target/release/rotor fmu-stage --fmi "$version" "$model" "$stage" 2>/dev/null)
+  rm -rf "$stage/binaries"
+  if [ "$version" = 3 ]; then linux_dir=x86_64-linux win_dir=x86_64-windows; else linux_dir=linux64 win_dir=win64; fi
+  if [ -n "$linux64" ]; then
+    mkdir -p "$stage/binaries/$linux_dir"
+    strip --strip-debug -o "$stage/binaries/$linux_dir/RotorBearing.so" "$so"
+  fi
+  if [ -n "$win64" ]; then
+    mkdir -p "$stage/binaries/$win_dir"
+    x86_64-w64-mingw32-strip --strip-debug -o "$stage/binaries/$win_dir/RotorBearing.dll" "$dll"
+  fi
+  mkdir -p "$(dirname "$target")"
+  rm -f "$target"
+  .venv/bin/python - "$stage" "$target" <<'PY'
 import os, sys, zipfile
 stage, out = sys.argv[1], sys.argv[2]
 with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
@@ -99,7 +125,7 @@ with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
             path = os.path.join(root, f)
             z.write(path, os.path.relpath(path, stage))
 PY
-.venv/bin/python - "$out" <<'PY' || { rm -f "$out"; exit 1; }
+  .venv/bin/python - "$target" <<'PY' || { rm -f "$target"; exit 1; }
 import sys
 from fmpy.validation import validate_fmu
 problems = validate_fmu(sys.argv[1])
@@ -107,10 +133,22 @@ if problems:
     print("\n".join(problems), file=sys.stderr)
     sys.exit(f"fmu_pack.sh: FMPy validation of {sys.argv[1]} failed")
 PY
-if [ -n "$linux64" ] && [ -n "$win64" ]; then
-  packed="linux64 and win64"
+  local token=GUID
+  [ "$version" = 2 ] || token="FMI 3.0, instantiationToken"
+  echo "packed $target ($name, $token $guid) for $packed, FMPy validation passed"
+}
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+name=$(target/release/rotor fmu-stage "$model" "$work/name" 2>/dev/null | awk '{ print $1 }')
+if [ -z "$out" ]; then
+  if [ "$model" = models/hydro_unit.toml ]; then base=out/RotorBearing; else base="out/$name"; fi
+  out2="$base.fmu" out3="${base}_fmi3.fmu"
+elif [ -n "$fmi2" ] && [ -n "$fmi3" ]; then
+  out2="$out" out3="${out%.fmu}_fmi3.fmu"
 else
-  packed="${linux64:+linux64}${win64:+win64} only (--platforms $platforms)"
+  out2="$out" out3="$out"
 fi
-echo "packed $out ($name, GUID $guid) for $packed, FMPy validation passed"
+if [ -n "$fmi2" ]; then pack 2 "$out2"; fi
+if [ -n "$fmi3" ]; then pack 3 "$out3"; fi
 printf '  %s\n' "${checked[@]}"

@@ -13,10 +13,13 @@ cargo clippy --lib --no-default-features --quiet -- -D warnings
 # tests use the packed FMU (fmu_pack.sh builds the linux64 and win64 binaries,
 # packs and validates it with FMPy; tests/wine.rs runs the win64 one under Wine).
 cargo build --lib --examples --quiet
-bash fmu_pack.sh
-for model in models/*.toml tests/data/torque_ports.toml; do
-  [ "$model" = models/hydro_unit.toml ] || bash fmu_pack.sh --model "$model"
+# Every shipped model as an FMI 2.0 and an FMI 3.0 FMU (out/<name>.fmu,
+# out/<name>_fmi3.fmu; tests/fmi3.rs compares them).
+bash fmu_pack.sh --fmi 2,3
+for model in models/*.toml; do
+  [ "$model" = models/hydro_unit.toml ] || bash fmu_pack.sh --fmi 2,3 --model "$model"
 done
+bash fmu_pack.sh --model tests/data/torque_ports.toml
 # The torque-driven hydro unit's speed-driven twin (the same model file with
 # drive = "speed") for the load-rejection comparison of tests/system_plant.rs.
 sed 's/^drive = "torque"$/drive = "speed"/' models/hydro_unit_torque.toml > out/hydro_unit_torque_speed.toml

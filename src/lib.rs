@@ -11,6 +11,8 @@ pub mod analysis;
 pub mod bearing;
 pub mod fe;
 pub mod fmi2;
+pub mod fmi3;
+pub mod fmu;
 pub mod linalg;
 pub mod model;
 #[cfg(feature = "plot")]

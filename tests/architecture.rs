@@ -18,7 +18,9 @@ const LAYERS: &[(&str, u32)] = &[
     ("rotor", 3),
     ("solver", 4),
     ("analysis", 5),
-    ("fmi2", 5),
+    ("fmu", 5),
+    ("fmi2", 6),
+    ("fmi3", 6),
     ("report", 6),
     ("plot", 6),
 ];

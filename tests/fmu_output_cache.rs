@@ -1,5 +1,5 @@
 //! The FMU evaluates its outputs once per change of the state and serves each
-//! read from that evaluation (`src/fmi2/instance/values.rs`). Reading the
+//! read from that evaluation (`src/fmu/instance/values.rs`). Reading the
 //! outputs in any order, repeatedly, after a rollback with fmi2SetFMUstate
 //! and after a set of a tunable parameter or an input gives, bit for bit, what
 //! a fresh evaluation gives: each value read as the first read after a

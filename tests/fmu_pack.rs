@@ -1,5 +1,7 @@
 //! Packing: `fmu_pack.sh --platforms` packs what it is asked for and says so,
-//! refuses an unknown platform by name, and `scripts/fmu_binary_check.sh` (the
+//! refuses an unknown platform by name, `--fmi 3` packs an FMI 3.0 FMU (the
+//! FMI 3.0 platform folder and model description) and an unknown FMI version
+//! is refused by name, and `scripts/fmu_binary_check.sh` (the
 //! export and import checks of both binaries) passes a complete binary and
 //! fails, naming the culprit, on a missing export or a non-system DLL. The
 //! two-platform default FMUs are checked by tests/wine.rs.
@@ -103,6 +105,13 @@ fn the_binary_check_passes_complete_binaries_and_names_what_is_wrong() {
         text.contains("imports DLLs that are not part of Windows: libwinpthread-1.dll"),
         "{text}"
     );
+    // With --fmi 3 the 75 functions of fmi3Functions.h are required: the
+    // FMI 2.0 stub lacks them.
+    let (out, text) = run(Command::new("bash")
+        .args(["scripts/fmu_binary_check.sh", "--fmi", "3"])
+        .arg(&so));
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains("does not export fmi3"), "{text}");
     let (out, text) = check(&dir.join("full.c"));
     assert_eq!(out.status.code(), Some(2), "{text}");
     let _ = std::fs::remove_dir_all(&dir);
@@ -130,6 +139,46 @@ fn platforms_packs_what_it_is_asked_for_and_refuses_unknown_ones() {
     assert!(out.status.success(), "{list}");
     assert!(list.contains("binaries/linux64/RotorBearing.so"), "{list}");
     assert!(!list.contains("binaries/win64"), "{list}");
+
+    // FMI 3.0: the same library under the FMI 3.0 platform folder, with the
+    // FMI 3.0 model description; an unknown version is refused by name.
+    let fmu3 = dir.join("jeffcott_3.fmu");
+    let (out, text) = run(Command::new("bash").args([
+        "fmu_pack.sh",
+        "--model",
+        "models/jeffcott.toml",
+        "--platforms",
+        "linux64",
+        "--fmi",
+        "3",
+        "--out",
+        fmu3.to_str().unwrap(),
+    ]));
+    assert!(out.status.success(), "{text}");
+    assert!(text.contains("FMI 3.0, instantiationToken {"), "{text}");
+    assert!(text.contains("75 fmi3 functions exported"), "{text}");
+    let (out, list) = run(Command::new("unzip").arg("-l").arg(&fmu3));
+    assert!(out.status.success(), "{list}");
+    assert!(
+        list.contains("binaries/x86_64-linux/RotorBearing.so"),
+        "{list}"
+    );
+    assert!(!list.contains("binaries/linux64"), "{list}");
+    let (out, xml) = run(Command::new("unzip")
+        .args(["-p"])
+        .arg(&fmu3)
+        .arg("modelDescription.xml"));
+    assert!(out.status.success(), "{xml}");
+    assert!(xml.contains("fmiVersion=\"3.0\""), "{xml}");
+    let (out, text) = run(Command::new("bash").args([
+        "fmu_pack.sh",
+        "--fmi",
+        "2,4",
+        "--out",
+        dir.join("x.fmu").to_str().unwrap(),
+    ]));
+    assert_eq!(out.status.code(), Some(2), "{text}");
+    assert!(text.contains("unknown FMI version \"4\""), "{text}");
 
     for (platforms, named) in [("linux64,mac64", "\"mac64\""), ("", "no platform")] {
         let (out, text) = run(Command::new("bash").args([

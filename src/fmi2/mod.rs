@@ -1,26 +1,20 @@
-//! FMI 2.0 Co-Simulation layer: translation only, no physics.
+//! FMI 2.0 Co-Simulation layer: translation only, no physics, over the
+//! version-neutral FMU of [`crate::fmu`].
 //!
-//! - [`variables`]: the variable table derived from the rotor model (value
-//!   references, units, bindings) — the single source of the interface;
-//! - [`xml`]: `modelDescription.xml` generated from that table, with a GUID
-//!   hashed from the description;
-//! - [`states`]: the FMI 2.0 Co-Simulation state machine and the one table of
-//!   the states each call is allowed in;
-//! - [`instance`]: one FMU instance in safe Rust (get/set dispatch, steps)
-//!   driving the [`crate::solver::Simulator`];
-//! - [`snapshot`]: the FMU state and its versioned, checksummed byte image;
-//! - [`resources`]: instantiation from the `fmuResourceLocation` URI (decoding,
-//!   loading and checking the model);
-//! - `exports`: the C ABI (`fmi2*` symbols) over `instance`, types from the
+//! - [`xml`]: the FMI 2.0 `modelDescription.xml` generated from the variable
+//!   table, with a GUID hashed from the description;
+//! - [`resources`]: an FMI 2.0 instance (`Instance::new`) and the
+//!   instantiation from the `fmuResourceLocation` URI, checked against the GUID;
+//! - `exports`: the C ABI (`fmi2*` symbols) over the instance, types from the
 //!   official headers through bindgen (`fmi-sys`).
+//!
+//! [`variables`], [`instance`], [`states`], [`snapshot`] and [`docs`] are
+//! [`crate::fmu`]'s, named here as before.
 //!
 //! The FMU reads its rotor model from `resources/model.toml` at instantiation.
 
-pub mod docs;
 mod exports;
-pub mod instance;
 pub mod resources;
-pub mod snapshot;
-pub mod states;
-pub mod variables;
 pub mod xml;
+
+pub use crate::fmu::{docs, instance, snapshot, states, variables};

@@ -1,132 +1,31 @@
-//! Instantiation from the FMU's resources: decode the `fmuResourceLocation` URI,
-//! load `model.toml` from that folder, check it against the GUID the importer
-//! read from `modelDescription.xml`, and build the [`Instance`].
+//! An FMI 2.0 instance: [`Instance::new`] with the GUID of the FMI 2.0 model
+//! description, and the instantiation from the `fmuResourceLocation` URI
+//! ([`crate::fmu::resources`]) checked against that GUID.
 
-use std::path::PathBuf;
-
-use super::instance::Instance;
+use super::xml::model_description;
+use crate::fmu::instance::{Instance, Version};
+pub use crate::fmu::resources::{MODEL_FILE, resource_dir};
 use crate::model::RotorModel;
 
-/// The model file inside the resources folder.
-pub const MODEL_FILE: &str = "model.toml";
-
-/// The folder a `file` URI names: `file:///path`, `file:/path` and
-/// `file://localhost/path`, percent-decoded (RFC 8089). The scheme and the host
-/// are case-insensitive (`FILE:///path`, RFC 3986 §3.1, §3.2.2); a `?query` or
-/// `#fragment` ends the path (§3.3) and is ignored (an escaped `%3F` or `%23`
-/// stays part of it). Any other host or scheme, a bad escape or a path that is
-/// not UTF-8 gives an error.
-pub fn resource_dir(uri: &str) -> Result<PathBuf, String> {
-    let not_file = || format!("fmuResourceLocation {uri:?} is not a local file URI");
-    let scheme = uri.get(..5).ok_or_else(not_file)?;
-    if !scheme.eq_ignore_ascii_case("file:") {
-        return Err(not_file());
+impl Instance {
+    /// A new FMI 2.0 instance of `model`, named `name` (the token is the
+    /// GUID of [`model_description`]); the model's plausibility warnings are
+    /// queued for the logger (`logStatusWarning`).
+    pub fn new(name: &str, model: RotorModel) -> Result<Self, String> {
+        let (_, guid) = model_description(&model);
+        Self::with_token(name, model, Version::Fmi2, guid)
     }
-    let rest = &uri[5..];
-    let rest = rest.find(['?', '#']).map_or(rest, |end| &rest[..end]);
-    let path = match rest.strip_prefix("//") {
-        // An authority: empty or "localhost", then the absolute path.
-        Some(authority_and_path) => {
-            let slash = authority_and_path.find('/').ok_or_else(not_file)?;
-            let (host, path) = authority_and_path.split_at(slash);
-            if !(host.is_empty() || host.eq_ignore_ascii_case("localhost")) {
-                return Err(format!(
-                    "fmuResourceLocation {uri:?} names the host {host:?}, not this machine"
-                ));
-            }
-            path
-        }
-        None if rest.starts_with('/') => rest,
-        None => return Err(not_file()),
-    };
-    let decoded = percent_decode(path)
-        .ok_or_else(|| format!("fmuResourceLocation {uri:?}: bad percent-encoding"))?;
-    // `file:///C:/dir` names `C:/dir` on Windows.
-    let decoded = if cfg!(windows) && decoded.as_bytes().get(2) == Some(&b':') {
-        decoded[1..].to_string()
-    } else {
-        decoded
-    };
-    Ok(PathBuf::from(decoded))
 }
 
-/// `%XX` escapes replaced by their bytes; `None` for a bad escape or non-UTF-8.
-fn percent_decode(text: &str) -> Option<String> {
-    let bytes = text.as_bytes();
-    let mut out = Vec::with_capacity(bytes.len());
-    let mut i = 0;
-    while i < bytes.len() {
-        if bytes[i] == b'%' {
-            let hex = std::str::from_utf8(bytes.get(i + 1..i + 3)?).ok()?;
-            out.push(u8::from_str_radix(hex, 16).ok()?);
-            i += 3;
-        } else {
-            out.push(bytes[i]);
-            i += 1;
-        }
-    }
-    String::from_utf8(out).ok()
-}
-
-/// A new instance named `name` of the model in the resources at `uri`, whose
-/// model description must have the GUID `guid`.
+/// A new FMI 2.0 instance named `name` of the model in the resources at
+/// `uri`, whose model description must have the GUID `guid`.
 pub fn instantiate(name: &str, guid: &str, uri: &str) -> Result<Instance, String> {
-    let dir = resource_dir(uri)?;
-    let model = RotorModel::from_file(&dir.join(MODEL_FILE)).map_err(|e| e.to_string())?;
-    let instance = Instance::new(name, model)?;
-    if instance.guid() != guid {
-        return Err(format!(
-            "GUID {guid} does not match the model in the resources ({})",
-            instance.guid()
-        ));
-    }
-    Ok(instance)
+    crate::fmu::resources::instantiate(name, guid, uri, Instance::new)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn file_uris_decode() {
-        let p = |s: &str| resource_dir(s).map(|p| p.to_string_lossy().into_owned());
-        assert_eq!(p("file:///tmp/a%20b/res").unwrap(), "/tmp/a b/res");
-        assert_eq!(p("file:/tmp/x").unwrap(), "/tmp/x");
-        assert_eq!(p("file://localhost/tmp/x").unwrap(), "/tmp/x");
-        assert_eq!(p("file://LOCALHOST/tmp/x%2Fy").unwrap(), "/tmp/x/y");
-        assert_eq!(p("file:///tmp/%C3%A9t%C3%A9").unwrap(), "/tmp/été");
-        assert_eq!(p("file:///end%41").unwrap(), "/endA");
-        // Issue 22: the scheme is case-insensitive, query and fragment are not the path.
-        assert_eq!(p("FILE:///tmp/x").unwrap(), "/tmp/x");
-        assert_eq!(p("File://LocalHost/tmp/x").unwrap(), "/tmp/x");
-        assert_eq!(p("file:///tmp/res?version=2").unwrap(), "/tmp/res");
-        assert_eq!(p("file:///tmp/res#top").unwrap(), "/tmp/res");
-        assert_eq!(p("file:///tmp/a%20b?x#y").unwrap(), "/tmp/a b");
-        assert_eq!(p("file:///tmp/what%3F%23").unwrap(), "/tmp/what?#");
-    }
-
-    #[test]
-    fn other_uris_are_refused() {
-        for uri in [
-            "http://x/y",
-            "/tmp/x",
-            "file:tmp/x",
-            "file://server/share",
-            "file://localhost",
-            "file:///tmp/%zz",
-            "file:///tmp/%4",
-            "file:///tmp/%FF",
-            "files:///tmp/x",
-            "fil",
-            "é:///tmp",
-            "file://?/tmp",
-            "file:?x",
-        ] {
-            assert!(resource_dir(uri).is_err(), "{uri}");
-        }
-        let e = resource_dir("file://server/share").unwrap_err();
-        assert!(e.contains("server"), "{e}");
-    }
 
     #[test]
     fn the_model_loads_and_its_guid_is_checked() {
@@ -136,7 +35,7 @@ mod tests {
         std::fs::copy(models.join("jeffcott.toml"), dir.join(MODEL_FILE)).unwrap();
         let uri = format!("file://{}", dir.display()).replace(' ', "%20");
         let model = RotorModel::from_file(&dir.join(MODEL_FILE)).unwrap();
-        let (_, guid) = super::super::xml::model_description(&model);
+        let (_, guid) = model_description(&model);
         let instance = instantiate("x", &guid, &uri).unwrap();
         assert_eq!(instance.guid(), guid);
         let e = instantiate("x", "{other}", &uri).unwrap_err();

@@ -270,6 +270,9 @@ impl Simulator {
                 proposal = proposal.min(h * allowed).max(smallest);
             }
             self.state.step_proposal = proposal;
+            if !last && self.contact_began_now() {
+                return Ok(());
+            }
         }
         Ok(())
     }

@@ -56,6 +56,7 @@
 
 mod adaptive;
 mod condense;
+pub mod contact_onset;
 pub mod contact_watch;
 mod dense;
 mod factor;

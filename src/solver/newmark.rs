@@ -303,6 +303,7 @@ impl Simulator {
             .check_tables(&self.rotor, warned, start_speed, now);
         self.warnings
             .check_tables(&self.rotor, warned, end_speed, t_end);
+        self.contact_onset_start();
         if self.options.local_error_tolerance > 0.0 {
             return self.advance_adaptive(t_end);
         }
@@ -313,6 +314,8 @@ impl Simulator {
             self.step_with_cuts(h, 0)?;
             if k + 1 == count {
                 self.state.time = t_end;
+            } else if self.contact_began_now() {
+                return Ok(());
             }
             let cuts = self.stats.step_cuts - cuts_before;
             if cuts > SolverOptions::MAX_CUTS_PER_CALL {

@@ -5,6 +5,7 @@ use crate::linalg::LinalgError;
 use crate::rotor::Rotor;
 use crate::units::Short;
 
+use super::contact_onset::ContactOnset;
 use super::contact_watch::ContactWatch;
 use super::factor::{Factor, FactorWork};
 use super::newmark::NewmarkWork;
@@ -200,6 +201,10 @@ pub struct Simulator {
     pub(super) torsion: Option<Torsion>,
     /// Contacts reported beyond the limits of their law ([`super::contact_watch`]).
     pub(super) contact_watch: ContactWatch,
+    /// Whether a call stops at the start of a contact ([`super::contact_onset`]).
+    pub(super) contact_onset: ContactOnset,
+    /// Where the last call stopped because a contact began, and which.
+    pub(super) contact_began: Option<(f64, Vec<String>)>,
     /// The state a step starts from, kept to undo a rejected step
     /// (accuracy-controlled steps).
     pub(super) step_start: SimState,
@@ -303,6 +308,8 @@ impl Simulator {
             warnings: Warnings::default(),
             torsion,
             contact_watch: ContactWatch::default(),
+            contact_onset: ContactOnset::default(),
+            contact_began: None,
             rotor,
             options,
             state,

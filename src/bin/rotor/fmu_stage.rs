@@ -6,12 +6,22 @@ use crate::write_file;
 
 /// Writes modelDescription.xml, resources/model.toml (with the coefficient
 /// tables it reads, at the same relative paths) and documentation/index.html
-/// for `model` into `dir`; prints the model name and GUID.
-pub fn stage(model: &Path, dir: &Path) -> Result<(), String> {
+/// for `model` into `dir`, the model description of FMI version `fmi` (2 or
+/// 3); prints the model name and GUID (FMI 3: instantiation token).
+pub fn stage(model: &Path, dir: &Path, fmi: u8) -> Result<(), String> {
     let m = crate::read_model(model)?;
     let text = std::fs::read_to_string(model).map_err(|e| format!("{}: {e}", model.display()))?;
-    let (xml, guid) = rotor_bearing::fmi2::xml::model_description(&m);
-    for sub in ["resources", "documentation", "binaries/linux64"] {
+    let (xml, guid) = if fmi == 3 {
+        rotor_bearing::fmi3::xml::model_description(&m)
+    } else {
+        rotor_bearing::fmi2::xml::model_description(&m)
+    };
+    let binaries = if fmi == 3 {
+        "binaries/x86_64-linux"
+    } else {
+        "binaries/linux64"
+    };
+    for sub in ["resources", "documentation", binaries] {
         std::fs::create_dir_all(dir.join(sub))
             .map_err(|e| format!("{}: {e}", dir.join(sub).display()))?;
     }

@@ -202,6 +202,9 @@ enum Command {
         model: PathBuf,
         /// Staging directory.
         dir: PathBuf,
+        /// FMI version of the model description: 2 (FMI 2.0) or 3 (FMI 3.0).
+        #[arg(long, default_value_t = 2, value_parser = clap::value_parser!(u8).range(2..=3))]
+        fmi: u8,
     },
     /// Dimensionless stiffness and damping of a hydrodynamic bearing against
     /// eccentricity ratio (paper Fig. 3), from equilibria under a swept load.
@@ -657,7 +660,7 @@ fn run(cli: Cli) -> Result<(), String> {
                 },
             )
         }
-        Command::FmuStage { model, dir } => fmu_stage::stage(&model, &dir),
+        Command::FmuStage { model, dir, fmi } => fmu_stage::stage(&model, &dir, fmi),
         Command::Simulate { model, args } => simulate_args::run(load(&model)?, args),
     }
 }

@@ -2,8 +2,8 @@
 
 use fmi_sys::fmi2::*;
 
-use crate::fmi2::instance::Status;
-use crate::fmi2::states::Call;
+use crate::fmu::instance::Status;
+use crate::fmu::states::Call;
 
 use super::glue::*;
 

@@ -6,10 +6,10 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use fmi_sys::fmi2::*;
 
-use crate::fmi2::instance::{Instance, Status};
 use crate::fmi2::resources;
-use crate::fmi2::states::Call;
-use crate::fmi2::xml::LOG_CATEGORIES;
+use crate::fmu::description::LOG_CATEGORIES;
+use crate::fmu::instance::{Instance, Status};
+use crate::fmu::states::Call;
 
 use super::glue::*;
 

@@ -2,7 +2,7 @@
 //! signature of the official headers (types from bindgen via `fmi-sys`, checked
 //! at compile time against the header's function-pointer typedefs). Each one
 //! only turns its pointers into references and slices and calls a safe
-//! [`Instance`](crate::fmi2::instance::Instance) method; no panic unwinds
+//! [`Instance`](crate::fmu::instance::Instance) method; no panic unwinds
 //! across the boundary (every call runs under `catch_unwind` and a panic
 //! becomes fmi2Fatal).
 //!

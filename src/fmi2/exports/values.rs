@@ -3,9 +3,9 @@
 
 use fmi_sys::fmi2::*;
 
-use crate::fmi2::instance::Status;
-use crate::fmi2::states::Call;
-use crate::fmi2::variables::Kind;
+use crate::fmu::instance::Status;
+use crate::fmu::states::Call;
+use crate::fmu::variables::Kind;
 
 use super::glue::*;
 

@@ -161,7 +161,7 @@ impl Instance {
         self.check(call)?;
         let binding = match self.vars.get(vr as usize) {
             Some(v) if v.kind == kind => v.binding,
-            _ => return Err(self.wrong_variable(vr, kind, call.name())),
+            _ => return Err(self.wrong_variable(vr, kind, call.name_in(self.version))),
         };
         let s = self.sim.state();
         let p = &self.params;
@@ -191,7 +191,11 @@ impl Instance {
             Ok(value)
         } else {
             let name = &self.vars[vr as usize].name;
-            let text = format!("{}: {name} is not finite ({})", call.name(), Short(value));
+            let text = format!(
+                "{}: {name} is not finite ({})",
+                call.name_in(self.version),
+                Short(value)
+            );
             Err(self.report(Status::Error, text))
         }
     }

@@ -14,10 +14,11 @@ use crate::units::Short;
 impl Instance {
     /// fmi2DoStep.
     pub fn do_step(&mut self, current: f64, step: f64) -> Status {
+        self.early_return_at = None;
         if let Err(s) = self.check(Call::DoStep) {
             return s;
         }
-        let call = Call::DoStep.name();
+        let call = Call::DoStep.name_in(self.version);
         let now = self.sim.time();
         let (t, h) = (Short(current), Short(step));
         if !(step.is_finite() && step > 0.0) {
@@ -61,15 +62,25 @@ impl Instance {
             return self.report(
                 Status::Error,
                 format!(
-                    "{call}: the step from {t} s by {h} s ends at {} s, past the stop time {} s of fmi2SetupExperiment",
+                    "{call}: the step from {t} s by {h} s ends at {} s, past the stop time {} s of {}",
                     Short(end),
-                    Short(stop)
+                    Short(stop),
+                    self.version.setup_call()
                 ),
             );
         }
         self.outputs.invalidate();
         let before = self.sim.stats();
         let result = self.sim.advance_to(current + step);
+        if let (Ok(()), Some((at, names))) = (&result, self.sim.contact_began_at()) {
+            self.early_return_at = Some(*at);
+            let text = format!(
+                "{call} from {t} s by {h} s returns early at {} s: contact begins at {}",
+                Short(*at),
+                names.join(", ")
+            );
+            self.messages.push((Status::Ok, category(Status::Ok), text));
+        }
         for w in self.sim.take_warnings() {
             self.messages
                 .push((Status::Warning, category(Status::Warning), w.to_string()));
@@ -116,12 +127,26 @@ impl Instance {
                 self.report(
                     Status::Discard,
                     format!(
-                        "{call} from {t} s by {h} s discarded at {} s: {e}. Roll back with fmi2SetFMUstate or reset.",
-                        Short(reached)
+                        "{call} from {t} s by {h} s discarded at {} s: {e}. Roll back with {} or reset.",
+                        Short(reached),
+                        self.version.set_state_call()
                     ),
                 )
             }
         }
+    }
+
+    /// Whether each step stops at the first internal step at which a
+    /// bearing's or rub's contact begins (FMI 3.0 early return, asked for by
+    /// `earlyReturnAllowed`; off by default and for FMI 2.0).
+    pub fn set_early_return(&mut self, on: bool) {
+        self.early_return = on;
+        self.sim.set_stop_at_contact(on);
+    }
+
+    /// Where the last step returned early because a contact began (s), if it did.
+    pub fn early_return_at(&self) -> Option<f64> {
+        self.early_return_at
     }
 
     /// fmi2GetRealStatus(fmi2LastSuccessfulTime).

@@ -60,7 +60,10 @@ impl Instance {
             )),
         };
         if let Err(why) = fits {
-            return self.report(Status::Error, format!("{}: {why}", call.name()));
+            return self.report(
+                Status::Error,
+                format!("{}: {why}", call.name_in(self.version)),
+            );
         }
         let tunable = |k: usize| self.model.bearings[k].kind.tuned().is_some();
         let range = |k: usize| {
@@ -79,7 +82,7 @@ impl Instance {
                 Status::Error,
                 format!(
                     "{}: {what} {}{unit} of bearing {} in the state is outside [{lo}, {hi}]{unit}",
-                    call.name(),
+                    call.name_in(self.version),
                     Short(value),
                     self.model.bearings[k].name
                 ),
@@ -103,16 +106,25 @@ impl Instance {
             Ok(Some(sim)) => {
                 self.watch = ValidityWatch::new(sim.rotor());
                 self.sim = sim;
+                self.sim.set_stop_at_contact(self.early_return);
                 let line = self.sim.rotor().coordinates();
                 self.messages.push((Status::Ok, category(Status::Ok), line));
             }
             Ok(None) => {}
-            Err(e) => return self.report(Status::Error, format!("{}: {e}", call.name())),
+            Err(e) => {
+                return self.report(
+                    Status::Error,
+                    format!("{}: {e}", call.name_in(self.version)),
+                );
+            }
         }
         // Checked by `fits` and on reading: the watch of the state's run.
         if let Err(e) = self.watch.set_image(&snap.watch) {
             self.watch.reset();
-            return self.report(Status::Error, format!("{}: {e}", call.name()));
+            return self.report(
+                Status::Error,
+                format!("{}: {e}", call.name_in(self.version)),
+            );
         }
         self.params = snap.params;
         self.tuned = snap.tuned.clone();
@@ -156,7 +168,13 @@ impl Instance {
     pub fn deserialize(&mut self, bytes: &[u8]) -> Result<Snapshot, Status> {
         let call = Call::DeSerializeFmuState;
         self.check(call)?;
-        Snapshot::from_bytes(bytes, &self.current_snapshot(), |m| self.coordinates_for(m))
-            .map_err(|why| self.report(Status::Error, format!("{}: {why}", call.name())))
+        Snapshot::from_bytes(bytes, &self.current_snapshot(), |m| self.coordinates_for(m)).map_err(
+            |why| {
+                self.report(
+                    Status::Error,
+                    format!("{}: {why}", call.name_in(self.version)),
+                )
+            },
+        )
     }
 }

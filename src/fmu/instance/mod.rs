@@ -39,12 +39,11 @@ use crate::units::Short;
 
 use super::snapshot::fingerprint;
 use super::states::Call;
-pub use super::states::Phase;
+pub use super::states::{Phase, Version};
 use super::variables::{
     Binding, Causality, DEFAULT_LOCAL_ERROR_TOLERANCE, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE,
     Kind, START_SPEED, Variability, Variable, default_fmu_time_step, variables,
 };
-use super::xml::model_description;
 
 mod fmu_state;
 mod step;
@@ -132,6 +131,8 @@ impl Params {
 pub struct Instance {
     name: String,
     model: RotorModel,
+    /// The FMI version the instance speaks (it names the calls in messages).
+    version: Version,
     guid: String,
     fingerprint: u64,
     vars: Vec<Variable>,
@@ -152,6 +153,10 @@ pub struct Instance {
     implausible: Option<String>,
     /// The bounds of those displacements, found once.
     limits: DisplacementLimits,
+    /// Whether steps stop where a contact begins ([`Instance::set_early_return`]).
+    early_return: bool,
+    /// Where the last step stopped because a contact began.
+    early_return_at: Option<f64>,
 }
 
 fn category(status: Status) -> &'static str {
@@ -175,9 +180,18 @@ fn model_tuned(model: &RotorModel) -> Vec<f64> {
 }
 
 impl Instance {
-    /// A new instance of `model`, named `name`; the model's plausibility
-    /// warnings are queued for the logger (`logStatusWarning`).
-    pub fn new(name: &str, model: RotorModel) -> Result<Self, String> {
+    /// A new instance of `model`, named `name`, speaking FMI `version`, whose
+    /// model description carries `token` (the FMI 2 `guid`, the FMI 3
+    /// `instantiationToken`); the model's plausibility warnings are queued for
+    /// the logger (`logStatusWarning`). The version layers build it:
+    /// `Instance::new` (FMI 2.0, `crate::fmi2::resources`) and
+    /// `Instance::new_fmi3` (FMI 3.0, `crate::fmi3::resources`).
+    pub fn with_token(
+        name: &str,
+        model: RotorModel,
+        version: Version,
+        guid: String,
+    ) -> Result<Self, String> {
         let warning = |w: crate::model::ModelWarning| {
             (Status::Warning, category(Status::Warning), w.to_string())
         };
@@ -188,7 +202,6 @@ impl Instance {
             .collect();
         let vars = variables(&model);
         let outputs = OutputCache::new(&vars);
-        let (_, guid) = model_description(&model);
         let tuned = model_tuned(&model);
         let params = Params::start(&model);
         let sim = Self::fresh_simulator(&model, params.reduced_modes)?;
@@ -198,6 +211,7 @@ impl Instance {
         Ok(Self {
             watch,
             name: name.to_string(),
+            version,
             fingerprint: fingerprint(&guid),
             guid,
             vars,
@@ -212,6 +226,8 @@ impl Instance {
             step_statistics: false,
             implausible: None,
             limits: DisplacementLimits::new(&model),
+            early_return: false,
+            early_return_at: None,
             model,
         })
     }
@@ -256,6 +272,7 @@ impl Instance {
         }
         self.watch = ValidityWatch::new(sim.rotor());
         self.sim = sim;
+        self.sim.set_stop_at_contact(self.early_return);
         self.params.reduced_modes = modes;
         let line = self.sim.rotor().coordinates();
         self.messages.push((Status::Ok, category(Status::Ok), line));
@@ -267,9 +284,26 @@ impl Instance {
         &self.name
     }
 
-    /// The GUID of the model description of this instance's model.
+    /// The token (FMI 2 GUID, FMI 3 instantiation token) of the model
+    /// description of this instance's model.
     pub fn guid(&self) -> &str {
         &self.guid
+    }
+
+    /// The variable table of the instance's model.
+    pub fn variables(&self) -> &[Variable] {
+        &self.vars
+    }
+
+    /// The FMI version the instance speaks.
+    pub fn version(&self) -> Version {
+        self.version
+    }
+
+    /// The simulator's time (s): after a step, the time it reached (the
+    /// communication point, or where a discarded step stopped).
+    pub fn time(&self) -> f64 {
+        self.sim.time()
     }
 
     /// Current phase.
@@ -301,7 +335,7 @@ impl Instance {
     /// `Ok` if `call` is allowed in the current phase (the table in
     /// [`super::states`]), else fmi2Error with a message.
     pub fn check(&mut self, call: Call) -> Result<(), Status> {
-        call.check(self.phase)
+        call.check_in(self.phase, self.version)
             .map_err(|text| self.report(Status::Error, text))
     }
 
@@ -315,7 +349,8 @@ impl Instance {
             return self.report(
                 Status::Error,
                 format!(
-                    "fmi2SetupExperiment: start time {} and stop time {stop} must be finite, stop ≥ start",
+                    "{}: start time {} and stop time {stop} must be finite, stop ≥ start",
+                    self.version.setup_call(),
                     Short(start)
                 ),
             );
@@ -370,7 +405,10 @@ impl Instance {
             Ok(()) => {
                 self.phase = Phase::StepComplete;
                 match self.refresh_outputs() {
-                    Ok(()) => self.warn_implausible("fmi2ExitInitializationMode", Status::Ok),
+                    Ok(()) => {
+                        let call = Call::ExitInitializationMode.name_in(self.version);
+                        self.warn_implausible(call, Status::Ok)
+                    }
                     Err(s) => s,
                 }
             }
@@ -395,7 +433,7 @@ impl Instance {
         if let Err(s) = self.check(call) {
             return s;
         }
-        let call = call.name();
+        let call = call.name_in(self.version);
         let v = match self.variable(vr, kind, call) {
             Ok(v) => v,
             Err(s) => return s,
@@ -496,7 +534,7 @@ impl Instance {
         if let Err(s) = self.check(Call::SetRealInputDerivatives) {
             return s;
         }
-        let call = Call::SetRealInputDerivatives.name();
+        let call = Call::SetRealInputDerivatives.name_in(self.version);
         let v = match self.variable(vr, Kind::Real, call) {
             Ok(v) => v,
             Err(s) => return s,
@@ -588,6 +626,7 @@ impl Instance {
             Ok(sim) => {
                 self.watch = ValidityWatch::new(sim.rotor());
                 self.sim = sim;
+                self.sim.set_stop_at_contact(self.early_return);
                 self.params = params;
                 self.tuned = model_tuned(&self.model);
                 self.phase = Phase::Instantiated;
@@ -596,7 +635,10 @@ impl Instance {
                 self.stop_time = None;
                 Status::Ok
             }
-            Err(e) => self.report(Status::Fatal, format!("fmi2Reset: {e}")),
+            Err(e) => self.report(
+                Status::Fatal,
+                format!("{}: {e}", Call::Reset.name_in(self.version)),
+            ),
         }
     }
 }

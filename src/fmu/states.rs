@@ -1,8 +1,12 @@
-//! The FMI 2.0 Co-Simulation state machine: the states an instance can be in
-//! and one table of the states each call is allowed in (FMI 2.0.4 §4.2.4,
-//! "state machine of calling sequence from master to slave"), as bit masks like
-//! the `MASK_fmi2*` defines of the FMI Reference FMUs. [`Call::check`] is the
-//! only place the table is consulted.
+//! The Co-Simulation state machine: the states an instance can be in and one
+//! table of the states each call is allowed in (FMI 2.0.4 §4.2.4, "state
+//! machine of calling sequence from master to slave"), as bit masks like the
+//! `MASK_fmi2*` defines of the FMI Reference FMUs. [`Call::check`] is the only
+//! place the table is consulted. An FMI 3.0 instance follows the same table
+//! under its own call names ([`Call::name_in`]): FMI 3.0 §4.3's Co-Simulation
+//! states without event mode map one to one (*Step Mode* is *stepComplete*;
+//! after an `fmi3Discard` only `fmi3Terminate`, `fmi3Reset`, `fmi3SetFMUState`
+//! and the reads help, as after an FMI 2 discarded step).
 //!
 //! The standard's states map onto [`Phase`] as follows: *instantiated*,
 //! *initialization mode*, *stepComplete*, *stepFailed*, *terminated* and
@@ -10,7 +14,43 @@
 //! `fmi2DoStep` completes synchronously, `canRunAsynchronuously = false`);
 //! *fatal* and *start/end* have no live instance to call.
 
-/// Where the instance is in the FMI 2.0 Co-Simulation state machine.
+/// The FMI version an instance speaks: it names the calls in messages.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Version {
+    /// FMI 2.0 (`fmi2*`).
+    Fmi2,
+    /// FMI 3.0 (`fmi3*`).
+    Fmi3,
+}
+
+impl Version {
+    /// What the model description calls its token: `GUID` (FMI 2.0) or
+    /// `instantiationToken` (FMI 3.0).
+    pub const fn token_name(self) -> &'static str {
+        match self {
+            Version::Fmi2 => "GUID",
+            Version::Fmi3 => "instantiationToken",
+        }
+    }
+
+    /// The name of the call that rolls an instance back to a saved state.
+    pub const fn set_state_call(self) -> &'static str {
+        match self {
+            Version::Fmi2 => "fmi2SetFMUstate",
+            Version::Fmi3 => "fmi3SetFMUState",
+        }
+    }
+
+    /// The call that gives the start and stop times.
+    pub const fn setup_call(self) -> &'static str {
+        match self {
+            Version::Fmi2 => "fmi2SetupExperiment",
+            Version::Fmi3 => "fmi3EnterInitializationMode",
+        }
+    }
+}
+
+/// Where the instance is in the Co-Simulation state machine.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Phase {
     /// After fmi2Instantiate (and fmi2Reset).
@@ -207,9 +247,54 @@ impl Call {
         }
     }
 
-    /// The C name of the call.
+    /// The C name of the call (FMI 2.0).
     pub const fn name(self) -> &'static str {
         self.rule().0
+    }
+
+    /// The C name of the call in FMI `version` (FMI 3.0 folds
+    /// fmi2SetupExperiment into fmi3EnterInitializationMode, names the types
+    /// by their size and spells `FMUState`; the FMI 2 status queries, input
+    /// derivatives and step cancelling have no FMI 3 call and keep a
+    /// descriptive name).
+    pub const fn name_in(self, version: Version) -> &'static str {
+        match version {
+            Version::Fmi2 => self.name(),
+            Version::Fmi3 => match self {
+                Call::SetDebugLogging => "fmi3SetDebugLogging",
+                Call::SetupExperiment | Call::EnterInitializationMode => {
+                    "fmi3EnterInitializationMode"
+                }
+                Call::ExitInitializationMode => "fmi3ExitInitializationMode",
+                Call::Terminate => "fmi3Terminate",
+                Call::Reset => "fmi3Reset",
+                Call::GetReal => "fmi3GetFloat64",
+                Call::GetInteger => "fmi3GetInt32",
+                Call::GetBoolean => "fmi3GetBoolean",
+                Call::GetString => "fmi3GetString",
+                Call::SetReal => "fmi3SetFloat64",
+                Call::SetInteger => "fmi3SetInt32",
+                Call::SetBoolean => "fmi3SetBoolean",
+                Call::SetString => "fmi3SetString",
+                Call::SetFixedParameter => "fmi3Set of a fixed parameter",
+                Call::GetFmuState => "fmi3GetFMUState",
+                Call::SetFmuState => "fmi3SetFMUState",
+                Call::FreeFmuState => "fmi3FreeFMUState",
+                Call::SerializedFmuStateSize => "fmi3SerializedFMUStateSize",
+                Call::SerializeFmuState => "fmi3SerializeFMUState",
+                Call::DeSerializeFmuState => "fmi3DeserializeFMUState",
+                Call::GetDirectionalDerivative => "fmi3GetDirectionalDerivative",
+                Call::SetRealInputDerivatives => "input derivatives (none in FMI 3.0)",
+                Call::GetRealOutputDerivatives => "fmi3GetOutputDerivatives",
+                Call::DoStep => "fmi3DoStep",
+                Call::CancelStep => "step cancelling (none in FMI 3.0)",
+                Call::GetStatus
+                | Call::GetRealStatus
+                | Call::GetIntegerStatus
+                | Call::GetBooleanStatus
+                | Call::GetStringStatus => "status queries (none in FMI 3.0)",
+            },
+        }
     }
 
     /// The phases the call is allowed in.
@@ -219,7 +304,12 @@ impl Call {
 
     /// `Ok` if the call is allowed in `phase`, else the message explaining why not.
     pub fn check(self, phase: Phase) -> Result<(), String> {
-        let (name, allowed) = self.rule();
+        self.check_in(phase, Version::Fmi2)
+    }
+
+    /// [`check`](Self::check) naming the call as FMI `version` does.
+    pub fn check_in(self, phase: Phase, version: Version) -> Result<(), String> {
+        let (name, allowed) = (self.name_in(version), self.allowed());
         if allowed.contains(phase) {
             return Ok(());
         }
@@ -306,6 +396,22 @@ mod tests {
         );
         let e = Call::CancelStep.check(Phase::StepComplete).unwrap_err();
         assert!(e.contains("no asynchronous step"), "{e}");
+    }
+
+    #[test]
+    fn an_fmi3_instance_hears_fmi3_names() {
+        let e = Call::DoStep
+            .check_in(Phase::Instantiated, Version::Fmi3)
+            .unwrap_err();
+        assert_eq!(
+            e,
+            "fmi3DoStep is not allowed in state Instantiated (allowed: StepComplete)"
+        );
+        assert_eq!(
+            Call::DeSerializeFmuState.name_in(Version::Fmi3),
+            "fmi3DeserializeFMUState"
+        );
+        assert_eq!(Call::GetReal.name_in(Version::Fmi2), "fmi2GetReal");
     }
 
     #[test]
