@@ -41,9 +41,12 @@ pub mod contact;
 pub mod equilibrium;
 pub mod film;
 mod film_lanes;
+pub mod finite_bearing;
+pub mod finite_film;
 pub mod linear;
 pub mod magnetic_pull;
 pub mod plain;
+pub mod reynolds;
 pub mod rub;
 pub mod short_film;
 pub mod table;
@@ -98,6 +101,9 @@ pub enum BearingError {
     /// State vectors of the wrong length.
     #[error("bearing state has {found} coordinates, expected {expected}")]
     Dimension { expected: usize, found: usize },
+    /// The finite-length film could not be solved.
+    #[error(transparent)]
+    Reynolds(#[from] reynolds::ReynoldsError),
 }
 
 /// Quantities a bearing reports besides its force (for outputs and coupling).
