@@ -298,3 +298,45 @@ fn bad_mesh_and_geometry_are_errors() {
     let err = flat.force(&below(0.5), SPEED, None).unwrap_err();
     assert!(err.to_string().contains("length (m) = 0"), "{err}");
 }
+
+/// `rotor coefficients --film finite` sweeps the reference plain bearing
+/// (L/D = 0.3) on the finite film: its first line names the film, every
+/// load has an equilibrium, and the eccentricities lie within 10 % of the
+/// short film's at the same loads (a finite film of L/D 0.3 carries a little
+/// less); `--film long` is an error naming the flag.
+#[test]
+fn coefficients_cli_sweeps_the_finite_film() {
+    let run = |film: &str| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .args(["coefficients", "--points", "3", "--film", film])
+            .output()
+            .unwrap()
+    };
+    let eps = |out: &std::process::Output| -> Vec<f64> {
+        String::from_utf8_lossy(&out.stdout)
+            .lines()
+            .skip(2)
+            .map(|l| l.split_whitespace().next().unwrap().parse().unwrap())
+            .collect()
+    };
+    let finite = run("finite");
+    assert!(finite.status.success(), "{finite:?}");
+    let text = String::from_utf8_lossy(&finite.stdout);
+    assert!(
+        text.lines()
+            .next()
+            .unwrap()
+            .contains("finite-length film (Swift–Stieber)"),
+        "{text}"
+    );
+    let short = run("short");
+    assert!(short.status.success());
+    let (f, s) = (eps(&finite), eps(&short));
+    assert_eq!((f.len(), s.len()), (3, 3), "{text}");
+    for (a, b) in f.iter().zip(&s) {
+        assert!(a > b && rel(*a, *b) < 0.1, "ε {a} (finite) vs {b} (short)");
+    }
+    let bad = run("long");
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("--film"));
+}
