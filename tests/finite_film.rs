@@ -1,6 +1,6 @@
 //! The finite-length Reynolds film (`bearing::reynolds`, `bearing::finite_film`,
 //! `bearing::finite_bearing`, issue 47) against independent truth: Raimondi &
-//! Boyd's published full-bearing table, the short-bearing closed form as
+//! Boyd's published full-bearing table (its Sommerfeld numbers at L/D = 1), the short-bearing closed form as
 //! L/D → 0 (plain and pads), the long-bearing (Sommerfeld and
 //! half-Sommerfeld) closed forms as L/D grows, and its own mesh convergence
 //! (Richardson).
@@ -54,36 +54,36 @@ fn rel(a: f64, b: f64) -> f64 {
     (a - b).abs() / b.abs()
 }
 
-/// Raimondi & Boyd's full journal bearing (tests/data/raimondi_boyd_1958.csv):
-/// Swift–Stieber cavitation, the film beginning at the maximum film thickness
-/// (their boundary condition: an arc of 360° from `h_max`, which for the
-/// journal below the centre is at θ = 90°), mesh 144 × 16. Sommerfeld number
-/// and attitude angle within 2 % at every tabulated ε ≤ 0.8 and L/D = 1, 1/2,
-/// 1/4 (measured worst: 1.3 % on S at L/D = 1, ε = 0.4; 1.1 % on φ at
-/// L/D = 1/2, ε = 0.8).
+/// Raimondi & Boyd's full journal bearing (tests/data/raimondi_boyd_1958.csv,
+/// the Sommerfeld number at L/D = 1 — the part of their table a public
+/// source confirms): Swift–Stieber cavitation, the film beginning at the
+/// maximum film thickness (their boundary condition: an arc of 360° from
+/// `h_max`, which for the journal below the centre is at θ = 90°), mesh
+/// 144 × 16. Within 2 % at every tabulated ε ≤ 0.8 (the acceptance range);
+/// the row at ε = 0.9 is printed, not asserted.
 #[test]
 fn full_bearing_matches_raimondi_and_boyd() {
     let table = include_str!("data/raimondi_boyd_1958.csv");
     let from_h_max = Some((0.5 * PI, 2.5 * PI));
     let mut rows = 0;
-    let (mut worst_s, mut worst_phi) = (0.0f64, 0.0f64);
+    let mut worst = 0.0f64;
     for line in table.lines().filter(|l| !l.starts_with('#')).skip(1) {
         let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
-        let (ld, eps, s_ref, phi_ref) = (v[0], v[1], v[2], v[3]);
+        let (ld, eps, s_ref) = (v[0], v[1], v[2]);
         let f = film(ld, ReynoldsMesh::FULL_CIRCLE, Cavitation::SwiftStieber);
         let (s, phi) = sommerfeld(&f, eps, from_h_max);
-        println!("L/D {ld} ε {eps}: S {s:.5} ({s_ref}), φ {phi:.2}° ({phi_ref}°)");
-        assert!(rel(s, s_ref) < 0.02, "L/D {ld} ε {eps}: S {s} vs {s_ref}");
-        assert!(
-            rel(phi, phi_ref) < 0.02,
-            "L/D {ld} ε {eps}: φ {phi} vs {phi_ref}"
+        println!(
+            "L/D {ld} ε {eps}: S {s:.5} ({s_ref}), {:+.2} %, φ {phi:.2}°",
+            100.0 * (s - s_ref) / s_ref
         );
-        worst_s = worst_s.max(rel(s, s_ref));
-        worst_phi = worst_phi.max(rel(phi, phi_ref));
-        rows += 1;
+        if eps <= 0.8 {
+            assert!(rel(s, s_ref) < 0.02, "L/D {ld} ε {eps}: S {s} vs {s_ref}");
+            worst = worst.max(rel(s, s_ref));
+            rows += 1;
+        }
     }
-    println!("worst: S {worst_s:.4}, φ {worst_phi:.4}");
-    assert_eq!(rows, 15);
+    println!("worst at ε ≤ 0.8: S {worst:.4}");
+    assert_eq!(rows, 5);
 }
 
 /// The relative difference of two bearing forces with their Jacobians: the
