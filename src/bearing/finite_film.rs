@@ -18,7 +18,7 @@
 
 use nalgebra::{Matrix2, Vector2};
 
-use super::reynolds::{Cavitation, FilmProblem, ReynoldsError, ReynoldsMesh, solve};
+use super::reynolds::{Cavitation, FilmProblem, ReynoldsError, ReynoldsMesh, solve_from};
 use super::short_film::film_position;
 use super::{BearingForce, JournalState};
 
@@ -72,7 +72,7 @@ impl FiniteFilm {
         arc: Option<(f64, f64)>,
     ) -> Result<Vector2<f64>, ReynoldsError> {
         let (position, _) = film_position(state.position, self.clearance);
-        self.force_at(position, state.velocity, speed, arc)
+        Ok(self.force_at(position, state.velocity, speed, arc, None)?.0)
     }
 
     /// Force and Jacobians `K = −∂F/∂(X, Y)`, `C = −∂F/∂(Ẋ, Ẏ)` (see the
@@ -85,7 +85,8 @@ impl FiniteFilm {
     ) -> Result<BearingForce, ReynoldsError> {
         let (position, saturation) = film_position(state.position, self.clearance);
         let v = state.velocity;
-        let force = self.force_at(position, v, speed, arc)?;
+        let (force, held) = self.force_at(position, v, speed, arc, None)?;
+        let start = held.as_deref();
         let dp = STEP * self.clearance;
         let dv = STEP * (speed.abs() * self.clearance + 2.0 * v.norm()).max(self.clearance);
         let mut stiffness = Matrix2::zeros();
@@ -93,11 +94,11 @@ impl FiniteFilm {
         for j in 0..2 {
             let mut e = Vector2::zeros();
             e[j] = 1.0;
-            let plus = self.force_at(position + e * dp, v, speed, arc)?;
-            let minus = self.force_at(position - e * dp, v, speed, arc)?;
+            let plus = self.force_at(position + e * dp, v, speed, arc, start)?.0;
+            let minus = self.force_at(position - e * dp, v, speed, arc, start)?.0;
             stiffness.set_column(j, &(-(plus - minus) / (2.0 * dp)));
-            let plus = self.force_at(position, v + e * dv, speed, arc)?;
-            let minus = self.force_at(position, v - e * dv, speed, arc)?;
+            let plus = self.force_at(position, v + e * dv, speed, arc, start)?.0;
+            let minus = self.force_at(position, v - e * dv, speed, arc, start)?.0;
             damping.set_column(j, &(-(plus - minus) / (2.0 * dv)));
         }
         Ok(BearingForce {
@@ -107,14 +108,17 @@ impl FiniteFilm {
         })
     }
 
-    /// `F` at the film position `position` (m) and velocity (m/s).
+    /// `F` at the film position `position` (m) and velocity (m/s), with
+    /// the Swift–Stieber active set it ended on (`start`: a neighbouring
+    /// state's, [`solve_from`]).
     fn force_at(
         &self,
         position: Vector2<f64>,
         velocity: Vector2<f64>,
         speed: f64,
         arc: Option<(f64, f64)>,
-    ) -> Result<Vector2<f64>, ReynoldsError> {
+        start: Option<&[bool]>,
+    ) -> Result<(Vector2<f64>, Option<Vec<bool>>), ReynoldsError> {
         self.check()?;
         let cl = self.clearance;
         let a = (speed * position.x - 2.0 * velocity.y) / cl;
@@ -129,7 +133,7 @@ impl FiniteFilm {
             }
         }
         if a == 0.0 && b == 0.0 {
-            return Ok(Vector2::zeros());
+            return Ok((Vector2::zeros(), None));
         }
         let problem = FilmProblem {
             x: position.x / cl,
@@ -139,8 +143,11 @@ impl FiniteFilm {
             slenderness: (2.0 * self.radius / self.length).powi(2),
             arc,
         };
-        let field = solve(&problem, self.mesh, self.cavitation)?;
+        let field = solve_from(&problem, self.mesh, self.cavitation, start)?;
         let scale = 6.0 * self.viscosity * (self.radius / cl).powi(2) * self.radius * self.length;
-        Ok(-field.load_integral() * scale)
+        Ok((
+            -field.load_integral() * scale,
+            field.cavitated().map(<[bool]>::to_vec),
+        ))
     }
 }

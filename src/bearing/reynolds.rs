@@ -259,6 +259,8 @@ pub struct PressureField {
     pressure: Vec<f64>,
     /// Whether negative pressures count as zero (Gümbel).
     clipped: bool,
+    /// The nodes held at `P = 0` (Swift–Stieber's final active set).
+    held: Option<Vec<bool>>,
 }
 
 impl PressureField {
@@ -328,6 +330,13 @@ impl PressureField {
         sum
     }
 
+    /// The nodes held at zero pressure by the Swift–Stieber condition (its
+    /// final active set; `None` for the other conditions): the start of
+    /// [`solve_from`] for a nearby problem.
+    pub fn cavitated(&self) -> Option<&[bool]> {
+        self.held.as_deref()
+    }
+
     /// The largest nodal pressure `P` (1/s; 0 when none is positive).
     pub fn peak(&self) -> f64 {
         self.pressure.iter().copied().fold(0.0, f64::max)
@@ -339,6 +348,23 @@ pub fn solve(
     problem: &FilmProblem,
     mesh: ReynoldsMesh,
     cavitation: Cavitation,
+) -> Result<PressureField, ReynoldsError> {
+    solve_from(problem, mesh, cavitation, None)
+}
+
+/// [`solve`], the Swift–Stieber active set started from `start` (the
+/// [`PressureField::cavitated`] nodes of a nearby problem on the same
+/// mesh and arc) instead of the full film's negative nodes. The discrete
+/// problem has one solution (an M-matrix), and the field is the solve with
+/// the final active set, so the start changes only how many steps reach
+/// it (one or two from a neighbour's set, against several from the full
+/// film: the central differences of the Jacobians start from the base
+/// state's set); a start that does not settle falls back to the full film.
+pub fn solve_from(
+    problem: &FilmProblem,
+    mesh: ReynoldsMesh,
+    cavitation: Cavitation,
+    start: Option<&[bool]>,
 ) -> Result<PressureField, ReynoldsError> {
     mesh.check()?;
     let eps2 = problem.x * problem.x + problem.y * problem.y;
@@ -367,14 +393,29 @@ pub fn solve(
     }
     let grid = Grid::new(problem.arc, mesh);
     let (matrix, rhs) = assemble(problem, &grid);
-    let mut pressure = solve_masked(&matrix, &rhs, None)?;
+    let start = start.filter(|s| s.len() == rhs.len());
     if cavitation == Cavitation::SwiftStieber {
-        pressure = active_set(&matrix, &rhs, pressure)?;
+        let warm = start.map(|held| active_set(&matrix, &rhs, held.to_vec()));
+        let (pressure, held) = match warm {
+            Some(Ok(solved)) => solved,
+            _ => {
+                let full = solve_masked(&matrix, &rhs, None)?;
+                active_set(&matrix, &rhs, full.iter().map(|&p| p <= 0.0).collect())?
+            }
+        };
+        return Ok(PressureField {
+            grid,
+            pressure,
+            clipped: false,
+            held: Some(held),
+        });
     }
+    let pressure = solve_masked(&matrix, &rhs, None)?;
     Ok(PressureField {
         grid,
         pressure,
         clipped: cavitation == Cavitation::Gumbel,
+        held: None,
     })
 }
 
@@ -456,11 +497,14 @@ fn solve_masked(
 const ACTIVE_SET_STEPS: usize = 200;
 
 /// The complementarity problem `P ≥ 0`, `λ = A P − f ≥ 0`, `P λ = 0` by the
-/// primal–dual active-set method from the full film `full` (see the module
-/// docs).
-fn active_set(a: &BandMatrix<f64>, f: &[f64], full: Vec<f64>) -> Result<Vec<f64>, ReynoldsError> {
+/// primal–dual active-set method from the nodes `held` at zero (see the
+/// module docs): the field and its final active set.
+fn active_set(
+    a: &BandMatrix<f64>,
+    f: &[f64],
+    mut held: Vec<bool>,
+) -> Result<(Vec<f64>, Vec<bool>), ReynoldsError> {
     let n = f.len();
-    let mut held: Vec<bool> = full.iter().map(|&p| p <= 0.0).collect();
     let mut lambda = vec![0.0; n];
     for _ in 0..ACTIVE_SET_STEPS {
         let p = solve_masked(a, f, Some(&held))?;
@@ -474,7 +518,7 @@ fn active_set(a: &BandMatrix<f64>, f: &[f64], full: Vec<f64>) -> Result<Vec<f64>
             };
         }
         if next == held {
-            return Ok(p);
+            return Ok((p, held));
         }
         held = next;
     }
