@@ -39,12 +39,14 @@ pub struct FiniteFilmBearing {
 
 impl FiniteFilmBearing {
     /// The finite-film twin of a plain or tilting-pad bearing on the default
-    /// mesh ([`ReynoldsMesh::FULL_CIRCLE`], [`ReynoldsMesh::PAD`]); `None`
-    /// for other kinds.
+    /// mesh ([`ReynoldsMesh::FULL_CIRCLE`], [`ReynoldsMesh::PAD`]), or a
+    /// finite-film bearing on its own mesh with `cavitation`; `None` for
+    /// other kinds.
     pub fn of(kind: &BearingKind, cavitation: Cavitation) -> Option<Self> {
         let (support, mesh) = match kind {
             BearingKind::Plain(b) => (FilmSupport::Plain(*b), ReynoldsMesh::FULL_CIRCLE),
             BearingKind::TiltingPad(b) => (FilmSupport::TiltingPad(b.clone()), ReynoldsMesh::PAD),
+            BearingKind::FiniteFilm(f) => (f.support.clone(), f.mesh),
             _ => return None,
         };
         Some(Self {
@@ -76,6 +78,54 @@ impl FiniteFilmBearing {
             FilmSupport::Plain(b) => b,
             FilmSupport::TiltingPad(b) => b,
         }
+    }
+
+    /// The short-film kind of the same geometry ([`BearingKind::Plain`] or
+    /// [`BearingKind::TiltingPad`]).
+    pub fn short_kind(&self) -> BearingKind {
+        match &self.support {
+            FilmSupport::Plain(b) => BearingKind::Plain(*b),
+            FilmSupport::TiltingPad(b) => BearingKind::TiltingPad(b.clone()),
+        }
+    }
+
+    /// Set the oil viscosity (Pa·s).
+    pub fn set_viscosity(&mut self, viscosity: f64) {
+        match &mut self.support {
+            FilmSupport::Plain(b) => b.viscosity = viscosity,
+            FilmSupport::TiltingPad(b) => b.viscosity = viscosity,
+        }
+    }
+
+    /// The film's slenderness: `L/D` of a plain bearing, a pad's axial
+    /// length over its arc length `L/(R β)` (the smallest of the pads').
+    pub fn slenderness(&self) -> f64 {
+        slenderness(&self.short_kind()).expect("a plain or tilting-pad support")
+    }
+}
+
+/// Range of the slenderness ([`slenderness`]) the finite film is stated
+/// for: from the short limit it was checked against (L/D = 0.05,
+/// `tests/finite_film.rs`) to four times the square bearing; beyond it the
+/// default mesh no longer resolves the film (a slender film's boundary layer
+/// at the pad edges, a long one's axial profile).
+pub const SLENDERNESS_RANGE: (f64, f64) = (0.05, 4.0);
+
+/// Range of a pad's arc (rad) the finite film is stated for: 10° to 180°.
+pub const PAD_ARC_RANGE: (f64, f64) = (10.0 * std::f64::consts::PI / 180.0, std::f64::consts::PI);
+
+/// The slenderness of a plain bearing (`L/D`) or of tilting pads (axial
+/// length over arc length, `L/(R β)`, of the longest-arc pad); `None` for
+/// other kinds. The number the short film's validity is judged by.
+pub fn slenderness(kind: &BearingKind) -> Option<f64> {
+    match kind {
+        BearingKind::Plain(b) => Some(b.length / (2.0 * b.radius)),
+        BearingKind::TiltingPad(b) => {
+            let arc = b.pads.iter().map(|p| p.arc()).fold(0.0, f64::max);
+            Some(b.length / (b.radius * arc))
+        }
+        BearingKind::FiniteFilm(f) => slenderness(&f.short_kind()),
+        _ => None,
     }
 }
 
@@ -130,6 +180,78 @@ impl Bearing for FiniteFilmBearing {
 
     fn is_linear(&self) -> bool {
         false
+    }
+
+    /// One Reynolds solve per film (plain) or pad instead of the nine of
+    /// `evaluate`'s central differences.
+    fn cheap_forces(&self) -> bool {
+        true
+    }
+
+    /// The forces of [`Bearing::evaluate`] alone: the film force of each
+    /// film or pad ([`FiniteFilm::force`]), the contact and the pivot rest.
+    fn forces(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<(), BearingError> {
+        let film = self.film();
+        match &self.support {
+            FilmSupport::Plain(b) => {
+                check_state(2, q, qdot, speed, out)?;
+                let state = JournalState::from_coordinates(q, qdot);
+                let force = film.force(&state, speed, None)?;
+                let (contact, _) = b
+                    .contact_law()
+                    .evaluate(state.position, state.velocity, speed);
+                out.force.fill(0.0);
+                out.add_force(&(force + contact.force), None);
+            }
+            FilmSupport::TiltingPad(b) => {
+                let n = 2 + b.pads.len();
+                check_state(n, q, qdot, speed, out)?;
+                out.force.fill(0.0);
+                let (c_rest, k_rest) = b.pivot_rest(speed);
+                let law = b.contact_law();
+                for k in 0..b.pads.len() {
+                    let (s, c, state) = b.pad_state(k, q, qdot);
+                    let arc = Some(b.pads[k].film_arc());
+                    let mut force = film.force(&state, speed, arc)?;
+                    if let Some((contact, _)) = b.pad_contact(&law, k, &state, speed) {
+                        force += contact.force;
+                    }
+                    out.add_force(&force, Some((k, -s, c)));
+                    let i = 2 + k;
+                    out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// [`Bearing::forces`], then the short bearing's report on that force.
+    fn output(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<BearingReport, BearingError> {
+        self.forces(q, qdot, speed, out)?;
+        Ok(self.report(q, qdot, speed, out))
+    }
+
+    /// The short twin's equilibrium under the same load: the same pads and
+    /// kinematics, a film that carries a little more.
+    fn equilibrium_start(&self, load: [f64; 2], speed: f64) -> Option<Vec<f64>> {
+        let kind = self.short_kind();
+        let scale = kind.journal_clearance()?;
+        let load = nalgebra::Vector2::new(load[0], load[1]);
+        super::equilibrium::journal_equilibrium(self.short(), load, speed, scale)
+            .ok()
+            .map(|eq| eq.q)
     }
 
     fn guess_internal(&self, journal: [f64; 2], speed: f64, internal: &mut [f64]) {

@@ -84,7 +84,7 @@ pub fn coefficients(
             ));
         }
     };
-    let short = kind.build();
+    let short = kind.short_film().build();
     let model: &dyn Bearing = match &finite {
         Some(f) => f,
         None => short.as_ref(),

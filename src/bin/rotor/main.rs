@@ -420,6 +420,30 @@ pub(crate) fn warn_table_speeds(model: &RotorModel, speeds: &[f64]) {
     }
 }
 
+/// Print one warning for each plain or tilting-pad bearing on the short
+/// film beyond its range (`analysis::film_validity`), with its ratios at
+/// the operating point: at the model's `speed_rpm` when it states one,
+/// else at the fastest of `speeds` (rad/s).
+pub(crate) fn warn_short_films(rotor: &Rotor, speeds: &[f64]) {
+    let nominal = rotor.model.nominal_speed.abs();
+    let speed = if nominal > 0.0 {
+        nominal
+    } else {
+        speeds.iter().fold(0.0f64, |a, s| a.max(s.abs()))
+    };
+    match rotor_bearing::analysis::film_validity::short_film_warnings(rotor, speed) {
+        Ok(warnings) => {
+            for w in warnings {
+                eprintln!("warning: {}: {w}", rotor.model.source);
+            }
+        }
+        Err(e) => eprintln!(
+            "warning: {}: the short films' validity was not checked: {e}",
+            rotor.model.source
+        ),
+    }
+}
+
 /// The speed (rpm) of `--rpm`, else the model's `speed_rpm`.
 pub(crate) fn model_rpm(model: &RotorModel, rpm: Option<f64>) -> Result<f64, String> {
     match rpm {
