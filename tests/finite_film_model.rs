@@ -167,7 +167,8 @@ fn analyses_use_the_finite_film_and_the_short_one_is_told() {
     assert!(short_film_warnings(&slim, speed).unwrap().is_empty());
 }
 
-/// The CLI prints the warning once per bearing, and not for the finite film.
+/// The CLI prints the warning once per bearing, and not for the finite
+/// film; `rotor coefficients` sweeps the model's own film.
 #[test]
 fn the_cli_warns_once_per_short_bearing() {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
@@ -193,4 +194,21 @@ fn the_cli_warns_once_per_short_bearing() {
     let long = run(&finite);
     assert!(long.status.success(), "{long:?}");
     assert!(!String::from_utf8_lossy(&long.stderr).contains("short film at"));
+    // `rotor coefficients` sweeps the bearing's own film by default.
+    let sweep = |film: &str| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .arg("coefficients")
+            .arg(&finite)
+            .args(["--points", "2", "--film", film])
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{out:?}");
+        String::from_utf8_lossy(&out.stdout)
+            .lines()
+            .next()
+            .unwrap()
+            .to_string()
+    };
+    assert!(sweep("model").contains("finite-length film (swift_stieber)"));
+    assert!(!sweep("short").contains("finite-length film"));
 }

@@ -72,7 +72,7 @@ pub fn coefficients(
         }
     };
     let finite = match film {
-        "short" => None,
+        "model" | "short" => None,
         "finite" => Some(
             FiniteFilmBearing::of(&kind, Cavitation::SwiftStieber).ok_or_else(|| {
                 format!("{label}: --film finite needs a plain or tilting-pad bearing")
@@ -80,11 +80,15 @@ pub fn coefficients(
         ),
         other => {
             return Err(format!(
-                "--film must be \"short\" or \"finite\", got {other:?}"
+                "--film must be \"model\", \"short\" or \"finite\", got {other:?}"
             ));
         }
     };
-    let short = kind.short_film().build();
+    let short = if film == "short" {
+        kind.short_film().build()
+    } else {
+        kind.build()
+    };
     let model: &dyn Bearing = match &finite {
         Some(f) => f,
         None => short.as_ref(),
@@ -106,9 +110,12 @@ pub fn coefficients(
         None => "pads condensed at the running speed (synchronous)".to_string(),
         Some(hz) => format!("pads condensed at a whirl of {hz} Hz"),
     };
-    let film_name = match film {
-        "finite" => ", finite-length film (Swift–Stieber),",
-        _ => "",
+    let film_name = match (film, &kind) {
+        ("finite", _) => ", finite-length film (Swift–Stieber),".to_string(),
+        ("model", BearingKind::FiniteFilm(f)) => {
+            format!(", finite-length film ({}),", f.cavitation.name())
+        }
+        _ => String::new(),
     };
     let mut out = format!(
         "{label}{film_name} at {rpm} rpm, {condensed} (load along −y; K̄ = K C/W, C̄ = C ω C/W):\n"

@@ -6,7 +6,7 @@
 //! rotor static   [MODEL.toml] [--rpm N] [--csv FILE]
 //! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE] [--shapes-csv FILE] [--shapes-png FILE]
 //! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--operating-rpm A:B] [--csv FILE] [--png FILE]
-//! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--film short|finite] [--csv FILE] [--png FILE]
+//! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--film model|short|finite] [--csv FILE] [--png FILE]
 //! rotor simulate [MODEL.toml] (--rpm N | --ramp-rpm A:B | --speed-csv FILE) [--duration S] [--step S]
 //!                [--output-step S] [--ramp-time S] [--no-gravity] [--amplitude 0-pk|pk-pk] [--csv FILE] [--plots PREFIX]
 //! rotor unbalance [MODEL.toml] [--min-rpm N] [--max-rpm N] [--points P] [--node N --unbalance KGM]
@@ -221,10 +221,11 @@ enum Command {
         /// Number of load steps.
         #[arg(long, default_value_t = 60)]
         points: usize,
-        /// Film model: `short` (Ocvirk, Gümbel cavitation: the bearing's own)
-        /// or `finite` (the finite-length Reynolds film, Swift–Stieber
-        /// cavitation, on the bearing's geometry).
-        #[arg(long, default_value = "short")]
+        /// Film model: `model` (the bearing's own film, as its entry's
+        /// `film` key chooses; the default), `short` (Ocvirk, Gümbel
+        /// cavitation) or `finite` (the finite-length Reynolds film,
+        /// Swift–Stieber cavitation, on the bearing's geometry).
+        #[arg(long, default_value = "model")]
         film: String,
         /// Write the coefficients to this CSV file.
         #[arg(long)]
