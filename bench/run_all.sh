@@ -14,7 +14,7 @@ for cand in "${HOME}/.pyenv/versions/3.13.0/bin/python" python3.13; do
 done
 [ -n "$py" ] || { echo "run_all.sh: Python 3.13 is needed for ROSS 3.x" >&2; exit 1; }
 [ -x .venv-ross/bin/python ] || "$py" -m venv .venv-ross
-.venv-ross/bin/python -c "import ross" 2>/dev/null || .venv-ross/bin/pip install --quiet ross-rotordynamics
+.venv-ross/bin/python -c "import ross" 2>/dev/null || .venv-ross/bin/pip install --quiet "ross-rotordynamics==3.1.0"
 cargo build --release --quiet --bin rotor
 hot=$(cargo bench --quiet --bench hot_paths -- --warm-up-time 1 --measurement-time 3 2>/dev/null \
       | awk '/time:/ { gsub(/^ +/, "", prev); printf "| %s | %s %s |\n", prev, $4, $5 } { prev = $0 }')

@@ -126,12 +126,15 @@ fn static_and_info_run_on_every_shipped_model() {
                 .unwrap();
             let stderr = String::from_utf8_lossy(&out.stderr);
             assert!(out.status.success(), "{cmd} {}: {stderr}", path.display());
-            // Shipped models are plausible: no unit-slip warning.
-            assert!(
-                !stderr.contains("warning:"),
-                "{cmd} {}: {stderr}",
-                path.display()
-            );
+            // Shipped models are plausible: no unit-slip warning (the
+            // short film's validity warning, issue 47, is not one: the
+            // Jeffcott and hydro bearings are longer than the short film's
+            // range, and it says so).
+            let plausibility = stderr
+                .lines()
+                .filter(|l| l.contains("warning:") && !l.contains("short film at"))
+                .count();
+            assert!(plausibility == 0, "{cmd} {}: {stderr}", path.display());
         }
     }
 }
@@ -861,7 +864,10 @@ fn simulate_on_a_reduced_rotor_estimates_its_error_and_warns_outside_its_range()
     let stderr = run("150", "10");
     assert!(
         stderr.contains("reduced rotor at the top speed 150 rpm: at 2.5 Hz its response at the kept nodes differs from the full rotor's by")
-            && !stderr.contains("warning"),
+            // No warning but the short film's validity (issue 47).
+            && !stderr
+                .lines()
+                .any(|l| l.contains("warning") && !l.contains("short film at")),
         "{stderr}"
     );
     let stderr = run("3197", "1");

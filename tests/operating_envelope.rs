@@ -498,5 +498,12 @@ fn the_cli_warns_once_per_run_when_a_contact_leaves_its_law() {
         assert_eq!(count("yield onset of steel"), 1, "{contact}:\n{stderr}");
     }
     let stderr = run(&shipped, &["--ramp-rpm", "0:3000"]);
-    assert!(!stderr.contains("warning"), "{stderr}");
+    // No warning but the short film's validity (issue 47: these bearings
+    // are longer than the short film's range, and it says so).
+    assert!(
+        !stderr
+            .lines()
+            .any(|l| l.contains("warning") && !l.contains("short film at")),
+        "{stderr}"
+    );
 }

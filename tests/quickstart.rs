@@ -103,7 +103,14 @@ fn readme_quick_start_runs_as_written() {
         "the quick start failed:\n{stdout}\n{stderr}"
     );
     // The model needs no plausibility warning.
-    assert!(!stderr.contains("warning"), "{stderr}");
+    // No warning but the short film's validity (issue 47: these bearings
+    // are longer than the short film's range, and it says so).
+    assert!(
+        !stderr
+            .lines()
+            .any(|l| l.contains("warning") && !l.contains("short film at")),
+        "{stderr}"
+    );
 
     // info
     assert!(stdout.contains("11 nodes, 10 shaft elements"), "{stdout}");

@@ -6,6 +6,7 @@
 pub mod backward_crossing;
 pub mod campbell;
 mod critical_refine;
+pub mod film_validity;
 pub mod forced;
 pub mod linear;
 pub mod linearize;

@@ -282,7 +282,7 @@ pub fn operating_point(
                 tilt_offset += n_pads;
                 let q: Vec<f64> = j.iter().chain(tilts).copied().collect();
                 let report = bearing.report(&q, &vec![0.0; q.len()], speed, eval);
-                let pads = match kind {
+                let pads = match kind.short_film().as_ref() {
                     BearingKind::TiltingPad(tp) => tp
                         .pads
                         .iter()

@@ -3,8 +3,8 @@
 //! a geometric sweep of the load, coefficients scaled by `K̄ = K C / W` and
 //! `C̄ = C ω C / W`.
 
-use super::BearingKind;
 use super::equilibrium::{CoefficientPoint, EquilibriumError, coefficient_points};
+use super::{Bearing, BearingKind};
 
 /// Smallest dimensionless load `W / k0` of [`load_sweep`].
 pub const LIGHTEST_LOAD: f64 = 0.08;
@@ -58,13 +58,25 @@ pub fn load_sweep(k0: f64, points: usize) -> Vec<f64> {
 /// for a linear bearing (its coefficients are constant).
 pub fn dimensionless_curve(
     kind: &BearingKind,
+    speeds: (f64, f64),
+    points: usize,
+) -> Option<Vec<(f64, Result<DimensionlessPoint, EquilibriumError>)>> {
+    dimensionless_curve_of(kind, kind.build().as_ref(), speeds, points)
+}
+
+/// [`dimensionless_curve`] of `bearing`, a film model of the geometry of
+/// `kind` (the short film `kind.build()`, or the finite-length film of
+/// [`super::finite_bearing::FiniteFilmBearing::of`]): the same loads,
+/// equilibria and scaling.
+pub fn dimensionless_curve_of(
+    kind: &BearingKind,
+    bearing: &dyn Bearing,
     (speed, whirl): (f64, f64),
     points: usize,
 ) -> Option<Vec<(f64, Result<DimensionlessPoint, EquilibriumError>)>> {
     let film = kind.film_geometry()?;
     let loads = load_sweep(film.load_scale(speed), points);
-    let bearing = kind.build();
-    let curve = coefficient_points(bearing.as_ref(), (speed, whirl), film.clearance, &loads);
+    let curve = coefficient_points(bearing, (speed, whirl), film.clearance, &loads);
     Some(
         curve
             .into_iter()

@@ -47,7 +47,9 @@ pub enum EquilibriumError {
 ///
 /// Newton steps `δ = K⁻¹ (Q + load)` with backtracking keep the journal inside
 /// the radius `scale` and the residual decreasing; converged when
-/// `|Q + load| ≤ 1e-10 |load|`. The start is the centred journal with each
+/// `|Q + load| ≤ 1e-10 |load|`. A bearing's own start
+/// ([`Bearing::equilibrium_start`], none for the closed-form films) is tried
+/// first. Then the start is the centred journal with each
 /// internal coordinate (a pad's tilt) at the bearing's own guess
 /// ([`Bearing::guess_internal`]: the tilt of zero pivot moment); when Newton
 /// stalls from there, the load is applied in eight increments, each solved from
@@ -69,6 +71,14 @@ pub fn journal_equilibrium(
     scale: f64,
 ) -> Result<Equilibrium, EquilibriumError> {
     let n = 2 + bearing.internal_dofs();
+    if let Some(first) = bearing
+        .equilibrium_start([load.x, load.y], speed)
+        .filter(|q| q.len() == n)
+    {
+        if let Ok(eq) = newton(bearing, load, speed, scale, first, true) {
+            return Ok(eq);
+        }
+    }
     let mut start = vec![0.0; n];
     bearing.guess_internal([0.0, 0.0], speed, &mut start[2..]);
     let direct = newton(bearing, load, speed, scale, start.clone(), false);

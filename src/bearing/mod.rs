@@ -41,9 +41,12 @@ pub mod contact;
 pub mod equilibrium;
 pub mod film;
 mod film_lanes;
+pub mod finite_bearing;
+pub mod finite_film;
 pub mod linear;
 pub mod magnetic_pull;
 pub mod plain;
+pub mod reynolds;
 pub mod rub;
 pub mod short_film;
 pub mod table;
@@ -98,6 +101,9 @@ pub enum BearingError {
     /// State vectors of the wrong length.
     #[error("bearing state has {found} coordinates, expected {expected}")]
     Dimension { expected: usize, found: usize },
+    /// The finite-length film could not be solved.
+    #[error(transparent)]
+    Reynolds(#[from] reynolds::ReynoldsError),
 }
 
 /// Quantities a bearing reports besides its force (for outputs and coupling).
@@ -279,6 +285,15 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
         None
     }
 
+    /// A start for Newton's search of the equilibrium under `load` (N on
+    /// the journal) at `speed` ([`equilibrium::journal_equilibrium`]), tried
+    /// before the centred journal; `None` (the default): no better start
+    /// than the centre. The finite film starts from its short twin's
+    /// equilibrium.
+    fn equilibrium_start(&self, _load: [f64; 2], _speed: f64) -> Option<Vec<f64>> {
+        None
+    }
+
     /// Eccentricity, attitude angle, film thickness, contact and friction at
     /// `q`, `q̇`, with `eval` the evaluation there.
     fn report(&self, _q: &[f64], _qdot: &[f64], _speed: f64, _eval: &BearingEval) -> BearingReport {
@@ -394,6 +409,9 @@ pub enum BearingKind {
     Seal(SealElement),
     /// Unbalanced magnetic pull (`[[magnetic_pull]]`) with the stator contact.
     MagneticPull(MagneticPull),
+    /// A plain or tilting-pad bearing on the finite-length Reynolds film
+    /// (`film = "finite"`).
+    FiniteFilm(finite_bearing::FiniteFilmBearing),
 }
 
 impl BearingKind {
@@ -409,6 +427,7 @@ impl BearingKind {
             BearingKind::Table(t) => Box::new(t.clone()),
             BearingKind::Seal(s) => Box::new(s.clone()),
             BearingKind::MagneticPull(m) => Box::new(*m),
+            BearingKind::FiniteFilm(f) => Box::new(f.clone()),
         }
     }
 
@@ -491,6 +510,7 @@ impl BearingKind {
             | BearingKind::MagneticPull(_) => return None,
             BearingKind::Plain(b) => (b.radius, b.length, b.clearance, b.viscosity),
             BearingKind::TiltingPad(b) => (b.radius, b.length, b.clearance, b.viscosity),
+            BearingKind::FiniteFilm(f) => return f.short_kind().film_geometry(),
         };
         Some(FilmGeometry {
             radius,
@@ -526,6 +546,7 @@ impl BearingKind {
             | BearingKind::MagneticPull(_) => return false,
             BearingKind::Plain(b) => b.viscosity = viscosity,
             BearingKind::TiltingPad(b) => b.viscosity = viscosity,
+            BearingKind::FiniteFilm(f) => f.set_viscosity(viscosity),
         }
         true
     }
@@ -542,6 +563,18 @@ impl BearingKind {
             BearingKind::Rub(r) => Some(r.contact.gap),
             BearingKind::Seal(s) => s.contact.map(|c| c.gap),
             BearingKind::MagneticPull(m) => Some(m.gap),
+            BearingKind::FiniteFilm(f) => f.short_kind().journal_clearance(),
+        }
+    }
+
+    /// The short-film bearing of the same geometry: itself for every kind
+    /// but a finite-film bearing, whose plain or tilting-pad twin it gives
+    /// (for what does not depend on the film's theory: geometry, pads,
+    /// descriptions).
+    pub fn short_film(&self) -> std::borrow::Cow<'_, BearingKind> {
+        match self {
+            BearingKind::FiniteFilm(f) => std::borrow::Cow::Owned(f.short_kind()),
+            other => std::borrow::Cow::Borrowed(other),
         }
     }
 }

@@ -97,6 +97,12 @@ impl Pad {
         self.preload
     }
 
+    /// The pad's arc `(from, to)` (rad), normalized to start in `[0, 2π)`:
+    /// the window of its film.
+    pub fn film_arc(&self) -> (f64, f64) {
+        (self.window.from, self.window.to)
+    }
+
     /// Leading and trailing edge angles (rad); the spin carries oil from leading to trailing.
     pub fn edges(&self) -> (f64, f64) {
         let lead = self.pivot - self.offset * self.arc;
@@ -145,7 +151,7 @@ impl TiltingPadBearing {
     /// the arc's ends, so the force is continuous. `None` within the gap
     /// (`|p_e| < C`), where neither the surface nor the edges touch
     /// (`n·p_e ≤ |p_e|`): no force, no contact to report.
-    fn pad_contact(
+    pub(crate) fn pad_contact(
         &self,
         law: &ContactLaw,
         k: usize,
@@ -190,7 +196,7 @@ impl TiltingPadBearing {
     }
 
     /// `(sin θp, cos θp)` and the effective journal state of pad `k`.
-    fn pad_state(&self, k: usize, q: &[f64], qdot: &[f64]) -> (f64, f64, JournalState) {
+    pub(crate) fn pad_state(&self, k: usize, q: &[f64], qdot: &[f64]) -> (f64, f64, JournalState) {
         let (s, c) = self.pads[k].pivot_sc;
         let eta_dot = qdot[2 + k];
         let state = JournalState {
@@ -231,7 +237,7 @@ impl TiltingPadBearing {
 
     /// Pivot rest damping `c_r` (N·s/m) and stiffness `k_r` (N/m) at spin
     /// `speed` (see the module docs).
-    fn pivot_rest(&self, speed: f64) -> (f64, f64) {
+    pub(crate) fn pivot_rest(&self, speed: f64) -> (f64, f64) {
         let c_rest = PIVOT_REST * self.viscosity * self.radius * self.length.powi(3)
             / self.clearance.powi(3);
         (c_rest, c_rest * speed.abs().max(1.0))

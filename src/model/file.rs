@@ -226,6 +226,15 @@ pub enum BearingEntry {
         contact_damping: Option<f64>,
         /// Coulomb friction coefficient of the contact (–), default 0.2.
         friction_coefficient: Option<f64>,
+        /// The film theory: `"short"` (Ocvirk, the default) or `"finite"`
+        /// (the finite-length Reynolds film).
+        film: Option<String>,
+        /// With `film = "finite"`: `[n_theta, n_z]`, intervals around the
+        /// circle (a pad's arc) and over half the length.
+        film_mesh: Option<Vec<i64>>,
+        /// With `film = "finite"`: `"swift_stieber"` (Reynolds, the default)
+        /// or `"gumbel"` (half-Sommerfeld).
+        cavitation: Option<String>,
     },
     /// Linear coefficients over speed (a vendor's bearing code), PCHIP-interpolated.
     Table {
@@ -293,6 +302,15 @@ pub enum BearingEntry {
         contact_damping: Option<f64>,
         /// Coulomb friction coefficient of the contact (–), default 0.2.
         friction_coefficient: Option<f64>,
+        /// The film theory: `"short"` (Ocvirk, the default) or `"finite"`
+        /// (the finite-length Reynolds film).
+        film: Option<String>,
+        /// With `film = "finite"`: `[n_theta, n_z]`, intervals around the
+        /// circle (a pad's arc) and over half the length.
+        film_mesh: Option<Vec<i64>>,
+        /// With `film = "finite"`: `"swift_stieber"` (Reynolds, the default)
+        /// or `"gumbel"` (half-Sommerfeld).
+        cavitation: Option<String>,
     },
 }
 

@@ -3,8 +3,10 @@
 
 use std::path::PathBuf;
 
-use rotor_bearing::bearing::coefficients::dimensionless_curve;
-use rotor_bearing::bearing::{BearingKind, PlainBearing};
+use rotor_bearing::bearing::coefficients::dimensionless_curve_of;
+use rotor_bearing::bearing::finite_bearing::FiniteFilmBearing;
+use rotor_bearing::bearing::reynolds::Cavitation;
+use rotor_bearing::bearing::{Bearing, BearingKind, PlainBearing};
 use rotor_bearing::plot::{RAD_S_TO_RPM, coefficients_png};
 use rotor_bearing::report::csv as report_csv;
 
@@ -24,7 +26,7 @@ pub fn coefficients(
     model: Option<PathBuf>,
     bearing: Option<String>,
     (rpm, whirl_hz): (f64, Option<f64>),
-    points: usize,
+    (points, film): (usize, &str),
     csv: Option<PathBuf>,
     png: Option<PathBuf>,
 ) -> Result<(), String> {
@@ -69,7 +71,29 @@ pub fn coefficients(
             ));
         }
     };
-    let Some(sweep) = dimensionless_curve(&kind, (speed, whirl), points) else {
+    let finite = match film {
+        "model" | "short" => None,
+        "finite" => Some(
+            FiniteFilmBearing::of(&kind, Cavitation::SwiftStieber).ok_or_else(|| {
+                format!("{label}: --film finite needs a plain or tilting-pad bearing")
+            })?,
+        ),
+        other => {
+            return Err(format!(
+                "--film must be \"model\", \"short\" or \"finite\", got {other:?}"
+            ));
+        }
+    };
+    let short = if film == "short" {
+        kind.short_film().build()
+    } else {
+        kind.build()
+    };
+    let model: &dyn Bearing = match &finite {
+        Some(f) => f,
+        None => short.as_ref(),
+    };
+    let Some(sweep) = dimensionless_curve_of(&kind, model, (speed, whirl), points) else {
         return Err(format!("{label} is linear: its coefficients are constant"));
     };
     let mut curve = Vec::with_capacity(sweep.len());
@@ -86,8 +110,16 @@ pub fn coefficients(
         None => "pads condensed at the running speed (synchronous)".to_string(),
         Some(hz) => format!("pads condensed at a whirl of {hz} Hz"),
     };
-    let mut out =
-        format!("{label} at {rpm} rpm, {condensed} (load along −y; K̄ = K C/W, C̄ = C ω C/W):\n");
+    let film_name = match (film, &kind) {
+        ("finite", _) => ", finite-length film (Swift–Stieber),".to_string(),
+        ("model", BearingKind::FiniteFilm(f)) => {
+            format!(", finite-length film ({}),", f.cavitation.name())
+        }
+        _ => String::new(),
+    };
+    let mut out = format!(
+        "{label}{film_name} at {rpm} rpm, {condensed} (load along −y; K̄ = K C/W, C̄ = C ω C/W):\n"
+    );
     out.push_str(
         "    ε     φ (°)     K̄xx     K̄xy     K̄yx     K̄yy     C̄xx     C̄xy     C̄yx     C̄yy\n",
     );

@@ -6,7 +6,7 @@
 //! rotor static   [MODEL.toml] [--rpm N] [--csv FILE]
 //! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE] [--shapes-csv FILE] [--shapes-png FILE]
 //! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--operating-rpm A:B] [--csv FILE] [--png FILE]
-//! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--csv FILE] [--png FILE]
+//! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--film model|short|finite] [--csv FILE] [--png FILE]
 //! rotor simulate [MODEL.toml] (--rpm N | --ramp-rpm A:B | --speed-csv FILE) [--duration S] [--step S]
 //!                [--output-step S] [--ramp-time S] [--no-gravity] [--amplitude 0-pk|pk-pk] [--csv FILE] [--plots PREFIX]
 //! rotor unbalance [MODEL.toml] [--min-rpm N] [--max-rpm N] [--points P] [--node N --unbalance KGM]
@@ -224,6 +224,12 @@ enum Command {
         /// Number of load steps.
         #[arg(long, default_value_t = 60)]
         points: usize,
+        /// Film model: `model` (the bearing's own film, as its entry's
+        /// `film` key chooses; the default), `short` (Ocvirk, Gümbel
+        /// cavitation) or `finite` (the finite-length Reynolds film,
+        /// Swift–Stieber cavitation, on the bearing's geometry).
+        #[arg(long, default_value = "model")]
+        film: String,
         /// Write the coefficients to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
@@ -418,6 +424,30 @@ pub(crate) fn warn_table_speeds(model: &RotorModel, speeds: &[f64]) {
     }
 }
 
+/// Print one warning for each plain or tilting-pad bearing on the short
+/// film beyond its range (`analysis::film_validity`), with its ratios at
+/// the operating point: at the model's `speed_rpm` when it states one,
+/// else at the fastest of `speeds` (rad/s).
+pub(crate) fn warn_short_films(rotor: &Rotor, speeds: &[f64]) {
+    let nominal = rotor.model.nominal_speed.abs();
+    let speed = if nominal > 0.0 {
+        nominal
+    } else {
+        speeds.iter().fold(0.0f64, |a, s| a.max(s.abs()))
+    };
+    match rotor_bearing::analysis::film_validity::short_film_warnings(rotor, speed) {
+        Ok(warnings) => {
+            for w in warnings {
+                eprintln!("warning: {}: {w}", rotor.model.source);
+            }
+        }
+        Err(e) => eprintln!(
+            "warning: {}: the short films' validity was not checked: {e}",
+            rotor.model.source
+        ),
+    }
+}
+
 /// The speed (rpm) of `--rpm`, else the model's `speed_rpm`.
 pub(crate) fn model_rpm(model: &RotorModel, rpm: Option<f64>) -> Result<f64, String> {
     match rpm {
@@ -530,9 +560,17 @@ fn run(cli: Cli) -> Result<(), String> {
             rpm,
             whirl_frequency,
             points,
+            film,
             csv,
             png,
-        } => coefficients::coefficients(model, bearing, (rpm, whirl_frequency), points, csv, png),
+        } => coefficients::coefficients(
+            model,
+            bearing,
+            (rpm, whirl_frequency),
+            (points, &film),
+            csv,
+            png,
+        ),
         Command::Response {
             model,
             force,

@@ -31,6 +31,7 @@ pub fn modes(
 ) -> Result<(), String> {
     let speed = rpm / RAD_S_TO_RPM;
     crate::warn_table_speeds(&rotor.model, &[speed]);
+    crate::warn_short_films(rotor, &[speed]);
     let options = ModalOptions {
         modes: count,
         ..ModalOptions::default()
@@ -106,6 +107,7 @@ pub fn campbell_diagram(rotor: &Rotor, req: CampbellRequest) -> Result<(), Strin
     let seconds = study.diagram_seconds;
     let speeds: Vec<f64> = study.diagram.iter().map(|p| p.speed).collect();
     crate::warn_table_speeds(model, &speeds);
+    crate::warn_short_films(rotor, &speeds);
     eprintln!(
         "campbell diagram: {} speeds in {seconds:.4} s wall-clock ({:.3} ms per speed)",
         study.diagram.len(),

@@ -234,6 +234,8 @@ pub fn simulate(
     eprintln!("{}", rotor.coordinates());
     let mut watch = ValidityWatch::new(&rotor);
     let top = profile.top_speed();
+    // The full rotor's operating point (a reduced rotor has no static solve).
+    crate::warn_short_films(full.as_ref().unwrap_or(&rotor), &[top]);
     if let Some(full) = &full {
         let rpm = top * RAD_S_TO_RPM;
         let estimate = error_estimate(full, &rotor, top, top);

@@ -64,6 +64,7 @@ fn static_state(rotor: &Rotor, rpm: f64) -> Result<Vec<f64>, String> {
         return static_deflection(rotor).map_err(|e| e.to_string());
     }
     crate::warn_table_speeds(&rotor.model, &[rpm / RAD_S_TO_RPM]);
+    crate::warn_short_films(rotor, &[rpm / RAD_S_TO_RPM]);
     let eq = equilibrium(rotor, rpm / RAD_S_TO_RPM, &SolverOptions::default(), None)
         .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
     Ok(rotor.dofs.expand(&eq.displacement))

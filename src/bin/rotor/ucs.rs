@@ -49,6 +49,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         .map_err(|e| e.to_string())?;
     let speeds = bearing_speeds(top, req.speeds);
     crate::warn_table_speeds(&rotor.model, &speeds);
+    crate::warn_short_films(rotor, &speeds);
     let map = critical_speed_map(rotor, &stiffness, req.criticals, &speeds)
         .map_err(|e| format!("{}: {e}", rotor.model.name))?;
     let mut out = text::critical_speed_map(&rotor.model.name, &map, req.points / 10);

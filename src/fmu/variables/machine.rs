@@ -184,7 +184,10 @@ pub(super) fn add(t: &mut Table) {
             ),
             (
                 "eccentricity",
-                if matches!(b.kind, crate::bearing::BearingKind::TiltingPad(_)) {
+                if matches!(
+                    b.kind.short_film().as_ref(),
+                    crate::bearing::BearingKind::TiltingPad(_)
+                ) {
                     format!(
                         "Eccentricity ratio e/C_b of bearing {n}: journal offset over the assembled clearance C_b = C (1 - preload), above 1 on the pads with preload"
                     )

@@ -2,6 +2,10 @@
 //! bearings, with the geometric checks thin-film theory needs.
 
 use crate::bearing::contact::ContactLaw;
+use crate::bearing::finite_bearing::{
+    FiniteFilmBearing, PAD_ARC_RANGE, SLENDERNESS_RANGE, slenderness,
+};
+use crate::bearing::reynolds::{Cavitation, ReynoldsMesh};
 use crate::bearing::tilting_pad::Pad;
 use crate::bearing::{BearingKind, PlainBearing, TableBearing, TiltingPadBearing};
 
@@ -48,6 +52,111 @@ fn radial_clearance(
             "give clearance (the radial clearance, m) or diametral_clearance (bore diameter less journal diameter, m)",
         )),
     }
+}
+
+/// The film theory of a plain or tilting-pad entry: `short` (the kind as
+/// it is, the default) or `finite`, the same geometry on the finite-length
+/// film ([`FiniteFilmBearing`]) with its mesh (`film_mesh = [n_theta, n_z]`,
+/// default [`ReynoldsMesh::FULL_CIRCLE`] or [`ReynoldsMesh::PAD`]) and
+/// cavitation condition (default Swift–Stieber). `film_mesh` and
+/// `cavitation` belong to the finite film only; the slenderness (L/D, a
+/// pad's L/(R β)) and pad arc must lie in the ranges the finite film is
+/// stated for ([`SLENDERNESS_RANGE`], [`PAD_ARC_RANGE`]).
+fn film_theory(
+    ctx: &Ctx,
+    p: &FieldPath,
+    kind: BearingKind,
+    (film, mesh, cavitation): (Option<String>, Option<Vec<i64>>, Option<String>),
+) -> Result<BearingKind, ModelError> {
+    match film.as_deref() {
+        None | Some("short") => {
+            for (key, given) in [
+                ("film_mesh", mesh.is_some()),
+                ("cavitation", cavitation.is_some()),
+            ] {
+                if given {
+                    return Err(ctx.err(
+                        p.key(key),
+                        "given",
+                        "belongs to the finite film only: add film = \"finite\" or remove it",
+                    ));
+                }
+            }
+            return Ok(kind);
+        }
+        Some("finite") => {}
+        Some(other) => {
+            return Err(ctx.err(
+                p.key("film"),
+                format!("\"{other}\""),
+                "must be \"short\" (Ocvirk, the default) or \"finite\" (finite-length Reynolds film)",
+            ));
+        }
+    }
+    let cavitation = match cavitation.as_deref() {
+        None | Some("swift_stieber") => Cavitation::SwiftStieber,
+        Some("gumbel") => Cavitation::Gumbel,
+        Some(other) => {
+            return Err(ctx.err(
+                p.key("cavitation"),
+                format!("\"{other}\""),
+                "must be \"swift_stieber\" (Reynolds, the default) or \"gumbel\" (half-Sommerfeld)",
+            ));
+        }
+    };
+    let ratio = slenderness(&kind).expect("plain or tilting pad");
+    let (lo, hi) = SLENDERNESS_RANGE;
+    if !(lo..=hi).contains(&ratio) {
+        let what = match kind {
+            BearingKind::TiltingPad(_) => "the pads' axial length over arc length L/(R β)",
+            _ => "L/D",
+        };
+        return Err(ctx.err(
+            p.key("length"),
+            kind.film_geometry().map_or(0.0, |g| g.length),
+            &format!(
+                "{what} = {ratio:.4} is outside {lo}–{hi}, the range the finite film (film = \"finite\") is stated for"
+            ),
+        ));
+    }
+    if let BearingKind::TiltingPad(b) = &kind {
+        let (lo, hi) = PAD_ARC_RANGE;
+        let arc = b.pads[0].arc();
+        if !(lo..=hi).contains(&arc) {
+            return Err(ctx.err(
+                p.key("pad_arc_deg"),
+                arc.to_degrees(),
+                &format!(
+                    "is outside {}–{}°, the pad arcs the finite film (film = \"finite\") is stated for",
+                    lo.to_degrees().round(),
+                    hi.to_degrees().round()
+                ),
+            ));
+        }
+    }
+    let mut bearing = FiniteFilmBearing::of(&kind, cavitation).expect("plain or tilting pad");
+    if let Some(list) = mesh {
+        let key = p.key("film_mesh");
+        if list.len() != 2 {
+            return Err(ctx.err(
+                key,
+                format!("{list:?}"),
+                "must be [n_theta, n_z]: intervals around the circle (a pad's arc) and over half the length",
+            ));
+        }
+        let (c0, c1) = ReynoldsMesh::CIRCUMFERENTIAL_RANGE;
+        let (a0, a1) = ReynoldsMesh::AXIAL_RANGE;
+        for (k, (v, (lo, hi))) in list.iter().zip([(c0, c1), (a0, a1)]).enumerate() {
+            if !(lo as i64..=hi as i64).contains(v) {
+                return Err(ctx.err(key.index(k), v, &format!("must be from {lo} to {hi}")));
+            }
+        }
+        bearing.mesh = ReynoldsMesh {
+            circumferential: list[0] as usize,
+            axial: list[1] as usize,
+        };
+    }
+    Ok(BearingKind::FiniteFilm(bearing))
 }
 
 /// The journal radius (m) checked against the shaft at `node`: within
@@ -179,6 +288,9 @@ pub(super) fn bearings(
                 contact_stiffness,
                 contact_damping,
                 friction_coefficient,
+                film,
+                film_mesh,
+                cavitation,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
                 let mut bearing = PlainBearing {
@@ -204,7 +316,13 @@ pub(super) fn bearings(
                         ),
                     ));
                 }
-                (name, node, BearingKind::Plain(bearing), pedestal)
+                let kind = film_theory(
+                    ctx,
+                    &p,
+                    BearingKind::Plain(bearing),
+                    (film, film_mesh, cavitation),
+                )?;
+                (name, node, kind, pedestal)
             }
             BearingEntry::Table {
                 name,
@@ -265,6 +383,9 @@ pub(super) fn bearings(
                 contact_stiffness,
                 contact_damping,
                 friction_coefficient,
+                film,
+                film_mesh,
+                cavitation,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
                 let radius = journal_radius(ctx, &p, radius, journal_collar, node, elements)?;
@@ -351,7 +472,13 @@ pub(super) fn bearings(
                     bearing.contact_law(),
                     [contact_stiffness, contact_damping, friction_coefficient],
                 )?;
-                (name, node, BearingKind::TiltingPad(bearing), pedestal)
+                let kind = film_theory(
+                    ctx,
+                    &p,
+                    BearingKind::TiltingPad(bearing),
+                    (film, film_mesh, cavitation),
+                )?;
+                (name, node, kind, pedestal)
             }
         };
         let pedestal = match pedestal {

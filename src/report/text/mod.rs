@@ -118,6 +118,13 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
             short(m.gap * 1e3),
             short(m.contact.stiffness)
         ),
+        BearingKind::FiniteFilm(f) => format!(
+            "{}; finite-length film ({} cavitation, mesh {} × {})",
+            describe_bearing(&f.short_kind()).replacen("plain short bearing", "plain bearing", 1),
+            f.cavitation.name(),
+            f.mesh.circumferential,
+            f.mesh.axial
+        ),
     }
 }
 

@@ -1,0 +1,276 @@
+//! A plain or tilting-pad bearing with the finite-length film
+//! ([`super::finite_film`]) in place of the short one: the same geometry,
+//! the same journal–bushing or journal–pad contact, the same pad kinematics
+//! (each pad's film at its effective journal state,
+//! [`TiltingPadBearing::pad_state`], so a pad's film thickness is the short
+//! pad's function; generalized forces `Tᵀ F` and Jacobians `Tᵀ K T`, `Tᵀ C T`,
+//! `Q_η` the pivot moment over the journal radius) and the same weak pivot
+//! rest. Starting guesses and re-seating of pads during a static solve, the
+//! resting contact and the report (friction is the Couette shear, which does
+//! not depend on the film's length theory) are the short bearing's.
+
+use super::contact::ContactExtent;
+use super::finite_film::FiniteFilm;
+use super::reynolds::{Cavitation, ReynoldsMesh};
+use super::{
+    Bearing, BearingError, BearingEval, BearingKind, BearingReport, JournalState, PlainBearing,
+    TiltingPadBearing, check_state,
+};
+
+/// The bearing a finite-length film supports.
+#[derive(Debug, Clone, PartialEq)]
+pub enum FilmSupport {
+    /// A full 360° plain bearing.
+    Plain(PlainBearing),
+    /// Tilting pads, each an arc.
+    TiltingPad(TiltingPadBearing),
+}
+
+/// A plain or tilting-pad bearing on the finite-length film.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FiniteFilmBearing {
+    /// Geometry, oil, pads and contact.
+    pub support: FilmSupport,
+    /// The film's mesh (per pad for tilting pads).
+    pub mesh: ReynoldsMesh,
+    /// The cavitation condition.
+    pub cavitation: Cavitation,
+}
+
+impl FiniteFilmBearing {
+    /// The finite-film twin of a plain or tilting-pad bearing on the default
+    /// mesh ([`ReynoldsMesh::FULL_CIRCLE`], [`ReynoldsMesh::PAD`]), or a
+    /// finite-film bearing on its own mesh with `cavitation`; `None` for
+    /// other kinds.
+    pub fn of(kind: &BearingKind, cavitation: Cavitation) -> Option<Self> {
+        let (support, mesh) = match kind {
+            BearingKind::Plain(b) => (FilmSupport::Plain(*b), ReynoldsMesh::FULL_CIRCLE),
+            BearingKind::TiltingPad(b) => (FilmSupport::TiltingPad(b.clone()), ReynoldsMesh::PAD),
+            BearingKind::FiniteFilm(f) => (f.support.clone(), f.mesh),
+            _ => return None,
+        };
+        Some(Self {
+            support,
+            mesh,
+            cavitation,
+        })
+    }
+
+    /// The film of this bearing.
+    pub fn film(&self) -> FiniteFilm {
+        let (radius, length, clearance, viscosity) = match &self.support {
+            FilmSupport::Plain(b) => (b.radius, b.length, b.clearance, b.viscosity),
+            FilmSupport::TiltingPad(b) => (b.radius, b.length, b.clearance, b.viscosity),
+        };
+        FiniteFilm {
+            radius,
+            length,
+            clearance,
+            viscosity,
+            mesh: self.mesh,
+            cavitation: self.cavitation,
+        }
+    }
+
+    /// The short-film bearing of the same geometry.
+    fn short(&self) -> &dyn Bearing {
+        match &self.support {
+            FilmSupport::Plain(b) => b,
+            FilmSupport::TiltingPad(b) => b,
+        }
+    }
+
+    /// The short-film kind of the same geometry ([`BearingKind::Plain`] or
+    /// [`BearingKind::TiltingPad`]).
+    pub fn short_kind(&self) -> BearingKind {
+        match &self.support {
+            FilmSupport::Plain(b) => BearingKind::Plain(*b),
+            FilmSupport::TiltingPad(b) => BearingKind::TiltingPad(b.clone()),
+        }
+    }
+
+    /// Set the oil viscosity (Pa·s).
+    pub fn set_viscosity(&mut self, viscosity: f64) {
+        match &mut self.support {
+            FilmSupport::Plain(b) => b.viscosity = viscosity,
+            FilmSupport::TiltingPad(b) => b.viscosity = viscosity,
+        }
+    }
+
+    /// The film's slenderness: `L/D` of a plain bearing, a pad's axial
+    /// length over its arc length `L/(R β)` (the smallest of the pads').
+    pub fn slenderness(&self) -> f64 {
+        slenderness(&self.short_kind()).expect("a plain or tilting-pad support")
+    }
+}
+
+/// Range of the slenderness ([`slenderness`]) the finite film is stated
+/// for: from the short limit it was checked against (L/D = 0.05,
+/// `tests/finite_film.rs`) to four times the square bearing; beyond it the
+/// default mesh no longer resolves the film (a slender film's boundary layer
+/// at the pad edges, a long one's axial profile).
+pub const SLENDERNESS_RANGE: (f64, f64) = (0.05, 4.0);
+
+/// Range of a pad's arc (rad) the finite film is stated for: 10° to 180°.
+pub const PAD_ARC_RANGE: (f64, f64) = (10.0 * std::f64::consts::PI / 180.0, std::f64::consts::PI);
+
+/// The slenderness of a plain bearing (`L/D`) or of tilting pads (axial
+/// length over arc length, `L/(R β)`, of the longest-arc pad); `None` for
+/// other kinds. The number the short film's validity is judged by.
+pub fn slenderness(kind: &BearingKind) -> Option<f64> {
+    match kind {
+        BearingKind::Plain(b) => Some(b.length / (2.0 * b.radius)),
+        BearingKind::TiltingPad(b) => {
+            let arc = b.pads.iter().map(|p| p.arc()).fold(0.0, f64::max);
+            Some(b.length / (b.radius * arc))
+        }
+        BearingKind::FiniteFilm(f) => slenderness(&f.short_kind()),
+        _ => None,
+    }
+}
+
+impl Bearing for FiniteFilmBearing {
+    fn internal_dofs(&self) -> usize {
+        self.short().internal_dofs()
+    }
+
+    fn evaluate(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<(), BearingError> {
+        let film = self.film();
+        match &self.support {
+            FilmSupport::Plain(b) => {
+                check_state(2, q, qdot, speed, out)?;
+                let state = JournalState::from_coordinates(q, qdot);
+                let part = film.force_and_jacobian(&state, speed, None)?;
+                out.clear();
+                out.add_transformed(&part, None);
+                let (contact, _) = b
+                    .contact_law()
+                    .evaluate(state.position, state.velocity, speed);
+                out.add_transformed(&contact, None);
+            }
+            FilmSupport::TiltingPad(b) => {
+                let n = 2 + b.pads.len();
+                check_state(n, q, qdot, speed, out)?;
+                out.clear();
+                let (c_rest, k_rest) = b.pivot_rest(speed);
+                let law = b.contact_law();
+                for k in 0..b.pads.len() {
+                    let (s, c, state) = b.pad_state(k, q, qdot);
+                    let arc = Some(b.pads[k].film_arc());
+                    let part = film.force_and_jacobian(&state, speed, arc)?;
+                    out.add_transformed(&part, Some((k, -s, c)));
+                    if let Some((contact, _)) = b.pad_contact(&law, k, &state, speed) {
+                        out.add_transformed(&contact, Some((k, -s, c)));
+                    }
+                    let i = 2 + k;
+                    out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+                    out.stiffness[i * n + i] += k_rest;
+                    out.damping[i * n + i] += c_rest;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn is_linear(&self) -> bool {
+        false
+    }
+
+    /// One Reynolds solve per film (plain) or pad instead of the nine of
+    /// `evaluate`'s central differences.
+    fn cheap_forces(&self) -> bool {
+        true
+    }
+
+    /// The forces of [`Bearing::evaluate`] alone: the film force of each
+    /// film or pad ([`FiniteFilm::force`]), the contact and the pivot rest.
+    fn forces(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<(), BearingError> {
+        let film = self.film();
+        match &self.support {
+            FilmSupport::Plain(b) => {
+                check_state(2, q, qdot, speed, out)?;
+                let state = JournalState::from_coordinates(q, qdot);
+                let force = film.force(&state, speed, None)?;
+                let (contact, _) = b
+                    .contact_law()
+                    .evaluate(state.position, state.velocity, speed);
+                out.force.fill(0.0);
+                out.add_force(&(force + contact.force), None);
+            }
+            FilmSupport::TiltingPad(b) => {
+                let n = 2 + b.pads.len();
+                check_state(n, q, qdot, speed, out)?;
+                out.force.fill(0.0);
+                let (c_rest, k_rest) = b.pivot_rest(speed);
+                let law = b.contact_law();
+                for k in 0..b.pads.len() {
+                    let (s, c, state) = b.pad_state(k, q, qdot);
+                    let arc = Some(b.pads[k].film_arc());
+                    let mut force = film.force(&state, speed, arc)?;
+                    if let Some((contact, _)) = b.pad_contact(&law, k, &state, speed) {
+                        force += contact.force;
+                    }
+                    out.add_force(&force, Some((k, -s, c)));
+                    let i = 2 + k;
+                    out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// [`Bearing::forces`], then the short bearing's report on that force.
+    fn output(
+        &self,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        out: &mut BearingEval,
+    ) -> Result<BearingReport, BearingError> {
+        self.forces(q, qdot, speed, out)?;
+        Ok(self.report(q, qdot, speed, out))
+    }
+
+    /// The short twin's equilibrium under the same load: the same pads and
+    /// kinematics, a film that carries a little more.
+    fn equilibrium_start(&self, load: [f64; 2], speed: f64) -> Option<Vec<f64>> {
+        let kind = self.short_kind();
+        let scale = kind.journal_clearance()?;
+        let load = nalgebra::Vector2::new(load[0], load[1]);
+        super::equilibrium::journal_equilibrium(self.short(), load, speed, scale)
+            .ok()
+            .map(|eq| eq.q)
+    }
+
+    fn guess_internal(&self, journal: [f64; 2], speed: f64, internal: &mut [f64]) {
+        self.short().guess_internal(journal, speed, internal);
+    }
+
+    fn reseat_internal(&self, q: &mut [f64], speed: f64) -> bool {
+        self.short().reseat_internal(q, speed)
+    }
+
+    fn resting_contact(&self, direction: [f64; 2]) -> Option<(f64, f64)> {
+        self.short().resting_contact(direction)
+    }
+
+    fn contact_extent(&self, q: &[f64], qdot: &[f64], speed: f64) -> Option<ContactExtent> {
+        self.short().contact_extent(q, qdot, speed)
+    }
+
+    fn report(&self, q: &[f64], qdot: &[f64], speed: f64, eval: &BearingEval) -> BearingReport {
+        self.short().report(q, qdot, speed, eval)
+    }
+}
