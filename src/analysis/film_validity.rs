@@ -22,7 +22,7 @@ use std::fmt;
 
 use nalgebra::{Matrix2, Vector2};
 
-use crate::bearing::equilibrium::{condensed_coefficients, journal_equilibrium};
+use crate::bearing::equilibrium::{condensed_coefficients, journal_equilibrium_direct};
 use crate::bearing::finite_bearing::{FiniteFilmBearing, slenderness};
 use crate::bearing::reynolds::{Cavitation, ReynoldsMesh};
 use crate::bearing::{Bearing, BearingEval, BearingKind};
@@ -130,7 +130,7 @@ pub fn short_film_warnings(
                 .ok()
                 .map(|_| eval)
         } else {
-            journal_equilibrium(&finite, load, speed, scale)
+            journal_equilibrium_direct(&finite, load, speed, scale)
                 .ok()
                 .map(|eq| eq.eval)
         };

@@ -71,20 +71,12 @@ pub fn journal_equilibrium(
     scale: f64,
 ) -> Result<Equilibrium, EquilibriumError> {
     let n = 2 + bearing.internal_dofs();
-    if let Some(first) = bearing
-        .equilibrium_start([load.x, load.y], speed)
-        .filter(|q| q.len() == n)
-    {
-        if let Ok(eq) = newton(bearing, load, speed, scale, first, true) {
-            return Ok(eq);
-        }
-    }
-    let mut start = vec![0.0; n];
-    bearing.guess_internal([0.0, 0.0], speed, &mut start[2..]);
-    let direct = newton(bearing, load, speed, scale, start.clone(), false);
+    let direct = journal_equilibrium_direct(bearing, load, speed, scale);
     if direct.is_ok() || n == 2 {
         return direct;
     }
+    let mut start = vec![0.0; n];
+    bearing.guess_internal([0.0, 0.0], speed, &mut start[2..]);
     let continued = continuation(bearing, load, speed, scale, start, false);
     if continued.is_ok() {
         return continued;
@@ -119,6 +111,29 @@ pub fn journal_equilibrium(
         }
     }
     off_centre.or(continued)
+}
+
+/// The first attempts of [`journal_equilibrium`] alone: Newton from the
+/// bearing's own start, then from the centre; for a check that must stay
+/// cheap (a film solved numerically), where no equilibrium is an answer.
+pub fn journal_equilibrium_direct(
+    bearing: &dyn Bearing,
+    load: Vector2<f64>,
+    speed: f64,
+    scale: f64,
+) -> Result<Equilibrium, EquilibriumError> {
+    let n = 2 + bearing.internal_dofs();
+    if let Some(first) = bearing
+        .equilibrium_start([load.x, load.y], speed)
+        .filter(|q| q.len() == n)
+    {
+        if let Ok(eq) = newton(bearing, load, speed, scale, first, true) {
+            return Ok(eq);
+        }
+    }
+    let mut start = vec![0.0; n];
+    bearing.guess_internal([0.0, 0.0], speed, &mut start[2..]);
+    newton(bearing, load, speed, scale, start, false)
 }
 
 /// Continuation in load from the journal a tenth of its clearance along the
