@@ -88,5 +88,5 @@ pub use outputs::{
 pub use run::{SpeedProfile, record, record_into};
 pub use simulator::{Simulator, SolverError, SolverOptions, StepStats};
 pub use state::SimState;
-pub use statics::{Equilibrium, equilibrium};
+pub use statics::{Equilibrium, equilibrium, equilibrium_near, equilibrium_unchecked};
 pub use warnings::SolverWarning;

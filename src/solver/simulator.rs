@@ -150,6 +150,10 @@ pub enum SolverError {
     /// No static equilibrium was found.
     #[error("static equilibrium: {0}")]
     Static(String),
+    /// The static equilibrium found is one the machine cannot hold: its net
+    /// static stiffness is negative in some direction (`static_stability`).
+    #[error("static equilibrium: {0}")]
+    StaticallyUnstable(String),
     /// A call would exceed the work bound of one call (internal steps or step
     /// halvings, [`SolverOptions::MAX_STEPS_PER_CALL`], [`SolverOptions::MAX_CUTS_PER_CALL`]).
     #[error("{0}")]

@@ -81,7 +81,7 @@ pub(super) fn check(
         }
         let Ok(lu) = shifted.lu() else {
             if shift == 0.0 {
-                return Err(SolverError::Static(format!(
+                return Err(SolverError::StaticallyUnstable(format!(
                     "at {} rpm the machine has no net static stiffness (singular): the negative stiffness of {names} cancels what holds it",
                     short(rpm)
                 )));
@@ -124,7 +124,7 @@ pub(super) fn check(
         ),
         _ => String::new(),
     };
-    Err(SolverError::Static(format!(
+    Err(SolverError::StaticallyUnstable(format!(
         "the equilibrium at {} rpm is statically unstable: the net stiffness is {} N/m in the mode largest{place}; the negative stiffness of {names} exceeds what the shaft, bearings and supports hold",
         short(rpm),
         short(lambda)

@@ -60,12 +60,59 @@ pub fn equilibrium(
     options: &SolverOptions,
     start: Option<&Equilibrium>,
 ) -> Result<Equilibrium, SolverError> {
-    let mut sites = Sites::new(rotor)?;
+    solve(rotor, speed, options, start_of(rotor, start), true)
+}
+
+/// [`equilibrium`] without refusing a statically unstable one: the
+/// equilibrium Newton found, whatever the sign of its net stiffness (the
+/// start of a search for the equilibria off it, `analysis::held_equilibrium`).
+pub fn equilibrium_unchecked(
+    rotor: &Rotor,
+    speed: f64,
+    options: &SolverOptions,
+    start: Option<&Equilibrium>,
+) -> Result<Equilibrium, SolverError> {
+    solve(rotor, speed, options, start_of(rotor, start), false)
+}
+
+/// [`equilibrium`] with Newton started from the rotor displacement
+/// `displacement` (m, rad, on the free DOFs) and the bearings' own guess of
+/// their pad tilts there.
+pub fn equilibrium_near(
+    rotor: &Rotor,
+    speed: f64,
+    options: &SolverOptions,
+    displacement: &[f64],
+) -> Result<Equilibrium, SolverError> {
+    if displacement.len() != rotor.dof_count() {
+        return Err(SolverError::Input(
+            "start displacement does not belong to this rotor (sizes differ)".into(),
+        ));
+    }
+    solve(rotor, speed, options, (displacement.to_vec(), None), true)
+}
+
+/// The start `(u0, p0)` of Newton: `start`'s displacement and tilts, or the
+/// undeflected rotor and the bearings' guess.
+fn start_of(rotor: &Rotor, start: Option<&Equilibrium>) -> (Vec<f64>, Option<Vec<f64>>) {
     let u0 = match start {
         Some(e) => e.displacement.clone(),
         None => vec![0.0; rotor.dof_count()],
     };
     let p0 = start.map(|e| e.tilts.clone());
+    (u0, p0)
+}
+
+/// The equilibrium from `(u0, p0)`, refused when statically unstable if
+/// `check`.
+fn solve(
+    rotor: &Rotor,
+    speed: f64,
+    options: &SolverOptions,
+    (u0, p0): (Vec<f64>, Option<Vec<f64>>),
+    check: bool,
+) -> Result<Equilibrium, SolverError> {
+    let mut sites = Sites::new(rotor)?;
     if u0.len() != rotor.dof_count() || p0.as_ref().is_some_and(|p| p.len() != sites.n_internal) {
         return Err(SolverError::Input(
             "start equilibrium does not belong to this rotor (sizes differ)".into(),
@@ -73,7 +120,11 @@ pub fn equilibrium(
     }
     let loads: Vec<f64> = rotor.model.load_inputs().iter().map(|l| l.start).collect();
     let f_ext = static_load(rotor, options, &loads);
-    let (displacement, tilts) = settle(rotor, &mut sites, speed, options, 0.0, (u0, p0), &f_ext)?;
+    let (displacement, tilts) = if check {
+        settle(rotor, &mut sites, speed, options, 0.0, (u0, p0), &f_ext)?
+    } else {
+        settle_unchecked(rotor, &mut sites, speed, options, 0.0, (u0, p0), &f_ext)?
+    };
     let bearings = sites
         .list
         .into_iter()
