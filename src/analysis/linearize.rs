@@ -13,7 +13,9 @@
 
 use crate::bearing::equilibrium::condensed_coefficients;
 use crate::rotor::{AssemblyError, JournalCoefficients, Rotor};
-use crate::solver::{Equilibrium, SolverError, SolverOptions, equilibrium};
+use crate::solver::{Equilibrium, SolverError};
+
+use super::held_equilibrium::held_equilibrium;
 
 /// Why a rotor could not be linearized.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -46,7 +48,8 @@ pub fn bearing_coefficients(equilibrium: &Equilibrium, frequency: f64) -> Vec<Jo
 }
 
 /// The rotor with every nonlinear bearing replaced by its stiffness and damping
-/// at the static equilibrium under gravity at `speed` (rad/s), internal
+/// at the static equilibrium under gravity at `speed` (rad/s) that the
+/// bearings hold ([`held_equilibrium`]: off a statically unstable centre), internal
 /// coordinates (pad tilts) condensed for harmonic motion at `frequency` (rad/s;
 /// the spin speed for synchronous coefficients), and that equilibrium. `start`
 /// is a nearby equilibrium to start Newton from (see the module docs for what
@@ -64,7 +67,7 @@ pub fn linearized_from(
             None,
         ));
     }
-    let at = equilibrium(rotor, speed, &SolverOptions::default(), start)
+    let (at, _) = held_equilibrium(rotor, speed, start)
         .map_err(|source| LinearizeError::Solver { speed, source })?;
     let linear = rotor
         .with_bearing_coefficients(&bearing_coefficients(&at, frequency))

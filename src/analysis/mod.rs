@@ -8,6 +8,7 @@ pub mod campbell;
 mod critical_refine;
 pub mod film_validity;
 pub mod forced;
+pub mod held_equilibrium;
 pub mod linear;
 pub mod linearize;
 pub mod modal;

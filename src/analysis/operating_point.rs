@@ -15,7 +15,9 @@
 use crate::bearing::BearingKind;
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::rotor::{DOF_PER_PEDESTAL, Rotor};
-use crate::solver::{Equilibrium, SolverError, SolverOptions, equilibrium};
+use crate::solver::{Equilibrium, SolverError};
+
+use super::held_equilibrium::held_equilibrium;
 
 use super::linear::{LinearError, static_deflection};
 use super::linearize::bearing_coefficients;
@@ -155,7 +157,7 @@ fn static_state(
     if rotor.nonlinear_bearings.is_empty() {
         Ok((static_deflection(rotor)?, None))
     } else {
-        let eq = equilibrium(rotor, speed, &SolverOptions::default(), None)
+        let (eq, _) = held_equilibrium(rotor, speed, None)
             .map_err(|source| OperatingPointError::Solver { speed, source })?;
         Ok((rotor.dofs.expand(&eq.displacement), Some(eq)))
     }

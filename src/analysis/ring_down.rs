@@ -32,6 +32,7 @@ use crate::model::{Drive, LoadChannel};
 use crate::rotor::Rotor;
 use crate::solver::{Simulator, SolverError, SolverOptions};
 
+use super::held_equilibrium::held_equilibrium;
 use super::modal::Mode;
 
 type C64 = Complex<f64>;
@@ -121,7 +122,22 @@ pub fn ring_down(
             sim.set_load(i, 0.0, 0.0)?;
         }
     }
-    sim.settle_static()?;
+    // From the equilibrium the linear analyses take: the solver's own, or
+    // the one off a statically unstable centre (`held_equilibrium`, to
+    // 1e-11 of the load).
+    match held_equilibrium(rotor, speed, None)? {
+        (held, Some(_))
+            if held.displacement.len() == sim.state().u.len()
+                && held.tilts.len() == sim.state().p.len() =>
+        {
+            let mut state = sim.state().clone();
+            state.u.copy_from_slice(&held.displacement);
+            state.p.copy_from_slice(&held.tilts);
+            sim.set_state(state)?;
+            sim.consistent_acceleration()?;
+        }
+        _ => sim.settle_static()?,
+    }
     let r = sim.rotor();
     // The translation that moves most in the mode.
     let (node, axis) = (0..r.model.node_count())

@@ -24,6 +24,7 @@
 
 mod coefficients;
 mod fmu_stage;
+mod held;
 mod modal;
 mod operating_point;
 mod report;

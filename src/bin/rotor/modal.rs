@@ -32,6 +32,7 @@ pub fn modes(
     let speed = rpm / RAD_S_TO_RPM;
     crate::warn_table_speeds(&rotor.model, &[speed]);
     crate::warn_short_films(rotor, &[speed]);
+    crate::held::note_off_centre(rotor, &[speed]);
     let options = ModalOptions {
         modes: count,
         ..ModalOptions::default()
@@ -108,6 +109,7 @@ pub fn campbell_diagram(rotor: &Rotor, req: CampbellRequest) -> Result<(), Strin
     let speeds: Vec<f64> = study.diagram.iter().map(|p| p.speed).collect();
     crate::warn_table_speeds(model, &speeds);
     crate::warn_short_films(rotor, &speeds);
+    crate::held::note_off_centre(rotor, &speeds);
     eprintln!(
         "campbell diagram: {} speeds in {seconds:.4} s wall-clock ({:.3} ms per speed)",
         study.diagram.len(),

@@ -21,6 +21,7 @@ pub fn run(
     }
     crate::warn_table_speeds(&rotor.model, &[rpm / RAD_S_TO_RPM]);
     crate::warn_short_films(rotor, &[rpm / RAD_S_TO_RPM]);
+    crate::held::note_off_centre(rotor, &[rpm / RAD_S_TO_RPM]);
     let points = operating_point(rotor, rpm / RAD_S_TO_RPM)
         .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
     if let Some(path) = csv {

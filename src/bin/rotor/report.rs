@@ -95,6 +95,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     let speed = rpm / RAD_S_TO_RPM;
     let name = model.name.clone();
     crate::warn_short_films(rotor, &[speed]);
+    crate::held::note_off_centre(rotor, &[speed]);
     let operating = OperatingRange {
         min: speed,
         max: speed,

@@ -59,6 +59,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     }
     crate::warn_table_speeds(&rotor.model, &speeds);
     crate::warn_short_films(rotor, &speeds);
+    crate::held::note_off_centre(rotor, &speeds);
     let (frequencies, sweep) = forced_sweep(rotor, index, &speeds, &response_points(rotor))
         .map_err(|e| format!("{}: {e}", rotor.model.name))?;
     if let Some(path) = req.csv {

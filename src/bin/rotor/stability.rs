@@ -103,6 +103,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     };
     crate::warn_table_speeds(&rotor.model, &[req.rpm / RAD_S_TO_RPM]);
     crate::warn_short_films(rotor, &[req.rpm / RAD_S_TO_RPM]);
+    crate::held::note_off_centre(rotor, &[req.rpm / RAD_S_TO_RPM]);
     let result = stability_study(rotor, &request)
         .map_err(|e| format!("{} at {} rpm: {e}", rotor.model.name, req.rpm))?;
     let labels: Vec<String> = result.sites.iter().map(|&n| site_label(rotor, n)).collect();

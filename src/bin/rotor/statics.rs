@@ -3,13 +3,12 @@
 
 use std::path::PathBuf;
 
+use rotor_bearing::analysis::held_equilibrium::held_equilibrium;
 use rotor_bearing::analysis::linear::static_deflection;
 use rotor_bearing::plot::RAD_S_TO_RPM;
 use rotor_bearing::report::text::model_summary;
 use rotor_bearing::report::{csv as report_csv, series};
 use rotor_bearing::rotor::Rotor;
-use rotor_bearing::solver::SolverOptions;
-use rotor_bearing::solver::statics::equilibrium;
 
 use crate::write_file;
 
@@ -65,7 +64,10 @@ fn static_state(rotor: &Rotor, rpm: f64) -> Result<Vec<f64>, String> {
     }
     crate::warn_table_speeds(&rotor.model, &[rpm / RAD_S_TO_RPM]);
     crate::warn_short_films(rotor, &[rpm / RAD_S_TO_RPM]);
-    let eq = equilibrium(rotor, rpm / RAD_S_TO_RPM, &SolverOptions::default(), None)
+    let (eq, off_centre) = held_equilibrium(rotor, rpm / RAD_S_TO_RPM, None)
         .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
+    if let Some(off) = off_centre {
+        println!("note: {}", off.describe());
+    }
     Ok(rotor.dofs.expand(&eq.displacement))
 }

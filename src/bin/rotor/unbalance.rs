@@ -74,6 +74,7 @@ pub fn unbalance(rotor: &Rotor, req: Request) -> Result<(), String> {
     let study = unbalance_study(rotor, &request).map_err(|e| e.to_string())?;
     crate::warn_table_speeds(&rotor.model, &study.sweep.speeds);
     crate::warn_short_films(rotor, &study.sweep.speeds);
+    crate::held::note_off_centre(rotor, &study.sweep.speeds);
     let what = match req.node {
         Some(n) => format!("{} kg·m at node {n}", req.unbalance),
         None => "the model's unbalance planes".to_string(),
