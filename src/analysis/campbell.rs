@@ -40,6 +40,7 @@ use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_
 use super::mode_tracking::{link, translations};
 use super::parallel::map_in_order;
 use super::unbalance::{OperatingRange, SeparationMargin, separation_margin};
+use super::whirl_modes::modal_analysis_own;
 
 type Complex64 = Complex<f64>;
 
@@ -157,7 +158,9 @@ pub fn critical_margins(
 }
 
 /// Modes at every speed of `speeds` (rad/s, increasing); nonlinear bearings are
-/// linearized about the static equilibrium at each speed. The modes of each
+/// linearized about the static equilibrium at each speed, tilting pads
+/// condensed at the running speed (synchronous coefficients;
+/// [`campbell_study`] takes each mode's pads at its own frequency). The modes of each
 /// speed are linked to those of the previous one by their shapes (largest
 /// total MAC, [`super::mode_tracking::link`]), so a branch follows one mode
 /// through crossings and veering; a mode entering the listed range starts a
@@ -167,7 +170,19 @@ pub fn campbell(
     speeds: &[f64],
     options: &ModalOptions,
 ) -> Result<Vec<CampbellPoint>, ModalError> {
-    Ok(sweep(rotor, speeds, options, None, 0)?.0)
+    Ok(sweep(rotor, speeds, options, None, (0, Pads::Synchronous))?.0)
+}
+
+/// How the modes of a sweep see the tilting pads.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Pads {
+    /// Condensed at the running speed (the bearings' synchronous
+    /// coefficients, as ROSS and vendor tables give them).
+    Synchronous,
+    /// Each mode's pads at its own eigenvalue and every root checked against
+    /// the pad coordinates ([`modal_analysis_own`]); the same as
+    /// `Synchronous` for a rotor without internal bearing coordinates.
+    OwnFrequency,
 }
 
 /// [`campbell`], and with `harmonic` the brackets of its crossings of
@@ -178,10 +193,12 @@ fn sweep(
     speeds: &[f64],
     options: &ModalOptions,
     harmonic: Option<f64>,
-    threads: usize,
+    (threads, pads): (usize, Pads),
 ) -> Result<(Vec<CampbellPoint>, Vec<Bracket>), ModalError> {
-    let solves = map_in_order(speeds, threads, |&speed| {
-        modal_analysis_at(rotor, speed, options)
+    let solves = map_in_order(speeds, threads, |&speed| match pads {
+        Pads::Synchronous => modal_analysis_at(rotor, speed, options),
+        Pads::OwnFrequency => modal_analysis_own(rotor, speed, options)
+            .map_err(|e| ModalError::OwnFrequency(e.to_string())),
     });
     let mut diagram = Vec::with_capacity(speeds.len());
     let mut brackets = Vec::new();
@@ -428,7 +445,10 @@ pub struct CampbellStudy {
     pub torsional: Vec<TorsionalMode>,
 }
 
-/// The Campbell study `rotor campbell` and the report run.
+/// The Campbell study `rotor campbell` and the report run: the diagram with
+/// each mode's tilting pads at its own eigenvalue ([`modal_analysis_own`]),
+/// its 1× crossings refined on the synchronous linearization (exact there:
+/// the mode whirls at the running speed).
 pub fn campbell_study(
     rotor: &Rotor,
     request: &CampbellRequest,
@@ -460,7 +480,13 @@ pub fn campbell_study(
     let (diagram, diagram_seconds, criticals, repeated, jumps) = loop {
         let clock = std::time::Instant::now();
         let grid = speed_grid(rotor, top, steps);
-        let (diagram, brackets) = sweep(rotor, &grid, &options, Some(1.0), request.threads)?;
+        let (diagram, brackets) = sweep(
+            rotor,
+            &grid,
+            &options,
+            Some(1.0),
+            (request.threads, Pads::OwnFrequency),
+        )?;
         let diagram_seconds = clock.elapsed().as_secs_f64();
         let (criticals, jumps) =
             refined(rotor, &diagram, &brackets, 1.0, &options, request.threads)?;

@@ -169,6 +169,10 @@ pub enum ModalError {
     /// Linearizing the nonlinear bearings failed.
     #[error(transparent)]
     Linearize(#[from] crate::analysis::linearize::LinearizeError),
+    /// The modes with the pads at their own frequency could not be found
+    /// (`whirl_modes`).
+    #[error("{0}")]
+    OwnFrequency(String),
 }
 
 /// Modes at `speed` of a rotor whose nonlinear bearings are first linearized about

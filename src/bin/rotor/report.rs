@@ -320,6 +320,10 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         Ok(s) => {
             let labels: Vec<String> = s.sites.iter().map(|&n| site_label(rotor, n)).collect();
             let mut b = review::stability_blocks(s, &labels);
+            let tables = rotor_bearing::report::text::synchronous_tables(&rotor.model);
+            if !tables.is_empty() {
+                b.push(Block::Text(tables.trim_end().to_string()));
+            }
             b.push(figure_block(
                 figure(&dir, "stability.png", |p| {
                     stability_png(

@@ -122,6 +122,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         eprintln!("wrote {}", path.display());
     }
     print!("{out}");
+    print!("{}", text::synchronous_tables(&rotor.model));
     if req.at.is_none() {
         placement_note(rotor, &request, &result)?;
     }

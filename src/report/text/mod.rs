@@ -17,6 +17,7 @@ use crate::units::RAD_S_TO_RPM;
 mod modal;
 mod ring_down;
 mod summary;
+mod synchronous;
 mod unbalance;
 
 pub use modal::{
@@ -25,6 +26,7 @@ pub use modal::{
 };
 pub use ring_down::{RING_DOWN_AGREEMENT, ring_downs};
 pub use summary::model_summary;
+pub use synchronous::synchronous_tables;
 pub use unbalance::{peak_cells, peak_table, unbalance_study};
 
 /// A number without float noise: at most 6 significant digits, no trailing zeros.
