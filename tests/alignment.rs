@@ -35,7 +35,8 @@
 //! circle `κ = 6(1+ν)/(7+6ν)` and `G = E/(2(1+ν))` are the model's own.
 
 use nalgebra::{DMatrix, DVector};
-use rotor_bearing::analysis::alignment::alignment;
+use rotor_bearing::analysis::alignment::{alignment, equal_specific_loads, offsets_for_loads};
+use rotor_bearing::analysis::shaft_loads::section_loads;
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::SolverOptions;
@@ -228,6 +229,79 @@ fn reactions_of_a_beam_on_three_and_four_offset_bearings_match_the_closed_form()
     assert!(miss > 1e-6, "shear correction only {miss:e}");
 }
 
+/// The bending moment and shear along the line (element end forces) against
+/// the same closed form: `M(z) = Σ_{z_k > z} R_k (z_k − z) + q (L − z)²/2`
+/// (`EI y'' = M`), `V = dM/dz`, with the closed-form reactions; the stress
+/// is `|M| D / (2I)`.
+#[test]
+fn bending_moments_along_the_line_match_the_closed_form() {
+    for supports in [three(), four()] {
+        let line = rotor(&supports, true);
+        let found = alignment(&line, 0.0, &SolverOptions::default()).unwrap();
+        let all = line.dofs.expand(&found.equilibrium.displacement);
+        let loads = section_loads(&line, &all, true);
+        assert_eq!(loads.len(), 2 * ELEMENTS);
+        let z: Vec<f64> = supports.iter().map(|s| z_of(s.node)).collect();
+        let q = -weight_per_length();
+        let planes = [
+            closed_form(
+                &z,
+                &supports.iter().map(|s| s.offset[0]).collect::<Vec<_>>(),
+                0.0,
+                true,
+            ),
+            closed_form(
+                &z,
+                &supports.iter().map(|s| s.offset[1]).collect::<Vec<_>>(),
+                q,
+                true,
+            ),
+        ];
+        let loads_of = [0.0, q];
+        let (mut worst_m, mut worst_v, mut scale) = (0.0_f64, 0.0_f64, 0.0_f64);
+        let inertia = std::f64::consts::PI * DIAMETER.powi(4) / 64.0;
+        for (k, l) in loads.iter().enumerate() {
+            let left_end = k % 2 == 0;
+            for p in 0..2 {
+                let (r, w) = (&planes[p], loads_of[p]);
+                let m: f64 = z
+                    .iter()
+                    .zip(r)
+                    .filter(|(zk, _)| **zk > l.z)
+                    .map(|(zk, rk)| rk * (zk - l.z))
+                    .sum::<f64>()
+                    + w * (LENGTH - l.z).powi(2) / 2.0;
+                // Shear just right of a left end, just left of a right end.
+                let v = -z
+                    .iter()
+                    .zip(r)
+                    .filter(|(zk, _)| {
+                        if left_end {
+                            **zk > l.z + 1e-12
+                        } else {
+                            **zk > l.z - 1e-12
+                        }
+                    })
+                    .map(|(_, rk)| rk)
+                    .sum::<f64>()
+                    - w * (LENGTH - l.z);
+                scale = scale.max(m.abs());
+                worst_m = worst_m.max((l.moment[p] - m).abs());
+                worst_v = worst_v.max((l.shear[p] - v).abs());
+            }
+            let stress = l.moment[0].hypot(l.moment[1]) * DIAMETER / (2.0 * inertia);
+            assert!((l.stress - stress).abs() <= 1e-12 * stress.max(1.0));
+        }
+        println!(
+            "{} supports: bending moment error {:.2e} of {scale:.4e} N·m, shear error {worst_v:.2e} N",
+            supports.len(),
+            worst_m / scale
+        );
+        assert!(worst_m < 1e-9 * scale, "{worst_m:e}");
+        assert!(worst_v < 1e-9 * weight_per_length() * LENGTH, "{worst_v:e}");
+    }
+}
+
 /// The influence matrix: against the closed form (the reactions are linear
 /// in the offsets: the closed form with unit offsets and no weight) and
 /// against central differences of the statics, `h = 1 µm`.
@@ -274,4 +348,205 @@ fn the_reaction_influence_matrix_matches_the_closed_form_and_finite_differences(
         assert!(closed < 1e-9, "{closed:e}");
         assert!(fd < 1e-7, "{fd:e}");
     }
+}
+
+/// The three-bearing line with no offsets at all.
+fn aligned_three() -> Vec<Support> {
+    three()
+        .into_iter()
+        .map(|s| Support {
+            node: s.node,
+            offset: [0.0, 0.0],
+        })
+        .collect()
+}
+
+/// Least-norm offsets on linear bearings, checked against the influence
+/// matrix arithmetic done here: the change of elevation is `S⁺ (t − R₀)`
+/// (one Newton step is exact), it holds no rigid lift or tilt of the line
+/// (`Σ Δ_i = 0`, `Σ Δ_i z_i = 0`: the pseudo-inverse's step lies in the
+/// range of `Sᵀ`), a reachable target is met, and an unreachable one (equal
+/// loads on three bearings: the loads must balance the weight and its
+/// moment) is met in the least-squares sense with the residual it reports.
+#[test]
+fn least_norm_offsets_for_a_target_follow_the_influence_matrix_on_linear_bearings() {
+    let options = SolverOptions::default();
+    let line = rotor(&aligned_three(), true);
+    let before = alignment(&line, 0.0, &options).unwrap();
+    let weight: f64 = before.loads().iter().sum();
+    // A reachable target: the loads of the line at the offsets of three().
+    let target = alignment(&rotor(&three(), true), 0.0, &options)
+        .unwrap()
+        .loads();
+    let found = offsets_for_loads(&line, 0.0, &options, &target, 1e-9 * weight, 5).unwrap();
+    assert_eq!(found.iterations, 1);
+    let s = before.load_influence();
+    let residual = DVector::from_iterator(3, target.iter().zip(before.loads()).map(|(t, l)| t - l));
+    let step = s.clone().pseudo_inverse(1e-9 * s.amax()).unwrap() * &residual;
+    let z: Vec<f64> = three().iter().map(|s| z_of(s.node)).collect();
+    let largest = step.amax();
+    for (k, b) in found.achieved.bearings.iter().enumerate() {
+        assert!((b.offset[1] - step[k]).abs() < 1e-9 * largest, "{k}");
+        assert_eq!(b.offset[0], 0.0);
+        assert!((b.load - target[k]).abs() < 1e-9 * weight, "{k}");
+    }
+    let lift: f64 = step.iter().sum();
+    let tilt: f64 = step.iter().zip(&z).map(|(d, z)| d * z).sum();
+    assert!(lift.abs() < 1e-9 * largest && tilt.abs() < 1e-9 * largest * LENGTH);
+    assert!(found.unreachable < 1e-9 * weight);
+    // Equal loads are out of reach on three bearings.
+    let equal = equal_specific_loads(&before);
+    assert!(
+        equal
+            .iter()
+            .all(|l| (l - weight / 3.0).abs() < 1e-12 * weight)
+    );
+    let found = offsets_for_loads(&line, 0.0, &options, &equal, 1e-9 * weight, 5).unwrap();
+    let residual = DVector::from_iterator(3, equal.iter().zip(before.loads()).map(|(t, l)| t - l));
+    let reachable = &s * (s.clone().pseudo_inverse(1e-9 * s.amax()).unwrap() * &residual);
+    let out_of_reach = (&residual - &reachable).norm();
+    println!(
+        "equal loads on three linear bearings: {:.3} N out of reach, achieved {:?}",
+        found.unreachable,
+        found.achieved.loads()
+    );
+    assert!(out_of_reach > 1.0);
+    assert!((found.unreachable - out_of_reach).abs() < 1e-6 * out_of_reach);
+    for (k, l) in found.achieved.loads().iter().enumerate() {
+        assert!((l - before.loads()[k] - reachable[k]).abs() < 1e-9 * weight);
+    }
+    let total: f64 = found.achieved.loads().iter().sum();
+    assert!((total - weight).abs() < 1e-9 * weight);
+}
+
+/// A rotor on three plain (short-film) bearings at 3000 rpm, the middle one
+/// raised by `raise` (m): 1.2 m × 60 mm shaft, two 30 kg disks, R = L = 30 mm,
+/// C = 80 µm, 0.02 Pa·s.
+fn film_line(raise: f64) -> String {
+    let bearing = |name: &str, node: usize, o: f64| {
+        format!(
+            "[[bearings]]\nname = \"{name}\"\ntype = \"plain\"\nnode = {node}\nradius = 0.03\nlength = 0.03\nclearance = 80e-6\nviscosity = 0.02\noffset_y = {o:e}\n"
+        )
+    };
+    let disk = |node: usize| {
+        format!(
+            "[[disks]]\nnode = {node}\nmass = 30.0\npolar_inertia = 0.2\ndiametral_inertia = 0.1\n"
+        )
+    };
+    format!(
+        "name = \"film3\"\nspeed_rpm = 3000\ngravity = [0.0, -9.81, 0.0]\n[[materials]]\nname = \"steel\"\nyoungs_modulus = 211e9\npoisson_ratio = 0.3\ndensity = 7810.0\n[[shaft]]\nlength = 1.2\nouter_diameter = 0.06\nmaterial = \"steel\"\nelements = 12\n{}{}{}{}{}",
+        disk(4),
+        disk(10),
+        bearing("left", 1, 0.0),
+        bearing("middle", 7, raise),
+        bearing("right", 13, 0.0)
+    )
+}
+
+fn film_rotor(raise: f64) -> Rotor {
+    Rotor::new(RotorModel::from_toml(&film_line(raise), "film3.toml").unwrap()).unwrap()
+}
+
+/// On nonlinear films the influence matrix is the tangent at the
+/// equilibrium: central differences of the statics (h = 10 nm, 1.25e-4 of
+/// the clearance, the statics solved to 1e-13) agree to 1e-7 of its largest
+/// entry, the tolerance (the truncation error of the difference,
+/// (h/C)² ≈ 1.6e-8 times the films' third derivatives, and the solve's
+/// round-off divided by 2h; measured 2e-10).
+#[test]
+fn the_film_influence_matrix_is_the_tangent_of_the_statics() {
+    let options = SolverOptions {
+        tolerance: 1e-13,
+        ..SolverOptions::default()
+    };
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let line = film_rotor(3e-5);
+    let found = alignment(&line, speed, &options).unwrap();
+    let s = &found.influence;
+    let scale = s.amax();
+    let h = 1e-8;
+    let mut worst = 0.0_f64;
+    for j in 0..3 {
+        for c in 0..2 {
+            let at = |delta: f64| {
+                let mut model = line.model.clone();
+                model.bearings[j].offset[c] += delta;
+                alignment(&Rotor::new(model).unwrap(), speed, &options).unwrap()
+            };
+            let (plus, minus) = (at(h), at(-h));
+            for i in 0..3 {
+                for a in 0..2 {
+                    let d =
+                        (plus.bearings[i].reaction[a] - minus.bearings[i].reaction[a]) / (2.0 * h);
+                    worst = worst.max((s[(2 * i + a, 2 * j + c)] - d).abs() / scale);
+                }
+            }
+        }
+    }
+    println!("film influence vs central differences: {worst:.2e} of max |S| = {scale:.4e} N/m");
+    assert!(worst < 1e-7, "{worst:e}");
+}
+
+/// Equal specific load on three plain bearings, the middle one raised by
+/// 30 µm: by the line's symmetry the target is reachable; Newton with the
+/// least-norm step finds offsets whose statics (solved again from scratch
+/// here) carry the target to the stated tolerance, 1e-6 of the weight,
+/// without rigid lift or tilt of the line; `rotor alignment` prints them.
+#[test]
+fn offsets_for_equal_specific_load_on_plain_bearings() {
+    let options = SolverOptions::default();
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let line = film_rotor(3e-5);
+    let before = alignment(&line, speed, &options).unwrap();
+    let weight: f64 = before.loads().iter().sum();
+    let target = equal_specific_loads(&before);
+    let found = offsets_for_loads(&line, speed, &options, &target, 1e-6 * weight, 20).unwrap();
+    let mut model = line.model.clone();
+    for (b, o) in found.achieved.bearings.iter().zip(&found.offsets) {
+        model.bearings[b.bearing].offset = *o;
+    }
+    let again = alignment(&Rotor::new(model).unwrap(), speed, &options).unwrap();
+    let change: Vec<f64> = found
+        .offsets
+        .iter()
+        .zip(&before.bearings)
+        .map(|(o, b)| o[1] - b.offset[1])
+        .collect();
+    println!(
+        "equal specific load on plain bearings: {} steps, loads {:?} N (target {target:?}), elevation changes {change:?} m",
+        found.iterations,
+        again.loads()
+    );
+    for (l, t) in again.loads().iter().zip(&target) {
+        assert!((l - t).abs() < 1e-6 * weight, "{l} vs {t}");
+    }
+    let largest = change.iter().fold(0.0_f64, |m, c| m.max(c.abs()));
+    let lift: f64 = change.iter().sum();
+    let tilt: f64 = change.iter().zip([0.0, 0.6, 1.2]).map(|(d, z)| d * z).sum();
+    assert!(lift.abs() < 1e-9 * largest && tilt.abs() < 1e-9 * largest);
+    // The CLI formats the same numbers.
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("alignment");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("film3.toml");
+    std::fs::write(&path, film_line(3e-5)).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["alignment", path.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout.contains("reaction influence") && stdout.contains("offsets for equal specific load")
+    );
+    let row = stdout
+        .lines()
+        .skip_while(|l| !l.starts_with("offsets for"))
+        .find(|l| l.starts_with("middle"))
+        .unwrap();
+    let achieved: f64 = row.split_whitespace().last().unwrap().parse().unwrap();
+    assert!((achieved - target[1]).abs() < 0.1, "{row}");
 }

@@ -332,10 +332,8 @@ pub fn offsets_for_loads(
     let mut iterations = 0;
     loop {
         let s = current.load_influence();
-        let residual = DVector::from_iterator(
-            n,
-            target.iter().zip(current.loads()).map(|(t, l)| t - l),
-        );
+        let residual =
+            DVector::from_iterator(n, target.iter().zip(current.loads()).map(|(t, l)| t - l));
         let pinv = s
             .clone()
             .pseudo_inverse(NULL_DIRECTION * s.amax())

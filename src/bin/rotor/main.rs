@@ -3,7 +3,8 @@
 //! ```text
 //! rotor info     [MODEL.toml]
 //! rotor draw     [MODEL.toml] --png FILE
-//! rotor static   [MODEL.toml] [--rpm N] [--csv FILE]
+//! rotor static   [MODEL.toml] [--rpm N] [--csv FILE] [--shaft-csv FILE]
+//! rotor alignment [MODEL.toml] [--rpm N] [--target N1,N2,…]
 //! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE] [--shapes-csv FILE] [--shapes-png FILE]
 //! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--operating-rpm A:B] [--csv FILE] [--png FILE]
 //! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--film model|short|finite] [--csv FILE] [--png FILE]
@@ -22,6 +23,7 @@
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
 //! `coefficients`, the reference plain short bearing).
 
+mod alignment;
 mod coefficients;
 mod fmu_stage;
 mod modal;
@@ -129,6 +131,19 @@ enum Command {
         /// Write node displacements to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
+        /// Write the shaft's bending moment, shear and bending stress at both
+        /// ends of every element to this CSV file.
+        #[arg(long)]
+        shaft_csv: Option<PathBuf>,
+    },
+    /// Bearing reactions of the shaft line at its offsets (offset_x, offset_y),
+    /// the reaction influence matrix, the offsets for a target load sharing
+    /// (default equal specific load W/(L·D)) and the shaft's largest bending stress.
+    Alignment {
+        #[command(flatten)]
+        model: ModelArg,
+        #[command(flatten)]
+        args: alignment::AlignmentArgs,
     },
     /// Complex modes at one speed: damped frequencies, damping, whirl.
     Modes {
@@ -512,7 +527,13 @@ fn run(cli: Cli) -> Result<(), String> {
     match cli.command {
         Command::Info { model } => statics::info(&load(&model)?),
         Command::Draw { model, png } => statics::draw(&load(&model)?, &png),
-        Command::Static { model, rpm, csv } => statics::deflection(&load(&model)?, rpm, csv),
+        Command::Static {
+            model,
+            rpm,
+            csv,
+            shaft_csv,
+        } => statics::deflection(&load(&model)?, rpm, csv, shaft_csv),
+        Command::Alignment { model, args } => alignment::run(&load(&model)?, args),
         Command::Modes {
             model,
             rpm,
