@@ -423,20 +423,25 @@ fn least_norm_offsets_for_a_target_follow_the_influence_matrix_on_linear_bearing
 /// raised by `raise` (m): 1.2 m × 60 mm shaft, two 30 kg disks, R = L = 30 mm,
 /// C = 80 µm, 0.02 Pa·s.
 fn film_line(raise: f64) -> String {
+    film_line_with(raise, 30.0)
+}
+
+/// [`film_line`] with the disk at node 10 of mass `second` (kg).
+fn film_line_with(raise: f64, second: f64) -> String {
     let bearing = |name: &str, node: usize, o: f64| {
         format!(
             "[[bearings]]\nname = \"{name}\"\ntype = \"plain\"\nnode = {node}\nradius = 0.03\nlength = 0.03\nclearance = 80e-6\nviscosity = 0.02\noffset_y = {o:e}\n"
         )
     };
-    let disk = |node: usize| {
+    let disk = |node: usize, mass: f64| {
         format!(
-            "[[disks]]\nnode = {node}\nmass = 30.0\npolar_inertia = 0.2\ndiametral_inertia = 0.1\n"
+            "[[disks]]\nnode = {node}\nmass = {mass:?}\npolar_inertia = 0.2\ndiametral_inertia = 0.1\n"
         )
     };
     format!(
         "name = \"film3\"\nspeed_rpm = 3000\ngravity = [0.0, -9.81, 0.0]\n[[materials]]\nname = \"steel\"\nyoungs_modulus = 211e9\npoisson_ratio = 0.3\ndensity = 7810.0\n[[shaft]]\nlength = 1.2\nouter_diameter = 0.06\nmaterial = \"steel\"\nelements = 12\n{}{}{}{}{}",
-        disk(4),
-        disk(10),
+        disk(4, 30.0),
+        disk(10, second),
         bearing("left", 1, 0.0),
         bearing("middle", 7, raise),
         bearing("right", 13, 0.0)
@@ -549,4 +554,126 @@ fn offsets_for_equal_specific_load_on_plain_bearings() {
         .unwrap();
     let achieved: f64 = row.split_whitespace().last().unwrap().parse().unwrap();
     assert!((achieved - target[1]).abs() < 0.1, "{row}");
+}
+
+/// Acceptance 2 of issue 49, its static half: on three plain bearings the
+/// middle one set off the axis until it carries nothing — lowered, since
+/// raising it loads it — by Newton on its elevation with the influence
+/// matrix' diagonal. The other two then carry the line as a statically
+/// determinate beam: their loads are the direct force balance of the
+/// weight (shaft `ρ A L g` at mid-span, disks 30 and 45 kg at 0.3 and
+/// 0.9 m, computed here by hand) about the two end journals, to 1e-8 of
+/// the weight (the middle's residual load is below 1e-10 of it).
+#[test]
+fn the_middle_bearing_lowered_until_it_unloads_leaves_the_force_balance() {
+    let options = SolverOptions::default();
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let (m1, m2) = (30.0, 45.0);
+    let shaft = 7810.0 * std::f64::consts::PI * 0.06 * 0.06 / 4.0 * 1.2 * 9.81;
+    let parts = [(shaft, 0.6), (m1 * 9.81, 0.3), (m2 * 9.81, 0.9)];
+    let weight: f64 = parts.iter().map(|(w, _)| w).sum();
+    let moment: f64 = parts.iter().map(|(w, z)| w * z).sum();
+    let right = moment / 1.2;
+    let left = weight - right;
+    let mut elevation = 0.0;
+    let mut middle = f64::INFINITY;
+    let mut found = None;
+    for _ in 0..30 {
+        let model = RotorModel::from_toml(&film_line_with(elevation, m2), "film3.toml").unwrap();
+        let line = alignment(&Rotor::new(model).unwrap(), speed, &options).unwrap();
+        middle = line.bearings[1].load;
+        if middle.abs() < 1e-10 * weight {
+            found = Some(line);
+            break;
+        }
+        let slope = line.load_influence()[(1, 1)];
+        // Newton, its step held to 20 µm (a quarter of the clearance).
+        elevation -= (middle / slope).clamp(-2e-5, 2e-5);
+    }
+    let line = found.unwrap_or_else(|| panic!("middle load still {middle} N"));
+    let loads = line.loads();
+    println!(
+        "middle lowered by {:.2} µm unloads it ({:.2e} N); ends carry {:.6} and {:.6} N, force balance {left:.6} and {right:.6} N",
+        -elevation * 1e6,
+        loads[1],
+        loads[0],
+        loads[2]
+    );
+    assert!(
+        elevation < -8e-5,
+        "lowered beyond the clearance: {elevation}"
+    );
+    assert!(
+        (loads[0] - left).abs() < 1e-8 * weight,
+        "{} vs {left}",
+        loads[0]
+    );
+    assert!(
+        (loads[2] - right).abs() < 1e-8 * weight,
+        "{} vs {right}",
+        loads[2]
+    );
+}
+
+/// The continuation on the offsets (`solver::offset_continuation`): a stiff
+/// line (150 mm shaft) on three four-pad tilting-pad bearings (R = 75 mm,
+/// C = 150 µm, preload 0.2) at 3000 rpm, the middle raised by 2 mm (13
+/// clearances): Newton from the straight shaft stalls, the continuation from
+/// the aligned line finds the equilibrium. It is one: the bearing forces
+/// (up to 1.2e5 N: the raised middle pulls the ends onto their top pads)
+/// balance the weight and its moment computed here by hand to 1e-10 of the
+/// largest (the statics solved to a relative residual of 1e-12 of their
+/// force scale), and Newton started there stays (to 1e-12 m).
+#[test]
+fn continuation_on_the_offsets_finds_the_line_newton_misses() {
+    use rotor_bearing::solver::{equilibrium, line_equilibrium};
+    let options = SolverOptions {
+        tolerance: 1e-12,
+        ..SolverOptions::default()
+    };
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let text = film_line(2e-3)
+        .replace("outer_diameter = 0.06", "outer_diameter = 0.15")
+        .replace("radius = 0.03", "radius = 0.075")
+        .replace("clearance = 80e-6", "clearance = 150e-6")
+        .replace(
+            "type = \"plain\"",
+            "type = \"tilting_pad\"\npads = 4\nfirst_pivot_deg = 45.0\npad_arc_deg = 70.0\npreload = 0.2",
+        );
+    let line = Rotor::new(RotorModel::from_toml(&text, "pads.toml").unwrap()).unwrap();
+    let direct = equilibrium(&line, speed, &options, None);
+    assert!(
+        direct.is_err(),
+        "Newton now solves this line directly: give the continuation a harder case"
+    );
+    let found = line_equilibrium(&line, speed, &options, None).unwrap();
+    let shaft = 7810.0 * std::f64::consts::PI * 0.15 * 0.15 / 4.0 * 1.2 * 9.81;
+    let parts = [(shaft, 0.6), (30.0 * 9.81, 0.3), (30.0 * 9.81, 0.9)];
+    let weight: f64 = parts.iter().map(|(w, _)| w).sum();
+    let moment: f64 = parts.iter().map(|(w, z)| w * z).sum();
+    let z = [0.0, 0.6, 1.2];
+    let (mut fx, mut fy, mut m) = (0.0, 0.0, 0.0);
+    for ((_, eval), z) in found.bearings.iter().zip(z) {
+        fx += eval.force[0];
+        fy += eval.force[1];
+        m += eval.force[1] * z;
+    }
+    let loads: Vec<f64> = found.bearings.iter().map(|(_, e)| e.force[1]).collect();
+    println!(
+        "continued: loads {loads:?} N, weight {weight} N; ΣFx {fx:.2e}, ΣFy − W {:.2e}, ΣM − M {:.2e}",
+        fy - weight,
+        m - moment
+    );
+    let largest = loads.iter().fold(0.0_f64, |a, l| a.max(l.abs()));
+    assert!(largest > 10.0 * weight);
+    assert!(fx.abs() < 1e-10 * largest);
+    assert!((fy - weight).abs() < 1e-10 * largest);
+    assert!((m - moment).abs() < 1e-10 * largest);
+    let again = equilibrium(&line, speed, &options, Some(&found)).unwrap();
+    let moved = again
+        .displacement
+        .iter()
+        .zip(&found.displacement)
+        .fold(0.0_f64, |a, (p, q)| a.max((p - q).abs()));
+    assert!(moved < 1e-12, "{moved:e}");
 }
