@@ -183,3 +183,120 @@ fn equal_offsets_of_film_bearings_translate_the_rotor_rigidly() {
         assert!((p.report.eccentricity - e).abs() < 1e-9, "{e}");
     }
 }
+
+/// The FMU's offset parameters (`bearings.<name>.offset_x`, `offset_y`, m):
+/// appended after every earlier variable, fixed (set before
+/// initialization), and an FMU whose master sets them runs bit for bit as
+/// the FMU of the model file that gives them; a reset restores the file's.
+#[test]
+fn fmu_offset_parameters_are_appended_fixed_and_act_as_the_model_file() {
+    use rotor_bearing::fmi2::instance::{Instance, Status};
+    use rotor_bearing::fmi2::variables::{Binding, Causality, Kind, Variability, variables};
+    let plain = RotorModel::from_toml(&jeffcott(""), "m.toml").unwrap();
+    let vars = variables(&plain);
+    let names: Vec<&str> = vars[vars.len() - 4..]
+        .iter()
+        .map(|v| v.name.as_str())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "bearings.left.offset_x",
+            "bearings.left.offset_y",
+            "bearings.right.offset_x",
+            "bearings.right.offset_y"
+        ]
+    );
+    let earlier = vars
+        .iter()
+        .take(vars.len() - 4)
+        .all(|v| !matches!(v.binding, Binding::OffsetX(_) | Binding::OffsetY(_)));
+    assert!(earlier);
+    for v in &vars[vars.len() - 4..] {
+        assert_eq!(
+            (v.causality, v.variability, v.unit, v.start),
+            (
+                Causality::Parameter,
+                Variability::Fixed,
+                Some("m"),
+                Some(0.0)
+            )
+        );
+        assert_eq!((v.min, v.max), (Some(-1.0), Some(1.0)));
+    }
+    let vr = |name: &str| {
+        vars.iter()
+            .find(|v| v.name == name)
+            .unwrap()
+            .value_reference
+    };
+    let offsets = [
+        ("bearings.left.offset_x", 1e-5),
+        ("bearings.left.offset_y", 2e-5),
+        ("bearings.right.offset_y", -1e-5),
+    ];
+    let outputs = [
+        "bearings.left.x",
+        "bearings.left.y",
+        "bearings.left.fx",
+        "bearings.left.fy",
+        "bearings.left.eccentricity",
+        "bearings.right.y",
+        "bearings.right.fy",
+        "probes.disk.y",
+    ];
+    let run = |fmu: &mut Instance, set: &[(&str, f64)]| -> Vec<f64> {
+        assert_eq!(
+            fmu.set(vr("shaft.speed"), Kind::Real, 3000.0 * RPM),
+            Status::Ok
+        );
+        for (name, value) in set {
+            assert_eq!(fmu.set(vr(name), Kind::Real, *value), Status::Ok);
+        }
+        assert_eq!(fmu.setup_experiment(0.0, None), Status::Ok);
+        assert_eq!(fmu.enter_initialization_mode(), Status::Ok);
+        assert_eq!(fmu.exit_initialization_mode(), Status::Ok);
+        assert_eq!(fmu.do_step(0.0, 0.005), Status::Ok);
+        outputs
+            .iter()
+            .map(|name| fmu.get(vr(name), Kind::Real).unwrap())
+            .collect()
+    };
+    let mut tuned = Instance::new("tuned", plain.clone()).unwrap();
+    let by_parameter = run(&mut tuned, &offsets);
+    let text = jeffcott("")
+        .replacen(
+            "name = \"left\"",
+            "name = \"left\"\noffset_x = 1e-5\noffset_y = 2e-5",
+            1,
+        )
+        .replacen("name = \"right\"", "name = \"right\"\noffset_y = -1e-5", 1);
+    let filed = RotorModel::from_toml(&text, "m.toml").unwrap();
+    assert_eq!(filed.bearings[0].offset, [1e-5, 2e-5]);
+    assert_eq!(filed.bearings[1].offset, [0.0, -1e-5]);
+    let mut from_file = Instance::new("file", filed).unwrap();
+    let by_file = run(&mut from_file, &[]);
+    assert_eq!(by_parameter, by_file);
+    // The offsets moved the journals: not the aligned run.
+    let mut aligned = Instance::new("aligned", plain.clone()).unwrap();
+    let straight = run(&mut aligned, &[]);
+    assert_ne!(straight, by_file);
+    assert_eq!(
+        tuned.get(vr("bearings.left.offset_y"), Kind::Real),
+        Ok(2e-5)
+    );
+    // Fixed: refused once initialized; a reset restores the file's values.
+    assert_eq!(
+        tuned.set(vr("bearings.left.offset_y"), Kind::Real, 0.0),
+        Status::Error
+    );
+    assert_eq!(tuned.reset(), Status::Ok);
+    assert_eq!(run(&mut tuned, &[]), straight);
+    assert_eq!(tuned.get(vr("bearings.left.offset_y"), Kind::Real), Ok(0.0));
+    assert_eq!(tuned.reset(), Status::Ok);
+    assert_eq!(
+        tuned.set(vr("bearings.left.offset_y"), Kind::Real, 2.0),
+        Status::Error,
+        "beyond the declared maximum"
+    );
+}
