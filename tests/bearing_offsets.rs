@@ -309,3 +309,48 @@ fn fmu_offset_parameters_are_appended_fixed_and_act_as_the_model_file() {
         "beyond the declared maximum"
     );
 }
+
+/// The largest offset the FMU accepts (1 m, ten thousand clearances): the
+/// initialization settles the journal onto its bushing or says it cannot,
+/// in bounded time — never a panic or a hang (the FMU fuzzer's concern for
+/// the new parameters, checked here on the safe instance).
+#[test]
+fn an_extreme_fmu_offset_is_settled_or_refused_quickly() {
+    use rotor_bearing::fmi2::instance::{Instance, Status};
+    use rotor_bearing::fmi2::variables::{Kind, variables};
+    let plain = RotorModel::from_toml(&jeffcott(""), "m.toml").unwrap();
+    let vars = variables(&plain);
+    let vr = |name: &str| {
+        vars.iter()
+            .find(|v| v.name == name)
+            .unwrap()
+            .value_reference
+    };
+    for (speed, offset) in [(0.0, 1.0), (3000.0 * RPM, 1.0), (3000.0 * RPM, -1.0)] {
+        let start = std::time::Instant::now();
+        let mut fmu = Instance::new("extreme", plain.clone()).unwrap();
+        assert_eq!(fmu.set(vr("shaft.speed"), Kind::Real, speed), Status::Ok);
+        assert_eq!(
+            fmu.set(vr("bearings.left.offset_y"), Kind::Real, offset),
+            Status::Ok
+        );
+        assert_eq!(fmu.setup_experiment(0.0, None), Status::Ok);
+        assert_eq!(fmu.enter_initialization_mode(), Status::Ok);
+        let status = fmu.exit_initialization_mode();
+        let outcome = if status == Status::Ok {
+            fmu.do_step(0.0, 0.001)
+        } else {
+            status
+        };
+        println!(
+            "speed {speed}, offset {offset}: {status:?} then {outcome:?} in {:?}: {:?}",
+            start.elapsed(),
+            fmu.drain_messages().last()
+        );
+        assert!(start.elapsed() < std::time::Duration::from_secs(20));
+        assert!(matches!(
+            outcome,
+            Status::Ok | Status::Warning | Status::Error | Status::Discard
+        ));
+    }
+}
