@@ -496,7 +496,8 @@ fn the_film_influence_matrix_is_the_tangent_of_the_statics() {
 /// 30 µm: by the line's symmetry the target is reachable; Newton with the
 /// least-norm step finds offsets whose statics (solved again from scratch
 /// here) carry the target to the stated tolerance, 1e-6 of the weight,
-/// without rigid lift or tilt of the line; `rotor alignment` prints them.
+/// without rigid lift or tilt of the line; `rotor alignment` prints them,
+/// and `rotor static --shaft-csv` writes the library's section loads.
 #[test]
 fn offsets_for_equal_specific_load_on_plain_bearings() {
     let options = SolverOptions::default();
@@ -554,6 +555,46 @@ fn offsets_for_equal_specific_load_on_plain_bearings() {
         .unwrap();
     let achieved: f64 = row.split_whitespace().last().unwrap().parse().unwrap();
     assert!((achieved - target[1]).abs() < 0.1, "{row}");
+    // `rotor static --shaft-csv` writes the library's section loads.
+    let csv = dir.join("shaft.csv");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["static", path.to_str().unwrap(), "--rpm", "3000"])
+        .arg("--shaft-csv")
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let all = line.dofs.expand(&before.equilibrium.displacement);
+    let loads = section_loads(&line, &all, true);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), loads.len());
+    // The CLI's speed is 3000 rpm / (30/π), ours 3000 π/30: equal to the
+    // last bit or so, hence the round-off tolerance.
+    let worst = rotor_bearing::analysis::shaft_loads::largest_stress(&loads).unwrap();
+    let (m, sigma) = (worst.moment_magnitude, worst.stress);
+    for (row, l) in rows.iter().zip(&loads) {
+        assert_eq!(row[2], l.z);
+        assert!((row[3] - l.moment[0]).abs() < 1e-9 * m);
+        assert!((row[4] - l.moment[1]).abs() < 1e-9 * m);
+        assert!((row[8] - l.stress).abs() < 1e-9 * sigma);
+    }
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let printed = stdout
+        .split("bending stress ")
+        .nth(1)
+        .and_then(|r| r.split(" Pa").next())
+        .and_then(|v| v.parse::<f64>().ok())
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert!((printed - sigma).abs() < 1e-4 * sigma, "{stdout}");
 }
 
 /// Acceptance 2 of issue 49, its static half: on three plain bearings the
