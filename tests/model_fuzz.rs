@@ -5,7 +5,9 @@
 //! infinity printed by a command that succeeds, or nonsense accepted silently:
 //! a non-finite number anywhere, a non-positive size or property where physics
 //! needs a positive one, a size or mass absurd by twenty orders of magnitude
-//! (issue 22: a diameter of 1e300 m passed), a duplicated name.
+//! (issue 22: a diameter of 1e300 m passed), a duplicated name. Centre
+//! offsets (`offset_x`, `offset_y`, issue 49) are inserted into the entries
+//! that take them, with the same values.
 //!
 //! `ROTOR_MODEL_FUZZ_MUTANTS` sets the mutants per model (default 100),
 //! `ROTOR_FUZZ_SEED` the first seed (default 1); each failure prints its seed
@@ -52,6 +54,19 @@ const SIZES: &[&str] = &[
     "polar_inertia",
     "diametral_inertia",
     "density",
+];
+
+/// Keys of centre offsets (m, issue 49), inserted into the entries that take
+/// them: beyond a metre off the axis is no machine and must be refused.
+const OFFSETS: &[&str] = &["offset_x", "offset_y"];
+
+/// Sections whose entries take `offset_x`, `offset_y`.
+const OFFSET_SECTIONS: &[&str] = &[
+    "[[bearings]]",
+    "[[rubs]]",
+    "[[seals]]",
+    "[[magnetic_pull]]",
+    "[[pedestals]]",
 ];
 
 /// Replacement values: nonsense, edge cases and wrong types.
@@ -115,6 +130,9 @@ impl Mutation {
                     Some(x) if x < 0.0 && NON_NEGATIVE.contains(&key.as_str()) => {
                         Some(format!("{key} = {value} must not be negative"))
                     }
+                    Some(x) if OFFSETS.contains(&key.as_str()) && x.abs() > 1.0 => {
+                        Some(format!("{key} = {value} is no offset (beyond 1 m)"))
+                    }
                     Some(x)
                         if SIZES.contains(&key.as_str())
                             && !((1e-20..1e20).contains(&x)
@@ -174,7 +192,29 @@ fn mutate(text: &str, rng: &mut Rng) -> (String, Mutation) {
     let lines: Vec<&str> = text.lines().collect();
     let numeric = numeric_assignments(&lines);
     let blocks = named_blocks(&lines);
+    let headers: Vec<usize> = lines
+        .iter()
+        .enumerate()
+        .filter(|(_, l)| OFFSET_SECTIONS.contains(&l.trim()))
+        .map(|(i, _)| i)
+        .collect();
     match rng.below(10) {
+        5 if !headers.is_empty() => {
+            // A centre offset inserted into an entry that takes one.
+            let at = headers[rng.below(headers.len())] + 1;
+            let key = OFFSETS[rng.below(OFFSETS.len())].to_string();
+            let value = VALUES[rng.below(VALUES.len())];
+            let mut out: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+            out.insert(at, format!("{key} = {value}"));
+            (
+                out.join("\n"),
+                Mutation::Value {
+                    key,
+                    value,
+                    line: at + 1,
+                },
+            )
+        }
         0..=5 if !numeric.is_empty() => {
             let (line, key) = numeric[rng.below(numeric.len())].clone();
             let value = VALUES[rng.below(VALUES.len())];

@@ -34,7 +34,7 @@ use crate::rotor::Rotor;
 use crate::rotor::elements::bearing_dofs;
 use crate::solver::{
     Equilibrium, Simulator, SolverError, SolverOptions, equilibrium, equilibrium_near,
-    equilibrium_unchecked,
+    equilibrium_unchecked, line_equilibrium,
 };
 
 use crate::solver::time_step::{DEFAULT_LOCAL_ERROR_TOLERANCE, largest_adaptive_step};
@@ -125,7 +125,7 @@ pub fn held_equilibrium(
     start: Option<&Equilibrium>,
 ) -> Result<(Equilibrium, Option<OffCentre>), SolverError> {
     let options = SolverOptions::default();
-    let (first, refused) = match equilibrium(rotor, speed, &options, start) {
+    let (first, refused) = match line_equilibrium(rotor, speed, &options, start) {
         Ok(eq) => (eq, None),
         Err(SolverError::StaticallyUnstable(why)) => (
             equilibrium_unchecked(rotor, speed, &options, start)?,

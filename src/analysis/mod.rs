@@ -3,6 +3,7 @@
 //! them: unbalance sweeps with peaks and separation margins, bearing operating
 //! points, mode-shape orbits, cross-coupling stability and the critical speed map.
 
+pub mod alignment;
 pub mod backward_crossing;
 pub mod campbell;
 mod critical_refine;
@@ -19,6 +20,7 @@ pub mod pad_eigen;
 pub mod parallel;
 mod polish;
 pub mod ring_down;
+pub mod shaft_loads;
 pub mod shapes;
 pub mod spectrum;
 pub mod speed_range;

@@ -3,7 +3,8 @@
 //! and its power loss, and the synchronous stiffness and damping there.
 //!
 //! The rotor is put in static equilibrium under gravity at the speed
-//! ([`equilibrium`]); each fluid-film bearing then reports from its own
+//! ([`line_equilibrium`], continued on the bearing offsets when Newton from
+//! the straight shaft needs it); each fluid-film bearing then reports from its own
 //! evaluation there ([`Bearing::report`](crate::bearing::Bearing::report)):
 //! `ε = e/C`, the attitude angle from the load line to the eccentricity vector
 //! in the spin direction, `h_min = C(1 − ε)` for a plain bearing (per pad for
@@ -90,8 +91,9 @@ pub struct BearingOperatingPoint {
     pub bearing: usize,
     /// Bearing name.
     pub name: String,
-    /// Journal position `(x, y)` relative to the bearing centre (m): to its
-    /// housing, for a bearing on a pedestal.
+    /// Journal position `(x, y)` relative to the bearing centre as installed
+    /// (m): to its housing for a bearing on a pedestal, less its offset
+    /// (`offset_x`, `offset_y`).
     pub journal: [f64; 2],
     /// The housing, for a bearing on a pedestal; `None` on rigid ground.
     pub housing: Option<Housing>,
@@ -192,7 +194,8 @@ pub fn pedestal_operating_points(
         .map(|(p, pedestal)| {
             let q = at(p);
             let below = pedestal.on.map_or([0.0; 2], at);
-            let d = [q[0] - below[0], q[1] - below[1]];
+            let o = pedestal.offset;
+            let d = [q[0] - below[0] - o[0], q[1] - below[1] - o[1]];
             let k = &pedestal.stiffness;
             PedestalOperatingPoint {
                 pedestal: p,
@@ -226,12 +229,12 @@ pub fn operating_point(
             ],
         })
     };
-    // Relative to the housing.
+    // Relative to the bearing's centre: its housing, less its offset.
     let journal = |b: &crate::model::PlacedBearing| {
         let h = housing_of(b).map_or([0.0; 2], |h| h.displacement);
         [
-            displacement[b.node * DOF_PER_NODE + DOF_X] - h[0],
-            displacement[b.node * DOF_PER_NODE + DOF_Y] - h[1],
+            displacement[b.node * DOF_PER_NODE + DOF_X] - h[0] - b.offset[0],
+            displacement[b.node * DOF_PER_NODE + DOF_Y] - h[1] - b.offset[1],
         ]
     };
     let mut out = Vec::with_capacity(model.bearings.len());

@@ -45,6 +45,7 @@ pub mod finite_bearing;
 pub mod finite_film;
 pub mod linear;
 pub mod magnetic_pull;
+pub mod offset;
 pub mod plain;
 pub mod reynolds;
 pub mod rub;

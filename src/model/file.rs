@@ -181,6 +181,9 @@ pub enum BearingEntry {
         z: Option<f64>,
         /// The pedestal (`[[pedestals]]` name) its housing stands on; default rigid ground.
         pedestal: Option<String>,
+        /// Housing centre off the nominal axis (m), x and y (default 0).
+        offset_x: Option<f64>,
+        offset_y: Option<f64>,
         /// Stiffness (N/m).
         #[serde(default)]
         kxx: f64,
@@ -207,6 +210,9 @@ pub enum BearingEntry {
         z: Option<f64>,
         /// The pedestal (`[[pedestals]]` name) its housing stands on; default rigid ground.
         pedestal: Option<String>,
+        /// Housing centre off the nominal axis (m), x and y (default 0).
+        offset_x: Option<f64>,
+        offset_y: Option<f64>,
         /// Journal radius (m).
         radius: f64,
         /// The journal is a collar or sleeve larger than the shaft at its node.
@@ -243,6 +249,9 @@ pub enum BearingEntry {
         z: Option<f64>,
         /// The pedestal (`[[pedestals]]` name) its housing stands on; default rigid ground.
         pedestal: Option<String>,
+        /// Housing centre off the nominal axis (m), x and y (default 0).
+        offset_x: Option<f64>,
+        offset_y: Option<f64>,
         /// Speeds of the table rows (rpm), increasing; with the coefficient
         /// columns below. Omit for constant coefficients.
         speeds_rpm: Option<Vec<f64>>,
@@ -271,6 +280,9 @@ pub enum BearingEntry {
         z: Option<f64>,
         /// The pedestal (`[[pedestals]]` name) its housing stands on; default rigid ground.
         pedestal: Option<String>,
+        /// Housing centre off the nominal axis (m), x and y (default 0).
+        offset_x: Option<f64>,
+        offset_y: Option<f64>,
         /// Journal radius (m).
         radius: f64,
         /// The journal is a collar or sleeve larger than the shaft at its node.
@@ -334,6 +346,9 @@ pub struct SealEntry {
     pub z: Option<f64>,
     /// The pedestal (`[[pedestals]]` name) the stator stands on; default rigid ground.
     pub pedestal: Option<String>,
+    /// Stator centre off the nominal axis (m), x and y (default 0).
+    pub offset_x: Option<f64>,
+    pub offset_y: Option<f64>,
     /// Speeds of the table rows (rpm), increasing; with the coefficient
     /// columns below. Omit for constant coefficients.
     pub speeds_rpm: Option<Vec<f64>>,
@@ -376,6 +391,9 @@ pub struct MagneticPullEntry {
     pub z: Option<f64>,
     /// The pedestal (`[[pedestals]]` name) the stator stands on; default rigid ground.
     pub pedestal: Option<String>,
+    /// Stator centre off the nominal axis (m), x and y (default 0).
+    pub offset_x: Option<f64>,
+    pub offset_y: Option<f64>,
     /// Radial air gap (m).
     pub gap: f64,
     /// Pull stiffness at nominal excitation (N/m), or give the three below.
@@ -421,6 +439,9 @@ pub struct RubEntry {
     pub z: Option<f64>,
     /// The pedestal (`[[pedestals]]` name) the stator stands on; default rigid ground.
     pub pedestal: Option<String>,
+    /// Stator centre off the nominal axis (m), x and y (default 0).
+    pub offset_x: Option<f64>,
+    pub offset_y: Option<f64>,
     /// Radial clearance between rotor and stator (m).
     pub gap: f64,
     /// Rotor surface radius at the rub (m); default the shaft's outer radius at the node.
@@ -586,6 +607,9 @@ pub struct PedestalEntry {
     pub cyy: f64,
     /// The pedestal it stands on (a bracket on a foundation); default ground.
     pub on: Option<String>,
+    /// Spring anchor off the nominal axis (m), x and y, relative to `on` (default 0).
+    pub offset_x: Option<f64>,
+    pub offset_y: Option<f64>,
 }
 
 /// `[[supports]]`: ideal constraints (boundary conditions) at a node.

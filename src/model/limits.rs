@@ -50,6 +50,15 @@ pub const RADIUS: Limit = Limit {
     why: "half of the diameter range",
 };
 
+/// Offsets of bearing, seal, stator and pedestal centres from the nominal
+/// straight axis (m).
+pub const OFFSET: Limit = Limit {
+    min: -1.0,
+    max: 1.0,
+    unit: "m",
+    why: "a bearing set a metre off its shaft's axis is a unit slip (alignment offsets are micrometres to millimetres)",
+};
+
 /// Radial clearances of fluid-film bearings and gaps of rubs (m).
 pub const CLEARANCE: Limit = Limit {
     min: 1e-7,

@@ -97,6 +97,23 @@ pub struct PlacedBearing {
     /// The pedestal its housing stands on (index into
     /// [`RotorModel::pedestals`]); `None`: rigid ground.
     pub pedestal: Option<usize>,
+    /// Housing centre off the nominal straight axis `(o_x, o_y)` (m; relative
+    /// to its pedestal when it stands on one): the bearing's laws see the
+    /// journal at `q − o` (`offset_x`, `offset_y`; zero: on the axis).
+    pub offset: [f64; 2],
+}
+
+impl PlacedBearing {
+    /// The bearing model as installed: [`BearingKind::build`] about the
+    /// centre [`Self::offset`] ([`crate::bearing::offset::installed`]).
+    pub fn build(&self) -> Box<dyn crate::bearing::Bearing> {
+        crate::bearing::offset::installed(self.kind.build(), self.offset)
+    }
+
+    /// Whether the housing centre is off the nominal axis.
+    pub fn is_offset(&self) -> bool {
+        self.offset != [0.0, 0.0]
+    }
 }
 
 /// A bearing support in series with its bearings (`[[pedestals]]`): a
@@ -116,6 +133,10 @@ pub struct Pedestal {
     /// The pedestal it stands on (index, always an earlier-validated
     /// acyclic chain); `None`: ground.
     pub on: Option<usize>,
+    /// Where its spring is anchored off the nominal axis `(o_x, o_y)` (m,
+    /// relative to `on`): `F = −K (q − q_on − o) − C (q̇ − q̇_on)`
+    /// (`offset_x`, `offset_y`; zero: on the axis).
+    pub offset: [f64; 2],
 }
 
 /// A file a model reads besides its own: the path as written in the model
@@ -554,6 +575,28 @@ impl RotorModel {
     /// Index of the first torque channel in [`Self::load_inputs`].
     pub fn first_torque_input(&self) -> usize {
         self.load_inputs().len() - self.torques.len()
+    }
+
+    /// Whether any bearing, seal, stator or pedestal is set off the nominal
+    /// axis (`offset_x`, `offset_y`).
+    pub fn has_offsets(&self) -> bool {
+        self.bearings.iter().any(PlacedBearing::is_offset)
+            || self.pedestals.iter().any(|p| p.offset != [0.0, 0.0])
+    }
+
+    /// The same model with every centre offset scaled by `s` (a step of the
+    /// statics' continuation from the aligned line, `s = 0`, to `s = 1`).
+    pub fn with_offsets_scaled(&self, s: f64) -> RotorModel {
+        let mut model = self.clone();
+        for o in model
+            .bearings
+            .iter_mut()
+            .map(|b| &mut b.offset)
+            .chain(model.pedestals.iter_mut().map(|p| &mut p.offset))
+        {
+            *o = [s * o[0], s * o[1]];
+        }
+        model
     }
 
     /// Total rotating mass: shaft plus disks (kg).

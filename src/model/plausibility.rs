@@ -210,6 +210,7 @@ impl RotorModel {
                 );
             }
         }
+        warnings.extend(self.offset_warnings());
         for (i, t) in self.thrust_bearings.iter().enumerate() {
             if t.bearing.load == 0.0 {
                 warnings.push(ModelWarning {
@@ -258,6 +259,58 @@ impl RotorModel {
 }
 
 impl RotorModel {
+    /// A warning for each bearing, seal, rub or magnetic pull set off the
+    /// axis by more than the clearance its journal moves in
+    /// ([`BearingKind::journal_clearance`](crate::bearing::BearingKind::journal_clearance)):
+    /// the straight shaft would start in contact with it. Legal (the statics
+    /// find where the line comes to rest), but more often a unit slip.
+    fn offset_warnings(&self) -> Vec<ModelWarning> {
+        let mut warnings = Vec::new();
+        let mut counts = [0usize; 4];
+        for b in &self.bearings {
+            let section = if b.kind.is_rub() {
+                1
+            } else if b.kind.is_seal() {
+                2
+            } else if b.kind.is_magnetic_pull() {
+                3
+            } else {
+                0
+            };
+            let i = counts[section];
+            counts[section] += 1;
+            let Some(clearance) = b.kind.journal_clearance() else {
+                continue;
+            };
+            let offset = b.offset[0].hypot(b.offset[1]);
+            if offset > clearance {
+                let name = ["bearings", "rubs", "seals", "magnetic_pull"][section];
+                let key = if b.offset[1].abs() >= b.offset[0].abs() {
+                    "offset_y"
+                } else {
+                    "offset_x"
+                };
+                let o = if key == "offset_y" {
+                    b.offset[1]
+                } else {
+                    b.offset[0]
+                };
+                warnings.push(ModelWarning {
+                    file: self.source.clone(),
+                    field: format!("{name}[{i}].{key}"),
+                    value: o,
+                    problem: format!(
+                        "the centre offset |(offset_x, offset_y)| = {} m exceeds the clearance {} m: \
+                         the journal would start in contact (offsets are in metres)",
+                        Short(offset),
+                        Short(clearance)
+                    ),
+                });
+            }
+        }
+        warnings
+    }
+
     /// One warning for each coefficient table (table bearing or seal) that an
     /// analysis at `speeds` (rad/s) asks for a speed outside its rows, naming
     /// the farthest such speed and the table's range; its end values hold there.

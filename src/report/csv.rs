@@ -18,6 +18,32 @@ use crate::model::RotorModel;
 use crate::solver::Outputs;
 use crate::units::{Amplitude, RAD_S_TO_RPM};
 
+/// The shaft's section loads (`analysis::shaft_loads`) as CSV: one row per
+/// element end, bending moments (N·m) in the x–z and y–z planes, shear (N)
+/// and the outer-fibre bending stress (Pa).
+pub fn shaft_loads(loads: &[crate::analysis::shaft_loads::SectionLoad]) -> String {
+    let mut out = String::from(
+        "element,node,z_m,moment_xz_Nm,moment_yz_Nm,moment_Nm,shear_x_N,shear_y_N,bending_stress_Pa\n",
+    );
+    for l in loads {
+        writeln!(
+            out,
+            "{},{},{},{:e},{:e},{:e},{:e},{:e},{:e}",
+            l.element + 1,
+            l.node + 1,
+            l.z,
+            l.moment[0],
+            l.moment[1],
+            l.moment_magnitude,
+            l.shear[0],
+            l.shear[1],
+            l.stress
+        )
+        .expect("writing to a String cannot fail");
+    }
+    out
+}
+
 /// Node displacements `q` (`4·node + k`: x, y in m; rx, ry in rad) at the nodes
 /// at axial positions `node_z` (m); nodes numbered from 1.
 pub fn static_deflection(node_z: &[f64], q: &[f64]) -> String {

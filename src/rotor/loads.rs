@@ -15,6 +15,7 @@
 use nalgebra::Complex;
 
 use super::Rotor;
+use crate::bearing::BearingKind;
 use crate::fe::{DOF_X, DOF_Y};
 use crate::model::{ForceKind, HarmonicDirection, HarmonicFrequency};
 
@@ -80,6 +81,54 @@ impl Rotor {
         for port in &self.model.ports {
             self.add_at(f, port.node, values[k], values[k + 1]);
             k += 2;
+        }
+        self.add_offset_loads(f);
+    }
+
+    /// Add the preload of the elements in the matrices whose centres are set
+    /// off the nominal axis to `f`: a linear bearing's `K (q − q_h − o)` is
+    /// `K q − K q_h` (in `K`) less the constant `K o`, so the journal carries
+    /// `+K o` and its housing `−K o`; a pedestal's spring anchored at `o`
+    /// likewise loads the pedestal by `+K o` and what it stands on by `−K o`.
+    /// Nothing is added for elements on the axis (models without offsets keep
+    /// their numbers bit for bit). The fluid films, seals and stators see
+    /// their offsets in their own laws ([`crate::bearing::offset`]).
+    pub fn add_offset_loads(&self, f: &mut [f64]) {
+        let preload = |k: &[[f64; 2]; 2], o: &[f64; 2]| {
+            [
+                k[0][0] * o[0] + k[0][1] * o[1],
+                k[1][0] * o[0] + k[1][1] * o[1],
+            ]
+        };
+        let on_pedestal = |f: &mut [f64], p: usize, load: [f64; 2], sign: f64| {
+            for (k, v) in load.iter().enumerate() {
+                if let Some(i) = self.dofs.pedestal(p, k) {
+                    f[i] += sign * v;
+                }
+            }
+        };
+        for b in &self.model.bearings {
+            let BearingKind::Linear { stiffness, .. } = &b.kind else {
+                continue;
+            };
+            if !b.is_offset() {
+                continue;
+            }
+            let load = preload(stiffness, &b.offset);
+            self.add_at(f, b.node, load[0], load[1]);
+            if let Some(p) = b.pedestal {
+                on_pedestal(f, p, load, -1.0);
+            }
+        }
+        for (p, pedestal) in self.model.pedestals.iter().enumerate() {
+            if pedestal.offset == [0.0, 0.0] {
+                continue;
+            }
+            let load = preload(&pedestal.stiffness, &pedestal.offset);
+            on_pedestal(f, p, load, 1.0);
+            if let Some(on) = pedestal.on {
+                on_pedestal(f, on, load, -1.0);
+            }
         }
     }
 

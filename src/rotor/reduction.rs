@@ -117,9 +117,11 @@ impl Rotor {
     /// through the basis.)
     pub fn kept_nodes(&self) -> Vec<usize> {
         let m = &self.model;
+        // A linear bearing set off the axis is loaded by its preload at
+        // its journal ([`Rotor::add_offset_loads`]): kept physical too.
         let bearings = m.bearings.iter().filter(|b| {
             let bearing = b.kind.build();
-            !(bearing.is_linear() && bearing.internal_dofs() == 0)
+            !(bearing.is_linear() && bearing.internal_dofs() == 0) || b.is_offset()
         });
         let mut nodes: Vec<usize> = bearings
             .map(|b| b.node)

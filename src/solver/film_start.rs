@@ -53,19 +53,42 @@ pub(super) fn film_start(
     }
     let lu = a.lu().ok()?;
     let mut u = f_ext.to_vec();
+    // The springs of a bearing set off the axis hold its journal at its centre.
+    for &(site, k, _) in held.iter().filter(|(s, ..)| is_offset(s.centre)) {
+        site.journal[0].add(&mut u, k * site.centre[0]);
+        site.journal[1].add(&mut u, k * site.centre[1]);
+    }
     lu.solve_in_place(&mut u);
     let mut rhs = f_ext.to_vec();
     let mut p = vec![0.0; sites.n_internal];
     for &(site, k, clearance) in &held {
         let [cx, cy] = site.journal;
-        let reaction = Vector2::new(k * cx.of(&u), k * cy.of(&u));
-        let eq = journal_equilibrium(site.bearing.as_ref(), reaction, speed, clearance).ok()?;
+        let (reaction, eq) = if is_offset(site.centre) {
+            // The bearing about its own centre, its equilibrium moved there.
+            let o = site.centre;
+            let reaction = Vector2::new(k * (cx.of(&u) - o[0]), k * (cy.of(&u) - o[1]));
+            let own = rotor.model.bearings[site.index].kind.build();
+            let mut eq = journal_equilibrium(own.as_ref(), reaction, speed, clearance).ok()?;
+            eq.q[0] += o[0];
+            eq.q[1] += o[1];
+            (reaction, eq)
+        } else {
+            let reaction = Vector2::new(k * cx.of(&u), k * cy.of(&u));
+            let eq = journal_equilibrium(site.bearing.as_ref(), reaction, speed, clearance).ok()?;
+            (reaction, eq)
+        };
         cx.add(&mut rhs, k * eq.q[0] - reaction.x);
         cy.add(&mut rhs, k * eq.q[1] - reaction.y);
         p[site.offset..site.offset + site.internal].copy_from_slice(&eq.q[2..]);
     }
     lu.solve_in_place(&mut rhs);
     Some((rhs, p))
+}
+
+/// Whether a site's centre is off the nominal axis (the starts then anchor
+/// its journal there; on the axis they do exactly what they did before).
+pub(super) fn is_offset(centre: [f64; 2]) -> bool {
+    centre != [0.0, 0.0]
 }
 
 /// Re-seat, at the journal positions of `u`, every pad of `sites` left on its

@@ -137,10 +137,10 @@ impl Simulator {
             return Err(SolverError::Input(format!("{} {not_it}", placed.name)));
         }
         let (output, site) = &mut self.output_bearings[index];
-        *output = placed.kind.build();
+        *output = placed.build();
         if let Some(k) = site {
             let site = &mut self.sites.list[*k];
-            site.bearing = placed.kind.build();
+            site.bearing = placed.build();
             site.memo.clear();
         }
         Ok(())

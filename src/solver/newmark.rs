@@ -242,6 +242,10 @@ impl Simulator {
             }
             self.rotor
                 .add_loads_at(&w.load_values, t, spin_angle, &mut w.f_ext);
+        } else {
+            // The preload of linear bearings and pedestals set off the axis
+            // (in `add_loads_at` with the load inputs; nothing without offsets).
+            self.rotor.add_offset_loads(&mut w.f_ext);
         }
     }
 

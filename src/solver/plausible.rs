@@ -25,8 +25,9 @@ fn shaft_diameter_at(model: &RotorModel, node: usize) -> f64 {
 /// the shaft).
 #[derive(Debug, Clone, PartialEq)]
 pub struct DisplacementLimits {
-    /// Per bearing: its name, bound (m) and what sets it.
-    bearings: Vec<(String, f64, &'static str)>,
+    /// Per bearing: its name, bound (m), what sets it, and its centre's
+    /// offset off the axis (m; the bound is about the displaced centre).
+    bearings: Vec<(String, f64, &'static str, [f64; 2])>,
     /// Per probe, then per port: name and bound (m).
     probes: Vec<(String, f64)>,
     ports: Vec<(String, f64)>,
@@ -41,8 +42,18 @@ impl DisplacementLimits {
             .bearings
             .iter()
             .map(|b| match b.kind.journal_clearance() {
-                Some(c) => (b.name.clone(), 2.0 * c, "twice its radial clearance"),
-                None => (b.name.clone(), shaft_diameter_at(model, b.node), DIAMETER),
+                Some(c) => (
+                    b.name.clone(),
+                    2.0 * c,
+                    "twice its radial clearance",
+                    b.offset,
+                ),
+                None => (
+                    b.name.clone(),
+                    shaft_diameter_at(model, b.node),
+                    DIAMETER,
+                    b.offset,
+                ),
             })
             .collect();
         let at = |name: &str, node: usize| (name.to_string(), shaft_diameter_at(model, node));
@@ -65,8 +76,9 @@ impl DisplacementLimits {
                 ));
             }
         };
-        for ((name, limit, why), out) in self.bearings.iter().zip(&outputs.bearings) {
+        for ((name, limit, why, o), out) in self.bearings.iter().zip(&outputs.bearings) {
             let (x, y) = out.relative();
+            let (x, y) = (x - o[0], y - o[1]);
             check(format!("the journal of {name}"), x.hypot(y), *limit, why);
         }
         for ((name, limit), out) in self.probes.iter().zip(&outputs.probes) {

@@ -229,7 +229,7 @@ impl Simulator {
             .bearings
             .iter()
             .map(|b| {
-                let bearing = b.kind.build();
+                let bearing = b.build();
                 let site = if bearing.is_linear() && bearing.internal_dofs() == 0 {
                     None
                 } else {

@@ -69,7 +69,12 @@ pub(super) struct Site {
     /// Index of the bearing in the model.
     pub index: usize,
     pub name: String,
+    /// The bearing as installed: about its centre [`Site::centre`]
+    /// ([`crate::model::PlacedBearing::build`]).
     pub bearing: Box<dyn Bearing>,
+    /// Its housing centre off the nominal axis `o` (m): the journal
+    /// coordinates `Eᵀu` are absolute, the bearing sees `Eᵀu − o`.
+    pub centre: [f64; 2],
     /// The journal coordinates `x`, `y` (relative to the housing).
     pub journal: [Coordinate; 2],
     /// Offset of its internal DOFs in `p`.
@@ -119,7 +124,7 @@ impl Sites {
         let mut list = Vec::new();
         let mut offset = 0;
         for (index, b) in rotor.model.bearings.iter().enumerate() {
-            let bearing = b.kind.build();
+            let bearing = b.build();
             if bearing.is_linear() && bearing.internal_dofs() == 0 {
                 continue;
             }
@@ -162,6 +167,7 @@ impl Sites {
                 qd: vec![0.0; 2 + internal],
                 condensation: Condensation::new(internal),
                 memo: OutputMemo::default(),
+                centre: b.offset,
                 bearing,
             });
             offset += internal;

@@ -9,7 +9,7 @@ use crate::bearing::BearingEval;
 use crate::rotor::Rotor;
 
 use super::factor::make_factor;
-use super::film_start::{film_start, reseat_pads};
+use super::film_start::{film_start, is_offset, reseat_pads};
 use super::newton::SchurSolve;
 use super::simulator::{SolverError, SolverOptions, inf_norm};
 use super::sites::{Sites, add_coupling};
@@ -309,8 +309,9 @@ fn settle_unchecked(
 
 /// The rotor resting on its fluid-film bearings, as a start for Newton: each
 /// journal held by its contact stiffness `k_c` at its resting gap `g` in the
-/// direction `d̂` it is pushed, `(K + Σ k_c E Eᵀ) u = f + Σ k_c g d̂`, with `d̂`
-/// from the same system without the offsets. `None` without a bearing that can
+/// direction `d̂` it is pushed, `(K + Σ k_c E Eᵀ) u = f + Σ k_c E (o + g d̂)`
+/// (`o` a bearing's centre off the axis), with `d̂` from the same system
+/// without the gaps. `None` without a bearing that can
 /// rest on contact, or when no journal is pushed at all.
 fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>> {
     let mut a = rotor.stiffness.clone();
@@ -328,12 +329,24 @@ fn resting_start(rotor: &Rotor, sites: &Sites, f_ext: &[f64]) -> Option<Vec<f64>
     }
     let lu = a.lu().ok()?;
     let mut u = f_ext.to_vec();
+    // A journal set off the axis rests about its own centre `o`.
+    for &(site, k) in contacts.iter().filter(|(s, _)| is_offset(s.centre)) {
+        site.journal[0].add(&mut u, k * site.centre[0]);
+        site.journal[1].add(&mut u, k * site.centre[1]);
+    }
     lu.solve_in_place(&mut u);
     let mut rhs = f_ext.to_vec();
     let mut pushed = false;
     for &(site, k) in &contacts {
         let [cx, cy] = site.journal;
-        let (x, y) = (cx.of(&u), cy.of(&u));
+        let o = site.centre;
+        let (x, y) = if is_offset(o) {
+            cx.add(&mut rhs, k * o[0]);
+            cy.add(&mut rhs, k * o[1]);
+            (cx.of(&u) - o[0], cy.of(&u) - o[1])
+        } else {
+            (cx.of(&u), cy.of(&u))
+        };
         let d = x.hypot(y);
         if d > 0.0 {
             let direction = [x / d, y / d];

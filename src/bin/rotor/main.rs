@@ -3,7 +3,8 @@
 //! ```text
 //! rotor info     [MODEL.toml]
 //! rotor draw     [MODEL.toml] --png FILE
-//! rotor static   [MODEL.toml] [--rpm N] [--csv FILE]
+//! rotor static   [MODEL.toml] [--rpm N] [--csv FILE] [--shaft-csv FILE]
+//! rotor alignment [MODEL.toml] [--rpm N] [--target N1,N2,…]
 //! rotor modes    [MODEL.toml] [--rpm N] [--modes K] [--csv FILE] [--shapes-csv FILE] [--shapes-png FILE]
 //! rotor campbell [MODEL.toml] [--max-rpm N] [--steps S] [--modes K] [--operating-rpm A:B] [--csv FILE] [--png FILE]
 //! rotor coefficients [MODEL.toml] [--bearing NAME] [--rpm N] [--points P] [--film model|short|finite] [--csv FILE] [--png FILE]
@@ -22,6 +23,7 @@
 //! Without MODEL.toml the built-in classic disk-on-shaft rotor is used (and, for
 //! `coefficients`, the reference plain short bearing).
 
+mod alignment;
 mod coefficients;
 mod fmu_stage;
 mod held;
@@ -35,6 +37,7 @@ mod stability;
 mod statics;
 mod ucs;
 mod unbalance;
+mod warnings;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -43,6 +46,7 @@ use clap::{Args, Parser, Subcommand};
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::units::{Amplitude, RAD_S_TO_RPM};
+pub(crate) use warnings::{warn_short_films, warn_table_speeds};
 
 #[derive(Parser)]
 #[command(
@@ -130,6 +134,19 @@ enum Command {
         /// Write node displacements to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
+        /// Write the shaft's bending moment, shear and bending stress at both
+        /// ends of every element to this CSV file.
+        #[arg(long)]
+        shaft_csv: Option<PathBuf>,
+    },
+    /// Bearing reactions of the shaft line at its offsets (offset_x, offset_y),
+    /// the reaction influence matrix, the offsets for a target load sharing
+    /// (default equal specific load W/(L·D)) and the shaft's largest bending stress.
+    Alignment {
+        #[command(flatten)]
+        model: ModelArg,
+        #[command(flatten)]
+        args: alignment::AlignmentArgs,
     },
     /// Complex modes at one speed: damped frequencies, damping, whirl.
     Modes {
@@ -417,38 +434,6 @@ fn main() -> ExitCode {
     }
 }
 
-/// Print a warning for each coefficient table an analysis at `speeds`
-/// (rad/s) asks for a speed outside its rows.
-pub(crate) fn warn_table_speeds(model: &RotorModel, speeds: &[f64]) {
-    for w in model.table_speed_warnings(speeds) {
-        eprintln!("warning: {w}");
-    }
-}
-
-/// Print one warning for each plain or tilting-pad bearing on the short
-/// film beyond its range (`analysis::film_validity`), with its ratios at
-/// the operating point: at the model's `speed_rpm` when it states one,
-/// else at the fastest of `speeds` (rad/s).
-pub(crate) fn warn_short_films(rotor: &Rotor, speeds: &[f64]) {
-    let nominal = rotor.model.nominal_speed.abs();
-    let speed = if nominal > 0.0 {
-        nominal
-    } else {
-        speeds.iter().fold(0.0f64, |a, s| a.max(s.abs()))
-    };
-    match rotor_bearing::analysis::film_validity::short_film_warnings(rotor, speed) {
-        Ok(warnings) => {
-            for w in warnings {
-                eprintln!("warning: {}: {w}", rotor.model.source);
-            }
-        }
-        Err(e) => eprintln!(
-            "warning: {}: the short films' validity was not checked: {e}",
-            rotor.model.source
-        ),
-    }
-}
-
 /// The speed (rpm) of `--rpm`, else the model's `speed_rpm`.
 pub(crate) fn model_rpm(model: &RotorModel, rpm: Option<f64>) -> Result<f64, String> {
     match rpm {
@@ -513,7 +498,13 @@ fn run(cli: Cli) -> Result<(), String> {
     match cli.command {
         Command::Info { model } => statics::info(&load(&model)?),
         Command::Draw { model, png } => statics::draw(&load(&model)?, &png),
-        Command::Static { model, rpm, csv } => statics::deflection(&load(&model)?, rpm, csv),
+        Command::Static {
+            model,
+            rpm,
+            csv,
+            shaft_csv,
+        } => statics::deflection(&load(&model)?, rpm, csv, shaft_csv),
+        Command::Alignment { model, args } => alignment::run(&load(&model)?, args),
         Command::Modes {
             model,
             rpm,

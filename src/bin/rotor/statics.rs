@@ -5,10 +5,12 @@ use std::path::PathBuf;
 
 use rotor_bearing::analysis::held_equilibrium::held_equilibrium;
 use rotor_bearing::analysis::linear::static_deflection;
+use rotor_bearing::analysis::shaft_loads::{largest_stress, section_loads};
 use rotor_bearing::plot::RAD_S_TO_RPM;
 use rotor_bearing::report::text::model_summary;
 use rotor_bearing::report::{csv as report_csv, series};
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::solver::SolverOptions;
 
 use crate::write_file;
 
@@ -31,9 +33,28 @@ pub fn info(rotor: &Rotor) -> Result<(), String> {
     Ok(())
 }
 
-/// `rotor static`: the largest deflection and the node displacements as CSV.
-pub fn deflection(rotor: &Rotor, rpm: f64, csv: Option<PathBuf>) -> Result<(), String> {
+/// `rotor static`: the largest deflection and the node displacements as CSV;
+/// the shaft's largest bending stress, and its section loads as CSV.
+pub fn deflection(
+    rotor: &Rotor,
+    rpm: f64,
+    csv: Option<PathBuf>,
+    shaft_csv: Option<PathBuf>,
+) -> Result<(), String> {
     let q = static_state(rotor, rpm)?;
+    let loads = section_loads(rotor, &q, SolverOptions::default().gravity);
+    if let Some(path) = shaft_csv {
+        write_file(&path, &report_csv::shaft_loads(&loads))?;
+    }
+    if let Some(worst) = largest_stress(&loads) {
+        println!(
+            "largest bending moment {:.4e} N·m, bending stress {:.4e} Pa at z = {} m (node {})",
+            worst.moment_magnitude,
+            worst.stress,
+            worst.z,
+            worst.node + 1
+        );
+    }
     let out = report_csv::static_deflection(&rotor.model.node_z, &q);
     let (peak_node, peak) = series::largest_deflection(&q, rotor.model.node_count());
     let line = format!(
@@ -57,7 +78,7 @@ pub fn deflection(rotor: &Rotor, rpm: f64, csv: Option<PathBuf>) -> Result<(), S
 
 /// Node displacements (`4·node + k`) at the static equilibrium under gravity at
 /// `rpm`: linear deflection for linear bearings; for fluid-film bearings the
-/// statics solver's equilibrium.
+/// statics solver's equilibrium (continued on the bearing offsets when needed).
 fn static_state(rotor: &Rotor, rpm: f64) -> Result<Vec<f64>, String> {
     if rotor.nonlinear_bearings.is_empty() {
         return static_deflection(rotor).map_err(|e| e.to_string());

@@ -140,6 +140,9 @@ pub struct Instance {
     params: Params,
     /// The tuned value of each model bearing ([`tuned`](crate::bearing::BearingKind::tuned); 0 where none).
     tuned: Vec<f64>,
+    /// Each model bearing's offset as the model file gives it (`model`
+    /// holds the ones a master set; a reset restores these).
+    file_offsets: Vec<[f64; 2]>,
     phase: Phase,
     start_time: f64,
     stop_time: Option<f64>,
@@ -218,6 +221,7 @@ impl Instance {
             sim,
             params,
             tuned,
+            file_offsets: model.bearings.iter().map(|b| b.offset).collect(),
             phase: Phase::Instantiated,
             start_time: 0.0,
             stop_time: None,
@@ -508,6 +512,16 @@ impl Instance {
                 }
                 r
             }
+            Binding::OffsetX(k) | Binding::OffsetY(k) => {
+                let axis = usize::from(matches!(v.binding, Binding::OffsetY(_)));
+                if self.model.bearings[k].offset[axis] == value {
+                    Ok(())
+                } else {
+                    self.model.bearings[k].offset[axis] = value;
+                    self.limits = DisplacementLimits::new(&self.model);
+                    self.rebuild_simulator(self.params.reduced_modes)
+                }
+            }
             Binding::UnbalancePhase(k) => self.sim.set_unbalance_phase(k, value),
             Binding::Speed => self.sim.set_speed(value, 0.0),
             Binding::Unbalance(k) => self.sim.set_unbalance(k, value),
@@ -622,6 +636,10 @@ impl Instance {
             return s;
         }
         let params = Params::start(&self.model);
+        for (b, o) in self.model.bearings.iter_mut().zip(&self.file_offsets) {
+            b.offset = *o;
+        }
+        self.limits = DisplacementLimits::new(&self.model);
         match Self::fresh_simulator(&self.model, params.reduced_modes) {
             Ok(sim) => {
                 self.watch = ValidityWatch::new(sim.rotor());

@@ -173,6 +173,8 @@ impl Instance {
             Binding::Gravity => f64::from(u8::from(p.gravity)),
             Binding::ReducedModes => f64::from(p.reduced_modes),
             Binding::Viscosity(k) | Binding::Excitation(k) => self.tuned[k],
+            Binding::OffsetX(k) => self.model.bearings[k].offset[0],
+            Binding::OffsetY(k) => self.model.bearings[k].offset[1],
             Binding::UnbalancePhase(k) => s.unbalance_phase[k],
             Binding::Speed => self.sim.speed_at(s.time),
             Binding::Unbalance(k) => s.unbalance[k] + s.unbalance_rate[k] * (s.time - s.speed_time),

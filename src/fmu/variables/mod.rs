@@ -15,6 +15,7 @@ mod drive;
 mod loads;
 mod losses;
 mod machine;
+mod offsets;
 mod stepping;
 
 /// What a variable reads or writes in the simulator.
@@ -108,6 +109,10 @@ pub enum Binding {
     TorqueAngle(usize),
     /// Torque carried by shaft element `k` (N·m).
     ShaftTorque(usize),
+    /// Centre offset x of model bearing `k` off the nominal axis (m).
+    OffsetX(usize),
+    /// Centre offset y of model bearing `k` off the nominal axis (m).
+    OffsetY(usize),
 }
 
 /// FMI base type.
@@ -202,6 +207,10 @@ pub fn value_range(binding: Binding, model: &RotorModel) -> (Option<f64>, Option
         ),
         Binding::Viscosity(_) => pair(VISCOSITY_RANGE),
         Binding::Excitation(_) => pair(EXCITATION_RANGE),
+        Binding::OffsetX(_) | Binding::OffsetY(_) => pair((
+            crate::model::limits::OFFSET.min,
+            crate::model::limits::OFFSET.max,
+        )),
         Binding::Speed => (Some(-model.max_speed), Some(model.max_speed)),
         Binding::Unbalance(_) => (Some(0.0), None),
         Binding::Load(i) => match model.load_inputs().get(i).map(|l| l.channel) {
@@ -338,5 +347,6 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
     drive::add(&mut t);
     stepping::add(&mut t);
     losses::add(&mut t);
+    offsets::add(&mut t);
     t.out
 }

@@ -13,7 +13,7 @@ use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{BearingEntry, MagneticPullEntry, RubEntry, SealEntry};
 use crate::model::limits::{
-    CLEARANCE, CONTACT_STIFFNESS, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, RADIUS, STIFFNESS,
+    CLEARANCE, CONTACT_STIFFNESS, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, OFFSET, RADIUS, STIFFNESS,
     VISCOSITY,
 };
 use crate::model::{
@@ -52,6 +52,19 @@ fn radial_clearance(
             "give clearance (the radial clearance, m) or diametral_clearance (bore diameter less journal diameter, m)",
         )),
     }
+}
+
+/// The centre offset `(offset_x, offset_y)` (m) of a bearing, seal, stator
+/// or pedestal entry at `p`: each finite and within [`OFFSET`], default 0.
+pub(super) fn centre_offset(
+    ctx: &Ctx,
+    p: &FieldPath,
+    (x, y): (Option<f64>, Option<f64>),
+) -> Result<[f64; 2], ModelError> {
+    Ok([
+        ctx.within(p.key("offset_x"), x.unwrap_or(0.0), &OFFSET)?,
+        ctx.within(p.key("offset_y"), y.unwrap_or(0.0), &OFFSET)?,
+    ])
 }
 
 /// The film theory of a plain or tilting-pad entry: `short` (the kind as
@@ -230,12 +243,14 @@ pub(super) fn bearings(
     let mut names = Names::default();
     for (i, b) in entries.into_iter().enumerate() {
         let p = root.key("bearings").index(i);
-        let (name, node, kind, pedestal) = match b {
+        let (name, node, kind, pedestal, centre) = match b {
             BearingEntry::Linear {
                 name,
                 node,
                 z,
                 pedestal,
+                offset_x,
+                offset_y,
                 kxx,
                 kxy,
                 kyx,
@@ -246,6 +261,7 @@ pub(super) fn bearings(
                 cyy,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
+                let centre = centre_offset(ctx, &p, (offset_x, offset_y))?;
                 let k = |key: &str, v: f64| ctx.within(p.key(key), v, &STIFFNESS);
                 let c = |key: &str, v: f64| ctx.within(p.key(key), v, &DAMPING);
                 let k = [
@@ -272,6 +288,7 @@ pub(super) fn bearings(
                         damping: c,
                     },
                     pedestal,
+                    centre,
                 )
             }
             BearingEntry::Plain {
@@ -279,6 +296,8 @@ pub(super) fn bearings(
                 node,
                 z,
                 pedestal,
+                offset_x,
+                offset_y,
                 radius,
                 journal_collar,
                 length,
@@ -293,6 +312,7 @@ pub(super) fn bearings(
                 cavitation,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
+                let centre = centre_offset(ctx, &p, (offset_x, offset_y))?;
                 let mut bearing = PlainBearing {
                     radius: journal_radius(ctx, &p, radius, journal_collar, node, elements)?,
                     length: ctx.within(p.key("length"), length, &LENGTH)?,
@@ -322,13 +342,15 @@ pub(super) fn bearings(
                     BearingKind::Plain(bearing),
                     (film, film_mesh, cavitation),
                 )?;
-                (name, node, kind, pedestal)
+                (name, node, kind, pedestal, centre)
             }
             BearingEntry::Table {
                 name,
                 node,
                 z,
                 pedestal,
+                offset_x,
+                offset_y,
                 speeds_rpm,
                 kxx,
                 kxy,
@@ -345,6 +367,7 @@ pub(super) fn bearings(
                 myy,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
+                let centre = centre_offset(ctx, &p, (offset_x, offset_y))?;
                 let input = TableInput {
                     speeds_rpm: &speeds_rpm,
                     columns: [&kxx, &kxy, &kyx, &kyy, &cxx, &cxy, &cyx, &cyy],
@@ -361,6 +384,7 @@ pub(super) fn bearings(
                         added_mass: read.added_mass,
                     }),
                     pedestal,
+                    centre,
                 )
             }
             BearingEntry::TiltingPad {
@@ -368,6 +392,8 @@ pub(super) fn bearings(
                 node,
                 z,
                 pedestal,
+                offset_x,
+                offset_y,
                 radius,
                 journal_collar,
                 length,
@@ -388,6 +414,7 @@ pub(super) fn bearings(
                 cavitation,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
+                let centre = centre_offset(ctx, &p, (offset_x, offset_y))?;
                 let radius = journal_radius(ctx, &p, radius, journal_collar, node, elements)?;
                 let clearance = radial_clearance(ctx, &p, clearance, diametral_clearance)?;
                 if clearance >= 0.1 * radius {
@@ -478,7 +505,7 @@ pub(super) fn bearings(
                     BearingKind::TiltingPad(bearing),
                     (film, film_mesh, cavitation),
                 )?;
-                (name, node, kind, pedestal)
+                (name, node, kind, pedestal, centre)
             }
         };
         let pedestal = match pedestal {
@@ -490,6 +517,7 @@ pub(super) fn bearings(
             node,
             kind,
             pedestal,
+            offset: centre,
         });
     }
     bearings.extend(super::stators::stators(

@@ -49,6 +49,7 @@ pub(super) fn pedestals(
             stiffness,
             damping,
             on: None,
+            offset: super::bearings::centre_offset(ctx, &p, (e.offset_x, e.offset_y))?,
         });
     }
     for (i, e) in entries.iter().enumerate() {

@@ -13,7 +13,7 @@ use crate::model::error::FieldPath;
 use crate::model::file::{MagneticPullEntry, RubEntry, SealEntry};
 use crate::model::{ModelError, Pedestal, PlacedBearing, PlacedElement, TableFile};
 
-use super::bearings::{RUB_WIDTH, contact_law, shaft_radius_at};
+use super::bearings::{RUB_WIDTH, centre_offset, contact_law, shaft_radius_at};
 use super::pedestals::lookup;
 use super::tables::{TableInput, coefficient_table};
 use crate::model::limits::{
@@ -35,6 +35,7 @@ pub(super) fn stators(
     for (i, r) in rubs.into_iter().enumerate() {
         let p = root.key("rubs").index(i);
         let node = ctx.location(&p, r.node, r.z, node_z)?;
+        let offset = centre_offset(ctx, &p, (r.offset_x, r.offset_y))?;
         let gap = ctx.within(p.key("gap"), r.gap, &CLEARANCE)?;
         let radius = ctx.within(
             p.key("radius"),
@@ -62,12 +63,14 @@ pub(super) fn stators(
             node,
             kind: BearingKind::Rub(RubElement { contact: law }),
             pedestal,
+            offset,
         });
     }
 
     for (i, e) in seals.into_iter().enumerate() {
         let p = root.key("seals").index(i);
         let node = ctx.location(&p, e.node, e.z, node_z)?;
+        let offset = centre_offset(ctx, &p, (e.offset_x, e.offset_y))?;
         let input = TableInput {
             speeds_rpm: &e.speeds_rpm,
             columns: [
@@ -132,12 +135,14 @@ pub(super) fn stators(
                 contact,
             }),
             pedestal,
+            offset,
         });
     }
 
     for (i, e) in pulls.into_iter().enumerate() {
         let p = root.key("magnetic_pull").index(i);
         let node = ctx.location(&p, e.node, e.z, node_z)?;
+        let offset = centre_offset(ctx, &p, (e.offset_x, e.offset_y))?;
         let gap = ctx.within(p.key("gap"), e.gap, &CLEARANCE)?;
         let stiffness = match (e.stiffness, e.rotor_radius, e.core_length, e.flux_density) {
             (Some(k), None, None, None) => ctx.within(p.key("stiffness"), k, &PULL_STIFFNESS)?,
@@ -195,6 +200,7 @@ pub(super) fn stators(
                 contact,
             }),
             pedestal,
+            offset,
         });
     }
 
