@@ -524,6 +524,66 @@ fn report_never_fails_on_the_undamped_classic_rotor() {
     }
 }
 
+/// `--operating-rpm` (issue 48): the damped classic rotor at 600 rpm has its
+/// critical speeds at 1113 rpm, 85 % above the operating speed (26 %
+/// required: AF 23.8): every Campbell margin passes; with the operating range
+/// 600–1200 rpm the critical lies inside it and every one fails, as `rotor
+/// campbell --operating-rpm 600:1200` judges them, and the stamp names the
+/// range.
+#[test]
+fn an_operating_range_judges_the_margins_of_the_report() {
+    let model = root().join("models/classic_disk_rotor_damped.toml");
+    let model = model.to_str().unwrap();
+    let verdicts = |page: &Page| -> Vec<String> {
+        summary_rows(page, "critical speed (Campbell)")
+            .iter()
+            .map(|r| r[4].0.clone())
+            .collect()
+    };
+    let (_, alone) = write_report(&["report", model, "--rpm", "600"], "range_alone");
+    let (_, range) = write_report(
+        &[
+            "report",
+            model,
+            "--rpm",
+            "600",
+            "--operating-rpm",
+            "600:1200",
+        ],
+        "range_600_1200",
+    );
+    let (alone, inside) = (verdicts(&alone), verdicts(&range));
+    assert!(
+        !alone.is_empty() && alone.iter().all(|v| v == "pass"),
+        "{alone:?}"
+    );
+    assert_eq!(inside.len(), alone.len());
+    assert!(inside.iter().all(|v| v == "FAIL"), "{inside:?}");
+    let printed = campbell_verdicts(&rotor(&["campbell", model, "--operating-rpm", "600:1200"]));
+    assert!(
+        printed.iter().all(|v| v == "FAIL") && !printed.is_empty(),
+        "{printed:?}"
+    );
+    assert_eq!(
+        range.stamp["operating range (separation margins)"],
+        "600 to 1200 rpm"
+    );
+    // A malformed range is an error naming the flag.
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args([
+            "report",
+            model,
+            "--operating-rpm",
+            "1200:600",
+            "--out",
+            "/dev/null",
+        ])
+        .output()
+        .unwrap();
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--operating-rpm"));
+}
+
 /// A malformed page is caught by the parser the tests use.
 #[test]
 fn a_broken_page_is_caught() {

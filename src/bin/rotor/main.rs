@@ -345,6 +345,10 @@ enum Command {
         /// Operating speed (rpm); default the model's speed_rpm.
         #[arg(long)]
         rpm: Option<f64>,
+        /// Operating speed range MIN:MAX (rpm) the separation margins are
+        /// judged against (API 684); default the operating speed alone.
+        #[arg(long)]
+        operating_rpm: Option<String>,
         /// Amplitudes as the orbit's semi-axis (0-pk) or twice it (pk-pk).
         #[arg(long, default_value = "0-pk", value_parser = parse_amplitude)]
         amplitude: Amplitude,
@@ -673,6 +677,7 @@ fn run(cli: Cli) -> Result<(), String> {
         Command::Report {
             model,
             rpm,
+            operating_rpm,
             amplitude,
             stages,
             out,
@@ -683,6 +688,11 @@ fn run(cli: Cli) -> Result<(), String> {
                 report::Request {
                     source: model.model.clone(),
                     rpm,
+                    operating: operating_rpm
+                        .as_deref()
+                        .map(unbalance::operating_range)
+                        .transpose()?,
+                    operating_rpm,
                     amplitude,
                     sites: stability::sites(&rotor, stages.at.as_deref())?,
                     stages: stages.stages()?,

@@ -43,6 +43,10 @@ pub struct Request {
     /// The model file (`None`: the built-in classic rotor).
     pub source: Option<PathBuf>,
     pub rpm: Option<f64>,
+    /// The operating range of the margins (`--operating-rpm`) and its text;
+    /// `None`: the operating speed alone.
+    pub operating: Option<OperatingRange>,
+    pub operating_rpm: Option<String>,
     pub amplitude: Amplitude,
     /// Nodes of the cross-coupling (0-based), empty for the default.
     pub sites: Vec<usize>,
@@ -96,10 +100,10 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     let name = model.name.clone();
     crate::warn_short_films(rotor, &[speed]);
     crate::held::note_off_centre(rotor, &[speed]);
-    let operating = OperatingRange {
+    let operating = req.operating.unwrap_or(OperatingRange {
         min: speed,
         max: speed,
-    };
+    });
     let amplitude = req.amplitude;
     let dir = std::env::temp_dir().join(format!("rotor-report-{}", std::process::id()));
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
@@ -125,6 +129,14 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             format!("{name}: {}", model.description),
         ),
         ("operating speed".to_string(), format!("{} rpm", short(rpm))),
+        (
+            "operating range (separation margins)".to_string(),
+            format!(
+                "{} to {} rpm",
+                short(operating.min * RAD_S_TO_RPM),
+                short(operating.max * RAD_S_TO_RPM)
+            ),
+        ),
         (
             "software".to_string(),
             format!("rotor_bearing {}", software_version()),
@@ -204,8 +216,11 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         .source
         .as_ref()
         .map_or(String::new(), |p| format!(" {}", p.display()));
-    let same =
-        |cmd: &str| format!("As `rotor {cmd}{file_arg} --operating-rpm {rpm}:{rpm}` prints it.");
+    let range = match &req.operating_rpm {
+        Some(text) => text.clone(),
+        None => format!("{rpm}:{rpm}"),
+    };
+    let same = |cmd: &str| format!("As `rotor {cmd}{file_arg} --operating-rpm {range}` prints it.");
     let mut sections = vec![section(
         "summary",
         "Summary",
