@@ -584,6 +584,60 @@ fn an_operating_range_judges_the_margins_of_the_report() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("--operating-rpm"));
 }
 
+/// Every element of the model listed as what it is (issue 48): the unit on
+/// brackets' seal as a seal, its generator's pull as a magnetic pull, its
+/// pedestals, forces and guide bearings each once, by the model parser's own
+/// lists; the stability section notes that the seal's table is synchronous.
+#[test]
+fn the_report_lists_every_element_as_what_it_is() {
+    let path = root().join("models/hydro_unit_brackets.toml");
+    let model = rotor_bearing::model::RotorModel::from_file(&path).unwrap();
+    let (_, page) = write_report(&["report", path.to_str().unwrap()], "brackets_parts");
+    let table = &page.sections["model"].tables["model-parts"];
+    let (kind, name) = (table.column("kind"), table.column("name"));
+    let listed = |k: &str| -> Vec<String> {
+        table
+            .rows
+            .iter()
+            .filter(|r| r[kind].0 == k)
+            .map(|r| r[name].0.clone())
+            .collect()
+    };
+    let of = |pick: &dyn Fn(&rotor_bearing::bearing::BearingKind) -> bool| -> Vec<String> {
+        model
+            .bearings
+            .iter()
+            .filter(|b| pick(&b.kind))
+            .map(|b| b.name.clone())
+            .collect()
+    };
+    assert_eq!(listed("seal"), of(&|k| k.is_seal()));
+    assert_eq!(listed("seal"), ["runner_seal"]);
+    assert_eq!(listed("magnetic pull"), of(&|k| k.is_magnetic_pull()));
+    assert_eq!(listed("magnetic pull"), ["generator"]);
+    assert_eq!(
+        listed("bearing"),
+        of(&|k| !k.is_seal() && !k.is_magnetic_pull() && !k.is_rub())
+    );
+    let names = |v: Vec<&String>| v.into_iter().cloned().collect::<Vec<_>>();
+    assert_eq!(
+        listed("pedestal"),
+        names(model.pedestals.iter().map(|p| &p.name).collect())
+    );
+    assert_eq!(
+        listed("force"),
+        names(model.forces.iter().map(|f| &f.name).collect())
+    );
+    assert!(listed("force").len() >= 2);
+    assert!(
+        page.sections["stability"]
+            .text
+            .contains("the coefficients of runner_seal come from a table"),
+        "{}",
+        page.sections["stability"].text
+    );
+}
+
 /// A malformed page is caught by the parser the tests use.
 #[test]
 fn a_broken_page_is_caught() {

@@ -102,11 +102,38 @@ pub fn model_blocks(rotor: &Rotor) -> Vec<Block> {
     }
     for b in &m.bearings {
         parts.push(vec![
-            "bearing".into(),
+            text::element_kind(&b.kind).into(),
             b.name.clone().into(),
             (b.node + 1).to_string().into(),
             z(b.node).into(),
             text::describe_bearing(&b.kind).into(),
+        ]);
+    }
+    for p in &m.pedestals {
+        parts.push(vec![
+            "pedestal".into(),
+            p.name.clone().into(),
+            "—".into(),
+            "—".into(),
+            text::describe_pedestal(m, p).into(),
+        ]);
+    }
+    for t in &m.thrust_bearings {
+        parts.push(vec![
+            "thrust bearing".into(),
+            t.name.clone().into(),
+            (t.node + 1).to_string().into(),
+            z(t.node).into(),
+            text::describe_thrust_bearing(t).into(),
+        ]);
+    }
+    for f in &m.forces {
+        parts.push(vec![
+            "force".into(),
+            f.name.clone().into(),
+            (f.node + 1).to_string().into(),
+            z(f.node).into(),
+            text::describe_force(f).into(),
         ]);
     }
     for u in &m.unbalances {
@@ -134,7 +161,7 @@ pub fn model_blocks(rotor: &Rotor) -> Vec<Block> {
     }
     out.push(Block::Table(Table {
         id: "model-parts".into(),
-        caption: "disks, bearings, unbalance planes and probes".into(),
+        caption: "every element: disks, bearings, seals, rubs, magnetic pulls, pedestals, thrust bearings, forces, unbalance planes and probes".into(),
         headers: headers(&["kind", "name", "node", "z (m)", "data"]),
         rows: parts,
     }));

@@ -25,7 +25,9 @@ pub use modal::{
     overdamped_roots, overdamped_summary, static_divergence, torsional_modes, zeta_and_log_dec,
 };
 pub use ring_down::{RING_DOWN_AGREEMENT, ring_downs};
-pub use summary::model_summary;
+pub use summary::{
+    describe_force, describe_pedestal, describe_thrust_bearing, element_kind, model_summary,
+};
 pub use synchronous::synchronous_tables;
 pub use unbalance::{peak_cells, peak_table, unbalance_study};
 

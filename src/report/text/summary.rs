@@ -70,12 +70,7 @@ pub fn model_summary(rotor: &Rotor) -> String {
         .ok();
     }
     for b in &m.bearings {
-        let what = match &b.kind {
-            k if k.is_seal() => "seal",
-            k if k.is_rub() => "rub",
-            k if k.is_magnetic_pull() => "magnetic pull",
-            _ => "bearing",
-        };
+        let what = element_kind(&b.kind);
         let on = match b.pedestal {
             Some(p) => format!(" on pedestal {}", m.pedestals[p].name),
             None => String::new(),
@@ -90,30 +85,7 @@ pub fn model_summary(rotor: &Rotor) -> String {
         .ok();
     }
     for p in &m.pedestals {
-        let on = match p.on {
-            Some(q) => format!("pedestal {}", m.pedestals[q].name),
-            None => "ground".to_string(),
-        };
-        let carried: Vec<&str> = m
-            .bearings
-            .iter()
-            .filter(|b| b.pedestal.is_some_and(|q| m.pedestals[q].name == p.name))
-            .map(|b| b.name.as_str())
-            .collect();
-        writeln!(
-            s,
-            "  pedestal {}: m = {} kg on {on}, K = {} N/m, C = {} N·s/m, carrying {}",
-            p.name,
-            short(p.mass),
-            coefficient_matrix(&p.stiffness),
-            coefficient_matrix(&p.damping),
-            if carried.is_empty() {
-                "other pedestals".to_string()
-            } else {
-                carried.join(", ")
-            }
-        )
-        .ok();
+        writeln!(s, "  pedestal {}: {}", p.name, describe_pedestal(m, p)).ok();
     }
     for sup in &m.supports {
         let mut fixed: Vec<&str> = ["x", "y", "rx", "ry"]
@@ -213,37 +185,14 @@ fn shaft_summary(s: &mut String, m: &RotorModel) {
 /// One line per external force and per force port.
 fn loads_summary(s: &mut String, m: &RotorModel) {
     for f in &m.forces {
-        let what = match f.kind {
-            ForceKind::Static([fx, fy]) => {
-                format!("static, (fx, fy) = ({}, {}) N", short(fx), short(fy))
-            }
-            ForceKind::Harmonic {
-                magnitude,
-                phase,
-                frequency,
-                direction,
-            } => {
-                let frequency = match frequency {
-                    HarmonicFrequency::Ratio(r) => format!("{}× the running speed", short(r)),
-                    HarmonicFrequency::Fixed(w) => {
-                        format!("{} Hz", short(w / std::f64::consts::TAU))
-                    }
-                };
-                let direction = match direction {
-                    HarmonicDirection::Forward => "forward".to_string(),
-                    HarmonicDirection::Backward => "backward".to_string(),
-                    HarmonicDirection::Fixed(a) => {
-                        format!("along a fixed line at {}°", short(a.to_degrees()))
-                    }
-                };
-                format!(
-                    "harmonic, {} N at {frequency}, {direction}, phase {}°",
-                    short(magnitude),
-                    short(phase.to_degrees())
-                )
-            }
-        };
-        writeln!(s, "  force {} at node {}: {what}", f.name, f.node + 1).ok();
+        writeln!(
+            s,
+            "  force {} at node {}: {}",
+            f.name,
+            f.node + 1,
+            describe_force(f)
+        )
+        .ok();
     }
     for p in &m.ports {
         writeln!(
@@ -253,6 +202,77 @@ fn loads_summary(s: &mut String, m: &RotorModel) {
             p.node + 1
         )
         .ok();
+    }
+}
+
+/// What a `[[bearings]]`-kind element is: a seal, a rub, a magnetic pull or
+/// a bearing.
+pub fn element_kind(kind: &crate::bearing::BearingKind) -> &'static str {
+    match kind {
+        k if k.is_seal() => "seal",
+        k if k.is_rub() => "rub",
+        k if k.is_magnetic_pull() => "magnetic pull",
+        _ => "bearing",
+    }
+}
+
+/// A pedestal's mass, what it stands on, its stiffness and damping and what
+/// it carries.
+pub fn describe_pedestal(m: &RotorModel, p: &crate::model::Pedestal) -> String {
+    let on = match p.on {
+        Some(q) => format!("pedestal {}", m.pedestals[q].name),
+        None => "ground".to_string(),
+    };
+    let carried: Vec<&str> = m
+        .bearings
+        .iter()
+        .filter(|b| b.pedestal.is_some_and(|q| m.pedestals[q].name == p.name))
+        .map(|b| b.name.as_str())
+        .collect();
+    format!(
+        "m = {} kg on {on}, K = {} N/m, C = {} N·s/m, carrying {}",
+        short(p.mass),
+        coefficient_matrix(&p.stiffness),
+        coefficient_matrix(&p.damping),
+        if carried.is_empty() {
+            "other pedestals".to_string()
+        } else {
+            carried.join(", ")
+        }
+    )
+}
+
+/// A static or harmonic external force.
+pub fn describe_force(f: &crate::model::ExternalForce) -> String {
+    match f.kind {
+        ForceKind::Static([fx, fy]) => {
+            format!("static, (fx, fy) = ({}, {}) N", short(fx), short(fy))
+        }
+        ForceKind::Harmonic {
+            magnitude,
+            phase,
+            frequency,
+            direction,
+        } => {
+            let frequency = match frequency {
+                HarmonicFrequency::Ratio(r) => format!("{}× the running speed", short(r)),
+                HarmonicFrequency::Fixed(w) => {
+                    format!("{} Hz", short(w / std::f64::consts::TAU))
+                }
+            };
+            let direction = match direction {
+                HarmonicDirection::Forward => "forward".to_string(),
+                HarmonicDirection::Backward => "backward".to_string(),
+                HarmonicDirection::Fixed(a) => {
+                    format!("along a fixed line at {}°", short(a.to_degrees()))
+                }
+            };
+            format!(
+                "harmonic, {} N at {frequency}, {direction}, phase {}°",
+                short(magnitude),
+                short(phase.to_degrees())
+            )
+        }
     }
 }
 
@@ -313,18 +333,26 @@ fn drive_summary(s: &mut String, m: &RotorModel) {
         .ok();
     }
     for t in &m.thrust_bearings {
-        let b = &t.bearing;
         writeln!(
             s,
-            "  thrust bearing {} at node {}: load W = {} N, R_m = {} m, breakaway torque μ_b W R_m = {} N·m{}, lift-off {} rpm",
+            "  thrust bearing {} at node {}: {}",
             t.name,
             t.node + 1,
-            short(b.load),
-            short(b.mean_radius()),
-            short(b.breakaway_torque()),
-            if b.oil_lift { " (oil lift)" } else { "" },
-            short(b.lift_off_speed * RAD_S_TO_RPM)
+            describe_thrust_bearing(t)
         )
         .ok();
     }
+}
+
+/// A thrust bearing's load, mean radius, breakaway torque and lift-off.
+pub fn describe_thrust_bearing(t: &crate::model::PlacedThrustBearing) -> String {
+    let b = &t.bearing;
+    format!(
+        "load W = {} N, R_m = {} m, breakaway torque μ_b W R_m = {} N·m{}, lift-off {} rpm",
+        short(b.load),
+        short(b.mean_radius()),
+        short(b.breakaway_torque()),
+        if b.oil_lift { " (oil lift)" } else { "" },
+        short(b.lift_off_speed * RAD_S_TO_RPM)
+    )
 }
