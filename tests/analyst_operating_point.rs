@@ -456,3 +456,79 @@ fn a_tilting_pad_eccentricity_is_over_the_assembled_clearance_and_says_so() {
         .unwrap();
     assert!(described.contains("e/C_b"), "{described}");
 }
+
+/// The elements that are not bearings (issue 48): the unit on brackets with
+/// its field at 2 × nominal at 300 rpm, held off the centre — its guide
+/// bearings', seal's and pull's forces on the rotor at the equilibrium sum to
+/// zero (no lateral gravity, its static forces zero) within 1e-9 of the
+/// pull's; the torque-driven unit's thrust bearing at its speed — the power
+/// loss of Petroff's film plus the fading boundary friction, written out here
+/// from the model's numbers (1e-12); and `rotor operating-point` prints them.
+#[test]
+fn seals_pulls_thrust_bearings_and_forces_have_an_operating_point() {
+    use rotor_bearing::analysis::element_operating_point::{
+        element_operating_points, force_operating_points, thrust_operating_points,
+    };
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let mut model = RotorModel::from_file(&root.join("models/hydro_unit_brackets.toml")).unwrap();
+    for b in &mut model.bearings {
+        b.kind.set_excitation(2.0);
+    }
+    let rotor = Rotor::new(model).unwrap();
+    let speed = 300.0 / RAD_S_TO_RPM;
+    let bearings = operating_point(&rotor, speed).unwrap();
+    let elements = element_operating_points(&rotor, speed).unwrap();
+    let names: Vec<&str> = elements.iter().map(|e| e.name.as_str()).collect();
+    assert_eq!(names, ["runner_seal", "generator"]);
+    let mut sum = [0.0; 2];
+    for f in bearings
+        .iter()
+        .map(|b| b.force)
+        .chain(elements.iter().map(|e| e.force))
+    {
+        sum[0] += f[0];
+        sum[1] += f[1];
+    }
+    let pull = elements[1].force[0].hypot(elements[1].force[1]);
+    assert!(pull > 1e5, "{pull}");
+    assert!(
+        sum[0].hypot(sum[1]) <= 1e-9 * pull,
+        "{sum:?} against {pull}"
+    );
+    let forces = force_operating_points(&rotor, speed);
+    assert_eq!(forces.len(), rotor.model.forces.len());
+
+    let path = root.join("models/hydro_unit_torque.toml");
+    let torque = Rotor::new(RotorModel::from_file(&path).unwrap()).unwrap();
+    let w = torque.model.nominal_speed;
+    let t = &torque.model.thrust_bearings[0].bearing;
+    // T = c π μ ω (R_o⁴ − R_i⁴) / (2 h) + μ_b W R_m φ(ω) e^{−ω/ω_l}.
+    let film = t.coverage
+        * std::f64::consts::PI
+        * t.viscosity
+        * w
+        * (t.outer_radius.powi(4) - t.inner_radius.powi(4))
+        / (2.0 * t.film_thickness);
+    let eps = 1e-3 * t.lift_off_speed;
+    let boundary = if t.oil_lift { 0.0 } else { t.boundary_friction }
+        * t.load
+        * 0.5
+        * (t.inner_radius + t.outer_radius)
+        * (w / (w * w + eps * eps).sqrt())
+        * (-w / t.lift_off_speed).exp();
+    let hand = (film + boundary) * w;
+    let thrust = thrust_operating_points(&torque, w);
+    assert!(
+        (thrust[0].power_loss - hand).abs() <= 1e-12 * hand,
+        "{thrust:?} {hand}"
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["operating-point", path.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains(&format!("power loss {} W", short(hand))),
+        "{stdout}"
+    );
+}

@@ -7,6 +7,7 @@ pub mod alignment;
 pub mod backward_crossing;
 pub mod campbell;
 mod critical_refine;
+pub mod element_operating_point;
 pub mod film_validity;
 pub mod forced;
 pub mod held_equilibrium;

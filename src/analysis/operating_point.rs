@@ -152,7 +152,7 @@ pub struct PedestalOperatingPoint {
 
 /// The static state at `speed`: the displacement on all DOFs and, for a
 /// rotor on nonlinear bearings, its equilibrium.
-fn static_state(
+pub(super) fn static_state(
     rotor: &Rotor,
     speed: f64,
 ) -> Result<(Vec<f64>, Option<Equilibrium>), OperatingPointError> {
@@ -166,7 +166,7 @@ fn static_state(
 }
 
 /// Translation `k` of pedestal `p` in a vector on all DOFs.
-fn pedestal_at(rotor: &Rotor, all: &[f64], p: usize, k: usize) -> f64 {
+pub(super) fn pedestal_at(rotor: &Rotor, all: &[f64], p: usize, k: usize) -> f64 {
     all[rotor.dofs.node_count() * DOF_PER_NODE + p * DOF_PER_PEDESTAL + k]
 }
 

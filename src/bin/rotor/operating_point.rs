@@ -3,6 +3,9 @@
 
 use std::path::PathBuf;
 
+use rotor_bearing::analysis::element_operating_point::{
+    element_operating_points, force_operating_points, thrust_operating_points,
+};
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::plot::RAD_S_TO_RPM;
 use rotor_bearing::report::{csv as report_csv, text};
@@ -34,5 +37,20 @@ pub fn run(
     let pedestals = pedestal_operating_points(rotor, rpm / RAD_S_TO_RPM)
         .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
     print!("{}", text::pedestals(rpm, &pedestals));
+    let speed = rpm / RAD_S_TO_RPM;
+    let elements = element_operating_points(rotor, speed)
+        .map_err(|e| format!("{} at {rpm} rpm: {e}", rotor.model.name))?;
+    print!(
+        "{}",
+        text::element_points(
+            rpm,
+            &rotor.model,
+            (
+                &elements,
+                &thrust_operating_points(rotor, speed),
+                &force_operating_points(rotor, speed),
+            ),
+        )
+    );
     Ok(())
 }

@@ -14,12 +14,14 @@ use crate::model::RotorModel;
 use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
 
+mod element_points;
 mod modal;
 mod ring_down;
 mod summary;
 mod synchronous;
 mod unbalance;
 
+pub use element_points::element_points;
 pub use modal::{
     ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
     overdamped_roots, overdamped_summary, static_divergence, torsional_modes, zeta_and_log_dec,
