@@ -65,6 +65,7 @@ mod inputs;
 mod line_search;
 mod newmark;
 mod newton;
+pub mod observer;
 mod output_memo;
 mod outputs;
 pub mod plausible;
@@ -82,6 +83,7 @@ mod warnings;
 pub mod time_step;
 
 pub use contact_watch::{ContactLimit, ContactWarning};
+pub use observer::{StepFlow, StepObserver};
 pub use outputs::{
     BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput, ThrustOutput, TorqueNodeOutput,
 };
