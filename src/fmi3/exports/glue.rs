@@ -4,6 +4,7 @@
 
 use std::ffi::{CStr, CString};
 use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::sync::Arc;
 
 use fmi_sys::fmi3::*;
 
@@ -12,6 +13,8 @@ use crate::fmu::description::LOG_CATEGORIES;
 use crate::fmu::instance::{Instance, Status};
 use crate::fmu::snapshot::Snapshot;
 use crate::fmu::states::Call;
+
+use super::intermediate::{Updates, refused};
 
 /// The C-side wrapper of an instance.
 pub(super) struct Component {
@@ -22,6 +25,8 @@ pub(super) struct Component {
     pub(super) logger: fmi3LogMessageCallback,
     pub(super) logging_on: bool,
     pub(super) categories: [bool; LOG_CATEGORIES.len()],
+    /// The importer's intermediate updates, when it gave a callback.
+    pub(super) updates: Option<Arc<Updates>>,
 }
 
 pub(super) fn status_code(s: Status) -> fmi3Status {
@@ -87,13 +92,18 @@ impl Component {
     }
 }
 
-/// The component behind `c`; `None` for NULL.
+/// The component behind `c`; `None` for NULL, and for an instance inside
+/// its intermediate-update callback (whose component `fmi3DoStep` holds: the
+/// call is refused with a message, [`super::intermediate`]).
 ///
 /// # Safety
 ///
 /// `c` is NULL or a live component of this library, not in use elsewhere
 /// during `'a` (module contract).
 pub(super) unsafe fn component<'a>(c: fmi3Instance) -> Option<&'a mut Component> {
+    if refused(c as usize, "this function") {
+        return None;
+    }
     // SAFETY: a non-null `c` is the `Box<Component>` pointer
     // fmi3InstantiateCoSimulation returned, not yet freed and not aliased
     // during the call (contract).

@@ -12,8 +12,10 @@ use crate::fmi3::resources;
 use crate::fmu::description::LOG_CATEGORIES;
 use crate::fmu::instance::{Instance, Status};
 use crate::fmu::states::Call;
+use crate::units::Short;
 
 use super::glue::*;
+use super::intermediate::{refused, updates};
 
 const VERSION: &CStr = c"3.0";
 
@@ -33,6 +35,9 @@ struct Request {
     early_return_allowed: bool,
     environment: fmi3InstanceEnvironment,
     logger: fmi3LogMessageCallback,
+    /// `requiredIntermediateVariables` (`None`: NULL with a count above 0).
+    required: Option<Vec<u32>>,
+    intermediate_update: fmi3IntermediateUpdateCallback,
 }
 
 /// The checks and the instance behind `fmi3InstantiateCoSimulation`.
@@ -61,11 +66,29 @@ fn instantiate(r: Request) -> fmi3Instance {
     let Some(dir) = r.resources else {
         return fail(format!("{name}: resourcePath is NULL"));
     };
+    let Some(required) = r.required.as_deref() else {
+        return fail(format!(
+            "{name}: requiredIntermediateVariables is NULL with nRequiredIntermediateVariables > 0"
+        ));
+    };
     let token = r.token.unwrap_or_default();
     match resources::instantiate(&name, &token, &PathBuf::from(dir)) {
         Ok(instance) => {
             let arrays = arrays(instance.variables());
+            let updates = match updates(
+                &instance,
+                &arrays,
+                r.intermediate_update,
+                required,
+                r.early_return_allowed,
+                r.environment,
+                r.logger,
+            ) {
+                Ok(u) => u,
+                Err(e) => return fail(format!("{name}: {e}")),
+            };
             let mut comp = Box::new(Component {
+                updates,
                 arrays,
                 instance,
                 environment: r.environment,
@@ -85,9 +108,11 @@ fn instantiate(r: Request) -> fmi3Instance {
 /// `fmi3InstantiateCoSimulation`: a Co-Simulation instance of the model in
 /// the resources folder (NULL with a logged message on failure). With
 /// `earlyReturnAllowed`, `fmi3DoStep` returns early where a contact begins
-/// (`mightReturnEarlyFromDoStep`); the FMU provides no intermediate updates,
-/// so the required intermediate variables and the intermediate-update
-/// callback are not used.
+/// (`mightReturnEarlyFromDoStep`) and where the intermediate-update callback
+/// asks for it; with a callback, `fmi3DoStep` calls it after every internal
+/// step, and the importer may read the outputs named in
+/// `requiredIntermediateVariables` there (every output when none is named;
+/// [`super::intermediate`]).
 ///
 /// # Safety
 ///
@@ -101,18 +126,23 @@ pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
     loggingOn: fmi3Boolean,
     eventModeUsed: fmi3Boolean,
     earlyReturnAllowed: fmi3Boolean,
-    _requiredIntermediateVariables: *const fmi3ValueReference,
-    _nRequiredIntermediateVariables: usize,
+    requiredIntermediateVariables: *const fmi3ValueReference,
+    nRequiredIntermediateVariables: usize,
     instanceEnvironment: fmi3InstanceEnvironment,
     logMessage: fmi3LogMessageCallback,
-    _intermediateUpdate: fmi3IntermediateUpdateCallback,
+    intermediateUpdate: fmi3IntermediateUpdateCallback,
 ) -> fmi3Instance {
-    // SAFETY: the strings are NULL or NUL-terminated (contract).
-    let (name, token, resources) = unsafe {
+    // SAFETY: the strings are NULL or NUL-terminated, the value references
+    // NULL or `nRequiredIntermediateVariables` elements (contract).
+    let (name, token, resources, required) = unsafe {
         (
             string_from(instanceName),
             string_from(instantiationToken),
             string_from(resourcePath),
+            slice_from(
+                requiredIntermediateVariables,
+                nRequiredIntermediateVariables,
+            ),
         )
     };
     let request = Request {
@@ -124,6 +154,8 @@ pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
         early_return_allowed: earlyReturnAllowed,
         environment: instanceEnvironment,
         logger: logMessage,
+        required: required.map(<[u32]>::to_vec),
+        intermediate_update: intermediateUpdate,
     };
     catch_unwind(AssertUnwindSafe(|| instantiate(request))).unwrap_or(std::ptr::null_mut())
 }
@@ -186,7 +218,7 @@ pub extern "C" fn fmi3InstantiateScheduledExecution(
 /// The importer keeps the safety contract of the `exports` module.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi3FreeInstance(instance: fmi3Instance) {
-    if instance.is_null() {
+    if instance.is_null() || refused(instance as usize, "fmi3FreeInstance") {
         return;
     }
     // SAFETY: `instance` is the `Box<Component>` pointer
@@ -316,9 +348,11 @@ pub unsafe extern "C" fn fmi3Reset(instance: fmi3Instance) -> fmi3Status {
 /// `fmi3DoStep`: the same step as fmi2DoStep. It never asks for event
 /// handling or the end of the simulation; with `earlyReturnAllowed` it
 /// returns early (`earlyReturn = true`) after the first internal step at
-/// which a bearing's or rub's contact begins. The last successful time is
-/// where the simulator stands (the communication point, the early return's
-/// internal time, or where a discarded step stopped).
+/// which a bearing's or rub's contact begins, or where the intermediate-update
+/// callback, called after every internal step when the importer gave one,
+/// asks for it. The last successful time is where the simulator stands (the
+/// communication point, the early return's time, or where a discarded step
+/// stopped).
 ///
 /// # Safety
 ///
@@ -345,13 +379,39 @@ pub unsafe extern "C" fn fmi3DoStep(
             lastSuccessfulTime.as_mut(),
         )
     };
+    let updates = comp.as_ref().and_then(|c| c.updates.clone());
     guarded(comp, |i| {
         let (Some(event), Some(terminate), Some(early), Some(last)) =
             (event, terminate, early, last)
         else {
             return null_argument(i, Call::DoStep);
         };
-        let status = i.do_step(currentCommunicationPoint, communicationStepSize);
+        let (t, h) = (currentCommunicationPoint, communicationStepSize);
+        let status = match &updates {
+            None => i.do_step(t, h),
+            Some(u) => {
+                let mut ignored = None;
+                let me = instance as usize;
+                let mut observer =
+                    |time, values: Option<&[f64]>| u.update(me, time, values, &mut ignored);
+                let status = i.do_step_observed(t, h, &mut observer);
+                match ignored {
+                    Some(at) => {
+                        let text = format!(
+                            "fmi3DoStep: the intermediate update at {} s asked for an early return, but canReturnEarly was false (earlyReturnAllowed = false at instantiation): ignored",
+                            Short(at)
+                        );
+                        i.report(Status::Warning, text);
+                        if status == Status::Ok {
+                            Status::Warning
+                        } else {
+                            status
+                        }
+                    }
+                    None => status,
+                }
+            }
+        };
         *event = false;
         *terminate = false;
         *early = matches!(status, Status::Ok | Status::Warning) && i.early_return_at().is_some();
