@@ -16,6 +16,7 @@ use crate::units::Short;
 
 use super::glue::*;
 use super::intermediate::{refused, updates};
+use crate::fmu::c_abi::{instance_exports, set_debug_logging};
 
 const VERSION: &CStr = c"3.0";
 
@@ -244,42 +245,13 @@ pub unsafe extern "C" fn fmi3SetDebugLogging(
     let Some(comp) = comp else {
         return fmi3Status_fmi3Error;
     };
-    let call = Call::SetDebugLogging;
-    let result = catch_unwind(AssertUnwindSafe(|| {
-        comp.logging_on = loggingOn;
-        if let Err(s) = comp.instance.check(call) {
-            return s;
-        }
-        let Some(list) = list else {
-            return null_argument(&mut comp.instance, call);
-        };
-        if list.is_empty() {
-            comp.categories = [true; LOG_CATEGORIES.len()];
-            return Status::Ok;
-        }
-        let mut enabled = [false; LOG_CATEGORIES.len()];
-        for &p in list {
+    let names = list.map(|list| {
+        list.iter()
             // SAFETY: each entry is NULL or NUL-terminated (contract).
-            let Some(name) = (unsafe { string_from(p) }) else {
-                return null_argument(&mut comp.instance, call);
-            };
-            match LOG_CATEGORIES.iter().position(|(c, _)| *c == name) {
-                Some(i) => enabled[i] = true,
-                None => {
-                    return comp.instance.report(
-                        Status::Error,
-                        format!("fmi3SetDebugLogging: unknown log category {name:?}"),
-                    );
-                }
-            }
-        }
-        comp.categories = enabled;
-        Status::Ok
-    }));
-    let status = result.unwrap_or(Status::Fatal);
-    comp.sync_step_statistics();
-    comp.flush();
-    status_code(status)
+            .map(|&p| unsafe { string_from(p) })
+            .collect()
+    });
+    status_code(set_debug_logging(comp, loggingOn, names))
 }
 
 /// `fmi3EnterInitializationMode`: the start and stop times (FMI 2.0's
@@ -308,42 +280,17 @@ pub unsafe extern "C" fn fmi3EnterInitializationMode(
     })
 }
 
-/// `fmi3ExitInitializationMode`: the rotor settles in static equilibrium;
-/// Step Mode follows (no event mode).
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi3ExitInitializationMode(instance: fmi3Instance) -> fmi3Status {
-    // SAFETY: `instance` is NULL or live (contract).
-    let comp = unsafe { component(instance) };
-    guarded(comp, Instance::exit_initialization_mode)
-}
-
-/// `fmi3Terminate`.
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi3Terminate(instance: fmi3Instance) -> fmi3Status {
-    // SAFETY: `instance` is NULL or live (contract).
-    let comp = unsafe { component(instance) };
-    guarded(comp, Instance::terminate)
-}
-
-/// `fmi3Reset`.
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi3Reset(instance: fmi3Instance) -> fmi3Status {
-    // SAFETY: `instance` is NULL or live (contract).
-    let comp = unsafe { component(instance) };
-    guarded(comp, Instance::reset)
-}
+instance_exports!(
+    instance: fmi3Instance,
+    status: fmi3Status;
+    /// `fmi3ExitInitializationMode`: the rotor settles in static equilibrium;
+    /// Step Mode follows (no event mode).
+    fmi3ExitInitializationMode => Instance::exit_initialization_mode;
+    /// `fmi3Terminate`.
+    fmi3Terminate => Instance::terminate;
+    /// `fmi3Reset`.
+    fmi3Reset => Instance::reset;
+);
 
 /// `fmi3DoStep`: the same step as fmi2DoStep. It never asks for event
 /// handling or the end of the simulation; with `earlyReturnAllowed` it
