@@ -18,6 +18,7 @@
 //! instance answers fmi3Error with a message (checked by address in
 //! `component` and `fmi3FreeInstance`, before any reference is made).
 
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex, MutexGuard};
 
 use fmi_sys::fmi3::*;
@@ -141,11 +142,28 @@ struct Window {
 /// Every window open now (one per instance inside its callback).
 static WINDOWS: Mutex<Vec<Window>> = Mutex::new(Vec::new());
 
+/// How many windows are open: the calls of an FMU without one (nearly all)
+/// skip the lock.
+static OPEN: AtomicUsize = AtomicUsize::new(0);
+
 fn windows() -> MutexGuard<'static, Vec<Window>> {
     WINDOWS.lock().unwrap_or_else(|e| e.into_inner())
 }
 
 impl Updates {
+    /// Log `text` as an error (always sent) to the importer's logger (called
+    /// with no window list held: the logger may call the FMU).
+    fn error(&self, text: &str) {
+        log_to(
+            self.logger,
+            self.environment as fmi3InstanceEnvironment,
+            true,
+            Status::Error,
+            "logStatusError",
+            text,
+        );
+    }
+
     /// The callback for the internal step at `time` of the instance at
     /// address `instance`, with the table's values there: what it asks of
     /// the step. A request for an early return is honoured when
@@ -164,6 +182,7 @@ impl Updates {
             time,
             values: values.map(<[f64]>::to_vec),
         });
+        OPEN.fetch_add(1, Ordering::SeqCst);
         let (mut requested, mut at) = (false, time);
         let environment = self.environment as fmi3InstanceEnvironment;
         // SAFETY: the importer's callback, callable while the instance lives
@@ -183,6 +202,7 @@ impl Updates {
         let mut open = windows();
         if let Some(k) = open.iter().rposition(|w| w.instance == instance) {
             open.remove(k);
+            OPEN.fetch_sub(1, Ordering::SeqCst);
         }
         drop(open);
         match (requested, self.can_return_early) {
@@ -201,25 +221,20 @@ impl Updates {
 /// Whether the instance at `instance` is in Intermediate Update Mode; if so,
 /// `call` is refused with fmi3Error and a message to its logger.
 pub(super) fn refused(instance: usize, call: &str) -> bool {
+    if OPEN.load(Ordering::SeqCst) == 0 {
+        return false;
+    }
     let open = windows();
     let Some(w) = open.iter().rev().find(|w| w.instance == instance) else {
         return false;
     };
-    let (logger, environment) = (w.updates.logger, w.updates.environment);
+    let updates = Arc::clone(&w.updates);
     let time = w.time;
     drop(open);
-    let text = format!(
+    updates.error(&format!(
         "{call}: not allowed in Intermediate Update Mode (inside the intermediateUpdate callback at {} s); only fmi3GetFloat64 of the intermediate variables is",
         Short(time)
-    );
-    log_to(
-        logger,
-        environment as fmi3InstanceEnvironment,
-        true,
-        Status::Error,
-        "logStatusError",
-        &text,
-    );
+    ));
     true
 }
 
@@ -232,24 +247,20 @@ pub(super) fn get_float64(
     out: Option<&mut [f64]>,
     n_values: usize,
 ) -> Option<fmi3Status> {
+    if OPEN.load(Ordering::SeqCst) == 0 {
+        return None;
+    }
     let open = windows();
     let w = open.iter().rev().find(|w| w.instance == instance)?;
-    let u = &w.updates;
-    let (logger, environment) = (u.logger, u.environment);
+    let updates = Arc::clone(&w.updates);
     let result = read(w, refs, out, n_values);
     drop(open);
     Some(match result {
         Ok(()) => fmi3Status_fmi3OK,
         Err(text) => {
-            let text = format!("fmi3GetFloat64 (Intermediate Update Mode): {text}");
-            log_to(
-                logger,
-                environment as fmi3InstanceEnvironment,
-                true,
-                Status::Error,
-                "logStatusError",
-                &text,
-            );
+            updates.error(&format!(
+                "fmi3GetFloat64 (Intermediate Update Mode): {text}"
+            ));
             fmi3Status_fmi3Error
         }
     })
