@@ -16,13 +16,21 @@
 //!   non-finite set value, a step that is not positive, a corrupted state, a
 //!   NULL argument and the functions the FMU does not provide return fmi3Error;
 //! - a step that succeeds ends at its communication point, or earlier (in
-//!   the step) only when early return was allowed and it says so.
+//!   the step) only when early return was allowed and it says so;
+//! - half the sequences instantiate with an `intermediateUpdate` callback
+//!   ([`Updates`]): its times increase inside the step, up to its end, with
+//!   set requested false and step finished true; in it, an output read gives
+//!   fmi3OK and a finite value (or fmi3Error), a read of any other variable
+//!   and every other call (a step, a set, terminate, reset, an FMU state,
+//!   free) fmi3Error; it asks for early returns at random times (the
+//!   internal step's, NaN, ±infinity, the step's start, middle and end).
 //!
 //! A crash or hang is seen by the parent. Exit code 1 with the seed and the
 //! call log on the first violation.
 
 #![allow(non_snake_case)]
 
+use std::cell::{Cell, RefCell};
 use std::ffi::{CString, c_void};
 use std::path::Path;
 use std::ptr::{null, null_mut};
@@ -94,6 +102,134 @@ unsafe extern "C" fn logger(
 ) {
 }
 
+/// The importer's side of one sequence's intermediate updates (the
+/// environment of its callback and logger): what it reads and calls from
+/// inside the step, and what broke the rules there.
+struct Updates {
+    lib: *const Fmi3Binding,
+    instance: Cell<fmi3Instance>,
+    /// The callback's own random stream (SplitMix64 state).
+    rng: Cell<u64>,
+    /// Scalar Float64 outputs, and the other variables.
+    outputs: Vec<u32>,
+    others: Vec<u32>,
+    /// The step's start and end, and the last update's time in it.
+    window: Cell<(f64, f64, f64)>,
+    calls: Cell<usize>,
+    violations: RefCell<Vec<String>>,
+}
+
+impl Updates {
+    fn below(&self, n: usize) -> usize {
+        let mut r = Rng(self.rng.get());
+        let x = r.next();
+        self.rng.set(r.0);
+        (x % n as u64) as usize
+    }
+
+    fn bad(&self, why: String) {
+        self.violations.borrow_mut().push(why);
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+unsafe extern "C" fn intermediate_update(
+    env: fmi3InstanceEnvironment,
+    time: fmi3Float64,
+    set_requested: fmi3Boolean,
+    get_allowed: fmi3Boolean,
+    step_finished: fmi3Boolean,
+    _can_return_early: fmi3Boolean,
+    early_return_requested: *mut fmi3Boolean,
+    early_return_time: *mut fmi3Float64,
+) {
+    // SAFETY: the environment is the sequence's `Updates`, alive while its
+    // instance is; the fuzzer's library outlives every instance; the
+    // out-parameters point to the FMU's writable locals.
+    let (u, lib, requested, at) = unsafe {
+        let u = &*env.cast::<Updates>();
+        (
+            u,
+            &*u.lib,
+            &mut *early_return_requested,
+            &mut *early_return_time,
+        )
+    };
+    let i = u.instance.get();
+    u.calls.set(u.calls.get() + 1);
+    let (start, end, last) = u.window.get();
+    if !(time > last && time > start && time <= end) || set_requested || !step_finished {
+        u.bad(format!(
+            "intermediate update at {time} after {last} in ({start}, {end}], set requested {set_requested}, finished {step_finished}"
+        ));
+    }
+    u.window.set((start, end, time));
+    let mut one = [f64::NAN];
+    match u.below(8) {
+        0..=2 if !u.outputs.is_empty() => {
+            let vr = u.outputs[u.below(u.outputs.len())];
+            // SAFETY: a live instance, one reference, one value.
+            let s = unsafe { lib.fmi3GetFloat64(i, &vr, 1, one.as_mut_ptr(), 1) };
+            let fine = (s == fmi3Status_fmi3OK && one[0].is_finite())
+                || s == fmi3Status_fmi3Error
+                || !get_allowed;
+            if !fine {
+                u.bad(format!(
+                    "intermediate read of output {vr}: status {s}, value {}",
+                    one[0]
+                ));
+            }
+        }
+        3 if !u.others.is_empty() => {
+            let vr = u.others[u.below(u.others.len())];
+            // SAFETY: a live instance, one reference, one value.
+            let s = unsafe { lib.fmi3GetFloat64(i, &vr, 1, one.as_mut_ptr(), 1) };
+            if s != fmi3Status_fmi3Error {
+                u.bad(format!("intermediate read of non-output {vr}: status {s}"));
+            }
+        }
+        4 | 5 => {
+            let (mut e, mut t, mut r, mut l) = (false, false, false, 0.0);
+            let mut state: fmi3FMUState = null_mut();
+            let which = u.below(6);
+            // SAFETY: a live instance, writable out-parameters; each call
+            // must be refused without touching the instance.
+            let s = unsafe {
+                match which {
+                    0 => lib.fmi3DoStep(i, time, 1e-3, false, &mut e, &mut t, &mut r, &mut l),
+                    1 => lib.fmi3SetFloat64(i, &0, 1, &1.0, 1),
+                    2 => lib.fmi3Terminate(i),
+                    3 => lib.fmi3Reset(i),
+                    4 => lib.fmi3GetFMUState(i, &mut state),
+                    _ => {
+                        lib.fmi3FreeInstance(i);
+                        fmi3Status_fmi3Error
+                    }
+                }
+            };
+            if s != fmi3Status_fmi3Error || !state.is_null() {
+                u.bad(format!(
+                    "call {which} inside the intermediate update: status {s}"
+                ));
+            }
+        }
+        _ => {}
+    }
+    if u.below(6) == 0 {
+        *requested = true;
+        *at = [
+            time,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            start,
+            0.5 * (time + end),
+            end,
+            time + 1e-12,
+        ][u.below(8)];
+    }
+}
+
 /// Where the importer believes the instance is.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Phase {
@@ -119,6 +255,8 @@ struct Fuzz<'a> {
     early_returns: usize,
     /// Whether this sequence runs a rub ([`Fuzz::rub`]): it then mostly steps.
     rubbing: bool,
+    /// The intermediate updates, when the sequence asked for them.
+    updates: Option<&'a Updates>,
 }
 
 impl Fuzz<'_> {
@@ -261,6 +399,9 @@ impl Fuzz<'_> {
             self.time
         };
         let (mut event, mut terminate, mut early, mut last) = (false, false, false, f64::NAN);
+        if let Some(u) = self.updates {
+            u.window.set((t, t + h, t));
+        }
         // SAFETY: a live instance, writable out-parameters.
         let s = unsafe {
             self.lib.fmi3DoStep(
@@ -275,6 +416,12 @@ impl Fuzz<'_> {
             )
         };
         let call = format!("doStep({t}, {h})");
+        if let Some(u) = self.updates {
+            let violations = u.violations.take();
+            if !violations.is_empty() {
+                return Err(format!("{call}: {}", violations.join("; ")));
+            }
+        }
         if self.phase != Phase::Step || !(h.is_finite() && h > 0.0) || h < 1e-8 || t != self.time {
             return self.expect_error(call, s);
         }
@@ -521,7 +668,29 @@ fn main() {
         // a call: start from a mixed state so that sequences are unrelated.
         let mut rng = Rng(Rng(seed).next());
         let early_allowed = rng.chance(0.5);
-        // SAFETY: NUL-terminated strings, a logger that stays callable.
+        let updates = rng.chance(0.5).then(|| Updates {
+            lib: &lib,
+            instance: Cell::new(null_mut()),
+            rng: Cell::new(rng.next()),
+            outputs: vars
+                .iter()
+                .filter(|v| v.causality == "output" && v.kind == "Float64")
+                .map(|v| v.vr)
+                .collect(),
+            others: vars
+                .iter()
+                .filter(|v| v.causality != "output")
+                .map(|v| v.vr)
+                .collect(),
+            window: Cell::new((0.0, 0.0, 0.0)),
+            calls: Cell::new(0),
+            violations: RefCell::new(Vec::new()),
+        });
+        let env = updates.as_ref().map_or(null_mut(), |u| {
+            (u as *const Updates).cast_mut().cast::<c_void>()
+        });
+        // SAFETY: NUL-terminated strings, a logger that stays callable, the
+        // callback's environment alive while the instance is.
         let i = unsafe {
             lib.fmi3InstantiateCoSimulation(
                 name.as_ptr(),
@@ -533,9 +702,9 @@ fn main() {
                 early_allowed,
                 null(),
                 0,
-                null_mut::<c_void>(),
+                env,
                 Some(logger),
-                None,
+                updates.as_ref().map(|_| intermediate_update as _),
             )
         };
         if i.is_null() {
@@ -554,7 +723,11 @@ fn main() {
             steps: 0,
             early_returns: 0,
             rubbing: false,
+            updates: updates.as_ref(),
         };
+        if let Some(u) = &updates {
+            u.instance.set(i);
+        }
         if fuzz.rng.chance(0.3)
             && let Err(why) = fuzz.rub()
         {
@@ -567,7 +740,11 @@ fn main() {
                 std::process::exit(1);
             }
         }
-        println!("steps {} early {}", fuzz.steps, fuzz.early_returns);
+        let calls = updates.as_ref().map_or(0, |u| u.calls.get());
+        println!(
+            "steps {} early {} updates {calls}",
+            fuzz.steps, fuzz.early_returns
+        );
         if std::env::var_os("ROTOR_FUZZ_TRACE").is_some() {
             println!("{}", fuzz.log.join("\n"));
         }

@@ -7,6 +7,7 @@
 //! `target/debug/examples/fmu3_fuzz DIR SEED 1` (`ROTOR_FUZZ_TRACE=1` prints
 //! the calls).
 
+use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
@@ -61,34 +62,57 @@ fn random_fmi3_call_sequences_neither_crash_nor_break_the_rules() {
             .stderr(Stdio::piped())
             .spawn()
             .unwrap();
+        // Read both pipes while the child runs: a child that fills a pipe
+        // the parent does not drain blocks (2000 sequences print ~80 kB).
+        let drain = |pipe: Option<Box<dyn Read + Send>>| {
+            std::thread::spawn(move || {
+                let mut text = String::new();
+                if let Some(mut pipe) = pipe {
+                    let _ = pipe.read_to_string(&mut text);
+                }
+                text
+            })
+        };
+        let stdout = drain(child.stdout.take().map(|p| Box::new(p) as _));
+        let stderr = drain(child.stderr.take().map(|p| Box::new(p) as _));
         let start = Instant::now();
-        while child.try_wait().unwrap().is_none() {
+        let status = loop {
+            if let Some(status) = child.try_wait().unwrap() {
+                break status;
+            }
             if start.elapsed() > Duration::from_secs(600) {
                 let _ = child.kill();
+                let _ = child.wait();
                 panic!("{stem}: the fuzzer hangs (over 600 s)");
             }
             std::thread::sleep(Duration::from_millis(20));
-        }
-        let out = child.wait_with_output().unwrap();
-        let stdout = String::from_utf8_lossy(&out.stdout);
-        let stderr = String::from_utf8_lossy(&out.stderr);
+        };
+        let (stdout, stderr) = (stdout.join().unwrap(), stderr.join().unwrap());
         assert!(
-            out.status.success(),
+            status.success(),
             "{stem}: {} (last: {:?})\n{stderr}",
-            out.status,
+            status,
             stdout.lines().rev().find(|l| l.starts_with("seed"))
         );
-        let (mut steps, mut early) = (0usize, 0usize);
+        let (mut steps, mut early, mut updates) = (0usize, 0usize, 0usize);
         for line in stdout.lines() {
             let words: Vec<&str> = line.split_whitespace().collect();
-            if let ["steps", s, "early", e] = words.as_slice() {
+            if let ["steps", s, "early", e, "updates", u] = words.as_slice() {
                 steps += s.parse::<usize>().unwrap();
                 early += e.parse::<usize>().unwrap();
+                updates += u.parse::<usize>().unwrap();
             }
         }
-        eprintln!("{stem}: {count} sequences, {steps} steps, {early} early returns, no violation");
-        // The sequences reach Step Mode and step; the Jeffcott rub returns early.
+        eprintln!(
+            "{stem}: {count} sequences, {steps} steps, {early} early returns, {updates} intermediate updates, no violation"
+        );
+        // The sequences reach Step Mode and step, half of them with
+        // intermediate updates; the Jeffcott rub returns early.
         assert!(steps > count as usize, "{stem}: only {steps} steps");
+        assert!(
+            updates > count as usize,
+            "{stem}: only {updates} intermediate updates"
+        );
         if stem == "jeffcott" {
             assert!(early > 0, "no early return among the Jeffcott rubs");
         }

@@ -4,7 +4,9 @@
 //! independent variable `time` FMI 3.0 requires (§2.4.7.4), under
 //! [`TIME_VALUE_REFERENCE`]. Causality, variability and `initial` are FMI
 //! 2.0's (they mean the same in FMI 3.0); `<ModelStructure>` names unknowns by
-//! value reference (`<Output>`, `<InitialUnknown>`).
+//! value reference (`<Output>`, `<InitialUnknown>`). Every output (and output
+//! array) has `intermediateUpdate = "true"`: the importer may read it in
+//! Intermediate Update Mode (`providesIntermediateUpdate`).
 
 use quick_xml::Writer;
 use quick_xml::events::{BytesDecl, BytesEnd, BytesStart, Event};
@@ -51,9 +53,9 @@ const CO_SIMULATION: [(&str, &str); 16] = [
     ("canHandleVariableCommunicationStepSize", "true"),
     ("maxOutputDerivativeOrder", "0"),
     ("recommendedIntermediateInputSmoothness", "0"),
-    ("providesIntermediateUpdate", "false"),
+    ("providesIntermediateUpdate", "true"),
     ("mightReturnEarlyFromDoStep", "true"),
-    ("canReturnEarlyAfterIntermediateUpdate", "false"),
+    ("canReturnEarlyAfterIntermediateUpdate", "true"),
     ("hasEventMode", "false"),
     ("providesEvaluateDiscreteStates", "false"),
 ];
@@ -186,6 +188,9 @@ fn array(a: &Array, vars: &[Variable]) -> BytesStart<'static> {
     ));
     if !inputs {
         t.push_attribute(("initial", "calculated"));
+        // Readable in Intermediate Update Mode (outputs only: inputs are held
+        // over a step).
+        t.push_attribute(("intermediateUpdate", "true"));
     }
     if let Some(u) = a.unit {
         t.push_attribute(("unit", u));
@@ -230,7 +235,12 @@ fn variable(v: &Variable) -> BytesStart<'static> {
     ));
     match v.causality {
         Causality::Parameter => t.push_attribute(("initial", "exact")),
-        Causality::Output => t.push_attribute(("initial", "calculated")),
+        Causality::Output => {
+            t.push_attribute(("initial", "calculated"));
+            // Readable in Intermediate Update Mode (outputs only: inputs are
+            // held over a step).
+            t.push_attribute(("intermediateUpdate", "true"));
+        }
         Causality::Input => {}
     }
     // Units belong to floats in FMI 3.0 (`<Int32>` and `<Boolean>` have none).

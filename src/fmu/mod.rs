@@ -14,12 +14,15 @@
 //! - [`snapshot`]: the FMU state and its versioned, checksummed byte image;
 //! - [`resources`]: the model in the FMU's resources folder, named by a
 //!   `file` URI (decoding, loading, checking the token);
-//! - [`docs`]: `documentation/index.html`, from the same table.
+//! - [`docs`]: `documentation/index.html`, from the same table;
+//! - `c_abi`: what the two C ABIs share (pointer helpers, the FMU-state
+//!   exports written once for both versions' names).
 //!
 //! The version layers translate: `crate::fmi2` (FMI 2.0: its model description
 //! and the `fmi2*` C exports) and `crate::fmi3` (FMI 3.0: the same for
 //! `fmi3*`), each building its [`instance::Instance`] with its own token.
 
+pub(crate) mod c_abi;
 pub mod description;
 pub mod docs;
 pub mod instance;

@@ -40,6 +40,7 @@ use crate::fe::{DOF_X, DOF_Y};
 use crate::rotor::Rotor;
 use crate::units::Short;
 
+use super::observer::{StepFlow, StepObserver};
 use super::simulator::{Simulator, SolverError, SolverOptions};
 use super::state::SimState;
 
@@ -187,7 +188,11 @@ impl Simulator {
 
     /// Advance to `t_end` (checked by [`Simulator::advance_to`]) in steps sized
     /// by the local error estimate (module docs).
-    pub(super) fn advance_adaptive(&mut self, t_end: f64) -> Result<(), SolverError> {
+    pub(super) fn advance_adaptive(
+        &mut self,
+        t_end: f64,
+        mut observer: Option<StepObserver<'_>>,
+    ) -> Result<(), SolverError> {
         let tol = self.options.local_error_tolerance;
         let largest = self.options.time_step;
         let smallest =
@@ -270,7 +275,9 @@ impl Simulator {
                 proposal = proposal.min(h * allowed).max(smallest);
             }
             self.state.step_proposal = proposal;
-            if !last && self.contact_began_now() {
+            let began = !last && self.contact_began_now();
+            let flow = self.observe(&mut observer);
+            if began || (!last && flow == StepFlow::Stop) {
                 return Ok(());
             }
         }

@@ -65,6 +65,7 @@ mod inputs;
 mod line_search;
 mod newmark;
 mod newton;
+pub mod observer;
 pub mod offset_continuation;
 mod output_memo;
 mod outputs;
@@ -84,6 +85,7 @@ pub mod time_step;
 
 pub use contact_watch::{ContactLimit, ContactWarning};
 pub use offset_continuation::line_equilibrium;
+pub use observer::{StepFlow, StepObserver};
 pub use outputs::{
     BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput, ThrustOutput, TorqueNodeOutput,
 };

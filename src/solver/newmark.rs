@@ -7,6 +7,7 @@ use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
 use crate::units::{RAD_S_TO_RPM, Short};
 
+use super::observer::{StepFlow, StepObserver};
 use super::simulator::{Simulator, SolverError, SolverOptions, inf_norm};
 
 /// Where the displacement of a step comes from when its rates are formed.
@@ -253,6 +254,16 @@ impl Simulator {
     /// configured time step; a span shorter than [`SolverOptions::MIN_SPAN`]
     /// is refused.
     pub fn advance_to(&mut self, t_end: f64) -> Result<(), SolverError> {
+        self.advance(t_end, None)
+    }
+
+    /// [`Simulator::advance_to`], with the observer of each internal step
+    /// when there is one ([`super::observer`]).
+    pub(super) fn advance(
+        &mut self,
+        t_end: f64,
+        mut observer: Option<StepObserver<'_>>,
+    ) -> Result<(), SolverError> {
         if !t_end.is_finite() {
             return Err(SolverError::Input(format!(
                 "target time {} is not finite",
@@ -309,16 +320,20 @@ impl Simulator {
             .check_tables(&self.rotor, warned, end_speed, t_end);
         self.contact_onset_start();
         if self.options.local_error_tolerance > 0.0 {
-            return self.advance_adaptive(t_end);
+            return self.advance_adaptive(t_end, observer);
         }
         let count = steps as usize;
         let h = span / count as f64;
         let cuts_before = self.stats.step_cuts;
         for k in 0..count {
             self.step_with_cuts(h, 0)?;
-            if k + 1 == count {
+            let last = k + 1 == count;
+            if last {
                 self.state.time = t_end;
-            } else if self.contact_began_now() {
+            }
+            let began = !last && self.contact_began_now();
+            let flow = self.observe(&mut observer);
+            if began || (!last && flow == StepFlow::Stop) {
                 return Ok(());
             }
             let cuts = self.stats.step_cuts - cuts_before;

@@ -12,6 +12,7 @@ use crate::fmu::instance::{Instance, Status};
 use crate::fmu::states::Call;
 
 use super::glue::*;
+use crate::fmu::c_abi::{instance_exports, set_debug_logging};
 
 const TYPES_PLATFORM: &CStr = c"default";
 const VERSION: &CStr = c"2.0";
@@ -146,42 +147,13 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
     let Some(comp) = comp else {
         return fmi2Status_fmi2Error;
     };
-    let call = Call::SetDebugLogging;
-    let result = catch_unwind(AssertUnwindSafe(|| {
-        comp.logging_on = loggingOn != 0;
-        if let Err(s) = comp.instance.check(call) {
-            return s;
-        }
-        let Some(list) = list else {
-            return null_argument(&mut comp.instance, call);
-        };
-        if list.is_empty() {
-            comp.categories = [true; LOG_CATEGORIES.len()];
-            return Status::Ok;
-        }
-        let mut enabled = [false; LOG_CATEGORIES.len()];
-        for &p in list {
+    let names = list.map(|list| {
+        list.iter()
             // SAFETY: each entry is NULL or NUL-terminated (contract).
-            let Some(name) = (unsafe { string_from(p) }) else {
-                return null_argument(&mut comp.instance, call);
-            };
-            match LOG_CATEGORIES.iter().position(|(c, _)| *c == name) {
-                Some(i) => enabled[i] = true,
-                None => {
-                    return comp.instance.report(
-                        Status::Error,
-                        format!("fmi2SetDebugLogging: unknown log category {name:?}"),
-                    );
-                }
-            }
-        }
-        comp.categories = enabled;
-        Status::Ok
-    }));
-    let status = result.unwrap_or(Status::Fatal);
-    comp.sync_step_statistics();
-    comp.flush();
-    status_code(status)
+            .map(|&p| unsafe { string_from(p) })
+            .collect()
+    });
+    status_code(set_debug_logging(comp, loggingOn != 0, names))
 }
 
 /// `fmi2SetupExperiment`.
@@ -205,53 +177,18 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
     })
 }
 
-/// `fmi2EnterInitializationMode`.
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi2EnterInitializationMode(c: fmi2Component) -> fmi2Status {
-    // SAFETY: `c` is NULL or live (contract).
-    let comp = unsafe { component(c) };
-    guarded(comp, Instance::enter_initialization_mode)
-}
-
-/// `fmi2ExitInitializationMode`.
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi2ExitInitializationMode(c: fmi2Component) -> fmi2Status {
-    // SAFETY: `c` is NULL or live (contract).
-    let comp = unsafe { component(c) };
-    guarded(comp, Instance::exit_initialization_mode)
-}
-
-/// `fmi2Terminate`.
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi2Terminate(c: fmi2Component) -> fmi2Status {
-    // SAFETY: `c` is NULL or live (contract).
-    let comp = unsafe { component(c) };
-    guarded(comp, Instance::terminate)
-}
-
-/// `fmi2Reset`.
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi2Reset(c: fmi2Component) -> fmi2Status {
-    // SAFETY: `c` is NULL or live (contract).
-    let comp = unsafe { component(c) };
-    guarded(comp, Instance::reset)
-}
+instance_exports!(
+    instance: fmi2Component,
+    status: fmi2Status;
+    /// `fmi2EnterInitializationMode`.
+    fmi2EnterInitializationMode => Instance::enter_initialization_mode;
+    /// `fmi2ExitInitializationMode`.
+    fmi2ExitInitializationMode => Instance::exit_initialization_mode;
+    /// `fmi2Terminate`.
+    fmi2Terminate => Instance::terminate;
+    /// `fmi2Reset`.
+    fmi2Reset => Instance::reset;
+);
 
 /// `fmi2DoStep`.
 ///

@@ -12,8 +12,11 @@ use crate::fmi3::resources;
 use crate::fmu::description::LOG_CATEGORIES;
 use crate::fmu::instance::{Instance, Status};
 use crate::fmu::states::Call;
+use crate::units::Short;
 
 use super::glue::*;
+use super::intermediate::{refused, updates};
+use crate::fmu::c_abi::{instance_exports, set_debug_logging};
 
 const VERSION: &CStr = c"3.0";
 
@@ -33,6 +36,9 @@ struct Request {
     early_return_allowed: bool,
     environment: fmi3InstanceEnvironment,
     logger: fmi3LogMessageCallback,
+    /// `requiredIntermediateVariables` (`None`: NULL with a count above 0).
+    required: Option<Vec<u32>>,
+    intermediate_update: fmi3IntermediateUpdateCallback,
 }
 
 /// The checks and the instance behind `fmi3InstantiateCoSimulation`.
@@ -61,11 +67,29 @@ fn instantiate(r: Request) -> fmi3Instance {
     let Some(dir) = r.resources else {
         return fail(format!("{name}: resourcePath is NULL"));
     };
+    let Some(required) = r.required.as_deref() else {
+        return fail(format!(
+            "{name}: requiredIntermediateVariables is NULL with nRequiredIntermediateVariables > 0"
+        ));
+    };
     let token = r.token.unwrap_or_default();
     match resources::instantiate(&name, &token, &PathBuf::from(dir)) {
         Ok(instance) => {
             let arrays = arrays(instance.variables());
+            let updates = match updates(
+                &instance,
+                &arrays,
+                r.intermediate_update,
+                required,
+                r.early_return_allowed,
+                r.environment,
+                r.logger,
+            ) {
+                Ok(u) => u,
+                Err(e) => return fail(format!("{name}: {e}")),
+            };
             let mut comp = Box::new(Component {
+                updates,
                 arrays,
                 instance,
                 environment: r.environment,
@@ -85,9 +109,11 @@ fn instantiate(r: Request) -> fmi3Instance {
 /// `fmi3InstantiateCoSimulation`: a Co-Simulation instance of the model in
 /// the resources folder (NULL with a logged message on failure). With
 /// `earlyReturnAllowed`, `fmi3DoStep` returns early where a contact begins
-/// (`mightReturnEarlyFromDoStep`); the FMU provides no intermediate updates,
-/// so the required intermediate variables and the intermediate-update
-/// callback are not used.
+/// (`mightReturnEarlyFromDoStep`) and where the intermediate-update callback
+/// asks for it; with a callback, `fmi3DoStep` calls it after every internal
+/// step, and the importer may read the outputs named in
+/// `requiredIntermediateVariables` there (every output when none is named;
+/// [`super::intermediate`]).
 ///
 /// # Safety
 ///
@@ -101,18 +127,23 @@ pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
     loggingOn: fmi3Boolean,
     eventModeUsed: fmi3Boolean,
     earlyReturnAllowed: fmi3Boolean,
-    _requiredIntermediateVariables: *const fmi3ValueReference,
-    _nRequiredIntermediateVariables: usize,
+    requiredIntermediateVariables: *const fmi3ValueReference,
+    nRequiredIntermediateVariables: usize,
     instanceEnvironment: fmi3InstanceEnvironment,
     logMessage: fmi3LogMessageCallback,
-    _intermediateUpdate: fmi3IntermediateUpdateCallback,
+    intermediateUpdate: fmi3IntermediateUpdateCallback,
 ) -> fmi3Instance {
-    // SAFETY: the strings are NULL or NUL-terminated (contract).
-    let (name, token, resources) = unsafe {
+    // SAFETY: the strings are NULL or NUL-terminated, the value references
+    // NULL or `nRequiredIntermediateVariables` elements (contract).
+    let (name, token, resources, required) = unsafe {
         (
             string_from(instanceName),
             string_from(instantiationToken),
             string_from(resourcePath),
+            slice_from(
+                requiredIntermediateVariables,
+                nRequiredIntermediateVariables,
+            ),
         )
     };
     let request = Request {
@@ -124,6 +155,8 @@ pub unsafe extern "C" fn fmi3InstantiateCoSimulation(
         early_return_allowed: earlyReturnAllowed,
         environment: instanceEnvironment,
         logger: logMessage,
+        required: required.map(<[u32]>::to_vec),
+        intermediate_update: intermediateUpdate,
     };
     catch_unwind(AssertUnwindSafe(|| instantiate(request))).unwrap_or(std::ptr::null_mut())
 }
@@ -186,7 +219,7 @@ pub extern "C" fn fmi3InstantiateScheduledExecution(
 /// The importer keeps the safety contract of the `exports` module.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn fmi3FreeInstance(instance: fmi3Instance) {
-    if instance.is_null() {
+    if instance.is_null() || refused(instance as usize, "fmi3FreeInstance") {
         return;
     }
     // SAFETY: `instance` is the `Box<Component>` pointer
@@ -212,42 +245,13 @@ pub unsafe extern "C" fn fmi3SetDebugLogging(
     let Some(comp) = comp else {
         return fmi3Status_fmi3Error;
     };
-    let call = Call::SetDebugLogging;
-    let result = catch_unwind(AssertUnwindSafe(|| {
-        comp.logging_on = loggingOn;
-        if let Err(s) = comp.instance.check(call) {
-            return s;
-        }
-        let Some(list) = list else {
-            return null_argument(&mut comp.instance, call);
-        };
-        if list.is_empty() {
-            comp.categories = [true; LOG_CATEGORIES.len()];
-            return Status::Ok;
-        }
-        let mut enabled = [false; LOG_CATEGORIES.len()];
-        for &p in list {
+    let names = list.map(|list| {
+        list.iter()
             // SAFETY: each entry is NULL or NUL-terminated (contract).
-            let Some(name) = (unsafe { string_from(p) }) else {
-                return null_argument(&mut comp.instance, call);
-            };
-            match LOG_CATEGORIES.iter().position(|(c, _)| *c == name) {
-                Some(i) => enabled[i] = true,
-                None => {
-                    return comp.instance.report(
-                        Status::Error,
-                        format!("fmi3SetDebugLogging: unknown log category {name:?}"),
-                    );
-                }
-            }
-        }
-        comp.categories = enabled;
-        Status::Ok
-    }));
-    let status = result.unwrap_or(Status::Fatal);
-    comp.sync_step_statistics();
-    comp.flush();
-    status_code(status)
+            .map(|&p| unsafe { string_from(p) })
+            .collect()
+    });
+    status_code(set_debug_logging(comp, loggingOn, names))
 }
 
 /// `fmi3EnterInitializationMode`: the start and stop times (FMI 2.0's
@@ -276,49 +280,26 @@ pub unsafe extern "C" fn fmi3EnterInitializationMode(
     })
 }
 
-/// `fmi3ExitInitializationMode`: the rotor settles in static equilibrium;
-/// Step Mode follows (no event mode).
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi3ExitInitializationMode(instance: fmi3Instance) -> fmi3Status {
-    // SAFETY: `instance` is NULL or live (contract).
-    let comp = unsafe { component(instance) };
-    guarded(comp, Instance::exit_initialization_mode)
-}
-
-/// `fmi3Terminate`.
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi3Terminate(instance: fmi3Instance) -> fmi3Status {
-    // SAFETY: `instance` is NULL or live (contract).
-    let comp = unsafe { component(instance) };
-    guarded(comp, Instance::terminate)
-}
-
-/// `fmi3Reset`.
-///
-/// # Safety
-///
-/// The importer keeps the safety contract of the `exports` module.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn fmi3Reset(instance: fmi3Instance) -> fmi3Status {
-    // SAFETY: `instance` is NULL or live (contract).
-    let comp = unsafe { component(instance) };
-    guarded(comp, Instance::reset)
-}
+instance_exports!(
+    instance: fmi3Instance,
+    status: fmi3Status;
+    /// `fmi3ExitInitializationMode`: the rotor settles in static equilibrium;
+    /// Step Mode follows (no event mode).
+    fmi3ExitInitializationMode => Instance::exit_initialization_mode;
+    /// `fmi3Terminate`.
+    fmi3Terminate => Instance::terminate;
+    /// `fmi3Reset`.
+    fmi3Reset => Instance::reset;
+);
 
 /// `fmi3DoStep`: the same step as fmi2DoStep. It never asks for event
 /// handling or the end of the simulation; with `earlyReturnAllowed` it
 /// returns early (`earlyReturn = true`) after the first internal step at
-/// which a bearing's or rub's contact begins. The last successful time is
-/// where the simulator stands (the communication point, the early return's
-/// internal time, or where a discarded step stopped).
+/// which a bearing's or rub's contact begins, or where the intermediate-update
+/// callback, called after every internal step when the importer gave one,
+/// asks for it. The last successful time is where the simulator stands (the
+/// communication point, the early return's time, or where a discarded step
+/// stopped).
 ///
 /// # Safety
 ///
@@ -345,13 +326,39 @@ pub unsafe extern "C" fn fmi3DoStep(
             lastSuccessfulTime.as_mut(),
         )
     };
+    let updates = comp.as_ref().and_then(|c| c.updates.clone());
     guarded(comp, |i| {
         let (Some(event), Some(terminate), Some(early), Some(last)) =
             (event, terminate, early, last)
         else {
             return null_argument(i, Call::DoStep);
         };
-        let status = i.do_step(currentCommunicationPoint, communicationStepSize);
+        let (t, h) = (currentCommunicationPoint, communicationStepSize);
+        let status = match &updates {
+            None => i.do_step(t, h),
+            Some(u) => {
+                let mut ignored = None;
+                let me = instance as usize;
+                let mut observer =
+                    |time, values: Option<&[f64]>| u.update(me, time, values, &mut ignored);
+                let status = i.do_step_observed(t, h, &mut observer);
+                match ignored {
+                    Some(at) => {
+                        let text = format!(
+                            "fmi3DoStep: the intermediate update at {} s asked for an early return, but canReturnEarly was false (earlyReturnAllowed = false at instantiation): ignored",
+                            Short(at)
+                        );
+                        i.report(Status::Warning, text);
+                        if status == Status::Ok {
+                            Status::Warning
+                        } else {
+                            status
+                        }
+                    }
+                    None => status,
+                }
+            }
+        };
         *event = false;
         *terminate = false;
         *early = matches!(status, Status::Ok | Status::Warning) && i.early_return_at().is_some();

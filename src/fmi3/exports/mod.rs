@@ -38,6 +38,7 @@
 
 mod fmu_state;
 mod glue;
+mod intermediate;
 mod lifecycle;
 mod unsupported;
 mod values;

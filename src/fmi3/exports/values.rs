@@ -12,6 +12,7 @@ use crate::fmu::states::Call;
 use crate::fmu::variables::Kind;
 
 use super::glue::*;
+use super::intermediate::get_float64;
 
 fn get_call(kind: Kind) -> Call {
     match kind {
@@ -156,15 +157,21 @@ pub unsafe extern "C" fn fmi3GetFloat64(
     values: *mut fmi3Float64,
     nValues: usize,
 ) -> fmi3Status {
-    // SAFETY: `instance` is live, `valueReferences` holds `nValueReferences`
-    // and `values` `nValues` elements (contract).
-    let (comp, refs, out) = unsafe {
+    // SAFETY: `valueReferences` holds `nValueReferences` and `values`
+    // `nValues` elements (contract).
+    let (refs, mut out) = unsafe {
         (
-            component(instance),
             slice_from(valueReferences, nValueReferences),
             slice_from_mut(values, nValues),
         )
     };
+    // Inside the intermediate-update callback: from the window, without
+    // touching the component fmi3DoStep holds.
+    if let Some(status) = get_float64(instance as usize, refs, out.as_deref_mut(), nValues) {
+        return status;
+    }
+    // SAFETY: `instance` is NULL or live (contract).
+    let comp = unsafe { component(instance) };
     let expanded = expand(&comp, refs);
     let refs = expanded.as_deref().or(refs);
     get_values(comp, refs, out, nValues, Kind::Real, |v| v)

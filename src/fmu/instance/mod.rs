@@ -46,9 +46,11 @@ use super::variables::{
 };
 
 mod fmu_state;
+mod intermediate;
 mod step;
 mod values;
 
+pub use intermediate::{Intermediate, IntermediateObserver};
 use values::OutputCache;
 
 /// FMI status codes (the subset an instance returns).

@@ -5,6 +5,7 @@
 //! speed or the motion leaves the range it is validated for.
 
 use super::super::states::Call;
+use super::intermediate::IntermediateObserver;
 use super::{Instance, Phase, STOP_SLACK, Status, category};
 use crate::rotor::Rotor;
 use crate::solver::SolverOptions;
@@ -14,6 +15,27 @@ use crate::units::Short;
 impl Instance {
     /// fmi2DoStep.
     pub fn do_step(&mut self, current: f64, step: f64) -> Status {
+        self.step_with(current, step, None)
+    }
+
+    /// fmi3DoStep with intermediate updates: [`Instance::do_step`], with
+    /// `observer` told of every internal step (time and outputs), which may
+    /// ask the step to return early ([`super::intermediate`]).
+    pub fn do_step_observed(
+        &mut self,
+        current: f64,
+        step: f64,
+        observer: IntermediateObserver<'_>,
+    ) -> Status {
+        self.step_with(current, step, Some(observer))
+    }
+
+    fn step_with(
+        &mut self,
+        current: f64,
+        step: f64,
+        observer: Option<IntermediateObserver<'_>>,
+    ) -> Status {
         self.early_return_at = None;
         if let Err(s) = self.check(Call::DoStep) {
             return s;
@@ -71,13 +93,27 @@ impl Instance {
         }
         self.outputs.invalidate();
         let before = self.sim.stats();
-        let result = self.sim.advance_to(current + step);
+        let (result, requested) = match observer {
+            None => (self.sim.advance_to(current + step), false),
+            Some(o) => match self.advance_with_updates(current + step, o) {
+                Ok(requested) => (Ok(()), requested),
+                Err(e) => (Err(e), false),
+            },
+        };
         if let (Ok(()), Some((at, names))) = (&result, self.sim.contact_began_at()) {
             self.early_return_at = Some(*at);
             let text = format!(
                 "{call} from {t} s by {h} s returns early at {} s: contact begins at {}",
                 Short(*at),
                 names.join(", ")
+            );
+            self.messages.push((Status::Ok, category(Status::Ok), text));
+        } else if requested {
+            let at = self.sim.time();
+            self.early_return_at = Some(at);
+            let text = format!(
+                "{call} from {t} s by {h} s returns early at {} s: the importer asked for it in an intermediate update",
+                Short(at)
             );
             self.messages.push((Status::Ok, category(Status::Ok), text));
         }

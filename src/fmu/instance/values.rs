@@ -60,6 +60,12 @@ impl OutputCache {
         self.fresh = true;
     }
 
+    /// Every variable's entry, by value reference (the outputs' after
+    /// [`fill`](Self::fill)).
+    pub(super) fn values(&self) -> &[f64] {
+        &self.values
+    }
+
     /// The value of output `vr` (after [`fill`](Self::fill)).
     fn value(&self, vr: usize) -> f64 {
         self.values[vr]
