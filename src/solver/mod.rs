@@ -84,8 +84,8 @@ mod warnings;
 pub mod time_step;
 
 pub use contact_watch::{ContactLimit, ContactWarning};
-pub use offset_continuation::line_equilibrium;
 pub use observer::{StepFlow, StepObserver};
+pub use offset_continuation::line_equilibrium;
 pub use outputs::{
     BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput, ThrustOutput, TorqueNodeOutput,
 };
