@@ -625,3 +625,90 @@ fn the_campbell_diagram_sees_the_pads_at_each_modes_own_frequency() {
         assert!((r.speed - c.speed).abs() <= 1e-6 * c.speed, "{r:?} {c:?}");
     }
 }
+
+/// The speed × whirl-frequency table (`rotor operating-point --whirl-ratios`,
+/// issue 45): on the hydro unit at 150 and 300 rpm, every row at `r` equals
+/// the explicit reduction `Z_jj − Z_jp Z_pp⁻¹ Z_pj` at `s = i r Ω` of the
+/// bearing at its equilibrium (`K + iωC` back to 1e-9 of its size); at
+/// `r = 1` the operating point's synchronous coefficients bit for bit; the
+/// CLI's CSV holds the library's rows.
+#[test]
+fn the_frequency_table_is_the_reduction_at_each_whirl_frequency() {
+    use nalgebra::Complex;
+    use rotor_bearing::analysis::frequency_table::frequency_table;
+    use rotor_bearing::analysis::operating_point::operating_point;
+    use rotor_bearing::solver::{SolverOptions, equilibrium};
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/hydro_unit.toml");
+    let rotor = Rotor::new(RotorModel::from_file(std::path::Path::new(path)).unwrap()).unwrap();
+    let speeds = [150.0 * RPM, 300.0 * RPM];
+    let ratios = [0.25, 0.5, 1.0];
+    let rows = frequency_table(&rotor, &speeds, &ratios).unwrap();
+    assert_eq!(rows.len(), speeds.len() * ratios.len() * 2);
+    for &speed in &speeds {
+        let eq = equilibrium(&rotor, speed, &SolverOptions::default(), None).unwrap();
+        let points = operating_point(&rotor, speed).unwrap();
+        for row in rows.iter().filter(|r| r.speed == speed) {
+            let eval = &eq
+                .bearings
+                .iter()
+                .find(|(b, _)| *b == row.bearing)
+                .unwrap()
+                .1;
+            let n = eval.n();
+            let s = Complex::new(0.0, row.ratio * speed);
+            let z = DMatrix::from_fn(n, n, |i, j| {
+                Complex::new(eval.k(i, j), 0.0) + s * eval.c(i, j)
+            });
+            let zpp_inv = z
+                .view((2, 2), (n - 2, n - 2))
+                .into_owned()
+                .try_inverse()
+                .unwrap();
+            let red = z.view((0, 0), (2, 2)).into_owned()
+                - z.view((0, 2), (2, n - 2)) * zpp_inv * z.view((2, 0), (n - 2, 2));
+            let size = red.iter().map(|v| v.norm()).fold(0.0, f64::max);
+            for i in 0..2 {
+                for j in 0..2 {
+                    let back = Complex::new(row.stiffness[i][j], 0.0) + s * row.damping[i][j];
+                    assert!((back - red[(i, j)]).norm() <= 1e-9 * size, "{row:?}");
+                }
+            }
+            if row.ratio == 1.0 {
+                let p = points.iter().find(|p| p.bearing == row.bearing).unwrap();
+                assert_eq!(p.stiffness, row.stiffness);
+                assert_eq!(p.damping, row.damping);
+            }
+        }
+    }
+    let csv = std::env::temp_dir().join(format!("frequency_table_{}.csv", std::process::id()));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["operating-point", path, "--whirl-ratios", "0.25,0.5,1"])
+        .args(["--table-rpm", "150,300", "--table-csv"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let lines: Vec<&str> = text.lines().skip(1).collect();
+    assert_eq!(lines.len(), rows.len());
+    for (line, row) in lines.iter().zip(&rows) {
+        let v: Vec<&str> = line.split(',').collect();
+        assert_eq!(v[0], row.name);
+        // The CLI's speed is rpm / (30/π), the test's rpm · π/30: the last
+        // bit may differ.
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+        assert!(
+            close(v[4].parse::<f64>().unwrap(), row.stiffness[0][0]),
+            "{line}"
+        );
+        assert!(
+            close(v[11].parse::<f64>().unwrap(), row.damping[1][1]),
+            "{line}"
+        );
+    }
+    std::fs::remove_file(&csv).ok();
+}

@@ -10,6 +10,7 @@ mod critical_refine;
 pub mod element_operating_point;
 pub mod film_validity;
 pub mod forced;
+pub mod frequency_table;
 pub mod held_equilibrium;
 pub mod linear;
 pub mod linearize;

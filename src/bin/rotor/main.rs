@@ -269,6 +269,8 @@ enum Command {
         /// Write the tilting pads' tilts and film thicknesses to this CSV file.
         #[arg(long)]
         pads_csv: Option<PathBuf>,
+        #[command(flatten)]
+        table: operating_point::FrequencyTableArgs,
     },
     /// Log decrements at a speed, the threshold of cross-coupled stiffness where API 617
     /// places it (mid-span, or the overhung impellers; or --at) where the least stable forward mode turns unstable, and with
@@ -616,10 +618,11 @@ fn run(cli: Cli) -> Result<(), String> {
             rpm,
             csv,
             pads_csv,
+            table,
         } => {
             let rotor = load(&model)?;
             let rpm = model_rpm(&rotor.model, rpm)?;
-            operating_point::run(&rotor, rpm, csv, pads_csv)
+            operating_point::run(&rotor, rpm, (csv, pads_csv), table)
         }
         Command::Stability {
             model,
