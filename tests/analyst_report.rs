@@ -524,7 +524,8 @@ fn report_never_fails_on_the_undamped_classic_rotor() {
     }
 }
 
-/// `--operating-rpm` (issue 48): the damped classic rotor at 600 rpm has its
+/// `--operating-rpm` and the model's `operating_rpm` (issue 48): the damped
+/// classic rotor at 600 rpm has its
 /// critical speeds at 1113 rpm, 85 % above the operating speed (26 %
 /// required: AF 23.8): every Campbell margin passes; with the operating range
 /// 600–1200 rpm the critical lies inside it and every one fails, as `rotor
@@ -564,6 +565,16 @@ fn an_operating_range_judges_the_margins_of_the_report() {
         printed.iter().all(|v| v == "FAIL") && !printed.is_empty(),
         "{printed:?}"
     );
+    // The model's own `operating_rpm` is the range without the flag.
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("report");
+    std::fs::create_dir_all(&dir).unwrap();
+    let keyed = dir.join("classic_damped_operating.toml");
+    let text = std::fs::read_to_string(model).unwrap();
+    std::fs::write(&keyed, format!("operating_rpm = [600.0, 1200.0]\n{text}")).unwrap();
+    let keyed = keyed.to_str().unwrap();
+    assert_eq!(campbell_verdicts(&rotor(&["campbell", keyed])), printed);
+    let (_, from_file) = write_report(&["report", keyed, "--rpm", "600"], "range_from_file");
+    assert_eq!(verdicts(&from_file), inside);
     assert_eq!(
         range.stamp["operating range (separation margins)"],
         "600 to 1200 rpm"

@@ -403,9 +403,12 @@ pub fn separation_margin(nc: f64, af: f64, range: &OperatingRange) -> Separation
     }
 }
 
-/// The operating range of the model: its `speed_rpm` (a single speed), or
-/// none when the file gives none.
+/// The operating range of the model: its `operating_rpm`, else its
+/// `speed_rpm` (a single speed), or none when the file gives neither.
 pub fn model_operating_range(rotor: &Rotor) -> Option<OperatingRange> {
+    if let Some([min, max]) = rotor.model.operating_range {
+        return Some(OperatingRange { min, max });
+    }
     let s = rotor.model.nominal_speed.abs();
     (s > 0.0).then_some(OperatingRange { min: s, max: s })
 }

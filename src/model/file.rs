@@ -30,6 +30,10 @@ pub struct ModelFile {
     /// [`crate::model::DEFAULT_MEMORY_BUDGET_MB`].
     #[serde(default)]
     pub memory_budget_mb: Option<f64>,
+    /// Operating speed range `[min, max]` (rpm) the separation margins are
+    /// judged against (API 684); default `speed_rpm` alone.
+    #[serde(default)]
+    pub operating_rpm: Option<Vec<f64>>,
     /// Largest spin speed the machine may be driven at (rpm, either direction);
     /// default [`crate::model::DEFAULT_MAX_SPEED_RPM`].
     #[serde(default)]

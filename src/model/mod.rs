@@ -367,6 +367,8 @@ pub struct RotorModel {
     /// Whether the file states `max_speed_rpm` (else `max_speed` is
     /// [`DEFAULT_MAX_SPEED_RPM`]).
     pub max_speed_stated: bool,
+    /// Operating speed range `[min, max]` (rad/s) from `operating_rpm`.
+    pub operating_range: Option<[f64; 2]>,
     /// Coefficient-table files read, as written and as resolved ([`Self::table_files`]).
     pub table_files: Vec<TableFile>,
     /// The reduced rotor transients run on (`[reduction]`, see

@@ -676,3 +676,37 @@ fn reduction_section_sets_the_mode_count() {
     let e = err_of("\n[reduction]\nnodes = 4\n");
     assert!(e.contains("nodes"), "{e}");
 }
+
+#[test]
+fn operating_range_is_read_in_rad_s_and_bad_ranges_are_refused() {
+    let m = RotorModel::from_toml(
+        &format!("operating_rpm = [8000.0, 11500.0]\n{BASE}"),
+        "m.toml",
+    )
+    .unwrap();
+    let [a, b] = m.operating_range.unwrap();
+    assert_eq!(a, 8000.0 * std::f64::consts::PI / 30.0);
+    assert_eq!(b, 11500.0 * std::f64::consts::PI / 30.0);
+    assert!(
+        RotorModel::from_toml(BASE, "m.toml")
+            .unwrap()
+            .operating_range
+            .is_none()
+    );
+    for (range, problem) in [
+        ("[0.0, 100.0]", "greater than zero"),
+        ("[200.0, 100.0]", "min ≤ max"),
+        ("[1.0, 2.0, 3.0]", "[min, max]"),
+        ("[100.0, 1e6]", "max_speed_rpm"),
+    ] {
+        let text = format!("max_speed_rpm = 20000.0\noperating_rpm = {range}\n{BASE}");
+        let e = RotorModel::from_toml(&text, "m.toml")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("m.toml:2:") && e.contains("operating_rpm"),
+            "{range}: {e}"
+        );
+        assert!(e.contains(problem), "{range}: {e}");
+    }
+}

@@ -100,7 +100,12 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     let name = model.name.clone();
     crate::warn_short_films(rotor, &[speed]);
     crate::held::note_off_centre(rotor, &[speed]);
-    let operating = req.operating.unwrap_or(OperatingRange {
+    // `--operating-rpm`, else the model's `operating_rpm`, else the speed.
+    let stated = req.operating.or(rotor
+        .model
+        .operating_range
+        .map(|[min, max]| OperatingRange { min, max }));
+    let operating = stated.unwrap_or(OperatingRange {
         min: speed,
         max: speed,
     });
@@ -216,9 +221,10 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         .source
         .as_ref()
         .map_or(String::new(), |p| format!(" {}", p.display()));
-    let range = match &req.operating_rpm {
-        Some(text) => text.clone(),
-        None => format!("{rpm}:{rpm}"),
+    let range = match (&req.operating_rpm, stated) {
+        (Some(text), _) => text.clone(),
+        (None, Some(r)) => format!("{}:{}", r.min * RAD_S_TO_RPM, r.max * RAD_S_TO_RPM),
+        (None, None) => format!("{rpm}:{rpm}"),
     };
     let same = |cmd: &str| format!("As `rotor {cmd}{file_arg} --operating-rpm {range}` prints it.");
     let mut sections = vec![section(

@@ -73,6 +73,31 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
             "must not exceed max_speed_rpm",
         ));
     }
+    let operating_range = match &raw.operating_rpm {
+        None => None,
+        Some(v) => {
+            let path = root.key("operating_rpm");
+            let shown = format!("{v:?}");
+            if v.len() != 2 {
+                return Err(ctx.err(path, shown, "must be [min, max] in rpm"));
+            }
+            let (a, b) = (
+                ctx.positive(path.index(0), v[0])?,
+                ctx.positive(path.index(1), v[1])?,
+            );
+            if b < a || b * std::f64::consts::PI / 30.0 > max_speed {
+                return Err(ctx.err(
+                    path,
+                    shown,
+                    "must be [min, max] with 0 < min ≤ max ≤ max_speed_rpm",
+                ));
+            }
+            Some([
+                a * std::f64::consts::PI / 30.0,
+                b * std::f64::consts::PI / 30.0,
+            ])
+        }
+    };
     let reduction = match raw.reduction {
         None => None,
         Some(r) => Some(match r.modes {
@@ -97,6 +122,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         nominal_speed,
         max_speed,
         max_speed_stated: raw.max_speed_rpm.is_some(),
+        operating_range,
         name: raw.name,
         description: raw.description,
         source: ctx.source.to_string(),
