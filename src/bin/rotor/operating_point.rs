@@ -9,7 +9,7 @@ use rotor_bearing::analysis::element_operating_point::{
 use rotor_bearing::analysis::frequency_table::frequency_table;
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::plot::RAD_S_TO_RPM;
-use rotor_bearing::report::text::short;
+use rotor_bearing::report::text::{coefficient_matrix, short};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
 
@@ -112,19 +112,13 @@ fn frequency_table_of(rotor: &Rotor, rpm: f64, args: FrequencyTableArgs) -> Resu
         let rpm = r.speed * RAD_S_TO_RPM;
         let hz = r.ratio * r.speed / std::f64::consts::TAU;
         println!(
-            "  {} at {} rpm, r = {} ({} Hz): K = [[{}, {}], [{}, {}]], C = [[{}, {}], [{}, {}]]",
+            "  {} at {} rpm, r = {} ({} Hz): K = {}, C = {}",
             r.name,
             short(rpm),
             short(r.ratio),
             short(hz),
-            short(k[0][0]),
-            short(k[0][1]),
-            short(k[1][0]),
-            short(k[1][1]),
-            short(c[0][0]),
-            short(c[0][1]),
-            short(c[1][0]),
-            short(c[1][1])
+            coefficient_matrix(&k),
+            coefficient_matrix(&c)
         );
         csv.push_str(&format!(
             "{},{rpm},{},{hz},{},{},{},{},{},{},{},{}\n",
