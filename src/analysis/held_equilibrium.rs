@@ -29,7 +29,7 @@
 
 use nalgebra::Complex;
 
-use crate::model::{Drive, LoadChannel};
+use crate::model::Drive;
 use crate::rotor::Rotor;
 use crate::rotor::elements::bearing_dofs;
 use crate::solver::{
@@ -271,7 +271,7 @@ fn transient(rotor: &Rotor, speed: f64) -> Result<Simulator, SolverError> {
         sim.set_unbalance(k, 0.0)?;
     }
     for (i, l) in rotor.model.load_inputs().iter().enumerate() {
-        if l.channel == LoadChannel::Amplitude {
+        if l.channel.is_periodic() {
             sim.set_load(i, 0.0, 0.0)?;
         }
     }

@@ -28,7 +28,7 @@
 use nalgebra::{Complex, DMatrix, DVector};
 
 use crate::fe::{DOF_X, DOF_Y};
-use crate::model::{Drive, LoadChannel};
+use crate::model::Drive;
 use crate::rotor::Rotor;
 use crate::solver::{Simulator, SolverError, SolverOptions};
 
@@ -118,7 +118,7 @@ pub fn ring_down(
         sim.set_unbalance(k, 0.0)?;
     }
     for (i, l) in rotor.model.load_inputs().iter().enumerate() {
-        if l.channel == LoadChannel::Amplitude {
+        if l.channel.is_periodic() {
             sim.set_load(i, 0.0, 0.0)?;
         }
     }

@@ -21,6 +21,17 @@
 //! continued linearly in `|q|²` (C¹); at the gap the rotor touches the stator
 //! through the contact law of a rub ([`super::contact`]).
 //!
+//! **Dynamic eccentricity.** A generator rotor whose geometric centre lies
+//! `e_d` off its axis of rotation (rim ovality, a bent or unround rotor) sees
+//! the air gap narrow where that centre points: the gap follows the rotor's
+//! geometric centre `q + d(φ)`, `d = e_d (cos(φ + φ_d), sin(φ + φ_d))` turning
+//! with the spin angle `φ`. At first order in the motion (`F ≈ k_eff (q + d)`)
+//! that is the pull of the rotor's axis plus a force `k_eff d` of constant
+//! magnitude `k s² e_d` rotating forward at 1× ([`MagneticPull::rotating_pull`];
+//! applied with the loads, [`crate::rotor::Rotor::add_loads_at`]). The
+//! neglected terms are `O(ε²)` relative: the slope of the law at `ε` is
+//! `1 + 1.5 ε² + …` times `k`.
+//!
 //! ```
 //! use rotor_bearing::bearing::contact::ContactLaw;
 //! use rotor_bearing::bearing::magnetic_pull::MagneticPull;
@@ -31,6 +42,8 @@
 //!     gap: 0.02,           // m
 //!     excitation: 1.0,
 //!     contact: ContactLaw::steel(0.02, 2.0, 0.01),
+//!     dynamic_eccentricity: 0.0,
+//!     dynamic_phase: 0.0,
 //! };
 //! let mut eval = BearingEval::new(2);
 //! pull.evaluate(&[1e-3, 0.0], &[0.0, 0.0], 15.7, &mut eval)?;
@@ -70,6 +83,11 @@ pub struct MagneticPull {
     pub excitation: f64,
     /// Contact of rotor and stator at the air gap.
     pub contact: ContactLaw,
+    /// Dynamic eccentricity `e_d` (m): the rotor's geometric centre off its
+    /// axis of rotation, turning with it (0: none).
+    pub dynamic_eccentricity: f64,
+    /// Its direction `φ_d` (rad) at spin angle 0.
+    pub dynamic_phase: f64,
 }
 
 impl MagneticPull {
@@ -88,6 +106,14 @@ impl MagneticPull {
             let (phi, dphi) = law(s_max);
             (phi + dphi * (s - s_max), dphi)
         }
+    }
+
+    /// The rotating pull `k s² e_d (cos(φ + φ_d), sin(φ + φ_d))` (N, on the
+    /// rotor) of a dynamic eccentricity `e_d` (m) at spin angle `φ` (rad).
+    pub fn rotating_pull(&self, dynamic_eccentricity: f64, spin_angle: f64) -> [f64; 2] {
+        let a = self.stiffness * self.excitation * self.excitation * dynamic_eccentricity;
+        let (s, c) = (spin_angle + self.dynamic_phase).sin_cos();
+        [a * c, a * s]
     }
 
     /// The pull alone (no contact) at `q` (m): force on the rotor and its
@@ -152,6 +178,8 @@ mod tests {
             gap: 0.015,
             excitation: 0.8,
             contact: ContactLaw::steel(0.015, 2.2, 0.01),
+            dynamic_eccentricity: 1e-3,
+            dynamic_phase: 0.5,
         }
     }
 
@@ -199,6 +227,28 @@ mod tests {
         assert!((a.force - b.force).norm() < 1e-6 * a.force.norm());
         assert!((a.stiffness - b.stiffness).norm() < 1e-6 * a.stiffness.norm());
         assert!(at(1.2).force.norm().is_finite());
+    }
+
+    /// The rotating pull is the law's first-order term at the geometric
+    /// centre: `k s² d` with `d = e_d (cos(φ + φ_d), sin(φ + φ_d))`, i.e. the
+    /// difference `F(q + d) − F(q)` of the law about the centred rotor to
+    /// `O(ε²)` (`1.5 ε²` relative: checked at ε = 1e-5 to 1e-9), turning
+    /// forward once per revolution.
+    #[test]
+    fn rotating_pull_is_the_pull_of_the_geometric_centre() {
+        let p = pull();
+        let k = 3e8 * 0.64;
+        for spin in [0.0, 1.0, 2.5, -4.0] {
+            let e = 1e-5 * p.gap;
+            let [fx, fy] = p.rotating_pull(e, spin);
+            assert!((fx.hypot(fy) / (k * e) - 1.0).abs() < 1e-14);
+            let angle = fy.atan2(fx);
+            let want = (spin + 0.5).sin().atan2((spin + 0.5).cos());
+            assert!((angle - want).abs() < 1e-12, "turns with the spin");
+            let d = Vector2::new(fx, fy) / k;
+            let diff = p.pull(d).force;
+            assert!((diff - Vector2::new(fx, fy)).norm() < 1e-9 * k * e);
+        }
     }
 
     /// The linear estimate from the machine's data.

@@ -410,6 +410,10 @@ pub struct MagneticPullEntry {
     pub flux_density: Option<f64>,
     /// Field excitation, 1 = nominal (the pull goes with its square); default 1.
     pub excitation: Option<f64>,
+    /// Dynamic (rotating) eccentricity of the rotor (m), default 0.
+    pub dynamic_eccentricity: Option<f64>,
+    /// Its direction at spin angle 0 (°), default 0.
+    pub dynamic_phase_deg: Option<f64>,
     /// Stator contact stiffness (N/m); default the steel line contact over the core length.
     pub contact_stiffness: Option<f64>,
     /// Stator contact damping (N·s/m); default 1e-5 s × the contact stiffness.

@@ -249,6 +249,16 @@ pub enum LoadChannel {
     Amplitude,
     /// A drive torque (N·m), of either sign.
     Torque,
+    /// The dynamic eccentricity of a magnetic pull's rotor (m), in `[0, gap)`.
+    Eccentricity,
+}
+
+impl LoadChannel {
+    /// Whether the channel drives a periodic force (a harmonic amplitude or
+    /// a pull's dynamic eccentricity), which no static equilibrium carries.
+    pub fn is_periodic(self) -> bool {
+        matches!(self, LoadChannel::Amplitude | LoadChannel::Eccentricity)
+    }
 }
 
 /// How the shaft is driven (`[torsion] drive`).
@@ -522,9 +532,10 @@ impl RotorModel {
         &self.table_files
     }
 
-    /// The load input channels, forces, ports then torques: two per static
-    /// force (`fx`, `fy`), one per harmonic force (`magnitude`), two per
-    /// port, one per torque node (`torques.<t>`, N·m).
+    /// The load input channels, forces, ports, magnetic pulls then torques:
+    /// two per static force (`fx`, `fy`), one per harmonic force
+    /// (`magnitude`), two per port, one per magnetic pull (its dynamic
+    /// eccentricity, m), one per torque node (`torques.<t>`, N·m).
     pub fn load_inputs(&self) -> Vec<LoadInput> {
         let mut out = Vec::new();
         for f in &self.forces {
@@ -554,6 +565,15 @@ impl RotorModel {
                 });
             }
         }
+        for b in &self.bearings {
+            if let BearingKind::MagneticPull(m) = &b.kind {
+                out.push(LoadInput {
+                    name: format!("magnetic_pull.{}.dynamic_eccentricity", b.name),
+                    start: m.dynamic_eccentricity,
+                    channel: LoadChannel::Eccentricity,
+                });
+            }
+        }
         for t in &self.torques {
             out.push(LoadInput {
                 name: format!("torques.{}", t.name),
@@ -572,6 +592,27 @@ impl RotorModel {
             || !self.torques.is_empty()
             || !self.couplings.is_empty()
             || !self.thrust_bearings.is_empty()
+    }
+
+    /// The channel in [`Self::load_inputs`] of model bearing `k`'s dynamic
+    /// eccentricity, when it is a magnetic pull.
+    pub fn pull_input(&self, k: usize) -> Option<usize> {
+        if !self.bearings[k].kind.is_magnetic_pull() {
+            return None;
+        }
+        let forces: usize = self
+            .forces
+            .iter()
+            .map(|f| match f.kind {
+                ForceKind::Static(_) => 2,
+                ForceKind::Harmonic { .. } => 1,
+            })
+            .sum();
+        let pulls_before = self.bearings[..k]
+            .iter()
+            .filter(|b| b.kind.is_magnetic_pull())
+            .count();
+        Some(forces + 2 * self.ports.len() + pulls_before)
     }
 
     /// Index of the first torque channel in [`Self::load_inputs`].

@@ -1,5 +1,6 @@
 //! External loads on the assembled rotor's DOFs: the model's static and
-//! harmonic forces (`[[forces]]`) and the port forces (`[[ports]]`), from the
+//! harmonic forces (`[[forces]]`), the port forces (`[[ports]]`) and the
+//! rotating pull of each magnetic pull's dynamic eccentricity, from the
 //! values of their input channels ([`RotorModel::load_inputs`] order).
 //!
 //! A harmonic force of amplitude `A` has the angle
@@ -82,7 +83,50 @@ impl Rotor {
             self.add_at(f, port.node, values[k], values[k + 1]);
             k += 2;
         }
+        for (b, placed) in self.model.bearings.iter().enumerate() {
+            if !placed.kind.is_magnetic_pull() {
+                continue;
+            }
+            if let Some((_, spin)) = at {
+                if let Some([fx, fy]) = self.pull_rotating_force(b, values[k], spin) {
+                    self.add_at(f, placed.node, fx, fy);
+                    if let Some(p) = placed.pedestal {
+                        self.add_on_pedestal(f, p, [-fx, -fy]);
+                    }
+                }
+            }
+            k += 1;
+        }
         self.add_offset_loads(f);
+    }
+
+    /// The 1× rotating pull (N, on the rotor) of model bearing `bearing`, a
+    /// magnetic pull, with dynamic eccentricity `eccentricity` (m) at spin
+    /// angle `spin_angle` (rad) ([`MagneticPull::rotating_pull`]); `None`
+    /// for another kind or no eccentricity.
+    ///
+    /// [`MagneticPull::rotating_pull`]: crate::bearing::MagneticPull::rotating_pull
+    pub fn pull_rotating_force(
+        &self,
+        bearing: usize,
+        eccentricity: f64,
+        spin_angle: f64,
+    ) -> Option<[f64; 2]> {
+        match &self.model.bearings[bearing].kind {
+            BearingKind::MagneticPull(m) if eccentricity != 0.0 => {
+                Some(m.rotating_pull(eccentricity, spin_angle))
+            }
+            _ => None,
+        }
+    }
+
+    /// Add `load` (N, x and y) to the DOFs of pedestal `p` in `f`.
+    fn add_on_pedestal(&self, f: &mut [f64], p: usize, load: [f64; 2]) {
+        for (k, v) in load.iter().enumerate() {
+            if let Some(i) = self.dofs.pedestal(p, k) {
+                f[i] += v;
+            }
+        }
     }
 
     /// Add the preload of the elements in the matrices whose centres are set
@@ -101,11 +145,7 @@ impl Rotor {
             ]
         };
         let on_pedestal = |f: &mut [f64], p: usize, load: [f64; 2], sign: f64| {
-            for (k, v) in load.iter().enumerate() {
-                if let Some(i) = self.dofs.pedestal(p, k) {
-                    f[i] += sign * v;
-                }
-            }
+            self.add_on_pedestal(f, p, [sign * load[0], sign * load[1]]);
         };
         for b in &self.model.bearings {
             let BearingKind::Linear { stiffness, .. } = &b.kind else {

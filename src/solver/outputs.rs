@@ -190,11 +190,22 @@ impl Simulator {
                 };
             friction_torque += report.friction_torque;
             power_loss += report.power_loss;
+            let (mut fx, mut fy) = (eval.force[0], eval.force[1]);
+            // A pull's 1× rotating part (dynamic eccentricity) acts with the loads.
+            if let Some(i) = self.rotor.model.pull_input(k) {
+                let e =
+                    self.state.loads[i] + self.state.load_rates[i] * (t - self.state.speed_time);
+                if let Some([rx, ry]) = self.rotor.pull_rotating_force(k, e, self.state.spin_angle)
+                {
+                    fx += rx;
+                    fy += ry;
+                }
+            }
             bearings.push(BearingOutput {
                 x,
                 y,
-                fx: eval.force[0],
-                fy: eval.force[1],
+                fx,
+                fy,
                 report,
                 housing,
             });

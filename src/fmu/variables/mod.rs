@@ -16,6 +16,7 @@ mod loads;
 mod losses;
 mod machine;
 mod offsets;
+mod rotating_pull;
 mod stepping;
 
 /// What a variable reads or writes in the simulator.
@@ -223,6 +224,15 @@ pub fn value_range(binding: Binding, model: &RotorModel) -> (Option<f64>, Option
                 let t = model.input_torque_bound();
                 (Some(-t), Some(t))
             }
+            Some(LoadChannel::Eccentricity) => {
+                let gap = (0..model.bearings.len())
+                    .find(|&k| model.pull_input(k) == Some(i))
+                    .and_then(|k| match &model.bearings[k].kind {
+                        crate::bearing::BearingKind::MagneticPull(m) => Some(m.gap),
+                        _ => None,
+                    });
+                (Some(0.0), gap)
+            }
             None => (None, None),
         },
         _ => (None, None),
@@ -348,5 +358,6 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
     stepping::add(&mut t);
     losses::add(&mut t);
     offsets::add(&mut t);
+    rotating_pull::add(&mut t);
     t.out
 }

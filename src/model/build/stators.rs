@@ -168,6 +168,20 @@ pub(super) fn stators(
                 &format!("must lie in [0, {MAX_EXCITATION}] (1 is the nominal field)"),
             ));
         }
+        let dynamic_eccentricity = e.dynamic_eccentricity.unwrap_or(0.0);
+        if !(dynamic_eccentricity.is_finite() && (0.0..gap).contains(&dynamic_eccentricity)) {
+            return Err(ctx.err(
+                p.key("dynamic_eccentricity"),
+                dynamic_eccentricity,
+                &format!("must lie in [0, gap = {gap}) m (the rotor's centre inside the air gap)"),
+            ));
+        }
+        let dynamic_phase = ctx
+            .finite(
+                p.key("dynamic_phase_deg"),
+                e.dynamic_phase_deg.unwrap_or(0.0),
+            )?
+            .to_radians();
         let radius = e.rotor_radius.unwrap_or(shaft_radius_at(elements, node));
         let default = ContactLaw::steel(gap, radius, e.core_length.unwrap_or(RUB_WIDTH));
         let contact = contact_law(
@@ -198,6 +212,8 @@ pub(super) fn stators(
                 gap,
                 excitation,
                 contact,
+                dynamic_eccentricity,
+                dynamic_phase,
             }),
             pedestal,
             offset,

@@ -117,13 +117,25 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
                 describe_table(&s.table, s.added_mass)
             )
         }
-        BearingKind::MagneticPull(m) => format!(
-            "unbalanced magnetic pull, k = {} N/m at nominal field (excitation {}), radial air gap {} mm, law k e/(1 − ε²)^1.5; stator contact stiffness {} N/m",
-            short(m.stiffness),
-            short(m.excitation),
-            short(m.gap * 1e3),
-            short(m.contact.stiffness)
-        ),
+        BearingKind::MagneticPull(m) => {
+            let rotating = if m.dynamic_eccentricity > 0.0 {
+                format!(
+                    "; dynamic eccentricity {} mm at {}° (1× pull {} N at nominal field)",
+                    short(m.dynamic_eccentricity * 1e3),
+                    short(m.dynamic_phase.to_degrees()),
+                    short(m.stiffness * m.dynamic_eccentricity)
+                )
+            } else {
+                String::new()
+            };
+            format!(
+                "unbalanced magnetic pull, k = {} N/m at nominal field (excitation {}), radial air gap {} mm, law k e/(1 − ε²)^1.5{rotating}; stator contact stiffness {} N/m",
+                short(m.stiffness),
+                short(m.excitation),
+                short(m.gap * 1e3),
+                short(m.contact.stiffness)
+            )
+        }
         BearingKind::FiniteFilm(f) => format!(
             "{}; finite-length film ({} cavitation, mesh {} × {})",
             describe_bearing(&f.short_kind()).replacen("plain short bearing", "plain bearing", 1),
