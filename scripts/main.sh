@@ -47,6 +47,9 @@ $rotor campbell models/hydro_unit_brackets.toml --steps 40 --modes 8 --csv out/h
 $rotor unbalance models/hydro_unit_brackets.toml --min-rpm 30 --max-rpm 600 --points 120 \
   --csv out/hydro_unit_brackets_unbalance.csv --png out/hydro_unit_brackets_unbalance.png
 $rotor operating-point models/hydro_unit_brackets.toml --rpm 300 --excitation 1 > out/hydro_unit_brackets_operating_point.txt
+# Its design-review report, judged as a hydro unit (machine = "hydro_generator"):
+# first critical against runaway, ISO 10816-5 group 4 housing zones.
+$rotor report models/hydro_unit_brackets.toml --out out/hydro_unit_brackets_report.html
 $rotor simulate models/hydro_unit_brackets.toml --excitation 1 --rpm 300 --duration 10 --step 2e-3 --output-step 2e-3 --ramp-time 1 \
   --csv out/hydro_unit_brackets.csv --plots out/hydro_unit_brackets > out/hydro_unit_brackets_windows.txt
 # The FMU: build, pack, validate with FMPy, and simulate it with FMPy.
@@ -81,4 +84,4 @@ bash fmu_pack.sh --model system/classic_disk_rotor_amb.toml
 bash fmu_pack.sh --model system/classic_disk_rotor_amb_reference.toml
 .venv/bin/python system/amb_demo.py --out out/amb_demo
 .venv/bin/python system/amb_demo.py --stability --out out/amb_demo | tee out/amb_demo_stability.txt | tail -n 1
-echo "main: results in out/ (hydro_unit_brackets*, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, unbalance_response.csv/png, jeffcott_report.html, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, torque_*.csv/png, brackets_*.csv/png, sweep_jeffcott*, amb_demo.csv/png, amb_demo_stability.csv/txt)"
+echo "main: results in out/ (hydro_unit_brackets*, modes_4000rpm.csv, campbell.csv/png, plain_bearing_coefficients.csv/png, unbalance_response.csv/png, jeffcott_report.html, hydro_unit_brackets_report.html, jeffcott_run_up*, jeffcott_start_from_rest.csv, jeffcott_coast_down.csv, hydro_unit*, RotorBearing.fmu, fmpy_hydro_unit.csv/_orbits.png, coupled_*.csv/png, torque_*.csv/png, brackets_*.csv/png, sweep_jeffcott*, amb_demo.csv/png, amb_demo_stability.csv/txt)"

@@ -34,6 +34,9 @@ use super::operating_point::{OperatingPointError, operating_point};
 pub const PLAIN_LIMIT: f64 = 0.2;
 /// `L/(R β)` beyond which tilting pads' short film is warned about.
 pub const PAD_LIMIT: f64 = 0.05;
+/// Fraction of the film's load scale `μ Ω R L (R/C)²` below which a bearing
+/// is compared centred, as an unloaded one.
+pub const NEARLY_UNLOADED: f64 = 1e-4;
 /// The finite film's mesh for the ratios (per circle or pad): coarser than
 /// the default, within about 1 % of it, so the check stays cheap.
 pub const VALIDITY_MESH: ReynoldsMesh = ReynoldsMesh {
@@ -118,30 +121,43 @@ pub fn short_film_warnings(
         finite.mesh = VALIDITY_MESH;
         let load = -Vector2::new(point.force[0], point.force[1]);
         let scale = kind.journal_clearance().unwrap_or(1.0);
-        let eval = if point.is_unloaded() {
-            // A vertical rotor's journal sits centred (pads at their
-            // zero-moment tilts): the films compared there.
-            let n = 2 + finite.internal_dofs();
+        let film = finite.film();
+        // The film's load scale `μ Ω R L (R/C)²`: below NEARLY_UNLOADED of it
+        // the journal moves less than about that fraction of its clearance,
+        // and the centred films are the comparison (a Newton on a nearly
+        // unloaded pad set is slow and may not converge).
+        let load_scale = film.viscosity
+            * speed.abs()
+            * film.radius
+            * film.length
+            * (film.radius / film.clearance).powi(2);
+        // The films compared with the journal centred (pads at their
+        // zero-moment tilts): where a vertical rotor's journal sits.
+        let centred = |b: &dyn Bearing| -> Option<(Matrix2<f64>, Matrix2<f64>)> {
+            let n = 2 + b.internal_dofs();
             let mut q = vec![0.0; n];
-            finite.guess_internal([0.0, 0.0], speed, &mut q[2..]);
+            b.guess_internal([0.0, 0.0], speed, &mut q[2..]);
             let mut eval = BearingEval::new(n);
-            finite
-                .evaluate(&q, &vec![0.0; n], speed, &mut eval)
-                .ok()
-                .map(|_| eval)
+            b.evaluate(&q, &vec![0.0; n], speed, &mut eval).ok()?;
+            Some(condensed_coefficients(&eval, speed))
+        };
+        let nearly_unloaded = !point.is_unloaded() && point.load < NEARLY_UNLOADED * load_scale;
+        let finite_kc = if point.is_unloaded() || nearly_unloaded {
+            centred(&finite)
         } else {
             journal_equilibrium_direct(&finite, load, speed, scale)
                 .ok()
-                .map(|eq| eq.eval)
+                .map(|eq| condensed_coefficients(&eq.eval, speed))
         };
-        let ratios = eval.map(|eval| {
-            let (k, c) = condensed_coefficients(&eval, speed);
-            let short = |m: [[f64; 2]; 2]| Matrix2::new(m[0][0], m[0][1], m[1][0], m[1][1]);
-            (
-                short(point.stiffness).norm() / k.norm(),
-                short(point.damping).norm() / c.norm(),
-            )
-        });
+        let matrix = |m: [[f64; 2]; 2]| Matrix2::new(m[0][0], m[0][1], m[1][0], m[1][1]);
+        let short_kc = if nearly_unloaded {
+            centred(kind.build().as_ref())
+        } else {
+            Some((matrix(point.stiffness), matrix(point.damping)))
+        };
+        let ratios = finite_kc
+            .zip(short_kc)
+            .map(|((k, c), (ks, cs))| (ks.norm() / k.norm(), cs.norm() / c.norm()));
         out.push(ShortFilmWarning {
             bearing: point.name.clone(),
             pads: matches!(kind, BearingKind::TiltingPad(_)),

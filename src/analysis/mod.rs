@@ -12,6 +12,7 @@ pub mod film_validity;
 pub mod forced;
 pub mod frequency_table;
 pub mod held_equilibrium;
+pub mod housing_vibration;
 pub mod linear;
 pub mod linearize;
 pub mod modal;

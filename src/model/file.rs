@@ -34,6 +34,13 @@ pub struct ModelFile {
     /// judged against (API 684); default `speed_rpm` alone.
     #[serde(default)]
     pub operating_rpm: Option<Vec<f64>>,
+    /// The machine's class: `generic` (default), `hydro_generator`,
+    /// `pump_turbine`, `compressor`, `steam_turbine` or `pump`.
+    #[serde(default)]
+    pub machine: Option<String>,
+    /// ISO 10816-5 machine group (2, 3 or 4) of a hydro class.
+    #[serde(default)]
+    pub housing_group: Option<i64>,
     /// Largest spin speed the machine may be driven at (rpm, either direction);
     /// default [`crate::model::DEFAULT_MAX_SPEED_RPM`].
     #[serde(default)]
@@ -618,6 +625,10 @@ pub struct PedestalEntry {
     /// Spring anchor off the nominal axis (m), x and y, relative to `on` (default 0).
     pub offset_x: Option<f64>,
     pub offset_y: Option<f64>,
+    /// Braced against the generator stator (ISO 10816-5 group 4's
+    /// measurement location 1); default false.
+    #[serde(default)]
+    pub on_stator: bool,
 }
 
 /// `[[supports]]`: ideal constraints (boundary conditions) at a node.

@@ -10,6 +10,7 @@ mod context;
 mod error;
 pub mod file;
 pub mod limits;
+pub mod machine_class;
 mod plausibility;
 pub mod schema;
 mod source_map;
@@ -137,6 +138,9 @@ pub struct Pedestal {
     /// relative to `on`): `F = −K (q − q_on − o) − C (q̇ − q̇_on)`
     /// (`offset_x`, `offset_y`; zero: on the axis).
     pub offset: [f64; 2],
+    /// Braced against the generator stator (`on_stator`): the housings it
+    /// carries are ISO 10816-5 group 4's measurement location 1.
+    pub on_stator: bool,
 }
 
 /// A file a model reads besides its own: the path as written in the model
@@ -379,6 +383,10 @@ pub struct RotorModel {
     pub max_speed_stated: bool,
     /// Operating speed range `[min, max]` (rad/s) from `operating_rpm`.
     pub operating_range: Option<[f64; 2]>,
+    /// The machine's class (`machine`), selecting the criteria it is judged by.
+    pub machine: machine_class::MachineClass,
+    /// Its ISO 10816-5 machine group (`housing_group`), for a hydro class.
+    pub housing_group: Option<machine_class::HousingGroup>,
     /// Coefficient-table files read, as written and as resolved ([`Self::table_files`]).
     pub table_files: Vec<TableFile>,
     /// The reduced rotor transients run on (`[reduction]`, see

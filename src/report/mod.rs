@@ -24,6 +24,7 @@
 
 pub mod csv;
 pub mod html;
+pub mod hydro;
 pub mod review;
 pub mod series;
 pub mod stamp;

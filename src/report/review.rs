@@ -11,10 +11,12 @@ use crate::analysis::operating_point::BearingOperatingPoint;
 use crate::analysis::stability::Stability;
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::analysis::unbalance::UnbalanceStudy;
+use crate::model::machine_class::MachineClass;
 use crate::rotor::Rotor;
 use crate::units::{Amplitude, RAD_S_TO_RPM};
 
 use super::html::{Block, Cell, Table, Verdict};
+use super::hydro::HousingStudy;
 use super::text::{self, short};
 
 fn headers(names: &[&str]) -> Vec<String> {
@@ -418,6 +420,13 @@ pub struct SummaryInputs<'a> {
     pub operating: Result<&'a [BearingOperatingPoint], String>,
     /// Amplitude convention.
     pub amplitude: Amplitude,
+    /// The machine's class: a hydro class is judged by its own criteria
+    /// ([`super::hydro`]), every other by API 684/617.
+    pub machine: MachineClass,
+    /// The runaway (largest) speed (rad/s), for a hydro class.
+    pub runaway: f64,
+    /// The housing vibration, for a hydro class.
+    pub housing: Option<HousingStudy<'a>>,
 }
 
 /// The first-page summary: one row per judged item (check, item, value,
@@ -433,7 +442,9 @@ pub fn summary(inputs: &SummaryInputs) -> Table {
             Cell::verdict(Verdict::NotJudged),
         ]);
     };
+    let hydro = inputs.machine.is_hydro();
     match &inputs.campbell {
+        Ok(study) if hydro => rows.push(super::hydro::critical_row(study, inputs.runaway)),
         Ok(study) if study.margins.is_empty() => rows.push(vec![
             "critical speeds (Campbell)".into(),
             "—".into(),
@@ -467,6 +478,9 @@ pub fn summary(inputs: &SummaryInputs) -> Table {
         Err(e) => failed(&mut rows, "critical speeds (Campbell)", e),
     }
     match &inputs.unbalance {
+        // A hydro unit's peaks are its critical speeds, judged against the
+        // runaway speed above; the unbalance section shows them.
+        Ok(_) if hydro => {}
         Ok(study) => {
             for (peak, margin) in &study.rows {
                 let c = text::peak_cells(&study.sweep, peak, margin.as_ref(), inputs.amplitude);
@@ -536,6 +550,8 @@ pub fn summary(inputs: &SummaryInputs) -> Table {
                 )),
             ]);
             match &s.level_one {
+                // API 617's Level I screening is not written for hydro units.
+                _ if hydro => {}
                 Some(l) => {
                     let ratio = match l.ratio {
                         Some(r) => format!("{r:.2}"),
@@ -590,6 +606,9 @@ pub fn summary(inputs: &SummaryInputs) -> Table {
             }
         }
         Err(e) => failed(&mut rows, "bearings", e),
+    }
+    if let Some(housing) = inputs.housing.as_ref().filter(|_| hydro) {
+        rows.extend(super::hydro::housing_rows(housing));
     }
     Table {
         id: "summary-table".into(),

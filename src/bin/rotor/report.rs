@@ -10,6 +10,7 @@
 use std::path::{Path, PathBuf};
 
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
+use rotor_bearing::analysis::housing_vibration;
 use rotor_bearing::analysis::modal::ModalOptions;
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::analysis::speed_range::default_top_speed;
@@ -30,6 +31,7 @@ use rotor_bearing::plot::{
     unbalance_png,
 };
 use rotor_bearing::report::html::{Block, Section, Verdict, page};
+use rotor_bearing::report::hydro::{self, HousingStudy};
 use rotor_bearing::report::review::{self, SummaryInputs};
 use rotor_bearing::report::stamp::{now_utc, sha256_hex, software_version};
 use rotor_bearing::report::text::short;
@@ -209,12 +211,21 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         .map_err(|e| err(&e))
     });
 
+    // A hydro unit's housings, from the transient at the operating speed.
+    let housing = model.machine.is_hydro().then(|| {
+        let (settle, record) = housing_vibration::report_spans(rotor, speed);
+        housing_vibration::housing_vibration(rotor, speed, settle, record).map_err(|e| err(&e))
+    });
+
     let summary = review::summary(&SummaryInputs {
         campbell: campbell.as_ref().map_err(Clone::clone),
         unbalance: unbalance.as_ref().map_err(Clone::clone),
         stability: stability.as_ref().map_err(Clone::clone),
         operating: points.as_deref().map_err(Clone::clone),
         amplitude,
+        machine: model.machine,
+        runaway: model.max_speed,
+        housing: housing.as_ref().map(|h| housing_study(model, h)),
     });
     let overall = review::overall(&summary);
     let file_arg = req
@@ -313,6 +324,17 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         &format!("Bearings at {} rpm", short(rpm)),
         blocks,
     ));
+    if let Some(h) = &housing {
+        let blocks = match h {
+            Ok(_) => hydro::housing_blocks(&housing_study(model, h)),
+            Err(e) => vec![Block::Failure(format!("housing vibration: {e}"))],
+        };
+        sections.push(section(
+            "housing-vibration",
+            "Bearing-housing vibration (ISO 10816-5)",
+            blocks,
+        ));
+    }
 
     let blocks = match &modes {
         Ok(m) => {
@@ -389,4 +411,15 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             &sections,
         ),
     )
+}
+
+/// The housing study of the report from the model's group and the vibration.
+fn housing_study<'a>(
+    model: &rotor_bearing::model::RotorModel,
+    vibration: &'a Result<Vec<housing_vibration::HousingVibration>, String>,
+) -> HousingStudy<'a> {
+    HousingStudy {
+        group: model.housing_group,
+        vibration: vibration.as_deref().map_err(Clone::clone),
+    }
 }

@@ -98,6 +98,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
             ])
         }
     };
+    let (machine, housing_group) = machine_class(ctx, &root, &raw.machine, raw.housing_group)?;
     let reduction = match raw.reduction {
         None => None,
         Some(r) => Some(match r.modes {
@@ -123,6 +124,8 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         max_speed,
         max_speed_stated: raw.max_speed_rpm.is_some(),
         operating_range,
+        machine,
+        housing_group,
         name: raw.name,
         description: raw.description,
         source: ctx.source.to_string(),
@@ -162,4 +165,53 @@ fn check_name(ctx: &Ctx, root: &FieldPath, name: &str) -> Result<(), ModelError>
         ));
     }
     Ok(())
+}
+
+/// `machine` and `housing_group`: the class (default generic) and, for a
+/// hydro class, its ISO 10816-5 group; a group on another class is an error.
+fn machine_class(
+    ctx: &Ctx,
+    root: &FieldPath,
+    machine: &Option<String>,
+    group: Option<i64>,
+) -> Result<
+    (
+        super::machine_class::MachineClass,
+        Option<super::machine_class::HousingGroup>,
+    ),
+    ModelError,
+> {
+    use super::machine_class::{HousingGroup, MachineClass};
+    let class = match machine {
+        None => MachineClass::Generic,
+        Some(name) => MachineClass::parse(name).ok_or_else(|| {
+            let names: Vec<&str> = MachineClass::ALL.iter().map(|(_, n)| *n).collect();
+            ctx.err(
+                root.key("machine"),
+                format!("{name:?}"),
+                &format!("must be one of {}", names.join(", ")),
+            )
+        })?,
+    };
+    let group = match group {
+        None => None,
+        Some(n) => {
+            let path = root.key("housing_group");
+            if !class.is_hydro() {
+                return Err(ctx.err(
+                    path,
+                    n,
+                    "is an ISO 10816-5 group of hydraulic machine sets: give it with machine = \"hydro_generator\" or \"pump_turbine\"",
+                ));
+            }
+            Some(HousingGroup::of(n).ok_or_else(|| {
+                ctx.err(
+                    path,
+                    n,
+                    "must be 2 (horizontal, housings braced on the casing), 3 (vertical, all housings on the foundation) or 4 (vertical, upper housings on the generator stator)",
+                )
+            })?)
+        }
+    };
+    Ok((class, group))
 }

@@ -50,6 +50,7 @@ pub(super) fn pedestals(
             damping,
             on: None,
             offset: super::bearings::centre_offset(ctx, &p, (e.offset_x, e.offset_y))?,
+            on_stator: e.on_stator,
         });
     }
     for (i, e) in entries.iter().enumerate() {

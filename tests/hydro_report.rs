@@ -1,0 +1,160 @@
+//! The report of a hydraulic machine set (issue 48): `machine =
+//! "hydro_generator"` judges the first critical speed against the runaway
+//! speed and each bearing housing by its ISO 10816-5 zone, and leaves out
+//! API 617's Level I; the values are the library's own (`campbell_study`,
+//! `housing_vibration`); the same model as `generic` keeps the API criteria.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
+use rotor_bearing::analysis::housing_vibration::{housing_vibration, report_spans};
+use rotor_bearing::model::{DEFAULT_MODEL_TOML, RotorModel};
+use rotor_bearing::report::hydro::housing_zone;
+use rotor_bearing::report::text::short;
+use rotor_bearing::rotor::Rotor;
+
+const RPM: f64 = std::f64::consts::PI / 30.0;
+
+/// The damped classic rotor on two 20 kg pedestals, of class `machine`,
+/// runaway speed 2000 rpm.
+fn model_text(machine: &str) -> String {
+    DEFAULT_MODEL_TOML
+        .replace("kyy = 1e6\n", "kyy = 1e6\ncxx = 4000.0\ncyy = 4000.0\n")
+        .replace(
+            "name = \"drive_end\"\n",
+            "name = \"drive_end\"\npedestal = \"left\"\n",
+        )
+        .replace(
+            "name = \"non_drive_end\"\n",
+            "name = \"non_drive_end\"\npedestal = \"right\"\n",
+        )
+        .replace("magnitude = 0.001", "magnitude = 4.5e-3")
+        .replace(
+            "speed_rpm = 1000 ",
+            &format!("{machine}max_speed_rpm = 2000\nspeed_rpm = 1000 "),
+        )
+        + "\n[[pedestals]]\nname = \"left\"\nmass = 20.0\nkxx = 5e6\nkyy = 5e6\ncxx = 2000.0\ncyy = 2000.0\n"
+        + "[[pedestals]]\nname = \"right\"\nmass = 20.0\nkxx = 5e6\nkyy = 5e6\ncxx = 2000.0\ncyy = 2000.0\n"
+}
+
+/// The summary table's rows of the report of `text`, cells stripped of tags.
+fn summary_rows(text: &str, name: &str) -> Vec<Vec<String>> {
+    let dir = std::env::temp_dir().join(format!("hydro-report-{}-{name}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let model = dir.join(format!("{name}.toml"));
+    std::fs::write(&model, text).unwrap();
+    let html = dir.join("report.html");
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("report")
+        .arg(&model)
+        .arg("--out")
+        .arg(&html)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let page = std::fs::read_to_string(&html).unwrap();
+    let table = &page[page.find("id=\"summary-table\"").unwrap()..];
+    let table = &table[..table.find("</table>").unwrap()];
+    let strip = |c: &str| {
+        let mut s = String::new();
+        let mut inside = false;
+        for ch in c.chars() {
+            match ch {
+                '<' => inside = true,
+                '>' => inside = false,
+                _ if !inside => s.push(ch),
+                _ => {}
+            }
+        }
+        s.replace("&lt;", "<")
+            .replace("&gt;", ">")
+            .replace("&amp;", "&")
+            .trim()
+            .to_string()
+    };
+    let _ = std::fs::remove_dir_all(PathBuf::from(&dir));
+    table
+        .split("<tr>")
+        .skip(2)
+        .map(|r| {
+            r.split("<td")
+                .skip(1)
+                .map(|c| strip(&format!("<td{c}")))
+                .collect()
+        })
+        .collect()
+}
+
+#[test]
+fn a_hydro_unit_is_judged_by_runaway_speed_and_housing_zones() {
+    let text = model_text("machine = \"hydro_generator\"\nhousing_group = 3\n");
+    let rows = summary_rows(&text, "hydro");
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "hydro.toml").unwrap()).unwrap();
+    let speed = 1000.0 * RPM;
+    // The first critical speed, as the Campbell study finds it.
+    let study = campbell_study(&rotor, &CampbellRequest::default_for(None)).unwrap();
+    let lowest = study
+        .margins
+        .iter()
+        .map(|m| m.critical.speed)
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        lowest.is_finite(),
+        "the classic rotor has a critical below its top speed"
+    );
+    let critical = rows
+        .iter()
+        .find(|r| r[0] == "first critical speed (Campbell)")
+        .expect("the hydro critical row");
+    assert_eq!(critical[2], format!("{} rpm", short(lowest / RPM)));
+    assert_eq!(critical[3], "above the runaway speed 2000 rpm");
+    assert_eq!(
+        critical[4],
+        if lowest > 2000.0 * RPM {
+            "pass"
+        } else {
+            "FAIL"
+        }
+    );
+    // Each bearing housing, as housing_vibration finds it, in its zone.
+    let (settle, record) = report_spans(&rotor, speed);
+    let housings = housing_vibration(&rotor, speed, settle, record).unwrap();
+    assert_eq!(housings.len(), 2);
+    for h in &housings {
+        let row = rows
+            .iter()
+            .find(|r| r[0] == "housing vibration (ISO 10816-5)" && r[1] == h.name)
+            .expect("a housing row per bearing");
+        let zone = housing_zone(
+            rotor_bearing::model::machine_class::HousingGroup::VerticalOnFoundation,
+            h,
+        );
+        assert_eq!(
+            row[2],
+            format!(
+                "{} mm/s r.m.s., {} µm pk-pk: zone {}",
+                short(h.velocity_rms * 1e3),
+                short(h.displacement_pp * 1e6),
+                zone.letter()
+            )
+        );
+        assert_eq!(row[4], if zone.acceptable() { "pass" } else { "FAIL" });
+    }
+    assert!(rows.iter().all(|r| !r[3].contains("API")), "{rows:?}");
+}
+
+#[test]
+fn a_generic_model_keeps_the_api_criteria() {
+    let rows = summary_rows(&model_text(""), "generic");
+    assert!(rows.iter().any(|r| r[3].contains("(API 684)")), "{rows:?}");
+    assert!(rows.iter().all(|r| !r[0].contains("ISO 10816-5")));
+    assert!(
+        rows.iter()
+            .all(|r| r[0] != "first critical speed (Campbell)")
+    );
+}
