@@ -11,11 +11,14 @@
 //! nodes. In each plane the bending moment follows `EI w'' = M` in beam
 //! coordinates `(w, θ) = (x, θy)` and `(y, −θx)`: `M(z₁) = −f_θ1`,
 //! `M(z₂) = f_θ2`, and the shear `V = dM/dz` is `V(z₁) = f_w1`,
-//! `V(z₂) = −f_w2`. The bending stress at the outer fibre is
+//! `V(z₂) = −f_w2`. The element after a misaligned rigid flange carries
+//! `K_e (u_e + s) − f_g,e` with its initial strain `s`; a flexible
+//! coupling in place of an element is no shaft and is left out. The bending stress at the outer fibre is
 //! `σ = |M| D_o / (2 I)`, `|M|` the resultant of the two planes.
 
 use crate::fe::DOF_PER_NODE;
-use crate::rotor::Rotor;
+use crate::model::CouplingJoint;
+use crate::rotor::{Rotor, flange_strain};
 
 /// The section forces at one end of a shaft element.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,11 +49,24 @@ pub fn section_loads(rotor: &Rotor, all: &[f64], gravity: bool) -> Vec<SectionLo
     let g = if gravity { model.gravity } else { [0.0; 3] };
     let mut out = Vec::with_capacity(2 * model.elements.len());
     for (index, placed) in model.elements.iter().enumerate() {
+        // A flexible coupling in place of the element is no shaft.
+        if model
+            .couplings
+            .iter()
+            .any(|c| c.element == index && matches!(c.joint, CouplingJoint::Flexible { .. }))
+        {
+            continue;
+        }
         let element = &placed.element;
         let mats = element.matrices();
         let k = mats.stiffness + mats.axial_per_newton * placed.axial_force;
         let base = placed.node * DOF_PER_NODE;
-        let u = nalgebra::SVector::<f64, 8>::from_fn(|i, _| all[base + i]);
+        let mut u = nalgebra::SVector::<f64, 8>::from_fn(|i, _| all[base + i]);
+        // After a misaligned rigid flange the element's left end sits at the
+        // misalignment from its node ([`crate::rotor::flange_strain`]).
+        if let Some(s) = flange_strain(model, index) {
+            u += s;
+        }
         // The rigid translation by the gravity vector: x and y of both nodes.
         let u_g = nalgebra::SVector::<f64, 8>::from_fn(|i, _| match i % DOF_PER_NODE {
             0 => g[0],

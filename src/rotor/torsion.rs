@@ -65,8 +65,10 @@ impl TorsionalRotor {
             let pair = [placed.node, placed.node + 1];
             // A coupling replaces the element's stiffness and damping.
             let mut c_element = placed.torsional_damping;
-            if let Some(c) = model.couplings.iter().find(|c| c.element == k) {
-                kt = [[c.stiffness, -c.stiffness], [-c.stiffness, c.stiffness]];
+            if let Some(c) = model.couplings.iter().find(|c| c.element == k)
+                && let Some(s) = c.stiffness
+            {
+                kt = [[s, -s], [-s, s]];
                 c_element = c.damping;
             }
             if c_element != 0.0 {

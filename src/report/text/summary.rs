@@ -319,15 +319,16 @@ fn drive_summary(s: &mut String, m: &RotorModel) {
         )
         .ok();
     }
-    for c in &m.couplings {
+    for c in m.couplings.iter() {
         let node = m.elements[c.element].node;
+        let Some(k) = c.stiffness else { continue };
         writeln!(
             s,
             "  coupling {} between nodes {} and {}: torsional stiffness {} N·m/rad, damping {} N·m·s/rad",
             c.name,
             node + 1,
             node + 2,
-            short(c.stiffness),
+            short(k),
             short(c.damping)
         )
         .ok();
