@@ -500,7 +500,18 @@ impl RotorModel {
         let raw: ModelFile = toml::from_str(text).map_err(|e| {
             let span = e.span();
             let line = span.as_ref().map(|s| line_of(text, s.start));
-            let message = e.message().trim();
+            let mut message = e.message().trim().to_string();
+            // A key given twice: name it (the parser says only "duplicate key").
+            if message == "duplicate key"
+                && let Some(s) = span.as_ref()
+            {
+                let start = text[..s.start].rfind('\n').map_or(0, |i| i + 1);
+                let key = text[start..].split(['=', '\n']).next().unwrap_or("").trim();
+                if !key.is_empty() {
+                    message = format!("duplicate key {key} (a key is given once per entry)");
+                }
+            }
+            let message = message.as_str();
             let path = span.and_then(|s| field_at(text, &s));
             // A whole entry read at once (bearings, chosen by `type`): name the key.
             let culprit = path.as_ref().and_then(|p| {
