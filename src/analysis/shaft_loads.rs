@@ -17,7 +17,6 @@
 //! `σ = |M| D_o / (2 I)`, `|M|` the resultant of the two planes.
 
 use crate::fe::DOF_PER_NODE;
-use crate::model::CouplingJoint;
 use crate::rotor::{Rotor, flange_strain};
 
 /// The section forces at one end of a shaft element.
@@ -50,11 +49,7 @@ pub fn section_loads(rotor: &Rotor, all: &[f64], gravity: bool) -> Vec<SectionLo
     let mut out = Vec::with_capacity(2 * model.elements.len());
     for (index, placed) in model.elements.iter().enumerate() {
         // A flexible coupling in place of the element is no shaft.
-        if model
-            .couplings
-            .iter()
-            .any(|c| c.element == index && matches!(c.joint, CouplingJoint::Flexible { .. }))
-        {
+        if model.flexible_coupling_at(index) {
             continue;
         }
         let element = &placed.element;

@@ -652,17 +652,34 @@ impl RotorModel {
         model
     }
 
-    /// Total rotating mass: shaft plus disks (kg).
+    /// Whether a flexible coupling replaces shaft element `element`.
+    pub fn flexible_coupling_at(&self, element: usize) -> bool {
+        self.couplings
+            .iter()
+            .any(|c| c.element == element && matches!(c.joint, CouplingJoint::Flexible { .. }))
+    }
+
+    /// The shaft elements that are shaft (not replaced by a flexible coupling).
+    fn shaft_elements(&self) -> impl Iterator<Item = &PlacedElement> {
+        let shaft = |(k, _): &(usize, &PlacedElement)| !self.flexible_coupling_at(*k);
+        self.elements
+            .iter()
+            .enumerate()
+            .filter(shaft)
+            .map(|(_, e)| e)
+    }
+
+    /// Total rotating mass: shaft plus disks (kg); the hubs of a flexible
+    /// coupling are disks, its element none.
     pub fn total_mass(&self) -> f64 {
-        self.elements.iter().map(|e| e.element.mass()).sum::<f64>()
+        self.shaft_elements().map(|e| e.element.mass()).sum::<f64>()
             + self.disks.iter().map(|d| d.disk.mass).sum::<f64>()
     }
 
     /// Total polar inertia about the shaft axis: shaft `ρ J_p L` plus the
     /// disks' (kg·m²).
     pub fn total_polar_inertia(&self) -> f64 {
-        self.elements
-            .iter()
+        self.shaft_elements()
             .map(|e| {
                 e.element.material.density * e.element.section.polar_moment() * e.element.length
             })

@@ -2,7 +2,8 @@
 //! local matrices `M`, `K`, `C`, `G` (`G` per rad/s of spin) over a list of
 //! free DOFs (`None`: fixed by a support, or ground); assembly adds them into
 //! the banded matrices in the order they are listed:
-//! shaft elements, disks, point masses, pedestals, then the bearings in
+//! shaft elements (a flexible coupling in place of one, a spring–damper
+//! between its two nodes), disks, point masses, pedestals, then the bearings in
 //! model order (linear bearings, added masses of table bearings and seals).
 //!
 //! A spring–damper between two points (a bearing between its journal and its

@@ -61,7 +61,12 @@ impl TorsionalRotor {
         };
         let mut elements = Vec::with_capacity(model.elements.len());
         for (k, placed) in model.elements.iter().enumerate() {
-            let (m, mut kt) = torsion_matrices(&placed.element);
+            let (mut m, mut kt) = torsion_matrices(&placed.element);
+            // A flexible coupling in place of the element has no inertia of
+            // its own (its hubs are disks), as laterally.
+            if model.flexible_coupling_at(k) {
+                m = [[0.0; 2]; 2];
+            }
             let pair = [placed.node, placed.node + 1];
             // A coupling replaces the element's stiffness and damping.
             let mut c_element = placed.torsional_damping;
