@@ -14,8 +14,11 @@ use rotor_bearing::analysis::linear::static_deflection;
 use rotor_bearing::analysis::linearize::linearized;
 use rotor_bearing::analysis::modal::{ModalOptions, modes};
 use rotor_bearing::analysis::shaft_loads::section_loads;
+use rotor_bearing::analysis::torsion::torsional_modes;
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::rotor::torsion::TorsionalRotor;
+use rotor_bearing::solver::{SimState, Simulator, SolverOptions};
 
 const E: f64 = 211e9;
 const NU: f64 = 0.3;
@@ -194,6 +197,15 @@ fn a_misaligned_flexible_coupling_loads_its_shafts_by_stiffness_times_misalignme
 /// shaft (disk at node 3, bearings at nodes 1 and 4) and a 1.2 m × 50 mm
 /// one (disk at its node 3, bearings at its nodes 2 and 5).
 fn stiff_train(coupled: bool) -> Rotor {
+    let coupling = "[[couplings]]\nname = \"stiff\"\nnode = 5\nlateral_stiffness = 1e15\nangular_stiffness = 1e15\n";
+    let text = train_text(coupled.then_some(coupling));
+    Rotor::new(RotorModel::from_toml(&text, "stiff.toml").unwrap()).unwrap()
+}
+
+/// The two-shaft train's model file, with `coupling` (an entry at node 5)
+/// in a 0.1 m element between the shafts, or the shafts meeting at a node.
+fn train_text(coupling: Option<&str>) -> String {
+    let coupled = coupling.is_some();
     let mut text = header() + &shaft(1.0, 0.06, 4);
     let offset = if coupled {
         text += &shaft(0.1, 0.06, 1);
@@ -221,10 +233,10 @@ fn stiff_train(coupled: bool) -> Rotor {
             "[[disks]]\nname = \"{name}\"\nnode = {node}\nmaterial = \"steel\"\nouter_diameter = {od}\ninner_diameter = {bore}\nwidth = 0.05\n"
         );
     }
-    if coupled {
-        text += "[[couplings]]\nname = \"stiff\"\nnode = 5\nlateral_stiffness = 1e15\nangular_stiffness = 1e15\n";
+    if let Some(c) = coupling {
+        text += c;
     }
-    Rotor::new(RotorModel::from_toml(&text, "stiff.toml").unwrap()).unwrap()
+    text
 }
 
 #[test]
@@ -350,4 +362,108 @@ fn couplings_without_the_lateral_keys_leave_the_lateral_rotor_bit_identical() {
         let s = static_deflection(&r).unwrap();
         assert_eq!(s == plain_static, same_statics);
     }
+}
+
+/// Two disks (2 and 5 kg·m²) joined by a flexible coupling with lateral,
+/// angular and torsional stiffness (1e5 N·m/rad) in place of a 0.2 m
+/// element: the coupling has no inertia of its own, so the one torsional
+/// frequency is `√(k (J₁ + J₂)/(J₁ J₂))` exactly (to 1e-9).
+#[test]
+fn a_flexible_coupling_keeps_the_torsional_closed_form() {
+    let text = header()
+        + &shaft(0.2, 0.05, 1)
+        + "[[disks]]\nnode = 1\nmass = 10.0\npolar_inertia = 2.0\ndiametral_inertia = 1.0\n\
+           [[disks]]\nnode = 2\nmass = 10.0\npolar_inertia = 5.0\ndiametral_inertia = 2.5\n\
+           [[couplings]]\nnode = 1\ntorsional_stiffness = 1e5\nlateral_stiffness = 1e7\nangular_stiffness = 1e5\n\
+           [[bearings]]\ntype = \"linear\"\nnode = 1\nkxx = 1e6\nkyy = 1e6\n\
+           [[bearings]]\ntype = \"linear\"\nnode = 2\nkxx = 1e6\nkyy = 1e6\n";
+    let model = RotorModel::from_toml(&text, "two.toml").unwrap();
+    let modes = torsional_modes(&model, 3).unwrap();
+    assert_eq!(modes.len(), 1);
+    let (j1, j2, k): (f64, f64, f64) = (2.0, 5.0, 1e5);
+    let want = (k * (j1 + j2) / (j1 * j2)).sqrt();
+    let got = modes[0].natural_frequency;
+    assert!(
+        (got / want - 1.0).abs() < 1e-9,
+        "{got} against {want} rad/s"
+    );
+}
+
+/// `xᵀ A y` for a banded matrix.
+fn quadratic(a: &rotor_bearing::linalg::BandMatrix<f64>, x: &[f64], y: &[f64]) -> f64 {
+    let mut ay = vec![0.0; y.len()];
+    a.mul_vec(y, &mut ay);
+    x.iter().zip(&ay).map(|(p, q)| p * q).sum()
+}
+
+/// The two-shaft train torque-driven (20 N·m at the first shaft's free end
+/// against −5 N·m at the second's), its flexible coupling damped laterally,
+/// angularly and torsionally, an unbalance on the first shaft's disk: over
+/// 0.5 s from rest the work of the torques equals the change of the whole
+/// train's energy (lateral, torsional, the unbalance's cross term) plus what
+/// the bearings and the coupling dissipate, to 1e-6 of the work — the
+/// coupling's spring–damper is in the same `M`, `K`, `C` the transient
+/// steps, and the torsion runs through it.
+#[test]
+fn a_torque_driven_train_keeps_its_torsion() {
+    let coupling = "[[couplings]]\nname = \"flexible\"\nnode = 5\nlateral_stiffness = 2e7\n\
+                    angular_stiffness = 5e4\nlateral_damping = 300.0\nangular_damping = 20.0\n\
+                    torsional_stiffness = 3e4\ntorsional_damping = 2.0\n\
+                    [torsion]\ndrive = \"torque\"\n[[torques]]\nname = \"drive\"\nnode = 1\n\
+                    [[torques]]\nname = \"load\"\nnode = 10\n\
+                    [[unbalance]]\nnode = 3\nmagnitude = 1e-3\n";
+    let model = RotorModel::from_toml(&train_text(Some(coupling)), "torque.toml").unwrap();
+    let chain = TorsionalRotor::new(&model);
+    let r = Rotor::new(model.clone()).unwrap();
+    let (mass, stiffness, damping) = (r.mass.clone(), r.stiffness.clone(), r.damping.clone());
+    let disk = [r.dofs.free(2, 0).unwrap(), r.dofs.free(2, 1).unwrap()];
+    let (me, phase) = (model.unbalances[0].magnitude, model.unbalances[0].phase);
+    let h = 1e-4;
+    let mut sim = Simulator::new(
+        r,
+        SolverOptions {
+            time_step: h,
+            gravity: false,
+            ..SolverOptions::default()
+        },
+    )
+    .unwrap();
+    let first = model.first_torque_input();
+    sim.set_load(first, 20.0, 0.0).unwrap();
+    sim.set_load(first + 1, -5.0, 0.0).unwrap();
+    let energy = |s: &SimState| {
+        let phi = s.twist[2] + phase;
+        let cross = -me * s.twist_rate[2] * (s.ud[disk[0]] * phi.sin() - s.ud[disk[1]] * phi.cos());
+        0.5 * quadratic(&mass, &s.ud, &s.ud)
+            + 0.5 * quadratic(&stiffness, &s.u, &s.u)
+            + 0.5 * quadratic(&chain.mass, &s.twist_rate, &s.twist_rate)
+            + 0.5 * quadratic(&chain.stiffness, &s.twist, &s.twist)
+            + cross
+    };
+    let mut state = sim.state().clone();
+    let e0 = energy(&state);
+    let (mut work, mut dissipated) = (0.0, 0.0);
+    for n in 1..=5000 {
+        sim.advance_to(n as f64 * h).unwrap();
+        let next = sim.state().clone();
+        work += 20.0 * (next.twist[0] - state.twist[0]) - 5.0 * (next.twist[9] - state.twist[9]);
+        let mid = |a: &[f64], b: &[f64]| -> Vec<f64> {
+            a.iter().zip(b).map(|(p, q)| 0.5 * (p + q)).collect()
+        };
+        let v = mid(&state.ud, &next.ud);
+        let w = mid(&state.twist_rate, &next.twist_rate);
+        dissipated += h * (quadratic(&damping, &v, &v) + quadratic(&chain.damping, &w, &w));
+        state = next;
+    }
+    let change = energy(&state) - e0;
+    let speed = state.twist_rate[0];
+    assert!(speed > 10.0, "the train spun up to {speed} rad/s");
+    assert!(
+        (work - change - dissipated).abs() < 1e-6 * work,
+        "input work {work:e} J against energy change {change:e} J plus dissipation {dissipated:e} J"
+    );
+    eprintln!(
+        "torque-driven train: work {work:e} J, balance {:e} of it, {speed:.1} rad/s",
+        (work - change - dissipated).abs() / work
+    );
 }
