@@ -13,7 +13,7 @@ use nalgebra::{Matrix2, Vector2};
 use rotor_bearing::analysis::linear::static_deflection;
 use rotor_bearing::analysis::linearize::linearized;
 use rotor_bearing::analysis::modal::{ModalOptions, modes};
-use rotor_bearing::analysis::shaft_loads::section_loads;
+use rotor_bearing::analysis::shaft_loads::{coupling_loads, section_loads};
 use rotor_bearing::analysis::torsion::torsional_modes;
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
@@ -109,6 +109,17 @@ fn a_misaligned_rigid_flange_transfers_the_closed_form_shear_and_moment() {
         // The offset does load the line (the check can fail).
         assert!(m_max > 100.0, "plane {plane}: largest moment {m_max} N·m");
     }
+    // What the flange transmits: the line's section loads at it.
+    let flange = &coupling_loads(&rotor, &all, false)[0];
+    for plane in 0..2 {
+        let v2 = -(delta[plane] + alpha[plane] * (l - z_f));
+        let psi2 = -alpha[plane];
+        let f1 = c * (-12.0 * v2 + 6.0 * l * psi2);
+        let m1 = c * (-6.0 * l * v2 + (2.0 - phi) * l * l * psi2);
+        let moment = -m1 + f1 * z_f;
+        assert!((flange.moment[plane] - moment).abs() < 1e-9 * moment.abs().max(m1.abs()));
+        assert!((flange.shear[plane] - f1).abs() < 1e-9 * f1.abs());
+    }
     eprintln!("flange: worst relative difference {worst:e}");
 }
 
@@ -174,8 +185,14 @@ fn a_misaligned_flexible_coupling_loads_its_shafts_by_stiffness_times_misalignme
             }
         };
         let spring = k * (q(right_tip) - q(left_tip) - m);
+        let library = &coupling_loads(&rotor, &all, false)[0];
+        let transmitted = Vector2::new(-library.shear[plane], library.moment[plane]);
         let shaft_end = Vector2::new(-tip.shear[plane], tip.moment[plane]);
-        for (what, got) in [("section loads", shaft_end), ("coupling", spring)] {
+        for (what, got) in [
+            ("section loads", shaft_end),
+            ("coupling", spring),
+            ("coupling_loads", transmitted),
+        ] {
             for i in 0..2 {
                 let d = (got[i] - f[i]).abs() / f[i].abs();
                 worst = worst.max(d);
@@ -466,4 +483,56 @@ fn a_torque_driven_train_keeps_its_torsion() {
         "torque-driven train: work {work:e} J, balance {:e} of it, {speed:.1} rad/s",
         (work - change - dissipated).abs() / work
     );
+}
+
+/// The alignment tables of `rotor report` (issue 49): the two-shaft train
+/// under its weight on linear bearings, its flexible coupling set off by
+/// 0.1 mm: one row per bearing with its reaction, one per coupling with
+/// what it transmits — the line's section loads at the shaft before it
+/// (the shear and moment are continuous through the coupling, 1e-9).
+#[test]
+fn the_report_tables_the_alignment_and_the_coupling_loads() {
+    use rotor_bearing::analysis::alignment::alignment;
+    use rotor_bearing::report::html::Block;
+    use rotor_bearing::report::review::alignment_blocks;
+    use rotor_bearing::report::text::short;
+    let coupling = "[[couplings]]\nname = \"flexible\"\nnode = 5\nlateral_stiffness = 2e7\n\
+                    angular_stiffness = 5e4\nparallel_offset = [0.0, 1e-4]\n";
+    let text = train_text(Some(coupling))
+        .replace("gravity = [0.0, 0.0, 0.0]", "gravity = [0.0, -9.81, 0.0]");
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "train.toml").unwrap()).unwrap();
+    let options = SolverOptions::default();
+    let line = alignment(&rotor, 0.0, &options).unwrap();
+    let all = rotor.dofs.expand(&line.equilibrium.displacement);
+    let loads = coupling_loads(&rotor, &all, true);
+    assert_eq!(loads.len(), 1);
+    // Continuity: the shaft before the coupling ends with what it transmits.
+    let sections = section_loads(&rotor, &all, true);
+    let before = sections
+        .iter()
+        .find(|s| s.element == 3 && s.node == 4)
+        .unwrap();
+    for plane in 0..2 {
+        let scale = loads[0].shear[1].abs();
+        assert!((before.shear[plane] - loads[0].shear[plane]).abs() < 1e-9 * scale);
+        assert!(
+            (before.moment[plane] - loads[0].moment[plane]).abs()
+                < 1e-9 * loads[0].moment[1].abs().max(1.0)
+        );
+    }
+    assert!(loads[0].shear[1].abs() > 10.0, "{:?}", loads[0]);
+    let blocks = alignment_blocks(&line, &loads);
+    let tables: Vec<_> = blocks
+        .iter()
+        .filter_map(|b| match b {
+            Block::Table(t) => Some(t),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(tables.len(), 2);
+    assert_eq!(tables[0].id, "alignment");
+    assert_eq!(tables[0].rows.len(), 4);
+    assert_eq!(tables[1].id, "coupling-loads");
+    assert_eq!(tables[1].rows[0][3].text, short(loads[0].shear[1]));
+    assert_eq!(tables[1].rows[0][5].text, short(loads[0].moment[1]));
 }
