@@ -36,6 +36,15 @@ $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --out
 # The same run on the Craig–Bampton reduced rotor (34 coordinates for 80 DOFs).
 $rotor simulate models/hydro_unit.toml --rpm 150 --duration 40 --step 5e-3 --output-step 5e-3 --ramp-time 2 \
   --reduced-modes 10 --csv out/hydro_unit_reduced.csv
+# A train of rotors (issue 49): a turbine, a flexible coupling, a generator and a
+# flanged exciter on five bearings set on their catenary: the alignment (the
+# bearing loads and the line's bending stress), the Campbell diagram and 0.5 s
+# at 3000 rpm.
+$rotor alignment models/turbine_generator_train.toml --rpm 3000 > out/turbine_generator_train_alignment.txt
+$rotor campbell models/turbine_generator_train.toml --csv out/turbine_generator_train_campbell.csv \
+  --png out/turbine_generator_train_campbell.png
+$rotor simulate models/turbine_generator_train.toml --rpm 3000 --duration 0.5 \
+  --csv out/turbine_generator_train.csv
 # The whole machine: a 300 rpm Francis unit on its bearing brackets with a runner
 # seal and the generator's magnetic pull (docs/machine.md): Campbell diagram and
 # unbalance response as shipped (field off), operating point and a 10 s

@@ -7,7 +7,10 @@
 //! needs a positive one, a size or mass absurd by twenty orders of magnitude
 //! (issue 22: a diameter of 1e300 m passed), a duplicated name. Centre
 //! offsets (`offset_x`, `offset_y`, issue 49) are inserted into the entries
-//! that take them, with the same values.
+//! that take them, with the same values, and so are the couplings'
+//! misalignments (`parallel_offset`, `angular_offset`, as `[value, 0.0]`);
+//! the couplings' stiffnesses and dampings are mutated where the shipped
+//! train (`models/turbine_generator_train.toml`) gives them.
 //!
 //! `ROTOR_MODEL_FUZZ_MUTANTS` sets the mutants per model (default 100),
 //! `ROTOR_FUZZ_SEED` the first seed (default 1); each failure prints its seed
@@ -36,10 +39,19 @@ const POSITIVE: &[&str] = &[
     "pad_arc_deg",
     "elements",
     "pads",
+    "lateral_stiffness",
+    "angular_stiffness",
+    "torsional_stiffness",
 ];
 
 /// Keys whose value must not be negative (zero disk inertias make a point mass).
-const NON_NEGATIVE: &[&str] = &["polar_inertia", "diametral_inertia"];
+const NON_NEGATIVE: &[&str] = &[
+    "polar_inertia",
+    "diametral_inertia",
+    "lateral_damping",
+    "angular_damping",
+    "torsional_damping",
+];
 
 /// Keys of sizes and masses: a value of 1e20 or 1e-20 (in SI units) is no
 /// machine and must be refused, naming the field.
@@ -68,6 +80,10 @@ const OFFSET_SECTIONS: &[&str] = &[
     "[[magnetic_pull]]",
     "[[pedestals]]",
 ];
+
+/// A coupling's misalignments (issue 49) and the largest magnitude each
+/// takes: 1 m of parallel offset, 0.1 rad of angular offset.
+const COUPLING_OFFSETS: &[(&str, f64)] = &[("parallel_offset", 1.0), ("angular_offset", 0.1)];
 
 /// Replacement values: nonsense, edge cases and wrong types.
 const VALUES: &[&str] = &[
@@ -134,6 +150,13 @@ impl Mutation {
                         Some(format!("{key} = {value} is no offset (beyond 1 m)"))
                     }
                     Some(x)
+                        if COUPLING_OFFSETS
+                            .iter()
+                            .any(|(k, most)| k == key && x.abs() > *most) =>
+                    {
+                        Some(format!("{key} = [{value}, 0.0] is no misalignment"))
+                    }
+                    Some(x)
                         if SIZES.contains(&key.as_str())
                             && !((1e-20..1e20).contains(&x)
                                 || x == 0.0 && NON_NEGATIVE.contains(&key.as_str())) =>
@@ -195,17 +218,25 @@ fn mutate(text: &str, rng: &mut Rng) -> (String, Mutation) {
     let headers: Vec<usize> = lines
         .iter()
         .enumerate()
-        .filter(|(_, l)| OFFSET_SECTIONS.contains(&l.trim()))
+        .filter(|(_, l)| OFFSET_SECTIONS.contains(&l.trim()) || l.trim() == "[[couplings]]")
         .map(|(i, _)| i)
         .collect();
     match rng.below(10) {
         5 if !headers.is_empty() => {
-            // A centre offset inserted into an entry that takes one.
-            let at = headers[rng.below(headers.len())] + 1;
-            let key = OFFSETS[rng.below(OFFSETS.len())].to_string();
+            // A centre offset (a coupling's misalignment) inserted into an
+            // entry that takes one.
+            let header = headers[rng.below(headers.len())];
+            let at = header + 1;
             let value = VALUES[rng.below(VALUES.len())];
+            let (key, assignment) = if lines[header].trim() == "[[couplings]]" {
+                let key = COUPLING_OFFSETS[rng.below(COUPLING_OFFSETS.len())].0;
+                (key.to_string(), format!("{key} = [{value}, 0.0]"))
+            } else {
+                let key = OFFSETS[rng.below(OFFSETS.len())];
+                (key.to_string(), format!("{key} = {value}"))
+            };
             let mut out: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
-            out.insert(at, format!("{key} = {value}"));
+            out.insert(at, assignment);
             (
                 out.join("\n"),
                 Mutation::Value {

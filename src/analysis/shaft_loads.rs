@@ -11,11 +11,14 @@
 //! nodes. In each plane the bending moment follows `EI w'' = M` in beam
 //! coordinates `(w, θ) = (x, θy)` and `(y, −θx)`: `M(z₁) = −f_θ1`,
 //! `M(z₂) = f_θ2`, and the shear `V = dM/dz` is `V(z₁) = f_w1`,
-//! `V(z₂) = −f_w2`. The bending stress at the outer fibre is
+//! `V(z₂) = −f_w2`. The element after a misaligned rigid flange carries
+//! `K_e (u_e + s) − f_g,e` with its initial strain `s`; a flexible
+//! coupling in place of an element is no shaft and is left out. The bending stress at the outer fibre is
 //! `σ = |M| D_o / (2 I)`, `|M|` the resultant of the two planes.
 
 use crate::fe::DOF_PER_NODE;
-use crate::rotor::Rotor;
+use crate::model::CouplingJoint;
+use crate::rotor::{Rotor, flange_strain};
 
 /// The section forces at one end of a shaft element.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,11 +49,20 @@ pub fn section_loads(rotor: &Rotor, all: &[f64], gravity: bool) -> Vec<SectionLo
     let g = if gravity { model.gravity } else { [0.0; 3] };
     let mut out = Vec::with_capacity(2 * model.elements.len());
     for (index, placed) in model.elements.iter().enumerate() {
+        // A flexible coupling in place of the element is no shaft.
+        if model.flexible_coupling_at(index) {
+            continue;
+        }
         let element = &placed.element;
         let mats = element.matrices();
         let k = mats.stiffness + mats.axial_per_newton * placed.axial_force;
         let base = placed.node * DOF_PER_NODE;
-        let u = nalgebra::SVector::<f64, 8>::from_fn(|i, _| all[base + i]);
+        let mut u = nalgebra::SVector::<f64, 8>::from_fn(|i, _| all[base + i]);
+        // After a misaligned rigid flange the element's left end sits at the
+        // misalignment from its node ([`crate::rotor::flange_strain`]).
+        if let Some(s) = flange_strain(model, index) {
+            u += s;
+        }
         // The rigid translation by the gravity vector: x and y of both nodes.
         let u_g = nalgebra::SVector::<f64, 8>::from_fn(|i, _| match i % DOF_PER_NODE {
             0 => g[0],
@@ -92,4 +104,70 @@ pub fn section_loads(rotor: &Rotor, all: &[f64], gravity: bool) -> Vec<SectionLo
 /// The section of largest bending stress, `None` without shaft elements.
 pub fn largest_stress(loads: &[SectionLoad]) -> Option<&SectionLoad> {
     loads.iter().max_by(|a, b| a.stress.total_cmp(&b.stress))
+}
+
+/// What a coupling transmits between the two shafts it joins, as the
+/// section loads of the shaft line at it (the conventions of
+/// [`SectionLoad`]: sagging moments positive, `V = dM/dz`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CouplingLoad {
+    /// Coupling (model order, 0-based).
+    pub coupling: usize,
+    /// Its name.
+    pub name: String,
+    /// The node (0-based) of the shaft before it.
+    pub node: usize,
+    /// Bending moment (N·m) in the x–z and y–z planes.
+    pub moment: [f64; 2],
+    /// Shear force (N) in x and y.
+    pub shear: [f64; 2],
+}
+
+/// The loads every coupling of `rotor` transmits at the displacement `all`
+/// (on all DOFs, as for [`section_loads`]). A flexible coupling's spring
+/// loads the shaft before it by `f = k (q_r − q_l − m)` in beam
+/// coordinates `(w, ψ)`, so the line carries `V = −k_l (Δw − m_w)` and
+/// `M = k_a (Δψ − m_ψ)` there; a rigid flange carries the section loads of
+/// the shaft element after it at its left end (with its initial strain).
+pub fn coupling_loads(rotor: &Rotor, all: &[f64], gravity: bool) -> Vec<CouplingLoad> {
+    let model = &rotor.model;
+    let sections = section_loads(rotor, all, gravity);
+    model
+        .couplings
+        .iter()
+        .enumerate()
+        .map(|(index, c)| {
+            let node = model.elements[c.element].node;
+            let (moment, shear) = match c.joint {
+                CouplingJoint::Flexible { lateral, angular } => {
+                    let (l, r) = (node * DOF_PER_NODE, (node + 1) * DOF_PER_NODE);
+                    let m = &c.misalignment;
+                    // Beam coordinates: (x, θy) and (y, −θx).
+                    let dw = [all[r] - all[l] - m[0], all[r + 1] - all[l + 1] - m[1]];
+                    let dpsi = [
+                        all[r + 3] - all[l + 3] - m[3],
+                        -(all[r + 2] - all[l + 2] - m[2]),
+                    ];
+                    (
+                        [angular[0] * dpsi[0], angular[0] * dpsi[1]],
+                        [-lateral[0] * dw[0], -lateral[0] * dw[1]],
+                    )
+                }
+                CouplingJoint::Flange => {
+                    let s = sections
+                        .iter()
+                        .find(|s| s.element == c.element && s.node == node)
+                        .expect("a flange's element is a shaft element");
+                    (s.moment, s.shear)
+                }
+            };
+            CouplingLoad {
+                coupling: index,
+                name: c.name.clone(),
+                node,
+                moment,
+                shear,
+            }
+        })
+        .collect()
 }

@@ -520,8 +520,12 @@ pub struct PortEntry {
     pub z: Option<f64>,
 }
 
-/// `[[couplings]]`: a flexible coupling: the shaft element from `node` to the
-/// next node takes its torsional stiffness and damping instead of its own.
+/// `[[couplings]]`: a coupling between two shafts of a train at the shaft
+/// element from `node` to the next node: torsionally it takes the element's
+/// torsional stiffness and damping instead of its own; laterally it is a
+/// rigid flange (the element stays, the shaft after it set off by the
+/// misalignment) or, with `lateral_stiffness` and `angular_stiffness`, a
+/// flexible coupling that replaces the element by a spring–damper.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CouplingEntry {
@@ -529,10 +533,22 @@ pub struct CouplingEntry {
     /// The element's left node (numbered from 1); the coupling joins it to the next.
     pub node: Option<i64>,
     pub z: Option<f64>,
-    /// Torsional stiffness (N·m/rad).
-    pub torsional_stiffness: f64,
+    /// Torsional stiffness (N·m/rad); without it the element keeps its own.
+    pub torsional_stiffness: Option<f64>,
     /// Torsional damping (N·m·s/rad), default 0.
     pub torsional_damping: Option<f64>,
+    /// Lateral (relative translation) stiffness (N/m) of a flexible coupling.
+    pub lateral_stiffness: Option<f64>,
+    /// Angular (relative rotation) stiffness (N·m/rad) of a flexible coupling.
+    pub angular_stiffness: Option<f64>,
+    /// Lateral damping (N·s/m), default 0.
+    pub lateral_damping: Option<f64>,
+    /// Angular damping (N·m·s/rad), default 0.
+    pub angular_damping: Option<f64>,
+    /// Parallel misalignment `[x, y]` (m) of the shaft after the coupling.
+    pub parallel_offset: Option<[f64; 2]>,
+    /// Angular misalignment `[dx/dz, dy/dz]` (rad) of the shaft after it.
+    pub angular_offset: Option<[f64; 2]>,
 }
 
 /// `[[torques]]`: a node where a drive or load torque acts (the FMU's torque

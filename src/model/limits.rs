@@ -214,3 +214,27 @@ pub const TORSIONAL_STIFFNESS: Limit = Limit {
     unit: "N·m/rad",
     why: "from a soft elastomer coupling to a rigid flange",
 };
+
+/// Lateral stiffness of a flexible coupling (N/m).
+pub const COUPLING_LATERAL_STIFFNESS: Limit = Limit {
+    min: 1e-3,
+    max: 1e15,
+    unit: "N/m",
+    why: "from a soft elastomer coupling to a rigid flange",
+};
+
+/// Angular stiffness of a flexible coupling (N·m/rad).
+pub const COUPLING_ANGULAR_STIFFNESS: Limit = Limit {
+    min: 1e-3,
+    max: 1e15,
+    unit: "N·m/rad",
+    why: "from a gear or disc coupling's flexing to a rigid flange",
+};
+
+/// Angular misalignment of a coupling (rad).
+pub const ANGULAR_OFFSET: Limit = Limit {
+    min: -0.1,
+    max: 0.1,
+    unit: "rad",
+    why: "couplings are aligned to a fraction of a milliradian; 0.1 rad (5.7°) is a unit slip",
+};

@@ -275,18 +275,58 @@ pub enum Drive {
     Torque,
 }
 
-/// A flexible coupling: shaft element `element` (index into
-/// [`RotorModel::elements`]) takes its torsional stiffness and damping.
+/// A coupling between two shafts of a train at shaft element `element`
+/// (index into [`RotorModel::elements`]): torsionally it takes the
+/// element's torsional stiffness and damping when it has its own; laterally
+/// it is a [`CouplingJoint`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Coupling {
     /// Name (default `coupling<k>`).
     pub name: String,
-    /// The element it replaces in the torsional chain.
+    /// The element it sits at (it joins the element's left node to its right).
     pub element: usize,
-    /// Torsional stiffness (N·m/rad).
-    pub stiffness: f64,
+    /// Torsional stiffness (N·m/rad); `None`: the element keeps its own.
+    pub stiffness: Option<f64>,
     /// Torsional damping (N·m·s/rad).
     pub damping: f64,
+    /// The lateral joint.
+    pub joint: CouplingJoint,
+    /// Misalignment of the shaft after the coupling relative to the one
+    /// before, on the DOFs `[x, y, θx, θy]` (m, rad): a parallel offset
+    /// `(x, y)` and an angular one `θy = dx/dz`, `θx = −dy/dz`.
+    pub misalignment: [f64; 4],
+}
+
+/// How a coupling joins its two shafts laterally.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum CouplingJoint {
+    /// A rigid flange: the shaft element stays; the shaft after the flange
+    /// starts at the misalignment from the one before (an initial strain of
+    /// the element, [`crate::rotor::Rotor::add_offset_loads`]).
+    Flange,
+    /// A flexible coupling: the shaft element is replaced by a zero-length
+    /// spring–damper between its nodes, `lateral` on the relative
+    /// translations and `angular` on the relative rotations (ROSS's
+    /// `CouplingElement`, no masses of its own).
+    Flexible {
+        /// Lateral stiffness (N/m) and damping (N·s/m).
+        lateral: [f64; 2],
+        /// Angular stiffness (N·m/rad) and damping (N·m·s/rad).
+        angular: [f64; 2],
+    },
+}
+
+impl Coupling {
+    /// Whether it changes the lateral model: a flexible joint or a
+    /// misalignment (a flange without one is the shaft element as it was).
+    pub fn is_lateral(&self) -> bool {
+        matches!(self.joint, CouplingJoint::Flexible { .. }) || self.is_misaligned()
+    }
+
+    /// Whether it has a misalignment.
+    pub fn is_misaligned(&self) -> bool {
+        self.misalignment != [0.0; 4]
+    }
 }
 
 /// A node where a drive or load torque acts (`[[torques]]`).
@@ -478,7 +518,18 @@ impl RotorModel {
         let raw: ModelFile = toml::from_str(text).map_err(|e| {
             let span = e.span();
             let line = span.as_ref().map(|s| line_of(text, s.start));
-            let message = e.message().trim();
+            let mut message = e.message().trim().to_string();
+            // A key given twice: name it (the parser says only "duplicate key").
+            if message == "duplicate key"
+                && let Some(s) = span.as_ref()
+            {
+                let start = text[..s.start].rfind('\n').map_or(0, |i| i + 1);
+                let key = text[start..].split(['=', '\n']).next().unwrap_or("").trim();
+                if !key.is_empty() {
+                    message = format!("duplicate key {key} (a key is given once per entry)");
+                }
+            }
+            let message = message.as_str();
             let path = span.and_then(|s| field_at(text, &s));
             // A whole entry read at once (bearings, chosen by `type`): name the key.
             let culprit = path.as_ref().and_then(|p| {
@@ -593,12 +644,12 @@ impl RotorModel {
     }
 
     /// Whether the model describes its torsion: torque-driven, or with torque
-    /// nodes, couplings or thrust bearings. Analyses list torsional modes
+    /// nodes, torsional couplings or thrust bearings. Analyses list torsional modes
     /// for such a model by default.
     pub fn models_torsion(&self) -> bool {
         self.drive == Drive::Torque
             || !self.torques.is_empty()
-            || !self.couplings.is_empty()
+            || self.couplings.iter().any(|c| c.stiffness.is_some())
             || !self.thrust_bearings.is_empty()
     }
 
@@ -650,17 +701,34 @@ impl RotorModel {
         model
     }
 
-    /// Total rotating mass: shaft plus disks (kg).
+    /// Whether a flexible coupling replaces shaft element `element`.
+    pub fn flexible_coupling_at(&self, element: usize) -> bool {
+        self.couplings
+            .iter()
+            .any(|c| c.element == element && matches!(c.joint, CouplingJoint::Flexible { .. }))
+    }
+
+    /// The shaft elements that are shaft (not replaced by a flexible coupling).
+    fn shaft_elements(&self) -> impl Iterator<Item = &PlacedElement> {
+        let shaft = |(k, _): &(usize, &PlacedElement)| !self.flexible_coupling_at(*k);
+        self.elements
+            .iter()
+            .enumerate()
+            .filter(shaft)
+            .map(|(_, e)| e)
+    }
+
+    /// Total rotating mass: shaft plus disks (kg); the hubs of a flexible
+    /// coupling are disks, its element none.
     pub fn total_mass(&self) -> f64 {
-        self.elements.iter().map(|e| e.element.mass()).sum::<f64>()
+        self.shaft_elements().map(|e| e.element.mass()).sum::<f64>()
             + self.disks.iter().map(|d| d.disk.mass).sum::<f64>()
     }
 
     /// Total polar inertia about the shaft axis: shaft `ρ J_p L` plus the
     /// disks' (kg·m²).
     pub fn total_polar_inertia(&self) -> f64 {
-        self.elements
-            .iter()
+        self.shaft_elements()
             .map(|e| {
                 e.element.material.density * e.element.section.polar_moment() * e.element.length
             })

@@ -5,9 +5,11 @@
 //! that prints it ([`text::peak_cells`], [`text::margin_cells`], …), so the
 //! page and the single commands agree cell for cell.
 
+use crate::analysis::alignment::Alignment;
 use crate::analysis::campbell::CampbellStudy;
 use crate::analysis::modal::ModalResult;
 use crate::analysis::operating_point::BearingOperatingPoint;
+use crate::analysis::shaft_loads::CouplingLoad;
 use crate::analysis::stability::Stability;
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::analysis::unbalance::UnbalanceStudy;
@@ -634,4 +636,72 @@ pub fn overall(table: &Table) -> Verdict {
     } else {
         Verdict::Pass
     }
+}
+
+/// The alignment of a shaft line at its offsets (issue 49): each bearing's
+/// centre offset and the reaction it carries, and what each coupling
+/// transmits between its shafts (shear and bending moment in both planes).
+pub fn alignment_blocks(line: &Alignment, couplings: &[CouplingLoad]) -> Vec<Block> {
+    let rows = line
+        .bearings
+        .iter()
+        .map(|b| {
+            vec![
+                b.name.clone().into(),
+                short(b.offset[0] * 1e6).into(),
+                short(b.offset[1] * 1e6).into(),
+                short(b.reaction[0]).into(),
+                short(b.reaction[1]).into(),
+                short(b.load).into(),
+                b.area
+                    .map_or("—".to_string(), |a| short(b.load / a * 1e-3))
+                    .into(),
+            ]
+        })
+        .collect();
+    let mut blocks = vec![Block::Table(Table {
+        id: "alignment".into(),
+        caption:
+            "bearing offsets and the reactions they carry (the static line at the operating speed)"
+                .into(),
+        headers: headers(&[
+            "bearing",
+            "offset x (µm)",
+            "offset y (µm)",
+            "reaction x (N)",
+            "reaction y (N)",
+            "load along gravity (N)",
+            "specific load W/LD (kPa)",
+        ]),
+        rows,
+    })];
+    if !couplings.is_empty() {
+        let rows = couplings
+            .iter()
+            .map(|c| {
+                vec![
+                    c.name.clone().into(),
+                    format!("{}–{}", c.node + 1, c.node + 2).into(),
+                    short(c.shear[0]).into(),
+                    short(c.shear[1]).into(),
+                    short(c.moment[0]).into(),
+                    short(c.moment[1]).into(),
+                ]
+            })
+            .collect();
+        blocks.push(Block::Table(Table {
+            id: "coupling-loads".into(),
+            caption: "what each coupling transmits between its shafts at the static line".into(),
+            headers: headers(&[
+                "coupling",
+                "nodes",
+                "shear x (N)",
+                "shear y (N)",
+                "moment x–z (N·m)",
+                "moment y–z (N·m)",
+            ]),
+            rows,
+        }));
+    }
+    blocks
 }

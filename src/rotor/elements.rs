@@ -2,7 +2,8 @@
 //! local matrices `M`, `K`, `C`, `G` (`G` per rad/s of spin) over a list of
 //! free DOFs (`None`: fixed by a support, or ground); assembly adds them into
 //! the banded matrices in the order they are listed:
-//! shaft elements, disks, point masses, pedestals, then the bearings in
+//! shaft elements (a flexible coupling in place of one, a spring–damper
+//! between its two nodes), disks, point masses, pedestals, then the bearings in
 //! model order (linear bearings, added masses of table bearings and seals).
 //!
 //! A spring–damper between two points (a bearing between its journal and its
@@ -14,7 +15,7 @@ use nalgebra::DMatrix;
 
 use super::dofs::DofMap;
 use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
-use crate::model::{PlacedBearing, RotorModel};
+use crate::model::{CouplingJoint, PlacedBearing, RotorModel};
 
 /// Local matrices of one linear element over `dofs`.
 #[derive(Debug, Clone, PartialEq)]
@@ -112,12 +113,21 @@ pub fn bearing_link(
 /// gyroscopic matrix), then disks (mass, gyroscopic), in model order.
 pub(super) fn structure(model: &RotorModel, dofs: &DofMap) -> Vec<LinearElement> {
     let mut list = Vec::new();
-    for placed in &model.elements {
-        let mats = placed.element.matrices();
+    for (index, placed) in model.elements.iter().enumerate() {
         let local: Vec<Option<usize>> = node_dofs(dofs, placed.node)
             .into_iter()
             .chain(node_dofs(dofs, placed.node + 1))
             .collect();
+        let joint = model
+            .couplings
+            .iter()
+            .find(|c| c.element == index)
+            .map(|c| c.joint);
+        if let Some(CouplingJoint::Flexible { lateral, angular }) = joint {
+            list.push(flexible_coupling(local, lateral, angular));
+            continue;
+        }
+        let mats = placed.element.matrices();
         let k_total = mats.stiffness + mats.axial_per_newton * placed.axial_force;
         let mut e = LinearElement::new(local);
         e.mass = Some(DMatrix::from_fn(8, 8, |a, b| mats.mass[(a, b)]));
@@ -133,6 +143,40 @@ pub(super) fn structure(model: &RotorModel, dofs: &DofMap) -> Vec<LinearElement>
         list.push(e);
     }
     list
+}
+
+/// A flexible coupling in place of a shaft element over the DOFs of its two
+/// nodes (`x, y, θx, θy` of each): `[[k, −k], [−k, k]]` with
+/// `k = diag(k_l, k_l, k_a, k_a)` on the relative translations and rotations,
+/// damping likewise; no mass or gyroscopic term (ROSS's `CouplingElement`
+/// with its lateral terms, its masses left to disks at the nodes).
+fn flexible_coupling(
+    dofs: Vec<Option<usize>>,
+    lateral: [f64; 2],
+    angular: [f64; 2],
+) -> LinearElement {
+    let pick = |which: usize| {
+        DMatrix::from_fn(2 * DOF_PER_NODE, 2 * DOF_PER_NODE, |a, b| {
+            if a % DOF_PER_NODE != b % DOF_PER_NODE {
+                return 0.0;
+            }
+            let sign = if (a < DOF_PER_NODE) == (b < DOF_PER_NODE) {
+                1.0
+            } else {
+                -1.0
+            };
+            let translation = a % DOF_PER_NODE == DOF_X || a % DOF_PER_NODE == DOF_Y;
+            sign * if translation {
+                lateral[which]
+            } else {
+                angular[which]
+            }
+        })
+    };
+    let mut e = LinearElement::new(dofs);
+    e.stiffness = Some(pick(0));
+    e.damping = Some(pick(1));
+    e
 }
 
 /// The non-rotating point masses of `model` on their nodes' translations.

@@ -137,6 +137,7 @@ impl Rotor {
     /// Nothing is added for elements on the axis (models without offsets keep
     /// their numbers bit for bit). The fluid films, seals and stators see
     /// their offsets in their own laws ([`crate::bearing::offset`]).
+    /// Misaligned couplings add theirs ([`Rotor::add_coupling_loads`]).
     pub fn add_offset_loads(&self, f: &mut [f64]) {
         let preload = |k: &[[f64; 2]; 2], o: &[f64; 2]| {
             [
@@ -170,6 +171,7 @@ impl Rotor {
                 on_pedestal(f, on, load, -1.0);
             }
         }
+        self.add_coupling_loads(f);
     }
 
     /// Whether the model has any load that acts in a static equilibrium (a

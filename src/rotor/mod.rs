@@ -13,6 +13,7 @@ use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
 use crate::model::RotorModel;
 
+mod couplings;
 mod dofs;
 pub mod elements;
 mod loads;
@@ -20,6 +21,7 @@ mod reduction;
 pub mod torsion;
 
 pub use crate::model::DEFAULT_REDUCED_MODES;
+pub use couplings::{element_stiffness, flange_strain};
 pub use dofs::{DOF_PER_PEDESTAL, Dof, DofMap};
 pub use elements::LinearElement;
 pub use reduction::{Reduction, VALIDITY_FACTOR};

@@ -129,6 +129,16 @@ impl Rotor {
             .chain(m.unbalances.iter().map(|u| u.node))
             .chain(m.forces.iter().map(|f| f.node))
             .chain(m.ports.iter().map(|p| p.node))
+            // A misaligned coupling loads both its nodes by its preload.
+            .chain(
+                m.couplings
+                    .iter()
+                    .filter(|c| c.is_misaligned())
+                    .flat_map(|c| {
+                        let node = m.elements[c.element].node;
+                        [node, node + 1]
+                    }),
+            )
             .collect();
         nodes.sort_unstable();
         nodes.dedup();

@@ -61,12 +61,19 @@ impl TorsionalRotor {
         };
         let mut elements = Vec::with_capacity(model.elements.len());
         for (k, placed) in model.elements.iter().enumerate() {
-            let (m, mut kt) = torsion_matrices(&placed.element);
+            let (mut m, mut kt) = torsion_matrices(&placed.element);
+            // A flexible coupling in place of the element has no inertia of
+            // its own (its hubs are disks), as laterally.
+            if model.flexible_coupling_at(k) {
+                m = [[0.0; 2]; 2];
+            }
             let pair = [placed.node, placed.node + 1];
             // A coupling replaces the element's stiffness and damping.
             let mut c_element = placed.torsional_damping;
-            if let Some(c) = model.couplings.iter().find(|c| c.element == k) {
-                kt = [[c.stiffness, -c.stiffness], [-c.stiffness, c.stiffness]];
+            if let Some(c) = model.couplings.iter().find(|c| c.element == k)
+                && let Some(s) = c.stiffness
+            {
+                kt = [[s, -s], [-s, s]];
                 c_element = c.damping;
             }
             if c_element != 0.0 {

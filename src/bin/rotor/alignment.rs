@@ -6,7 +6,7 @@
 use clap::Args;
 use rotor_bearing::analysis::alignment::{alignment, equal_specific_loads, offsets_for_loads};
 use rotor_bearing::analysis::operating_point::operating_point;
-use rotor_bearing::analysis::shaft_loads::{largest_stress, section_loads};
+use rotor_bearing::analysis::shaft_loads::{coupling_loads, largest_stress, section_loads};
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::SolverOptions;
 use rotor_bearing::units::{RAD_S_TO_RPM, Short};
@@ -162,6 +162,18 @@ pub fn run(rotor: &Rotor, args: AlignmentArgs) -> Result<(), String> {
             worst.stress * 1e-6,
             worst.z,
             worst.node + 1
+        );
+    }
+    for c in coupling_loads(rotor, &all, options.gravity) {
+        println!(
+            "coupling {} between nodes {} and {} at the model's offsets: shear ({:.1}, {:.1}) N, bending moment ({:.1}, {:.1}) N·m in the x–z and y–z planes",
+            c.name,
+            c.node + 1,
+            c.node + 2,
+            c.shear[0],
+            c.shear[1],
+            c.moment[0],
+            c.moment[1]
         );
     }
     Ok(())

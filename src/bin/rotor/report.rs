@@ -9,10 +9,12 @@
 
 use std::path::{Path, PathBuf};
 
+use rotor_bearing::analysis::alignment::alignment;
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
 use rotor_bearing::analysis::housing_vibration;
 use rotor_bearing::analysis::modal::ModalOptions;
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
+use rotor_bearing::analysis::shaft_loads::coupling_loads;
 use rotor_bearing::analysis::speed_range::default_top_speed;
 use rotor_bearing::analysis::stability::{
     StabilityRequest, StageData, mid_span_node, site_label, stability_study,
@@ -36,6 +38,7 @@ use rotor_bearing::report::review::{self, SummaryInputs};
 use rotor_bearing::report::stamp::{now_utc, sha256_hex, software_version};
 use rotor_bearing::report::text::short;
 use rotor_bearing::rotor::Rotor;
+use rotor_bearing::solver::SolverOptions;
 use rotor_bearing::units::Amplitude;
 
 use crate::write_file;
@@ -332,6 +335,28 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         sections.push(section(
             "housing-vibration",
             "Bearing-housing vibration (ISO 10816-5)",
+            blocks,
+        ));
+    }
+
+    // A line set off its axis or a train: its alignment.
+    if model.bearings.iter().any(|b| b.is_offset()) || !model.couplings.is_empty() {
+        let options = SolverOptions::default();
+        let blocks = match alignment(rotor, speed, &options) {
+            Ok(line) => {
+                let all = rotor.dofs.expand(&line.equilibrium.displacement);
+                let couplings = coupling_loads(rotor, &all, options.gravity);
+                let mut b = vec![Block::Text(format!(
+                    "As `rotor alignment{file_arg} --rpm {rpm}` prints it."
+                ))];
+                b.extend(review::alignment_blocks(&line, &couplings));
+                b
+            }
+            Err(e) => vec![Block::Failure(format!("alignment: {e}"))],
+        };
+        sections.push(section(
+            "alignment",
+            &format!("Alignment at {} rpm", short(rpm)),
             blocks,
         ));
     }

@@ -4,6 +4,7 @@
 //! (unbalance), probes, supports, gravity and nominal speed.
 
 mod bearings;
+mod couplings;
 mod disks;
 mod loads;
 mod materials;
@@ -43,7 +44,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     let probes = loads::probes(ctx, &root, raw.probes, &node_z)?;
     let forces = loads::forces(ctx, &root, raw.forces, &node_z)?;
     let ports = loads::ports(ctx, &root, raw.ports, &node_z)?;
-    let couplings = torsion::couplings(ctx, &root, raw.couplings, &node_z, &shaft.elements)?;
+    let couplings = couplings::couplings(ctx, &root, raw.couplings, &node_z, &shaft.elements)?;
     let torques = torsion::torques(ctx, &root, raw.torques, &node_z)?;
     let torsional_damping_ratio = torsion::damping_ratio(ctx, &root, raw.torsion.as_ref())?;
     let drive = torsion::drive(ctx, &root, raw.torsion, &torques)?;

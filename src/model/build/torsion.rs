@@ -1,58 +1,11 @@
-//! The torsional chain's parts: `[[couplings]]` (flexible couplings),
-//! `[[torques]]` (where the plant applies torque), `[[thrust_bearings]]`
+//! The torsional chain's parts: `[[torques]]` (where the plant applies torque), `[[thrust_bearings]]`
 //! (their friction torque) and `[torsion] drive`.
 
 use crate::bearing::thrust::ThrustBearing;
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
-use crate::model::file::{CouplingEntry, ThrustBearingEntry, TorqueEntry, TorsionEntry};
-use crate::model::limits::TORSIONAL_STIFFNESS;
-use crate::model::{Coupling, Drive, ModelError, PlacedElement, PlacedThrustBearing, TorqueNode};
-
-/// Check each coupling: its node starts a shaft element (one coupling per
-/// element), stiffness > 0, damping ≥ 0.
-pub(super) fn couplings(
-    ctx: &Ctx,
-    root: &FieldPath,
-    entries: Vec<CouplingEntry>,
-    node_z: &[f64],
-    elements: &[PlacedElement],
-) -> Result<Vec<Coupling>, ModelError> {
-    let mut out: Vec<Coupling> = Vec::new();
-    let mut names = Names::default();
-    for (i, e) in entries.into_iter().enumerate() {
-        let p = root.key("couplings").index(i);
-        let node = ctx.location(&p, e.node, e.z, node_z)?;
-        let Some(element) = elements.iter().position(|el| el.node == node) else {
-            return Err(ctx.err(
-                p.key("node"),
-                node + 1,
-                "no shaft element starts at this node (a coupling joins a node to the next)",
-            ));
-        };
-        if out.iter().any(|c| c.element == element) {
-            return Err(ctx.err(
-                p.key("node"),
-                node + 1,
-                "a coupling is already at this element",
-            ));
-        }
-        out.push(Coupling {
-            name: names.claim(ctx, &p, default_name(e.name, "coupling", i), "coupling")?,
-            element,
-            stiffness: ctx.within(
-                p.key("torsional_stiffness"),
-                e.torsional_stiffness,
-                &TORSIONAL_STIFFNESS,
-            )?,
-            damping: ctx.non_negative(
-                p.key("torsional_damping"),
-                e.torsional_damping.unwrap_or(0.0),
-            )?,
-        });
-    }
-    Ok(out)
-}
+use crate::model::file::{ThrustBearingEntry, TorqueEntry, TorsionEntry};
+use crate::model::{Drive, ModelError, PlacedThrustBearing, TorqueNode};
 
 /// Check each torque node: unique name and node.
 pub(super) fn torques(

@@ -7,7 +7,8 @@ use std::fmt::Write;
 
 use super::{coefficient_matrix, describe_bearing, short};
 use crate::model::{
-    Drive, ForceKind, HarmonicDirection, HarmonicFrequency, ReductionRequest, RotorModel,
+    CouplingJoint, Drive, ForceKind, HarmonicDirection, HarmonicFrequency, ReductionRequest,
+    RotorModel,
 };
 use crate::rotor::Rotor;
 use crate::rotor::torsion::TorsionalRotor;
@@ -276,6 +277,40 @@ pub fn describe_force(f: &crate::model::ExternalForce) -> String {
     }
 }
 
+/// A coupling in words: its lateral joint (rigid flange, or flexible with
+/// its stiffnesses and dampings), its misalignment and its torsion.
+pub fn describe_coupling(c: &crate::model::Coupling) -> String {
+    let mut parts = vec![match c.joint {
+        CouplingJoint::Flange => "rigid flange".to_string(),
+        CouplingJoint::Flexible { lateral, angular } => format!(
+            "flexible: lateral {} N/m ({} N·s/m), angular {} N·m/rad ({} N·m·s/rad)",
+            short(lateral[0]),
+            short(lateral[1]),
+            short(angular[0]),
+            short(angular[1])
+        ),
+    }];
+    if c.is_misaligned() {
+        let o = &c.misalignment;
+        parts.push(format!(
+            "misaligned by ({}, {}) µm and ({}, {}) mrad",
+            short(o[0] * 1e6),
+            short(o[1] * 1e6),
+            short(o[3] * 1e3),
+            short(-o[2] * 1e3)
+        ));
+    }
+    parts.push(match c.stiffness {
+        Some(k) => format!(
+            "torsional stiffness {} N·m/rad, damping {} N·m·s/rad",
+            short(k),
+            short(c.damping)
+        ),
+        None => "torsion of its shaft element".to_string(),
+    });
+    parts.join("; ")
+}
+
 /// The drive, and the torsional chain's parts: for a torque-driven shaft
 /// where the torques act and the polar inertia `J = Σ` (disks' `I_p` + shaft
 /// elements' `ρ J_p L`) over the free twist DOFs (the inertia a plant model's
@@ -319,16 +354,15 @@ fn drive_summary(s: &mut String, m: &RotorModel) {
         )
         .ok();
     }
-    for c in &m.couplings {
+    for c in m.couplings.iter() {
         let node = m.elements[c.element].node;
         writeln!(
             s,
-            "  coupling {} between nodes {} and {}: torsional stiffness {} N·m/rad, damping {} N·m·s/rad",
+            "  coupling {} between nodes {} and {}: {}",
             c.name,
             node + 1,
             node + 2,
-            short(c.stiffness),
-            short(c.damping)
+            describe_coupling(c)
         )
         .ok();
     }
