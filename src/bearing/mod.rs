@@ -41,6 +41,8 @@ pub mod contact;
 pub mod equilibrium;
 pub mod film;
 mod film_lanes;
+pub mod film_table;
+pub mod film_table_cache;
 pub mod finite_bearing;
 pub mod finite_film;
 pub mod linear;
