@@ -19,6 +19,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use super::film_table::{DIRECTIONS, ECCENTRICITY_INTERVALS, FilmTable, TableGeometry};
+use super::finite_film::FiniteFilm;
 use super::reynolds::{Cavitation, ReynoldsError, ReynoldsMesh};
 
 /// Format version of the file and of the table (grid, factor, spline).
@@ -176,4 +177,53 @@ pub fn describe(geometry: &TableGeometry) -> String {
         1.0 / geometry.slenderness.sqrt(),
         geometry.cavitation.name()
     )
+}
+
+/// A plain film's table with where it came from and what its build took:
+/// what a bearing carries. Two are equal when their tables are.
+#[derive(Debug, Clone)]
+pub struct PreparedTable {
+    pub table: FilmTable,
+    pub origin: TableOrigin,
+    /// Seconds the build took (0 when read from the cache).
+    pub build_seconds: f64,
+}
+
+impl PartialEq for PreparedTable {
+    fn eq(&self, other: &Self) -> bool {
+        self.table == other.table
+    }
+}
+
+impl PreparedTable {
+    /// The table of `film`'s geometry ([`TableGeometry::of`]) through the
+    /// cache in `dir` ([`load_or_build`]).
+    pub fn load_or_build(film: &FiniteFilm, dir: Option<&Path>) -> Result<Self, ReynoldsError> {
+        film.check()?;
+        let (table, origin, build_seconds) = load_or_build(&TableGeometry::of(film), dir)?;
+        Ok(Self {
+            table,
+            origin,
+            build_seconds,
+        })
+    }
+
+    /// One line on the table: its geometry, and built (seconds) or read.
+    pub fn describe(&self) -> String {
+        let what = describe(&self.table.geometry());
+        match &self.origin {
+            TableOrigin::Loaded(path) => format!("{what}: read from {}", path.display()),
+            TableOrigin::Built(path) => format!(
+                "{what}: built in {:.2} s{}",
+                self.build_seconds,
+                path.as_ref()
+                    .map_or(String::new(), |p| format!(", cached at {}", p.display()))
+            ),
+            TableOrigin::Rebuilt(path, why) => format!(
+                "{what}: cache file {} not trusted ({why}), rebuilt in {:.2} s",
+                path.display(),
+                self.build_seconds
+            ),
+        }
+    }
 }
