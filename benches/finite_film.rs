@@ -5,18 +5,23 @@
 //! plain bearings) at 0.1 ms steps and the hydro unit (two tilting-pad
 //! guide bearings) at its 5 ms step, each at its nominal speed from its
 //! static equilibrium. The finite film solves Reynolds' equation directly at
-//! every evaluation (no force tables yet). `cargo bench --bench finite_film`.
+//! every evaluation; plain films with `film_tables = true` interpolate their
+//! force tables (built here once, in memory, and timed). `cargo bench --bench
+//! finite_film`.
 
 use std::path::PathBuf;
 use std::time::Instant;
 
+use rotor_bearing::bearing::BearingKind;
+use rotor_bearing::bearing::film_table::TableGeometry;
+use rotor_bearing::bearing::film_table_cache;
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
-/// The model file with `film = "finite"` after the `type` of every plain
-/// and tilting-pad bearing.
-fn finite(text: &str) -> String {
+/// The model file with `film = "finite"` and `extra` (for plain bearings)
+/// after the `type` of every plain and tilting-pad bearing.
+fn finite(text: &str, extra: &str) -> String {
     let mut out = String::new();
     for line in text.lines() {
         out.push_str(line);
@@ -25,13 +30,16 @@ fn finite(text: &str) -> String {
         if t == "type = \"plain\"" || t == "type = \"tilting_pad\"" {
             out.push_str("film = \"finite\"\n");
         }
+        if t == "type = \"plain\"" {
+            out.push_str(extra);
+        }
     }
     out
 }
 
 /// µs per step over `steps` steps of `step` s after settling.
 fn per_step(text: &str, step: f64, steps: usize) -> f64 {
-    let model = RotorModel::from_toml(text, "bench.toml").unwrap();
+    let model = RotorModel::from_toml_cached(text, "bench.toml", None).unwrap();
     let mut sim = Simulator::new(
         Rotor::new(model.clone()).unwrap(),
         SolverOptions {
@@ -56,16 +64,46 @@ fn main() {
     }
     println!("| model | step | short film µs/step | finite film µs/step | ratio |");
     println!("|---|---:|---:|---:|---:|");
-    for (name, step, steps) in [("jeffcott", 1e-4, 400), ("hydro_unit", 5e-3, 40)] {
+    let read = |name: &str| {
         let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
             .join("models")
             .join(format!("{name}.toml"));
-        let text = std::fs::read_to_string(path).unwrap();
+        std::fs::read_to_string(path).unwrap()
+    };
+    for (name, step, steps) in [("jeffcott", 1e-4, 400), ("hydro_unit", 5e-3, 40)] {
+        let text = read(name);
         let short = per_step(&text, step, steps * 10);
-        let long = per_step(&finite(&text), step, steps);
+        let long = per_step(&finite(&text, ""), step, steps);
         println!(
             "| {name} | {step} s | {short:.1} | {long:.0} | {:.0} |",
             long / short
         );
     }
+    // Force tables: the same run, short and tabled films alternated three
+    // times (the median ratio), and the table's build for the geometry.
+    let text = read("jeffcott");
+    let tabled = finite(&text, "film_tables = true\n");
+    let model = RotorModel::from_toml_cached(&tabled, "bench.toml", None).unwrap();
+    let BearingKind::FiniteFilm(f) = &model.bearings[0].kind else {
+        panic!("not a finite film")
+    };
+    let build = f.table.as_deref().unwrap().build_seconds;
+    let mut ratios: Vec<(f64, f64, f64)> = (0..3)
+        .map(|_| {
+            let short = per_step(&text, 1e-4, 4000);
+            let long = per_step(&tabled, 1e-4, 4000);
+            (long / short, short, long)
+        })
+        .collect();
+    ratios.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (ratio, short, long) = ratios[1];
+    println!();
+    println!(
+        "| model | step | short film µs/step | tabled finite film µs/step | ratio | table build (one geometry) |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|");
+    println!(
+        "| jeffcott, film_tables = true ({}) | 0.0001 s | {short:.2} | {long:.2} | {ratio:.2} | {build:.1} s |",
+        film_table_cache::describe(&TableGeometry::of(&f.film()))
+    );
 }

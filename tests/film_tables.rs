@@ -272,3 +272,128 @@ fn transient_with_tables_follows_the_direct_solves() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `film_tables` in a model: refused without `film = "finite"` and on
+/// tilting pads, each error naming file, line, field and value; `false`
+/// is the direct film.
+#[test]
+fn film_tables_key_is_checked() {
+    let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let with = |lines: &str| {
+        text.replacen(
+            "type = \"plain\"\n",
+            &format!("type = \"plain\"\n{lines}\n"),
+            1,
+        )
+    };
+    let err = |t: &str| {
+        rotor_bearing::model::RotorModel::from_toml_cached(t, "m.toml", None)
+            .unwrap_err()
+            .to_string()
+    };
+    let e = err(&with("film_tables = true"));
+    assert!(
+        e.starts_with("m.toml:34: bearings[0].film_tables = given:")
+            && e.contains("finite film only"),
+        "{e}"
+    );
+    let m = rotor_bearing::model::RotorModel::from_toml_cached(
+        &with("film = \"finite\"\nfilm_tables = false"),
+        "m.toml",
+        None,
+    )
+    .unwrap();
+    let rotor_bearing::bearing::BearingKind::FiniteFilm(f) = &m.bearings[0].kind else {
+        panic!("not a finite film")
+    };
+    assert!(f.table.is_none());
+    let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/hydro_unit.toml");
+    let pads = std::fs::read_to_string(path).unwrap().replacen(
+        "type = \"tilting_pad\"\n",
+        "type = \"tilting_pad\"\nfilm = \"finite\"\nfilm_tables = true\n",
+        1,
+    );
+    let e = err(&pads);
+    assert!(
+        e.contains("bearings[0].film_tables = true:") && e.contains("plain bearings only"),
+        "{e}"
+    );
+}
+
+/// The CLI and the FMU: reading a model with `film_tables = true` builds its
+/// table once and says how long it took (a second read is silent: it reads
+/// the cache); `rotor fmu-stage` puts the table in `resources/film_tables`,
+/// where the FMU's instance reads it ([`rotor_bearing::fmu::resources`]):
+/// the same table.
+#[test]
+fn fmu_carries_its_tables_in_resources() {
+    let dir = std::env::temp_dir().join(format!("rotor-film-fmu-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml");
+    let text = std::fs::read_to_string(path).unwrap().replace(
+        "type = \"plain\"\n",
+        "type = \"plain\"\nfilm = \"finite\"\nfilm_mesh = [48, 4]\ncavitation = \"gumbel\"\nfilm_tables = true\n",
+    );
+    let model = dir.join("jeffcott_tables.toml");
+    std::fs::write(&model, text).unwrap();
+    let stage = |to: &str| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .env("ROTOR_CACHE_DIR", dir.join("cache"))
+            .args([
+                "fmu-stage",
+                model.to_str().unwrap(),
+                dir.join(to).to_str().unwrap(),
+            ])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    let first = stage("a");
+    assert!(
+        first.contains(
+            "bearing left: film table L/D = 0.5000, mesh 48 × 4, gumbel cavitation: built in"
+        ) && first.contains("cached at"),
+        "{first}"
+    );
+    assert!(!first.contains("bearing right: film table"), "{first}");
+    let second = stage("b");
+    assert!(!second.contains("film table"), "{second}");
+    let resources = dir.join("b/resources");
+    let files: Vec<_> =
+        std::fs::read_dir(resources.join(rotor_bearing::fmu::resources::FILM_TABLES))
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .collect();
+    assert_eq!(files.len(), 1, "{files:?}");
+    let m = rotor_bearing::model::RotorModel::from_file_cached(
+        &resources.join("model.toml"),
+        Some(&resources.join(rotor_bearing::fmu::resources::FILM_TABLES)),
+    )
+    .unwrap();
+    let cached = rotor_bearing::model::RotorModel::from_toml_cached(
+        &std::fs::read_to_string(&model).unwrap(),
+        "m.toml",
+        Some(&dir.join("cache")),
+    )
+    .unwrap();
+    for (b, c) in m.bearings.iter().zip(&cached.bearings) {
+        let (
+            rotor_bearing::bearing::BearingKind::FiniteFilm(f),
+            rotor_bearing::bearing::BearingKind::FiniteFilm(g),
+        ) = (&b.kind, &c.kind)
+        else {
+            panic!("not finite films")
+        };
+        let (t, u) = (f.table.as_deref().unwrap(), g.table.as_deref().unwrap());
+        assert_eq!(t.origin, TableOrigin::Loaded(files[0].clone()));
+        assert!(t.table == u.table);
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -60,6 +60,11 @@ pub const ECCENTRICITY_INTERVALS: usize = 64;
 pub const DIRECTIONS: usize = 192;
 /// Exponent `k` of the factor `(1 − ε²)^k` taken out of the table.
 const DECAY: f64 = 2.5;
+
+/// `(1 − ε²)^k` of `e2 = 1 − ε²`, `k` = [`DECAY`] = 5/2.
+fn decay(e2: f64) -> f64 {
+    e2 * e2 * e2.sqrt()
+}
 /// Below this eccentricity ratio `H_χ/ε` is taken as its limit `H_εχ`.
 const CENTRE: f64 = 1e-7;
 
@@ -137,7 +142,7 @@ impl FilmTable {
                 slenderness: geometry.slenderness,
                 arc: None,
             };
-            let g = (1.0 - eps * eps).powf(DECAY);
+            let g = decay(1.0 - eps * eps);
             if i == 0 {
                 let load = direction_loads(&problem, geometry.mesh, geometry.cavitation, &[0.0])?;
                 values.extend(std::iter::repeat_n([load[0].x, load[0].y], nc));
@@ -265,7 +270,7 @@ impl FilmTable {
         let t = -(-eps).ln_1p();
         let [w, w_t, w_c, w_tc] = self.interpolate(t, chi);
         let e2 = 1.0 - eps * eps;
-        let g = e2.powf(DECAY);
+        let g = decay(e2);
         let h = w / g;
         let h_eps = (w_t / (1.0 - eps) + w * (2.0 * DECAY * eps / e2)) / g;
         let h_chi = w_c / g;
