@@ -6,15 +6,16 @@
 //! guide bearings) at its 5 ms step, each at its nominal speed from its
 //! static equilibrium. The finite film solves Reynolds' equation directly at
 //! every evaluation; plain films with `film_tables = true` interpolate their
-//! force tables (built here once, in memory, and timed). `cargo bench --bench
-//! finite_film`.
+//! force tables (built here once into a scratch cache, and timed). `cargo
+//! bench --bench finite_film` (`-- --tables-only`: the tabled row alone).
 
 use std::path::PathBuf;
 use std::time::Instant;
 
 use rotor_bearing::bearing::BearingKind;
-use rotor_bearing::bearing::film_table::TableGeometry;
+use rotor_bearing::bearing::film_table::{FilmTable, TableGeometry};
 use rotor_bearing::bearing::film_table_cache;
+use rotor_bearing::bearing::reynolds::Cavitation;
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
@@ -37,9 +38,15 @@ fn finite(text: &str, extra: &str) -> String {
     out
 }
 
+/// The bench's own table cache (emptied at the start, so the first read of
+/// a tabled model builds its table once and every later one reads it).
+fn cache() -> PathBuf {
+    std::env::temp_dir().join(format!("rotor-bench-film-tables-{}", std::process::id()))
+}
+
 /// µs per step over `steps` steps of `step` s after settling.
 fn per_step(text: &str, step: f64, steps: usize) -> f64 {
-    let model = RotorModel::from_toml_cached(text, "bench.toml", None).unwrap();
+    let model = RotorModel::from_toml_cached(text, "bench.toml", Some(&cache())).unwrap();
     let mut sim = Simulator::new(
         Rotor::new(model.clone()).unwrap(),
         SolverOptions {
@@ -70,7 +77,13 @@ fn main() {
             .join(format!("{name}.toml"));
         std::fs::read_to_string(path).unwrap()
     };
-    for (name, step, steps) in [("jeffcott", 1e-4, 400), ("hydro_unit", 5e-3, 40)] {
+    // `-- --tables-only`: the tabled row alone (the direct rows take minutes).
+    let direct = if std::env::args().any(|a| a == "--tables-only") {
+        &[][..]
+    } else {
+        &[("jeffcott", 1e-4, 400), ("hydro_unit", 5e-3, 40)][..]
+    };
+    for &(name, step, steps) in direct {
         let text = read(name);
         let short = per_step(&text, step, steps * 10);
         let long = per_step(&finite(&text, ""), step, steps);
@@ -83,7 +96,8 @@ fn main() {
     // times (the median ratio), and the table's build for the geometry.
     let text = read("jeffcott");
     let tabled = finite(&text, "film_tables = true\n");
-    let model = RotorModel::from_toml_cached(&tabled, "bench.toml", None).unwrap();
+    let _ = std::fs::remove_dir_all(cache());
+    let model = RotorModel::from_toml_cached(&tabled, "bench.toml", Some(&cache())).unwrap();
     let BearingKind::FiniteFilm(f) = &model.bearings[0].kind else {
         panic!("not a finite film")
     };
@@ -105,5 +119,17 @@ fn main() {
     println!(
         "| jeffcott, film_tables = true ({}) | 0.0001 s | {short:.2} | {long:.2} | {ratio:.2} | {build:.1} s |",
         film_table_cache::describe(&TableGeometry::of(&f.film()))
+    );
+    let _ = std::fs::remove_dir_all(cache());
+    let gumbel = TableGeometry {
+        cavitation: Cavitation::Gumbel,
+        ..TableGeometry::of(&f.film())
+    };
+    let t0 = Instant::now();
+    std::hint::black_box(FilmTable::build(gumbel).unwrap());
+    println!(
+        "\nTable build, {}: {:.2} s",
+        film_table_cache::describe(&gumbel),
+        t0.elapsed().as_secs_f64()
     );
 }

@@ -434,6 +434,18 @@ impl BearingKind {
         }
     }
 
+    /// A plain finite film's force table that was built (not read from
+    /// the cache) when the model was read: its geometry and build time
+    /// ([`film_table_cache::PreparedTable::describe`]).
+    pub fn film_table_note(&self) -> Option<String> {
+        let BearingKind::FiniteFilm(f) = self else {
+            return None;
+        };
+        let table = f.table.as_deref()?;
+        (!matches!(table.origin, film_table_cache::TableOrigin::Loaded(_)))
+            .then(|| table.describe())
+    }
+
     /// Whether this is a magnetic pull rather than a bearing.
     pub fn is_magnetic_pull(&self) -> bool {
         matches!(self, BearingKind::MagneticPull(_))

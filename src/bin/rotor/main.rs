@@ -458,17 +458,10 @@ fn read_model(path: &Path) -> Result<RotorModel, String> {
     for w in model.plausibility_warnings() {
         eprintln!("warning: {w}");
     }
-    // A force table built (not read from the cache) is reported with its time.
+    // A force table built (not read from the cache) is told with its time.
     for b in &model.bearings {
-        if let rotor_bearing::bearing::BearingKind::FiniteFilm(f) = &b.kind {
-            if let Some(t) = f.table.as_deref() {
-                if !matches!(
-                    t.origin,
-                    rotor_bearing::bearing::film_table_cache::TableOrigin::Loaded(_)
-                ) {
-                    eprintln!("bearing {}: film table {}", b.name, t.describe());
-                }
-            }
+        if let Some(note) = b.kind.film_table_note() {
+            eprintln!("bearing {}: film table {note}", b.name);
         }
     }
     Ok(model)
