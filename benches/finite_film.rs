@@ -132,4 +132,45 @@ fn main() {
         film_table_cache::describe(&gumbel),
         t0.elapsed().as_secs_f64()
     );
+    pad_table_estimate();
+}
+
+/// What a pad's table would cost: one Swift–Stieber solve of a 60° pad on
+/// the default pad mesh (48 × 16), timed over 200 states, times the solves
+/// of a 4-D table — the film position `(ξ, η)` on 33 × 33 nodes and the
+/// direction of `(ω, ξ̇, η̇)` on 24 × 48 nodes of the sphere (the load is
+/// homogeneous of degree 1 in them), the resolution the plain table needs
+/// per angle.
+fn pad_table_estimate() {
+    use nalgebra::Vector2;
+    use rotor_bearing::bearing::JournalState;
+    use rotor_bearing::bearing::finite_film::FiniteFilm;
+    use rotor_bearing::bearing::reynolds::ReynoldsMesh;
+    let film = FiniteFilm {
+        radius: 0.25,
+        length: 0.2,
+        clearance: 2e-4,
+        viscosity: 0.03,
+        mesh: ReynoldsMesh::PAD,
+        cavitation: Cavitation::SwiftStieber,
+    };
+    let half = std::f64::consts::FRAC_PI_6;
+    let arc = Some((-half, half));
+    let t0 = Instant::now();
+    let n = 200;
+    for k in 0..n {
+        let a = k as f64 / n as f64;
+        let state = JournalState {
+            position: Vector2::new(1e-4 * (0.2 + 0.6 * a), 3e-5 * (a - 0.5)),
+            velocity: Vector2::new(1e-3 * (a - 0.5), 2e-3 * a),
+        };
+        std::hint::black_box(film.force(&state, 50.0, arc).unwrap());
+    }
+    let solve = t0.elapsed().as_secs_f64() / n as f64;
+    let solves = 33.0 * 33.0 * 24.0 * 48.0;
+    println!(
+        "\nPad (60°, mesh 48 × 16, Swift–Stieber): {:.2} ms per solve; a 4-D table of 33 × 33 positions × 24 × 48 directions ({solves:.2e} solves) would take {:.0} min per pad geometry",
+        solve * 1e3,
+        solves * solve / 60.0
+    );
 }
