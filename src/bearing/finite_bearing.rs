@@ -9,7 +9,11 @@
 //! resting contact and the report (friction is the Couette shear, which does
 //! not depend on the film's length theory) are the short bearing's.
 
+use std::sync::Arc;
+
 use super::contact::ContactExtent;
+use super::film_table::TableGeometry;
+use super::film_table_cache::PreparedTable;
 use super::finite_film::FiniteFilm;
 use super::reynolds::{Cavitation, ReynoldsMesh};
 use super::{
@@ -35,6 +39,10 @@ pub struct FiniteFilmBearing {
     pub mesh: ReynoldsMesh,
     /// The cavitation condition.
     pub cavitation: Cavitation,
+    /// Force tables of a plain film (`film_tables = true`,
+    /// [`super::film_table`]): used while they match the film's geometry,
+    /// the direct solves otherwise.
+    pub table: Option<Arc<PreparedTable>>,
 }
 
 impl FiniteFilmBearing {
@@ -43,16 +51,19 @@ impl FiniteFilmBearing {
     /// finite-film bearing on its own mesh with `cavitation`; `None` for
     /// other kinds.
     pub fn of(kind: &BearingKind, cavitation: Cavitation) -> Option<Self> {
-        let (support, mesh) = match kind {
-            BearingKind::Plain(b) => (FilmSupport::Plain(*b), ReynoldsMesh::FULL_CIRCLE),
-            BearingKind::TiltingPad(b) => (FilmSupport::TiltingPad(b.clone()), ReynoldsMesh::PAD),
-            BearingKind::FiniteFilm(f) => (f.support.clone(), f.mesh),
+        let (support, mesh, table) = match kind {
+            BearingKind::Plain(b) => (FilmSupport::Plain(*b), ReynoldsMesh::FULL_CIRCLE, None),
+            BearingKind::TiltingPad(b) => {
+                (FilmSupport::TiltingPad(b.clone()), ReynoldsMesh::PAD, None)
+            }
+            BearingKind::FiniteFilm(f) => (f.support.clone(), f.mesh, f.table.clone()),
             _ => return None,
         };
         Some(Self {
             support,
             mesh,
             cavitation,
+            table,
         })
     }
 
@@ -70,6 +81,14 @@ impl FiniteFilmBearing {
             mesh: self.mesh,
             cavitation: self.cavitation,
         }
+    }
+
+    /// The force table of the plain film `film` if it carries one built
+    /// for that film's geometry.
+    fn table_for(&self, film: &FiniteFilm) -> Option<&PreparedTable> {
+        self.table
+            .as_deref()
+            .filter(|t| t.table.geometry() == TableGeometry::of(film))
     }
 
     /// The short-film bearing of the same geometry.
@@ -146,7 +165,10 @@ impl Bearing for FiniteFilmBearing {
             FilmSupport::Plain(b) => {
                 check_state(2, q, qdot, speed, out)?;
                 let state = JournalState::from_coordinates(q, qdot);
-                let part = film.force_and_jacobian(&state, speed, None)?;
+                let part = match self.table_for(&film) {
+                    Some(t) => t.table.force_and_jacobian(&film, &state, speed)?,
+                    None => film.force_and_jacobian(&state, speed, None)?,
+                };
                 out.clear();
                 out.add_transformed(&part, None);
                 let (contact, _) = b
@@ -202,7 +224,10 @@ impl Bearing for FiniteFilmBearing {
             FilmSupport::Plain(b) => {
                 check_state(2, q, qdot, speed, out)?;
                 let state = JournalState::from_coordinates(q, qdot);
-                let force = film.force(&state, speed, None)?;
+                let force = match self.table_for(&film) {
+                    Some(t) => t.table.force_and_jacobian(&film, &state, speed)?.force,
+                    None => film.force(&state, speed, None)?,
+                };
                 let (contact, _) = b
                     .contact_law()
                     .evaluate(state.position, state.velocity, speed);

@@ -41,6 +41,8 @@ pub mod contact;
 pub mod equilibrium;
 pub mod film;
 mod film_lanes;
+pub mod film_table;
+pub mod film_table_cache;
 pub mod finite_bearing;
 pub mod finite_film;
 pub mod linear;
@@ -430,6 +432,18 @@ impl BearingKind {
             BearingKind::MagneticPull(m) => Box::new(*m),
             BearingKind::FiniteFilm(f) => Box::new(f.clone()),
         }
+    }
+
+    /// A plain finite film's force table that was built (not read from
+    /// the cache) when the model was read: its geometry and build time
+    /// ([`film_table_cache::PreparedTable::describe`]).
+    pub fn film_table_note(&self) -> Option<String> {
+        let BearingKind::FiniteFilm(f) = self else {
+            return None;
+        };
+        let table = f.table.as_deref()?;
+        (!matches!(table.origin, film_table_cache::TableOrigin::Loaded(_)))
+            .then(|| table.describe())
     }
 
     /// Whether this is a magnetic pull rather than a bearing.

@@ -153,6 +153,7 @@ pub struct FilmProblem {
 }
 
 /// The mesh of one problem: its unknown columns (angles) and their order.
+#[derive(Clone)]
 struct Grid {
     /// Angle of each unknown column (rad).
     theta: Vec<f64>,
@@ -366,31 +367,7 @@ pub fn solve_from(
     cavitation: Cavitation,
     start: Option<&[bool]>,
 ) -> Result<PressureField, ReynoldsError> {
-    mesh.check()?;
-    let eps2 = problem.x * problem.x + problem.y * problem.y;
-    if eps2.is_nan() || eps2 >= 1.0 {
-        return Err(ReynoldsError::Input {
-            what: "eccentricity ratio",
-            value: eps2.sqrt(),
-            why: "is not below 1 (the film closes)",
-        });
-    }
-    if !(problem.slenderness.is_finite() && problem.slenderness > 0.0) {
-        return Err(ReynoldsError::Input {
-            what: "(2R/L)²",
-            value: problem.slenderness,
-            why: "is not positive and finite",
-        });
-    }
-    if let Some((from, to)) = problem.arc {
-        if !(from.is_finite() && to.is_finite() && to > from && to - from <= TAU) {
-            return Err(ReynoldsError::Input {
-                what: "arc extent (rad)",
-                value: to - from,
-                why: "is not in (0, 2π]",
-            });
-        }
-    }
+    check_problem(problem, mesh)?;
     let grid = Grid::new(problem.arc, mesh);
     let (matrix, rhs) = assemble(problem, &grid);
     let start = start.filter(|s| s.len() == rhs.len());
@@ -417,6 +394,92 @@ pub fn solve_from(
         clipped: cavitation == Cavitation::Gumbel,
         held: None,
     })
+}
+
+/// The load integrals ([`PressureField::load_integral`]) of `problem`'s
+/// film (its `a`, `b` ignored) under the unit sources `(A, B)/C = (cos χ,
+/// sin χ)` for each `χ` of `directions`: each the [`solve`] of that source
+/// to round-off. The matrix does not depend on the source, so Gümbel and the
+/// full film factor it once and combine the two unit fields; Swift–Stieber
+/// starts each direction's active set from the previous direction's.
+pub fn direction_loads(
+    problem: &FilmProblem,
+    mesh: ReynoldsMesh,
+    cavitation: Cavitation,
+    directions: &[f64],
+) -> Result<Vec<Vector2<f64>>, ReynoldsError> {
+    check_problem(problem, mesh)?;
+    let grid = Grid::new(problem.arc, mesh);
+    let unit = |a, b| FilmProblem { a, b, ..*problem };
+    let (matrix, f_a) = assemble(&unit(1.0, 0.0), &grid);
+    let (_, f_b) = assemble(&unit(0.0, 1.0), &grid);
+    let field = |pressure, clipped| PressureField {
+        grid: grid.clone(),
+        pressure,
+        clipped,
+        held: None,
+    };
+    let mut loads = Vec::with_capacity(directions.len());
+    if cavitation == Cavitation::SwiftStieber {
+        let mut start: Option<Vec<bool>> = None;
+        for &chi in directions {
+            let (s, c) = chi.sin_cos();
+            let rhs: Vec<f64> = f_a.iter().zip(&f_b).map(|(a, b)| c * a + s * b).collect();
+            let warm = start.take().map(|held| active_set(&matrix, &rhs, held));
+            let (pressure, held) = match warm {
+                Some(Ok(solved)) => solved,
+                _ => {
+                    let full = solve_masked(&matrix, &rhs, None)?;
+                    active_set(&matrix, &rhs, full.iter().map(|&p| p <= 0.0).collect())?
+                }
+            };
+            loads.push(field(pressure, false).load_integral());
+            start = Some(held);
+        }
+        return Ok(loads);
+    }
+    let lu = matrix.lu().map_err(|_| ReynoldsError::Singular)?;
+    let mut p_a = f_a;
+    let mut p_b = f_b;
+    lu.solve_in_place(&mut p_a);
+    lu.solve_in_place(&mut p_b);
+    for &chi in directions {
+        let (s, c) = chi.sin_cos();
+        let pressure = p_a.iter().zip(&p_b).map(|(a, b)| c * a + s * b).collect();
+        loads.push(field(pressure, cavitation == Cavitation::Gumbel).load_integral());
+    }
+    Ok(loads)
+}
+
+/// `Err` for a mesh out of range, a closed film (`ε ≥ 1`), a slenderness
+/// that is not positive and finite or an arc outside `(0, 2π]`.
+fn check_problem(problem: &FilmProblem, mesh: ReynoldsMesh) -> Result<(), ReynoldsError> {
+    mesh.check()?;
+    let eps2 = problem.x * problem.x + problem.y * problem.y;
+    if eps2.is_nan() || eps2 >= 1.0 {
+        return Err(ReynoldsError::Input {
+            what: "eccentricity ratio",
+            value: eps2.sqrt(),
+            why: "is not below 1 (the film closes)",
+        });
+    }
+    if !(problem.slenderness.is_finite() && problem.slenderness > 0.0) {
+        return Err(ReynoldsError::Input {
+            what: "(2R/L)²",
+            value: problem.slenderness,
+            why: "is not positive and finite",
+        });
+    }
+    if let Some((from, to)) = problem.arc {
+        if !(from.is_finite() && to.is_finite() && to > from && to - from <= TAU) {
+            return Err(ReynoldsError::Input {
+                what: "arc extent (rad)",
+                value: to - from,
+                why: "is not in (0, 2π]",
+            });
+        }
+    }
+    Ok(())
 }
 
 /// The discrete operator `A` (minus the stencil, so that `A` is an M-matrix)

@@ -7,6 +7,11 @@ use std::path::{Path, PathBuf};
 use super::instance::Instance;
 use crate::model::RotorModel;
 
+/// The folder of the plain finite films' force tables inside the resources
+/// (`film_tables = true`; `rotor fmu-stage` writes them there, an instance
+/// reads them, or builds them if they are missing or not trusted).
+pub const FILM_TABLES: &str = "film_tables";
+
 /// The model file inside the resources folder.
 pub const MODEL_FILE: &str = "model.toml";
 
@@ -88,7 +93,9 @@ pub fn instantiate_in(
     dir: &Path,
     new: impl FnOnce(&str, RotorModel) -> Result<Instance, String>,
 ) -> Result<Instance, String> {
-    let model = RotorModel::from_file(&dir.join(MODEL_FILE)).map_err(|e| e.to_string())?;
+    let tables = dir.join(FILM_TABLES);
+    let model = RotorModel::from_file_cached(&dir.join(MODEL_FILE), Some(&tables))
+        .map_err(|e| e.to_string())?;
     let instance = new(name, model)?;
     if instance.guid() != guid {
         return Err(format!(

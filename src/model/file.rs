@@ -252,6 +252,10 @@ pub enum BearingEntry {
         /// With `film = "finite"`: `"swift_stieber"` (Reynolds, the default)
         /// or `"gumbel"` (half-Sommerfeld).
         cavitation: Option<String>,
+        /// With `film = "finite"` on a plain bearing: `true` evaluates the
+        /// film by force tables (built once per geometry and cached),
+        /// `false` (the default) by direct Reynolds solves.
+        film_tables: Option<bool>,
     },
     /// Linear coefficients over speed (a vendor's bearing code), PCHIP-interpolated.
     Table {
@@ -334,6 +338,10 @@ pub enum BearingEntry {
         /// With `film = "finite"`: `"swift_stieber"` (Reynolds, the default)
         /// or `"gumbel"` (half-Sommerfeld).
         cavitation: Option<String>,
+        /// With `film = "finite"` on a plain bearing: `true` evaluates the
+        /// film by force tables (built once per geometry and cached),
+        /// `false` (the default) by direct Reynolds solves.
+        film_tables: Option<bool>,
     },
 }
 

@@ -515,6 +515,31 @@ impl RotorModel {
     /// # Ok::<(), rotor_bearing::model::ModelError>(())
     /// ```
     pub fn from_toml(text: &str, source: &str) -> Result<Self, ModelError> {
+        let cache = crate::bearing::film_table_cache::cache_dir();
+        Self::from_toml_cached(text, source, cache.as_deref())
+    }
+
+    /// [`Self::from_file`] with the force tables of plain finite films
+    /// (`film_tables = true`) cached in `film_cache` (`None`: built in
+    /// memory) instead of the user's cache directory
+    /// ([`crate::bearing::film_table_cache::cache_dir`]): an FMU's
+    /// resources.
+    pub fn from_file_cached(path: &Path, film_cache: Option<&Path>) -> Result<Self, ModelError> {
+        let source = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| ModelError::Io {
+            file: source.clone(),
+            message: e.to_string(),
+        })?;
+        Self::from_toml_cached(&text, &source, film_cache)
+    }
+
+    /// [`Self::from_toml`] with the force tables cached in `film_cache`
+    /// (see [`Self::from_file_cached`]).
+    pub fn from_toml_cached(
+        text: &str,
+        source: &str,
+        film_cache: Option<&Path>,
+    ) -> Result<Self, ModelError> {
         let raw: ModelFile = toml::from_str(text).map_err(|e| {
             let span = e.span();
             let line = span.as_ref().map(|s| line_of(text, s.start));
@@ -555,7 +580,11 @@ impl RotorModel {
                 message,
             }
         })?;
-        let ctx = Ctx { text, source };
+        let ctx = Ctx {
+            text,
+            source,
+            film_cache,
+        };
         build::build(&ctx, raw)
     }
 

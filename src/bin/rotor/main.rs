@@ -458,6 +458,12 @@ fn read_model(path: &Path) -> Result<RotorModel, String> {
     for w in model.plausibility_warnings() {
         eprintln!("warning: {w}");
     }
+    // A force table built (not read from the cache) is told with its time.
+    for b in &model.bearings {
+        if let Some(note) = b.kind.film_table_note() {
+            eprintln!("bearing {}: film table {note}", b.name);
+        }
+    }
     Ok(model)
 }
 

@@ -2,8 +2,9 @@
 //! bearings, with the geometric checks thin-film theory needs.
 
 use crate::bearing::contact::ContactLaw;
+use crate::bearing::film_table_cache::PreparedTable;
 use crate::bearing::finite_bearing::{
-    FiniteFilmBearing, PAD_ARC_RANGE, SLENDERNESS_RANGE, slenderness,
+    FilmSupport, FiniteFilmBearing, PAD_ARC_RANGE, SLENDERNESS_RANGE, slenderness,
 };
 use crate::bearing::reynolds::{Cavitation, ReynoldsMesh};
 use crate::bearing::tilting_pad::Pad;
@@ -79,13 +80,19 @@ fn film_theory(
     ctx: &Ctx,
     p: &FieldPath,
     kind: BearingKind,
-    (film, mesh, cavitation): (Option<String>, Option<Vec<i64>>, Option<String>),
+    (film, mesh, cavitation, tables): (
+        Option<String>,
+        Option<Vec<i64>>,
+        Option<String>,
+        Option<bool>,
+    ),
 ) -> Result<BearingKind, ModelError> {
     match film.as_deref() {
         None | Some("short") => {
             for (key, given) in [
                 ("film_mesh", mesh.is_some()),
                 ("cavitation", cavitation.is_some()),
+                ("film_tables", tables.is_some()),
             ] {
                 if given {
                     return Err(ctx.err(
@@ -168,6 +175,19 @@ fn film_theory(
             circumferential: list[0] as usize,
             axial: list[1] as usize,
         };
+    }
+    if tables == Some(true) {
+        if !matches!(bearing.support, FilmSupport::Plain(_)) {
+            return Err(ctx.err(
+                p.key("film_tables"),
+                "true",
+                "force tables are built for plain bearings only: tilting pads solve their films directly (remove it)",
+            ));
+        }
+        bearing.table = Some(std::sync::Arc::new(
+            PreparedTable::load_or_build(&bearing.film(), ctx.film_cache)
+                .map_err(|e| ctx.err(p.key("film_tables"), "true", &e.to_string()))?,
+        ));
     }
     Ok(BearingKind::FiniteFilm(bearing))
 }
@@ -310,6 +330,7 @@ pub(super) fn bearings(
                 film,
                 film_mesh,
                 cavitation,
+                film_tables,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
                 let centre = centre_offset(ctx, &p, (offset_x, offset_y))?;
@@ -340,7 +361,7 @@ pub(super) fn bearings(
                     ctx,
                     &p,
                     BearingKind::Plain(bearing),
-                    (film, film_mesh, cavitation),
+                    (film, film_mesh, cavitation, film_tables),
                 )?;
                 (name, node, kind, pedestal, centre)
             }
@@ -412,6 +433,7 @@ pub(super) fn bearings(
                 film,
                 film_mesh,
                 cavitation,
+                film_tables,
             } => {
                 let node = ctx.location(&p, node, z, node_z)?;
                 let centre = centre_offset(ctx, &p, (offset_x, offset_y))?;
@@ -503,7 +525,7 @@ pub(super) fn bearings(
                     ctx,
                     &p,
                     BearingKind::TiltingPad(bearing),
-                    (film, film_mesh, cavitation),
+                    (film, film_mesh, cavitation, film_tables),
                 )?;
                 (name, node, kind, pedestal, centre)
             }
