@@ -146,6 +146,26 @@ fn a_hydro_unit_is_judged_by_runaway_speed_and_housing_zones() {
         assert_eq!(row[4], if zone.acceptable() { "pass" } else { "FAIL" });
     }
     assert!(rows.iter().all(|r| !r[3].contains("API")), "{rows:?}");
+    // `rotor campbell` gives the same verdict in its own words.
+    let dir = std::env::temp_dir().join(format!("hydro-campbell-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("hydro.toml");
+    std::fs::write(&file, &text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("campbell")
+        .arg(&file)
+        .output()
+        .unwrap();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(out.status.success());
+    let printed = String::from_utf8(out.stdout).unwrap();
+    let line = format!(
+        "first critical speed {} rpm against the runaway speed 2000 rpm (machine = hydro_generator: above it): {}\n",
+        short(lowest / RPM),
+        critical[4]
+    );
+    assert!(printed.contains(&line), "{printed}");
+    assert!(!printed.contains("API 684"), "{printed}");
 }
 
 #[test]

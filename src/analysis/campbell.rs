@@ -445,6 +445,17 @@ pub struct CampbellStudy {
     pub torsional: Vec<TorsionalMode>,
 }
 
+impl CampbellStudy {
+    /// The lowest critical speed (rad/s, not overdamped) of the diagram, the
+    /// one a hydro unit's runaway speed must stay below.
+    pub fn first_critical_speed(&self) -> Option<f64> {
+        self.margins
+            .iter()
+            .map(|m| m.critical.speed)
+            .min_by(f64::total_cmp)
+    }
+}
+
 /// The Campbell study `rotor campbell` and the report run: the diagram with
 /// each mode's tilting pads at its own eigenvalue ([`modal_analysis_own`]),
 /// its 1× crossings refined on the synchronous linearization (exact there:

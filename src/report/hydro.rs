@@ -25,16 +25,11 @@ pub struct HousingStudy<'a> {
 /// The summary row of the critical speeds: the lowest (not overdamped)
 /// critical speed must lie above the runaway speed `runaway` (rad/s).
 pub fn critical_row(study: &CampbellStudy, runaway: f64) -> Vec<Cell> {
-    let lowest = study
-        .margins
-        .iter()
-        .map(|m| m.critical.speed)
-        .fold(f64::INFINITY, f64::min);
     let criterion = format!(
         "above the runaway speed {} rpm",
         short(runaway * RAD_S_TO_RPM)
     );
-    if lowest.is_finite() {
+    if let Some(lowest) = study.first_critical_speed() {
         vec![
             "first critical speed (Campbell)".into(),
             "—".into(),
@@ -48,7 +43,12 @@ pub fn critical_row(study: &CampbellStudy, runaway: f64) -> Vec<Cell> {
             "—".into(),
             format!("none up to {} rpm", short(study.top * RAD_S_TO_RPM)).into(),
             criterion.into(),
-            Cell::verdict(Verdict::of(study.top >= runaway)),
+            // A diagram that stops below the runaway speed cannot tell.
+            Cell::verdict(if study.top >= runaway {
+                Verdict::Pass
+            } else {
+                Verdict::NotJudged
+            }),
         ]
     }
 }

@@ -95,11 +95,19 @@ pub fn campbell_study(rotor: &Rotor, study: &CampbellStudy) -> String {
         .ok();
         overdamped.into_iter().for_each(|c| s.push_str(&line(c)));
     }
-    s.push_str(&critical_margins(
-        &study.margins,
-        study.operating.as_ref(),
-        study.max_speed,
-    ));
+    if model.machine.is_hydro() {
+        s.push_str(&runaway_verdict(
+            study,
+            model.max_speed,
+            model.machine.name(),
+        ));
+    } else {
+        s.push_str(&critical_margins(
+            &study.margins,
+            study.operating.as_ref(),
+            study.max_speed,
+        ));
+    }
     s.push_str(&overdamped_summary(&study.diagram));
     if !study.torsional.is_empty() {
         let lines: Vec<String> = study
@@ -365,6 +373,30 @@ pub fn margin_cells(m: &CriticalMargin) -> [String; 6] {
         from_max,
         verdict.to_string(),
     ]
+}
+
+/// A hydro unit's verdict on its critical speeds (`machine` a hydro class):
+/// the first critical speed must lie above the runaway speed `runaway`
+/// (rad/s, `max_speed_rpm`); API 684's separation margins are not its
+/// criterion.
+pub fn runaway_verdict(study: &CampbellStudy, runaway: f64, machine: &str) -> String {
+    let runaway_rpm = short(runaway * RAD_S_TO_RPM);
+    match study.first_critical_speed() {
+        Some(first) => format!(
+            "first critical speed {} rpm against the runaway speed {runaway_rpm} rpm (machine = {machine}: above it): {}\n",
+            short(first * RAD_S_TO_RPM),
+            if first > runaway { "pass" } else { "FAIL" }
+        ),
+        None => format!(
+            "no critical speed up to {} rpm, the runaway speed {runaway_rpm} rpm (machine = {machine}: the first critical above it): {}\n",
+            short(study.top * RAD_S_TO_RPM),
+            if study.top >= runaway {
+                "pass"
+            } else {
+                "not judged: the diagram stops below the runaway speed"
+            }
+        ),
+    }
 }
 
 /// API 684 separation margins of the critical speeds of a Campbell diagram
