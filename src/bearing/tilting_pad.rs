@@ -287,6 +287,50 @@ impl TiltingPadBearing {
         None
     }
 
+    /// Pad `k`'s moment balance `Q_η` (N) and `K_ηη`, `C_ηη` at `q`, `q̇`
+    /// ([`Bearing::internal_balance`]).
+    fn pad_balance(
+        &self,
+        k: usize,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+    ) -> Result<[f64; 3], BearingError> {
+        let n = 2 + self.pads.len();
+        if q.len() != n || qdot.len() != n || k >= self.pads.len() {
+            return Err(BearingError::Dimension {
+                expected: n,
+                found: q.len(),
+            });
+        }
+        let (s, c, state) = self.pad_state(k, q, qdot);
+        // t = (−sin θp, cos θp), the third column of T.
+        let t = [-s, c];
+        let mut out = [0.0; 3];
+        let mut add = |part: &BearingForce| {
+            out[0] += t[0] * part.force.x + t[1] * part.force.y;
+            for (slot, mat) in [(1, &part.stiffness), (2, &part.damping)] {
+                let col = [
+                    mat[(0, 0)] * t[0] + mat[(0, 1)] * t[1],
+                    mat[(1, 0)] * t[0] + mat[(1, 1)] * t[1],
+                ];
+                out[slot] += t[0] * col[0] + t[1] * col[1];
+            }
+        };
+        add(&self
+            .film()
+            .force(&state, speed, Some(&self.pads[k].window))?);
+        if let Some((contact, _)) = self.pad_contact(&self.contact_law(), k, &state, speed) {
+            add(&contact);
+        }
+        let (c_rest, k_rest) = self.pivot_rest(speed);
+        let i = 2 + k;
+        out[0] -= k_rest * q[i] + c_rest * qdot[i];
+        out[1] += k_rest;
+        out[2] += c_rest;
+        Ok(out)
+    }
+
     /// Film force on pad `k` alone at `q`, `q̇`: the force on the journal (N).
     pub fn pad_force(
         &self,
@@ -504,6 +548,19 @@ impl Bearing for TiltingPadBearing {
     /// The film force without its Jacobians is about half the work.
     fn cheap_forces(&self) -> bool {
         true
+    }
+
+    /// Pad `m`'s moment balance alone: the third row of `Tᵀ F_pad` and the
+    /// diagonal of `Tᵀ K_pad T`, `Tᵀ C_pad T` (module docs), with its contact
+    /// and its pivot's rest moment, as [`Bearing::evaluate`] adds them.
+    fn internal_balance(
+        &self,
+        m: usize,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+    ) -> Option<Result<[f64; 3], BearingError>> {
+        Some(self.pad_balance(m, q, qdot, speed))
     }
 
     /// The forces of [`Bearing::output`] alone.

@@ -69,6 +69,7 @@ pub mod observer;
 pub mod offset_continuation;
 mod output_memo;
 mod outputs;
+mod pad_balance;
 pub mod plausible;
 pub mod reduction_check;
 pub mod run;

@@ -9,6 +9,7 @@ use super::dense::{lu_in_place, lu_solve};
 use super::factor::Factor;
 use super::line_search::{Backtrack, Trial, condensed_residual, retreat};
 use super::newmark::{Displacement, newmark_rates};
+use super::pad_balance::{self, TiltRate};
 use super::simulator::{Simulator, SolverError};
 use super::sites::Sites;
 use super::slow_pads::SlowPads;
@@ -238,6 +239,20 @@ fn ends_on_iterate(increment: f64, tol: f64) -> bool {
     increment <= ITERATE_ERROR * tol
 }
 
+/// Contraction `δ_k/δ_{k−1}` of the condensed Newton above which it is slow:
+/// the step goes on with every pad settled on its own balance
+/// ([`super::pad_balance`]), and so do the steps after it.
+const SLOW: f64 = 0.3;
+
+/// Fraction of the force that moves a journal by the Newton tolerance
+/// within which a settled pad's balance must be ([`super::pad_balance`]).
+const FORCE_FRACTION: f64 = 1e-3;
+
+/// Film evaluations of a pad within which it counts as balanced already by
+/// the condensed Newton's own increments: a step whose pads never took more
+/// lets the next step go back to the plain iteration.
+const BALANCED_EVALUATIONS: usize = 2;
+
 /// Buffers of the condensed Newton on the journal coordinates: the iterate
 /// `j` (set to the predictor before the first iteration), bearing forces `F_j`,
 /// pad terms `K_jp K_pp⁻¹ (−F_p)`, condensed 2×2 stiffnesses (4 per bearing),
@@ -256,6 +271,11 @@ pub(super) struct CondensedWork {
     search: Backtrack,
     /// The pads' previous increments, for the slow-contraction rule.
     slow: SlowPads,
+    /// Whether the next step settles each pad on its own balance in every
+    /// iteration ([`super::pad_balance`]): set when an iteration contracts
+    /// slowly, cleared after a step whose pads all balanced within
+    /// [`BALANCED_EVALUATIONS`] film evaluations each.
+    balancing: bool,
     /// Whether the last step ended on its iterate: the next step's first
     /// chord iteration then also makes the bearings' reports
     /// (`Bearing::output`), which such a step's outputs take. Either pass gives
@@ -277,8 +297,21 @@ impl CondensedWork {
             cj: vec![0.0; n_journal * n_journal],
             cj_piv: vec![0; n_journal],
             cj_rhs: vec![0.0; n_journal],
+            balancing: false,
             last_on_iterate: false,
         }
+    }
+}
+
+impl CondensedWork {
+    /// Whether the next step settles each pad on its own balance.
+    pub fn balancing(&self) -> bool {
+        self.balancing
+    }
+
+    /// Restore [`CondensedWork::balancing`] with a state (`SimState::pad_balancing`).
+    pub fn set_balancing(&mut self, on: bool) {
+        self.balancing = on;
     }
 }
 
@@ -338,6 +371,15 @@ impl Simulator {
         // The slow-contraction rule moved a pad at the last iteration: the
         // contraction of the next increment says nothing about the error left.
         let mut moved = false;
+        // Pads settled on their own balance ([`super::pad_balance`]): within
+        // the force tolerance `tol · s / G_max`, a force that moves no journal
+        // by more than the tolerance.
+        let mut balanced = !damped && self.condensed.balancing && self.sites.n_internal > 0;
+        let compliance = (0..sj).map(|r| f.g[r * sj + r].abs()).fold(0.0, f64::max);
+        let force_tol = FORCE_FRACTION * tol * length_scale / compliance;
+        let tilt_tol = 1e-2 * tol * length_scale;
+        let mut most_evaluations = 0;
+        let mut gave_up = false;
         let report_ahead = self.condensed.last_on_iterate;
         self.condensed.last_on_iterate = false;
         self.condensed.search.reset();
@@ -354,6 +396,9 @@ impl Simulator {
                 first_chord = false;
             }
             let (s, w, c) = (&self.state, &mut self.newmark, &mut self.condensed);
+            // A pad that did not balance sends the step back to the plain
+            // iteration (its tilt left where it was).
+            let mut unsettled = false;
             for (k, site) in self.sites.list.iter_mut().enumerate() {
                 for (a, coordinate) in site.journal.iter().enumerate() {
                     let j = c.j[2 * k + a];
@@ -370,6 +415,34 @@ impl Simulator {
                     time: t1,
                     source,
                 };
+                for m in 0..site.internal.min(if balanced { usize::MAX } else { 0 }) {
+                    let i = site.offset + m;
+                    let rate = TiltRate {
+                        a1,
+                        start: s.p[i],
+                        start_rate: s.pd[i],
+                    };
+                    let taken = pad_balance::settle(
+                        &*site.bearing,
+                        m,
+                        &mut site.q,
+                        &mut site.qd,
+                        speed1,
+                        rate,
+                        force_tol,
+                        tilt_tol,
+                    )
+                    .map_err(bearing_error)?;
+                    let Some(taken) = taken else {
+                        return Err(SolverError::Input(
+                            "internal: a pad without a balance of its own".into(),
+                        ));
+                    };
+                    self.stats.pad_evaluations += taken.evaluations;
+                    most_evaluations = most_evaluations.max(taken.evaluations);
+                    unsettled |= !taken.balanced;
+                    w.p[i] = site.q[2 + m];
+                }
                 let wv = if chord {
                     let report = if check && report_ahead {
                         let report = site
@@ -400,6 +473,12 @@ impl Simulator {
                 };
                 c.fj[2 * k..2 * k + 2].copy_from_slice(&site.eval.force[..2]);
                 c.wv[2 * k..2 * k + 2].copy_from_slice(&wv);
+            }
+            if unsettled {
+                gave_up = true;
+                balanced = false;
+                c.balancing = false;
+                last = f64::INFINITY;
             }
             for (r, coordinate) in self.sites.coordinates.iter().enumerate() {
                 let g = &f.g[r * sj..(r + 1) * sj];
@@ -447,8 +526,11 @@ impl Simulator {
                 for m in 0..mi {
                     let x = &site.condensation.x;
                     let d = -x[2 * mi + m] - x[m] * dx - x[mi + m] * dy;
-                    inc = inc.max(d.abs());
-                    mag = mag.max(w.p[site.offset + m].abs());
+                    // Balanced pads are judged by their residual, not their increment.
+                    if !balanced {
+                        inc = inc.max(d.abs());
+                        mag = mag.max(w.p[site.offset + m].abs());
+                    }
                     c.search.internal[site.offset + m] = d;
                 }
             }
@@ -469,6 +551,7 @@ impl Simulator {
                 self.place_journals(h);
                 self.stats.steps_on_iterate += 1;
                 self.condensed.last_on_iterate = true;
+                self.condensed.balancing = balanced && most_evaluations > BALANCED_EVALUATIONS;
                 return Ok(None);
             }
             for (j, d) in c.j.iter_mut().zip(&c.search.journal) {
@@ -488,6 +571,9 @@ impl Simulator {
                     *fk += c.wv[k] - kc[0] * c.cj_rhs[2 * b] - kc[1] * c.cj_rhs[2 * b + 1];
                 }
                 self.displacement_from_journal_forces(h, f);
+                if !damped {
+                    self.condensed.balancing = balanced && most_evaluations > BALANCED_EVALUATIONS;
+                }
                 return Ok(None);
             }
             // Pads converging linearly (near a double root) move on by their
@@ -497,9 +583,21 @@ impl Simulator {
             } else {
                 increment / last
             };
-            let count = c
-                .slow
-                .extrapolate(&c.search.internal, &mut w.p, contraction);
+            if !balanced && !gave_up && !damped && self.sites.n_internal > 0 && contraction > SLOW {
+                // Slow: from here on every pad is settled on its own balance,
+                // and the increments are the journals' alone.
+                balanced = true;
+                self.condensed.balancing = true;
+                chord = false;
+                last = f64::INFINITY;
+                continue;
+            }
+            let count = if balanced {
+                0
+            } else {
+                c.slow
+                    .extrapolate(&c.search.internal, &mut w.p, contraction)
+            };
             self.stats.extrapolations += count;
             moved = count > 0;
             chord =
@@ -509,6 +607,8 @@ impl Simulator {
                 break;
             }
         }
+        // A step that failed goes on (damped retry, halves) without settling.
+        self.condensed.balancing = false;
         Ok(Some(last))
     }
 

@@ -108,6 +108,9 @@ pub struct StepStats {
     /// Pad tilts moved on by their extrapolated tail where the condensed
     /// Newton contracted slowly (`solver::slow_pads`).
     pub extrapolations: usize,
+    /// Film evaluations of single pads settling their own balance
+    /// (`solver::pad_balance`); a pass over a bearing of `n` pads counts `n`.
+    pub pad_evaluations: usize,
     /// Step halvings.
     pub step_cuts: usize,
     /// Steps solved again by the damped Newton after plain Newton failed.
@@ -276,6 +279,7 @@ impl Simulator {
             contact_reported: vec![0.0; 2 * sites.list.len()],
             table_warned: vec![0.0; rotor.model.bearings.len()],
             step_proposal: 0.0,
+            pad_balancing: 0.0,
         };
         if let Some(t) = &torsion {
             let n = t.chain.dof_count();
@@ -421,6 +425,7 @@ impl Simulator {
             }
         }
         self.schur.ready = false;
+        self.condensed.set_balancing(state.pad_balancing != 0.0);
         self.state = state;
         Ok(())
     }
