@@ -73,6 +73,7 @@ mod pad_balance;
 pub mod plausible;
 pub mod reduction_check;
 pub mod run;
+mod schur;
 mod simulator;
 mod sites;
 mod slow_pads;
