@@ -119,3 +119,210 @@ pub(super) fn settle(
         balanced: false,
     }))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{MAX_EVALUATIONS, Settled, TiltRate, settle};
+    use crate::bearing::{Bearing, BearingError, BearingEval};
+
+    /// A pad near the tilt `η₀` where its film stops carrying it: the film's
+    /// moment `a (η − η₀)²` beyond it, nothing before, and the pivot's rest
+    /// moment `−k_r η` (the balance of `crate::bearing::tilting_pad` near
+    /// unloading, rates left out): the loaded root is
+    /// `η* = η₀ + √(k_r η*/a)`, a near-double root.
+    #[derive(Debug)]
+    struct NearDoubleRoot {
+        a: f64,
+        eta0: f64,
+        k_rest: f64,
+    }
+
+    impl NearDoubleRoot {
+        fn moment(&self, eta: f64) -> f64 {
+            let e = (eta - self.eta0).max(0.0);
+            self.a * e * e - self.k_rest * eta
+        }
+    }
+
+    impl Bearing for NearDoubleRoot {
+        fn internal_dofs(&self) -> usize {
+            1
+        }
+        fn evaluate(
+            &self,
+            _: &[f64],
+            _: &[f64],
+            _: f64,
+            _: &mut BearingEval,
+        ) -> Result<(), BearingError> {
+            unreachable!("the settling evaluates the pad alone")
+        }
+        fn is_linear(&self) -> bool {
+            false
+        }
+        fn internal_balance(
+            &self,
+            _m: usize,
+            q: &[f64],
+            _qdot: &[f64],
+            _speed: f64,
+        ) -> Option<Result<[f64; 3], BearingError>> {
+            let e = (q[2] - self.eta0).max(0.0);
+            Some(Ok([self.moment(q[2]), self.k_rest - 2.0 * self.a * e, 0.0]))
+        }
+    }
+
+    /// Started 1e3 times the root's distance from the unloading tilt away,
+    /// where Newton halves its way down, the pad settles within the force
+    /// tolerance on the loaded root (not the resting one at zero), within
+    /// the tilt error that tolerance allows there, in the evaluations plain
+    /// Newton takes (the scalar solve is Newton: what it saves is a bearing
+    /// pass for each halving, each evaluation being this one pad's).
+    #[test]
+    fn a_pad_near_a_double_root_settles_on_its_loaded_root() {
+        let pad = NearDoubleRoot {
+            a: 1e12,
+            eta0: 1e-6,
+            k_rest: 1e-2,
+        };
+        // The loaded root: a e² = k_r (η₀ + e), e ≈ √(k_r η₀ / a) = 1e-10.
+        let mut e: f64 = 1e-10;
+        for _ in 0..50 {
+            e = (pad.k_rest * (pad.eta0 + e) / pad.a).sqrt();
+        }
+        let root = pad.eta0 + e;
+        let force_tol = 1e-12;
+        let rate = TiltRate {
+            a1: 0.0,
+            start: 0.0,
+            start_rate: 0.0,
+        };
+        let mut q = [0.0, 0.0, pad.eta0 + 1e3 * e];
+        let mut qd = [0.0; 3];
+        let settled = settle(&pad, 0, &mut q, &mut qd, 1.0, rate, force_tol, 0.0)
+            .unwrap()
+            .unwrap();
+        assert!(settled.balanced && settled.evaluations <= 20, "{settled:?}");
+        assert!(pad.moment(q[2]).abs() <= force_tol, "{}", pad.moment(q[2]));
+        // The tilt error the force tolerance allows near the root: ε_F / Q'.
+        let slope = 2.0 * pad.a * e - pad.k_rest;
+        assert!(
+            (q[2] - root).abs() <= 1.01 * force_tol / slope,
+            "{} {root}",
+            q[2]
+        );
+        // Plain Newton from the same start: as many evaluations.
+        let mut eta = pad.eta0 + 1e3 * e;
+        let mut plain = 0;
+        while pad.moment(eta).abs() > force_tol {
+            let d = (eta - pad.eta0).max(0.0);
+            eta -= pad.moment(eta) / (2.0 * pad.a * d - pad.k_rest);
+            plain += 1;
+        }
+        assert_eq!(plain, settled.evaluations - 1, "{settled:?}");
+    }
+
+    /// The Newmark rate follows the tilt; a bearing without a balance of its
+    /// own gives `None`; a balance that cannot be met leaves the tilt where
+    /// it started and says so.
+    #[test]
+    fn the_rate_follows_and_failures_leave_the_pad_alone() {
+        #[derive(Debug)]
+        struct NoBalance;
+        impl Bearing for NoBalance {
+            fn evaluate(
+                &self,
+                _: &[f64],
+                _: &[f64],
+                _: f64,
+                _: &mut BearingEval,
+            ) -> Result<(), BearingError> {
+                Ok(())
+            }
+            fn is_linear(&self) -> bool {
+                false
+            }
+        }
+        let rate = TiltRate {
+            a1: 400.0,
+            start: 1e-6,
+            start_rate: 2e-4,
+        };
+        let (mut q, mut qd) = ([0.0, 0.0, 3e-6], [0.0; 3]);
+        assert_eq!(
+            settle(&NoBalance, 0, &mut q, &mut qd, 1.0, rate, 1.0, 0.0).unwrap(),
+            None
+        );
+        // Linear balance Q = 5 − 1e6 η (no rate term): root 5e-6.
+        #[derive(Debug)]
+        struct Spring;
+        impl Bearing for Spring {
+            fn evaluate(
+                &self,
+                _: &[f64],
+                _: &[f64],
+                _: f64,
+                _: &mut BearingEval,
+            ) -> Result<(), BearingError> {
+                Ok(())
+            }
+            fn is_linear(&self) -> bool {
+                false
+            }
+            fn internal_balance(
+                &self,
+                _: usize,
+                q: &[f64],
+                _: &[f64],
+                _: f64,
+            ) -> Option<Result<[f64; 3], BearingError>> {
+                Some(Ok([5.0 - 1e6 * q[2], 1e6, 0.0]))
+            }
+        }
+        let settled = settle(&Spring, 0, &mut q, &mut qd, 1.0, rate, 1e-9, 0.0)
+            .unwrap()
+            .unwrap();
+        assert!(settled.balanced);
+        assert!(
+            (q[2] - 5e-6).abs() <= 1e-15 && (qd[2] - (400.0 * (q[2] - 1e-6) - 2e-4)).abs() <= 1e-18
+        );
+        // A balance that never vanishes: the pad left alone.
+        #[derive(Debug)]
+        struct Pushed;
+        impl Bearing for Pushed {
+            fn evaluate(
+                &self,
+                _: &[f64],
+                _: &[f64],
+                _: f64,
+                _: &mut BearingEval,
+            ) -> Result<(), BearingError> {
+                Ok(())
+            }
+            fn is_linear(&self) -> bool {
+                false
+            }
+            fn internal_balance(
+                &self,
+                _: usize,
+                q: &[f64],
+                _: &[f64],
+                _: f64,
+            ) -> Option<Result<[f64; 3], BearingError>> {
+                Some(Ok([1.0 + q[2] * q[2], 1e-3, 0.0]))
+            }
+        }
+        let (mut q, mut qd) = ([0.0, 0.0, 3e-6], [0.0, 0.0, 7.0]);
+        let settled = settle(&Pushed, 0, &mut q, &mut qd, 1.0, rate, 1e-9, 0.0)
+            .unwrap()
+            .unwrap();
+        assert_eq!(
+            settled,
+            Settled {
+                evaluations: MAX_EVALUATIONS,
+                balanced: false
+            }
+        );
+        assert_eq!((q[2], qd[2]), (3e-6, 7.0));
+    }
+}
