@@ -36,6 +36,23 @@ fn converged(increment: f64, previous: f64, tol: f64, damped: bool) -> bool {
         && contraction / (1.0 - contraction) * increment <= tol
 }
 
+/// Error a step may leave after an increment on the quadratic estimate, as
+/// a fraction of the tolerance ([`quadratic_converged`]).
+const QUADRATIC_ERROR: f64 = 1e-2;
+
+/// With every pad settled on its own balance ([`super::pad_balance`]) the
+/// condensed Newton is exact Newton on the journals and converges
+/// quadratically, `e_{k+1} ≈ M e_k²`: with `M ≈ δ_k/δ_{k−1}²` the error the
+/// increment `δ_k` leaves is about `δ_k³/δ_{k−1}²`, and the step ends when
+/// that is within [`QUADRATIC_ERROR`] of the tolerance, on an increment that
+/// contracted by [`NEWTON_CONTRACTION`] at least. The unit on brackets' steps
+/// go 5.8e-4, 5.0e-7, 5.2e-13 (the estimate after the second: 3.7e-13).
+fn quadratic_converged(increment: f64, previous: f64, tol: f64) -> bool {
+    previous.is_finite()
+        && increment <= NEWTON_CONTRACTION * previous
+        && increment.powi(3) / (previous * previous) <= QUADRATIC_ERROR * tol
+}
+
 /// Largest relative increment after which the condensed Newton keeps its
 /// Jacobians for the next iteration (a chord iteration). The three-guide
 /// unit's first increments are 1e-5 to 3e-5 of its scale at equal 5 ms
@@ -109,7 +126,7 @@ const SLOW: f64 = 0.3;
 
 /// Fraction of the force that moves a journal by the Newton tolerance
 /// within which a settled pad's balance must be ([`super::pad_balance`]).
-const FORCE_FRACTION: f64 = 1e-3;
+const FORCE_FRACTION: f64 = 1e-9;
 
 /// Film evaluations of a pad within which it counts as balanced already by
 /// the condensed Newton's own increments: a step whose pads never took more
@@ -424,8 +441,10 @@ impl Simulator {
                 *p += d;
             }
             c.search.stepped(residual);
-            if converged(increment, last, tol, damped || moved)
-                && (!chord || chord_converged(increment, last, tol))
+            let quadratic = balanced && !chord && quadratic_converged(increment, last, tol);
+            if quadratic
+                || converged(increment, last, tol, damped || moved)
+                    && (!chord || chord_converged(increment, last, tol))
             {
                 // u = u_lin + A⁻¹ E F_j with the first-order journal forces.
                 for (k, fk) in c.fj.iter_mut().enumerate() {
