@@ -252,8 +252,8 @@ impl Simulator {
         // contraction of the next increment says nothing about the error left.
         let mut moved = false;
         // Pads settled on their own balance ([`super::pad_balance`]): within
-        // the force tolerance `tol · s / G_max`, a force that moves no journal
-        // by more than the tolerance.
+        // FORCE_FRACTION of `tol · s / G_max`, the force that moves a journal
+        // by the tolerance, or on a tilt increment within 1e-2 `tol · s`.
         let mut balanced = !damped && self.condensed.balancing && self.sites.n_internal > 0;
         let compliance = (0..sj).map(|r| f.g[r * sj + r].abs()).fold(0.0, f64::max);
         let force_tol = FORCE_FRACTION * tol * length_scale / compliance;
@@ -406,7 +406,7 @@ impl Simulator {
                 for m in 0..mi {
                     let x = &site.condensation.x;
                     let d = -x[2 * mi + m] - x[m] * dx - x[mi + m] * dy;
-                    // Balanced pads are judged by their residual, not their increment.
+                    // Settled pads are judged by their settling, not this linear increment.
                     if !balanced {
                         inc = inc.max(d.abs());
                         mag = mag.max(w.p[site.offset + m].abs());

@@ -10,13 +10,15 @@
 //! balance (`Q_η ≈ a e² − k_r η`, `solver/slow_pads.rs`), where Newton's
 //! tilt increments only halve; the condensed Newton judged the pads by their
 //! increments and paid a whole bearing pass for every halving (the unit on
-//! brackets: 15 iterations a step). Near a double root the tilt is
-//! ill-conditioned, but what it does to the journal is not: its force on
-//! the journal is of the order of its moment residual. So a pad is balanced
-//! when its residual is within the force tolerance `ε_F = tol · s / G_max`
-//! (`s` the displacement scale of the increments, `G_max` the largest
-//! diagonal entry of the step's journal compliance `G = Eᵀ A⁻¹ E`): a force
-//! that moves no journal by more than the Newton tolerance. The scalar
+//! brackets: 15 iterations a step). A pad is settled when its Newton
+//! increment is within a hundredth of the Newton tolerance, or its residual
+//! within `ε_F` (the caller's: `1e-9 · tol · s / G_max`, `s` the
+//! displacement scale, `G_max` the largest diagonal entry of the step's
+//! journal compliance `G = Eᵀ A⁻¹ E`, so `tol · s / G_max` is the force that
+//! moves a journal by the tolerance). Looser, as the ill-conditioning of a
+//! tilt near a double root would allow for the journal, was measured and
+//! rejected: the tilt is a first-order state the next steps carry on
+//! (`docs/solver.md`). The scalar
 //! solve is Newton on `Q_η` with its derivative `−(K_ηη + a1 C_ηη)`,
 //! bisection once a sign change brackets the root and Newton leaves the
 //! bracket; each pass evaluates the one pad's film
