@@ -313,10 +313,11 @@ impl Simulator {
                         tilt_tol,
                     )
                     .map_err(bearing_error)?;
+                    // A bearing without a balance of its own (the finite film's
+                    // pads) keeps the plain iteration and its slow-pad rule.
                     let Some(taken) = taken else {
-                        return Err(SolverError::Input(
-                            "internal: a pad without a balance of its own".into(),
-                        ));
+                        unsettled = true;
+                        break;
                     };
                     self.stats.pad_evaluations += taken.evaluations;
                     most_evaluations = most_evaluations.max(taken.evaluations);
