@@ -253,6 +253,22 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
     /// can be assembled once into the global matrices.
     fn is_linear(&self) -> bool;
 
+    /// The balance of internal coordinate `m` alone at `q`, `q̇`: its
+    /// generalized force `Q_m` and `K_mm = −∂Q_m/∂q_m`, `C_mm = −∂Q_m/∂q̇_m`
+    /// (the diagonal entries [`Bearing::evaluate`] gives), for a solver that
+    /// settles one pad's tilt at a time (`solver::pad_balance`). A pad's
+    /// balance depends on the journal and its own tilt only. `None` for
+    /// kinds that do not give it.
+    fn internal_balance(
+        &self,
+        _m: usize,
+        _q: &[f64],
+        _qdot: &[f64],
+        _speed: f64,
+    ) -> Option<Result<[f64; 3], BearingError>> {
+        None
+    }
+
     /// A starting guess of the internal coordinates for a static solve with the
     /// journal at `journal` (m), spin `speed`, written into `internal`.
     fn guess_internal(&self, _journal: [f64; 2], _speed: f64, internal: &mut [f64]) {

@@ -139,6 +139,16 @@ impl Bearing for OffsetBearing {
         self.inner.cheap_forces()
     }
 
+    fn internal_balance(
+        &self,
+        m: usize,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+    ) -> Option<Result<[f64; 3], BearingError>> {
+        self.relative(q, |q| self.inner.internal_balance(m, q, qdot, speed))
+    }
+
     fn output(
         &self,
         q: &[f64],

@@ -287,6 +287,50 @@ impl TiltingPadBearing {
         None
     }
 
+    /// Pad `k`'s moment balance `Q_η` (N) and `K_ηη`, `C_ηη` at `q`, `q̇`
+    /// ([`Bearing::internal_balance`]).
+    fn pad_balance(
+        &self,
+        k: usize,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+    ) -> Result<[f64; 3], BearingError> {
+        let n = 2 + self.pads.len();
+        if q.len() != n || qdot.len() != n || k >= self.pads.len() {
+            return Err(BearingError::Dimension {
+                expected: n,
+                found: q.len(),
+            });
+        }
+        let (s, c, state) = self.pad_state(k, q, qdot);
+        // t = (−sin θp, cos θp), the third column of T.
+        let t = [-s, c];
+        let mut out = [0.0; 3];
+        let mut add = |part: &BearingForce| {
+            out[0] += t[0] * part.force.x + t[1] * part.force.y;
+            for (slot, mat) in [(1, &part.stiffness), (2, &part.damping)] {
+                let col = [
+                    mat[(0, 0)] * t[0] + mat[(0, 1)] * t[1],
+                    mat[(1, 0)] * t[0] + mat[(1, 1)] * t[1],
+                ];
+                out[slot] += t[0] * col[0] + t[1] * col[1];
+            }
+        };
+        add(&self
+            .film()
+            .force(&state, speed, Some(&self.pads[k].window))?);
+        if let Some((contact, _)) = self.pad_contact(&self.contact_law(), k, &state, speed) {
+            add(&contact);
+        }
+        let (c_rest, k_rest) = self.pivot_rest(speed);
+        let i = 2 + k;
+        out[0] -= k_rest * q[i] + c_rest * qdot[i];
+        out[1] += k_rest;
+        out[2] += c_rest;
+        Ok(out)
+    }
+
     /// Film force on pad `k` alone at `q`, `q̇`: the force on the journal (N).
     pub fn pad_force(
         &self,
@@ -506,6 +550,19 @@ impl Bearing for TiltingPadBearing {
         true
     }
 
+    /// Pad `m`'s moment balance alone: the third row of `Tᵀ F_pad` and the
+    /// diagonal of `Tᵀ K_pad T`, `Tᵀ C_pad T` (module docs), with its contact
+    /// and its pivot's rest moment, as [`Bearing::evaluate`] adds them.
+    fn internal_balance(
+        &self,
+        m: usize,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+    ) -> Option<Result<[f64; 3], BearingError>> {
+        Some(self.pad_balance(m, q, qdot, speed))
+    }
+
     /// The forces of [`Bearing::output`] alone.
     fn forces(
         &self,
@@ -654,6 +711,62 @@ mod tests {
     /// and carries nothing; `reseat_internal` puts it on the loaded tilt, where
     /// it pushes the journal back, and leaves the loaded bottom pad and the
     /// side pad the journal moves away from alone.
+    /// `internal_balance` is pad `m`'s row of the whole bearing's
+    /// evaluation: its generalized force and diagonal Jacobians agree with
+    /// `evaluate` (which batches the pads' films) to round-off, for loaded,
+    /// unloaded and contacting pads, with tilt rates.
+    #[test]
+    fn a_pads_own_balance_is_its_row_of_the_bearing_evaluation() {
+        let pads = (0..5)
+            .map(|k| {
+                Pad::new(
+                    (18.0 + 72.0 * k as f64).to_radians(),
+                    0.9,
+                    0.6,
+                    0.2 * (k % 2) as f64,
+                )
+            })
+            .collect();
+        let b = TiltingPadBearing {
+            radius: 0.05,
+            length: 0.03,
+            clearance: 1e-4,
+            viscosity: 0.02,
+            pads,
+            contact: None,
+        };
+        let speed = 314.16;
+        let n = 7;
+        let mut eval = BearingEval::new(n);
+        for (journal, tilt) in [
+            ([0.3e-4, -0.5e-4], 1e-5),
+            ([0.0, 0.0], 0.0),
+            ([-0.9e-4, 0.5e-4], -2e-5),
+        ] {
+            let mut q = vec![journal[0], journal[1], 0.0, 0.0, 0.0, 0.0, 0.0];
+            b.guess_internal(journal, speed, &mut q[2..]);
+            q[3] += tilt;
+            let qd: Vec<f64> = (0..n).map(|i| 1e-4 * (i as f64 - 3.0)).collect();
+            b.evaluate(&q, &qd, speed, &mut eval).unwrap();
+            for m in 0..5 {
+                let [f, k, c] = b.internal_balance(m, &q, &qd, speed).unwrap().unwrap();
+                let i = 2 + m;
+                let close = |a: f64, e: f64, scale: f64| (a - e).abs() <= 1e-12 * scale.max(1e-300);
+                let fs = eval.force.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                let ks = eval.stiffness.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                let cs = eval.damping.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                assert!(close(f, eval.force[i], fs), "{m}: {f} {}", eval.force[i]);
+                assert!(close(k, eval.stiffness[i * n + i], ks), "{m}: {k}");
+                assert!(close(c, eval.damping[i * n + i], cs), "{m}: {c}");
+            }
+        }
+        assert!(
+            b.internal_balance(5, &[0.0; 7], &[0.0; 7], speed)
+                .unwrap()
+                .is_err()
+        );
+    }
+
     #[test]
     fn a_side_pad_left_on_its_unloaded_branch_is_reseated_on_the_loaded_one() {
         let pads = (0..4)

@@ -50,8 +50,9 @@ pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
 /// of a magnetic pull beside the viscosities, 7 the local error tolerance and
 /// the step proposal and previous accelerations of accuracy-controlled steps,
 /// 8 which contact and coefficient-table warnings have been raised and the
-/// reduced rotor's validity watch).
-pub const VERSION: u64 = 8;
+/// reduced rotor's validity watch, 9 whether the pads are settled on their
+/// own balance).
+pub const VERSION: u64 = 9;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -77,7 +78,7 @@ fn phase_index(phase: Phase) -> f64 {
 }
 
 /// The scalar fields, in image order.
-const SCALARS: [Scalar; 18] = [
+const SCALARS: [Scalar; 19] = [
     ("time", |s| s.sim.time, |s, v| put(&mut s.sim.time, v)),
     (
         "spin_angle",
@@ -194,6 +195,14 @@ const SCALARS: [Scalar; 18] = [
         |s, v| {
             s.sim.step_proposal = v;
             v.is_finite() && v >= 0.0
+        },
+    ),
+    (
+        "pad_balancing",
+        |s| s.sim.pad_balancing,
+        |s, v| {
+            s.sim.pad_balancing = v;
+            v == 0.0 || v == 1.0
         },
     ),
 ];
@@ -483,6 +492,7 @@ mod tests {
                 contact_reported: vec![0.0, 1.0],
                 table_warned: vec![1.0, 0.0],
                 step_proposal: 2.5e-4,
+                pad_balancing: 1.0,
             },
             params: Params {
                 time_step: 1e-3,

@@ -89,6 +89,7 @@ impl SimState {
             step_proposal,
             contact_reported,
             table_warned,
+            pad_balancing,
         } = other;
         for (dst, src) in [
             (&mut self.u, u),
@@ -122,6 +123,7 @@ impl SimState {
             (&mut self.factor_step, factor_step),
             (&mut self.factor_speed, factor_speed),
             (&mut self.step_proposal, step_proposal),
+            (&mut self.pad_balancing, pad_balancing),
         ] {
             *dst = *src;
         }

@@ -451,6 +451,7 @@ mod tests {
             contact_reported: vec![],
             table_warned: vec![],
             step_proposal: 0.0,
+            pad_balancing: 0.0,
         };
         for &node in &rotor.reduction.as_ref().unwrap().kept_nodes {
             let (ix, iy) = (

@@ -9,7 +9,8 @@ use super::contact_onset::ContactOnset;
 use super::contact_watch::ContactWatch;
 use super::factor::{Factor, FactorWork};
 use super::newmark::NewmarkWork;
-use super::newton::{CondensedWork, SchurSolve};
+use super::newton::CondensedWork;
+use super::schur::SchurSolve;
 use super::sites::Sites;
 use super::state::SimState;
 use super::statics;
@@ -108,6 +109,9 @@ pub struct StepStats {
     /// Pad tilts moved on by their extrapolated tail where the condensed
     /// Newton contracted slowly (`solver::slow_pads`).
     pub extrapolations: usize,
+    /// Film evaluations of single pads settling their own balance
+    /// (`solver::pad_balance`); a pass over a bearing of `n` pads counts `n`.
+    pub pad_evaluations: usize,
     /// Step halvings.
     pub step_cuts: usize,
     /// Steps solved again by the damped Newton after plain Newton failed.
@@ -276,6 +280,7 @@ impl Simulator {
             contact_reported: vec![0.0; 2 * sites.list.len()],
             table_warned: vec![0.0; rotor.model.bearings.len()],
             step_proposal: 0.0,
+            pad_balancing: 0.0,
         };
         if let Some(t) = &torsion {
             let n = t.chain.dof_count();
@@ -421,6 +426,7 @@ impl Simulator {
             }
         }
         self.schur.ready = false;
+        self.condensed.set_balancing(state.pad_balancing != 0.0);
         self.state = state;
         Ok(())
     }

@@ -63,6 +63,10 @@ pub struct SimState {
     /// The next step accuracy-controlled stepping proposes (s); 0 before the
     /// first such step (then the largest step is tried).
     pub step_proposal: f64,
+    /// 1 while the condensed Newton settles each pad on its own balance
+    /// (`solver::pad_balance`), set by a slowly contracting step and carried
+    /// to the next, else 0.
+    pub pad_balancing: f64,
     /// For each nonlinear bearing site (site order), whether its contact has
     /// gone beyond the penetration and the force limit of its law (1) or not
     /// (0), two entries a site: a warning is raised once, and a restored
@@ -87,6 +91,7 @@ impl SimState {
             ("factor_speed", self.factor_speed),
             ("stuck", self.stuck),
             ("step_proposal", self.step_proposal),
+            ("pad_balancing", self.pad_balancing),
         ];
         let vectors: [(&str, &[f64]); 18] = [
             ("u", &self.u),

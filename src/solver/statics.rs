@@ -10,7 +10,7 @@ use crate::rotor::Rotor;
 
 use super::factor::make_factor;
 use super::film_start::{film_start, is_offset, reseat_pads};
-use super::newton::SchurSolve;
+use super::schur::SchurSolve;
 use super::simulator::{SolverError, SolverOptions, inf_norm};
 use super::sites::{Sites, add_coupling};
 use super::static_stability;
