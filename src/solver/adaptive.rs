@@ -40,8 +40,10 @@ use crate::fe::{DOF_X, DOF_Y};
 use crate::rotor::Rotor;
 use crate::units::Short;
 
+use super::error::SolverError;
 use super::observer::{StepFlow, StepObserver};
-use super::simulator::{Simulator, SolverError, SolverOptions};
+use super::options::SolverOptions;
+use super::simulator::Simulator;
 use super::state::SimState;
 
 /// Safety factor on the step the estimate allows.

@@ -6,7 +6,8 @@
 use crate::linalg::{BandLu, BandMatrix, LinalgError};
 use crate::rotor::Rotor;
 
-use super::simulator::{Simulator, SolverError};
+use super::error::SolverError;
+use super::simulator::Simulator;
 use super::sites::Coordinate;
 
 /// Factorized linear part and its Schur data.

@@ -2,7 +2,8 @@
 //! unbalance, load channels (forces, ports, torques), and the tunable bearing
 //! parameters (viscosity, field excitation).
 
-use super::simulator::{Simulator, SolverError};
+use super::error::SolverError;
+use super::simulator::Simulator;
 use crate::units::{RAD_S_TO_RPM, Short};
 
 impl Simulator {

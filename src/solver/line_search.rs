@@ -34,8 +34,9 @@
 //! predictor by the damped Newton, on a factorization exact for the step,
 //! before it is cut in half.
 
+use super::error::SolverError;
 use super::factor::Factor;
-use super::simulator::{Simulator, SolverError};
+use super::simulator::Simulator;
 use super::sites::Sites;
 
 /// The last Newton increment, its line search and the stall count of plain

@@ -59,14 +59,17 @@ mod condense;
 pub mod contact_onset;
 pub mod contact_watch;
 mod dense;
+mod error;
 mod factor;
 mod film_start;
 mod inputs;
 mod line_search;
 mod newmark;
 mod newton;
+mod norm;
 pub mod observer;
 pub mod offset_continuation;
+mod options;
 mod output_memo;
 mod outputs;
 mod pad_balance;
@@ -80,19 +83,23 @@ mod slow_pads;
 mod state;
 mod static_stability;
 pub mod statics;
+mod stats;
 mod torsion;
 mod warnings;
 
 pub mod time_step;
 
 pub use contact_watch::{ContactLimit, ContactWarning};
+pub use error::SolverError;
 pub use observer::{StepFlow, StepObserver};
 pub use offset_continuation::line_equilibrium;
+pub use options::SolverOptions;
 pub use outputs::{
     BearingOutput, HousingOutput, Outputs, PortOutput, ProbeOutput, ThrustOutput, TorqueNodeOutput,
 };
 pub use run::{SpeedProfile, record, record_into};
-pub use simulator::{Simulator, SolverError, SolverOptions, StepStats};
+pub use simulator::Simulator;
 pub use state::SimState;
 pub use statics::{Equilibrium, equilibrium, equilibrium_near, equilibrium_unchecked};
+pub use stats::StepStats;
 pub use warnings::SolverWarning;

@@ -7,8 +7,11 @@ use crate::fe::{DOF_X, DOF_Y};
 use crate::linalg::BandMatrix;
 use crate::units::{RAD_S_TO_RPM, Short};
 
+use super::error::SolverError;
+use super::norm::inf_norm;
 use super::observer::{StepFlow, StepObserver};
-use super::simulator::{Simulator, SolverError, SolverOptions, inf_norm};
+use super::options::SolverOptions;
+use super::simulator::Simulator;
 
 /// Where the displacement of a step comes from when its rates are formed.
 #[derive(Debug, Clone, Copy)]

@@ -7,11 +7,12 @@
 use crate::linalg::LinalgError;
 
 use super::dense::{lu_in_place, lu_solve};
+use super::error::SolverError;
 use super::factor::Factor;
 use super::line_search::{Backtrack, Trial, condensed_residual, retreat};
 use super::newmark::{Displacement, newmark_rates};
 use super::pad_balance::{self, TiltRate};
-use super::simulator::{Simulator, SolverError};
+use super::simulator::Simulator;
 use super::sites::Sites;
 use super::slow_pads::SlowPads;
 

@@ -13,7 +13,8 @@
 
 use crate::rotor::Rotor;
 
-use super::simulator::{SolverError, SolverOptions};
+use super::error::SolverError;
+use super::options::SolverOptions;
 use super::statics::{Equilibrium, equilibrium};
 
 /// First continuation step on the offset scale `s`.

@@ -7,7 +7,8 @@
 use crate::bearing::BearingReport;
 use crate::fe::{DOF_X, DOF_Y};
 
-use super::simulator::{Simulator, SolverError};
+use super::error::SolverError;
+use super::simulator::Simulator;
 
 /// Absolute motion of a bearing's housing (zero on rigid ground): what a
 /// seismic sensor on the bracket or pedestal measures.

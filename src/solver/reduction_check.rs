@@ -25,7 +25,8 @@ use crate::linalg::{BandMatrix, LinalgError, map_to_complex};
 use crate::rotor::Rotor;
 pub use crate::rotor::VALIDITY_FACTOR;
 
-use super::simulator::{SolverError, SolverOptions};
+use super::error::SolverError;
+use super::options::SolverOptions;
 use super::state::SimState;
 use super::statics::{Equilibrium, equilibrium};
 

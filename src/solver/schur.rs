@@ -5,8 +5,8 @@
 use crate::linalg::LinalgError;
 
 use super::dense::{lu_in_place, lu_solve};
+use super::error::SolverError;
 use super::factor::Factor;
-use super::simulator::SolverError;
 use super::sites::Sites;
 
 /// Schur solve of a factored `A` bordered by the frozen bearing blocks, on the

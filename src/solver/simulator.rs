@@ -1,168 +1,24 @@
 //! The time-domain simulator (see the module docs of [`crate::solver`]).
 
-use crate::bearing::{Bearing, BearingError, BearingEval};
-use crate::linalg::LinalgError;
+use crate::bearing::{Bearing, BearingEval};
 use crate::rotor::Rotor;
 use crate::units::Short;
 
 use super::contact_onset::ContactOnset;
 use super::contact_watch::ContactWatch;
+use super::error::SolverError;
 use super::factor::{Factor, FactorWork};
 use super::newmark::NewmarkWork;
 use super::newton::CondensedWork;
+use super::options::{SolverOptions, check_options};
 use super::schur::SchurSolve;
 use super::sites::Sites;
 use super::state::SimState;
 use super::statics;
+use super::stats::StepStats;
 use super::torsion::Torsion;
 use super::warnings::{SolverWarning, Warnings};
 use crate::model::Drive;
-
-/// Solver settings.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SolverOptions {
-    /// Largest internal time step (s).
-    pub time_step: f64,
-    /// Relative tolerance on residual and increment (–).
-    pub tolerance: f64,
-    /// Newton iterations per attempt of a step.
-    pub max_iterations: usize,
-    /// Largest number of step halvings before giving up.
-    pub max_step_cuts: usize,
-    /// Time constant τ of the unbalance ramp `1 − e^{−t/τ}` (s); 0 for none.
-    pub unbalance_ramp_time: f64,
-    /// Apply gravity.
-    pub gravity: bool,
-    /// Local error tolerance of accuracy-controlled steps (–): the relative
-    /// period error `(ωh)²/12` allowed to the motion of a step
-    /// ([`super::adaptive`]); 0 for equal steps of `time_step`. With it,
-    /// `time_step` is the largest step.
-    pub local_error_tolerance: f64,
-}
-
-impl SolverOptions {
-    /// Allowed internal time steps (s): below 1 µs a communication step would
-    /// need millions of steps, above 1 s Newmark no longer resolves any mode.
-    pub const TIME_STEP_RANGE: (f64, f64) = (1e-6, 1.0);
-    /// Allowed relative tolerances (–).
-    pub const TOLERANCE_RANGE: (f64, f64) = (1e-14, 1e-2);
-    /// Allowed Newton iterations per step attempt.
-    pub const MAX_ITERATIONS_RANGE: (usize, usize) = (1, 1000);
-    /// Allowed step halvings.
-    pub const MAX_STEP_CUTS_RANGE: (usize, usize) = (0, 20);
-    /// Allowed unbalance ramp time constants (s).
-    pub const RAMP_TIME_RANGE: (f64, f64) = (0.0, 1e6);
-    /// Allowed local error tolerances (–) besides 0 (equal steps): below 1e-10
-    /// the steps reach the Newton tolerance's noise, above 0.1 the period
-    /// error of a step is no longer small.
-    pub const LOCAL_ERROR_TOLERANCE_RANGE: (f64, f64) = (1e-10, 0.1);
-    /// Most internal steps one [`Simulator::advance_to`] takes; a longer span
-    /// is refused before it starts ([`SolverError::Budget`]).
-    pub const MAX_STEPS_PER_CALL: usize = 200_000;
-    /// Most step halvings one [`Simulator::advance_to`] may spend in all; past
-    /// it the call stops with [`SolverError::Budget`].
-    pub const MAX_CUTS_PER_CALL: usize = 2_000;
-    /// Shortest span (s) [`Simulator::advance_to`] integrates; a shorter one is
-    /// refused ([`SolverError::Input`]). Newmark's acceleration
-    /// `ü = 4(u − uₙ)/h² − 4u̇ₙ/h − üₙ` divides the round-off and the Newton
-    /// tolerance of `u` by `h²`: on the Jeffcott rotor one step of 1e-9 s
-    /// moved the orbit 30 ms later by 1e-4 of its size, 1e-10 s by 7 %,
-    /// 1e-11 s by more than its size, and 1e-13 s made Newton fail (1e-8 s:
-    /// 1e-7 of it). Below about 1e-154 s, `4/h²` overflows. (A span of
-    /// `MIN_SPAN` on a time grid, `(t + h) − t`, may fall short of it by
-    /// round-off: up to 1e-6 of it is let through.)
-    pub const MIN_SPAN: f64 = 1e-8;
-}
-
-impl Default for SolverOptions {
-    fn default() -> Self {
-        Self {
-            time_step: 1e-4,
-            tolerance: 1e-8,
-            max_iterations: 50,
-            max_step_cuts: 16,
-            unbalance_ramp_time: 0.0,
-            gravity: true,
-            local_error_tolerance: 0.0,
-        }
-    }
-}
-
-/// Counters of the work done, for reports.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct StepStats {
-    /// Accepted steps.
-    pub steps: usize,
-    /// Newton iterations.
-    pub iterations: usize,
-    /// Bearing-Jacobian refreshes after a stall.
-    pub refreshes: usize,
-    /// Iterations of the condensed Newton on the Jacobians of the iteration
-    /// before (the bearing forces alone evaluated).
-    pub chord_iterations: usize,
-    /// Steps that ended on the iterate of their first chord iteration, its
-    /// bearing pass the outputs' one.
-    pub steps_on_iterate: usize,
-    /// Bearing outputs `Simulator::outputs` took from the last step's pass
-    /// instead of evaluating them.
-    pub outputs_recalled: usize,
-    /// Pad tilts moved on by their extrapolated tail where the condensed
-    /// Newton contracted slowly (`solver::slow_pads`).
-    pub extrapolations: usize,
-    /// Film evaluations of single pads settling their own balance
-    /// (`solver::pad_balance`); a pass over a bearing of `n` pads counts `n`.
-    pub pad_evaluations: usize,
-    /// Step halvings.
-    pub step_cuts: usize,
-    /// Steps solved again by the damped Newton after plain Newton failed.
-    pub retries: usize,
-    /// Factorizations of the linear part.
-    pub factorizations: usize,
-    /// Factorizations recalled for exactly their step and speed instead of
-    /// being formed again (not in `factorizations`).
-    pub factors_recalled: usize,
-    /// Steps rejected by the local error estimate (accuracy-controlled steps).
-    pub rejections: usize,
-}
-
-/// Why the solver stopped.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum SolverError {
-    /// Newton did not converge even with the smallest allowed step.
-    #[error(
-        "Newton–Raphson did not converge at t = {time:.6} s (step {step:.3e} s after {cuts} halvings; last relative residual or correction {residual:.3e})"
-    )]
-    NotConverged {
-        time: f64,
-        step: f64,
-        cuts: usize,
-        residual: f64,
-    },
-    /// A bearing could not give a force (e.g. the journal reached the clearance).
-    #[error("bearing {name} at t = {time:.6} s: {source}")]
-    Bearing {
-        name: String,
-        time: f64,
-        source: BearingError,
-    },
-    /// The linear part could not be factored.
-    #[error("linear algebra: {0}")]
-    Linalg(#[from] LinalgError),
-    /// Bad input or option.
-    #[error("{0}")]
-    Input(String),
-    /// No static equilibrium was found.
-    #[error("static equilibrium: {0}")]
-    Static(String),
-    /// The static equilibrium found is one the machine cannot hold: its net
-    /// static stiffness is negative in some direction (`static_stability`).
-    #[error("static equilibrium: {0}")]
-    StaticallyUnstable(String),
-    /// A call would exceed the work bound of one call (internal steps or step
-    /// halvings, [`SolverOptions::MAX_STEPS_PER_CALL`], [`SolverOptions::MAX_CUTS_PER_CALL`]).
-    #[error("{0}")]
-    Budget(String),
-}
 
 /// Newmark/Newton–Raphson simulator of a rotor on nonlinear bearings.
 ///
@@ -544,57 +400,4 @@ impl Simulator {
         self.state.udd = acc;
         Ok(())
     }
-}
-
-/// Largest absolute entry of `v` (0 when empty).
-pub(super) fn inf_norm(v: &[f64]) -> f64 {
-    v.iter().fold(0.0, |a, x| a.max(x.abs()))
-}
-
-fn check_options(o: &SolverOptions) -> Result<(), SolverError> {
-    let within = |what: &str, v: f64, (lo, hi): (f64, f64), unit: &str| {
-        if v.is_finite() && (lo..=hi).contains(&v) {
-            Ok(())
-        } else {
-            Err(SolverError::Input(format!(
-                "solver option {what} = {} {unit} is outside [{lo}, {hi}] {unit}",
-                Short(v)
-            )))
-        }
-    };
-    let as_f64 = |(lo, hi): (usize, usize)| (lo as f64, hi as f64);
-    within(
-        "time_step",
-        o.time_step,
-        SolverOptions::TIME_STEP_RANGE,
-        "s",
-    )?;
-    within("tolerance", o.tolerance, SolverOptions::TOLERANCE_RANGE, "")?;
-    within(
-        "max_iterations",
-        o.max_iterations as f64,
-        as_f64(SolverOptions::MAX_ITERATIONS_RANGE),
-        "",
-    )?;
-    within(
-        "max_step_cuts",
-        o.max_step_cuts as f64,
-        as_f64(SolverOptions::MAX_STEP_CUTS_RANGE),
-        "",
-    )?;
-    within(
-        "unbalance_ramp_time",
-        o.unbalance_ramp_time,
-        SolverOptions::RAMP_TIME_RANGE,
-        "s",
-    )?;
-    let (lo, hi) = SolverOptions::LOCAL_ERROR_TOLERANCE_RANGE;
-    let tol = o.local_error_tolerance;
-    if tol != 0.0 && !(tol.is_finite() && (lo..=hi).contains(&tol)) {
-        return Err(SolverError::Input(format!(
-            "solver option local_error_tolerance = {} is outside [{lo}, {hi}] (0 for equal steps)",
-            Short(tol)
-        )));
-    }
-    Ok(())
 }

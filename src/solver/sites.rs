@@ -14,8 +14,8 @@ use crate::linalg::BandMatrix;
 use crate::rotor::Rotor;
 
 use super::condense::Condensation;
+use super::error::SolverError;
 use super::output_memo::OutputMemo;
-use super::simulator::SolverError;
 
 /// One journal coordinate of a site: a journal DOF, less its housing DOF
 /// when the bearing stands on a pedestal (a column of `E`).

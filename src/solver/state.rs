@@ -1,7 +1,7 @@
 //! The simulator's complete dynamic state (the one field list a snapshot of
 //! the solver holds) and its validation when a front end restores it.
 
-use super::simulator::SolverError;
+use super::error::SolverError;
 use crate::units::{RAD_S_TO_RPM, Short};
 
 /// The complete dynamic state: restoring it reproduces a run bit for bit.

@@ -14,7 +14,7 @@
 use crate::linalg::{ArnoldiOptions, largest_eigenpairs_real};
 use crate::rotor::{Dof, Rotor};
 
-use super::simulator::SolverError;
+use super::error::SolverError;
 use super::sites::{Sites, add_coupling};
 
 /// The elements of negative direct stiffness at the equilibrium just solved

@@ -8,10 +8,12 @@
 use crate::bearing::BearingEval;
 use crate::rotor::Rotor;
 
+use super::error::SolverError;
 use super::factor::make_factor;
 use super::film_start::{film_start, is_offset, reseat_pads};
+use super::norm::inf_norm;
+use super::options::SolverOptions;
 use super::schur::SchurSolve;
-use super::simulator::{SolverError, SolverOptions, inf_norm};
 use super::sites::{Sites, add_coupling};
 use super::static_stability;
 

@@ -43,7 +43,8 @@ use crate::rotor::Rotor;
 use crate::rotor::torsion::TorsionalRotor;
 use crate::units::{RAD_S_TO_RPM, Short};
 
-use super::simulator::{Simulator, SolverError};
+use super::error::SolverError;
+use super::simulator::Simulator;
 use super::state::SimState;
 
 /// Coupled iterations allowed per step before it is cut.
