@@ -13,6 +13,9 @@ use rotor_bearing::model::machine_class::{HousingGroup, MachineClass};
 use rotor_bearing::model::{DEFAULT_MODEL_TOML, RotorModel};
 use rotor_bearing::rotor::Rotor;
 
+#[path = "common/pedestal_rotor.rs"]
+mod pedestal_rotor;
+
 const RPM: f64 = std::f64::consts::PI / 30.0;
 
 /// One group and location of the table: (group, location, [A/B, B/C, C/D]
@@ -100,23 +103,10 @@ fn zones_follow_the_boundaries() {
 /// (5 MN/m, 2000 N·s/m), with `unbalance` kg·m at the disk: a hydro-class
 /// model of ISO group 3.
 fn on_pedestals(unbalance: f64) -> RotorModel {
-    let text = DEFAULT_MODEL_TOML
-        .replace("kyy = 1e6\n", "kyy = 1e6\ncxx = 4000.0\ncyy = 4000.0\n")
-        .replace(
-            "name = \"drive_end\"\n",
-            "name = \"drive_end\"\npedestal = \"left\"\n",
-        )
-        .replace(
-            "name = \"non_drive_end\"\n",
-            "name = \"non_drive_end\"\npedestal = \"right\"\n",
-        )
-        .replace("magnitude = 0.001", &format!("magnitude = {unbalance:e}"))
-        .replace(
-            "speed_rpm = 1000 ",
-            "machine = \"hydro_generator\"\nhousing_group = 3\nspeed_rpm = 1000 ",
-        )
-        + "\n[[pedestals]]\nname = \"left\"\nmass = 20.0\nkxx = 5e6\nkyy = 5e6\ncxx = 2000.0\ncyy = 2000.0\n"
-        + "[[pedestals]]\nname = \"right\"\nmass = 20.0\nkxx = 5e6\nkyy = 5e6\ncxx = 2000.0\ncyy = 2000.0\n";
+    let text = pedestal_rotor::on_pedestals(
+        unbalance,
+        "machine = \"hydro_generator\"\nhousing_group = 3\n",
+    );
     RotorModel::from_toml(&text, "pedestals.toml").unwrap()
 }
 

@@ -9,33 +9,20 @@ use std::process::Command;
 
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
 use rotor_bearing::analysis::housing_vibration::{housing_vibration, report_spans};
-use rotor_bearing::model::{DEFAULT_MODEL_TOML, RotorModel};
+use rotor_bearing::model::RotorModel;
 use rotor_bearing::report::hydro::housing_zone;
 use rotor_bearing::report::text::short;
 use rotor_bearing::rotor::Rotor;
+
+#[path = "common/pedestal_rotor.rs"]
+mod pedestal_rotor;
 
 const RPM: f64 = std::f64::consts::PI / 30.0;
 
 /// The damped classic rotor on two 20 kg pedestals, of class `machine`,
 /// runaway speed 2000 rpm.
 fn model_text(machine: &str) -> String {
-    DEFAULT_MODEL_TOML
-        .replace("kyy = 1e6\n", "kyy = 1e6\ncxx = 4000.0\ncyy = 4000.0\n")
-        .replace(
-            "name = \"drive_end\"\n",
-            "name = \"drive_end\"\npedestal = \"left\"\n",
-        )
-        .replace(
-            "name = \"non_drive_end\"\n",
-            "name = \"non_drive_end\"\npedestal = \"right\"\n",
-        )
-        .replace("magnitude = 0.001", "magnitude = 4.5e-3")
-        .replace(
-            "speed_rpm = 1000 ",
-            &format!("{machine}max_speed_rpm = 2000\nspeed_rpm = 1000 "),
-        )
-        + "\n[[pedestals]]\nname = \"left\"\nmass = 20.0\nkxx = 5e6\nkyy = 5e6\ncxx = 2000.0\ncyy = 2000.0\n"
-        + "[[pedestals]]\nname = \"right\"\nmass = 20.0\nkxx = 5e6\nkyy = 5e6\ncxx = 2000.0\ncyy = 2000.0\n"
+    pedestal_rotor::on_pedestals(4.5e-3, &format!("{machine}max_speed_rpm = 2000\n"))
 }
 
 /// The summary table's rows of the report of `text`, cells stripped of tags.
