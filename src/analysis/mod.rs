@@ -17,6 +17,7 @@ pub mod linear;
 pub mod linearize;
 pub mod modal;
 pub mod mode_tracking;
+pub mod offset_stability;
 pub mod operating_point;
 pub mod orbit;
 pub mod pad_eigen;

@@ -1,10 +1,13 @@
 //! `rotor alignment`: the bearing reactions of a shaft line at its offsets,
 //! the reaction influence matrix, the offsets for a target load sharing and
-//! the shaft's bending stress (issue 49). Formatting only: the physics is
-//! `analysis::alignment` and `analysis::shaft_loads`.
+//! the shaft's bending stress and the stability's slope against each
+//! bearing's offset (issue 49). Formatting only: the physics is
+//! `analysis::alignment`, `analysis::shaft_loads` and
+//! `analysis::offset_stability`.
 
 use clap::Args;
 use rotor_bearing::analysis::alignment::{alignment, equal_specific_loads, offsets_for_loads};
+use rotor_bearing::analysis::offset_stability::{STEP, offset_sensitivity};
 use rotor_bearing::analysis::operating_point::operating_point;
 use rotor_bearing::analysis::shaft_loads::{coupling_loads, largest_stress, section_loads};
 use rotor_bearing::rotor::Rotor;
@@ -175,6 +178,26 @@ pub fn run(rotor: &Rotor, args: AlignmentArgs) -> Result<(), String> {
             c.moment[0],
             c.moment[1]
         );
+    }
+    if speed != 0.0 && !rotor.nonlinear_bearings.is_empty() {
+        let (delta, slopes) = offset_sensitivity(rotor, speed).map_err(|e| at(&e))?;
+        println!(
+            "stability against the offsets at {} rpm: least stable forward mode log dec {delta:.4}; its slope per mm of each fluid-film bearing's offset (central differences of ±{} of the clearance):",
+            Short(rpm),
+            STEP
+        );
+        println!(
+            "{:<14} {:>14} {:>14}",
+            "bearing", "dδ/do_x 1/mm", "dδ/do_y 1/mm"
+        );
+        for s in &slopes {
+            println!(
+                "{:<14} {:>14.4e} {:>14.4e}",
+                s.name,
+                s.log_decrement_slope[0] * 1e-3,
+                s.log_decrement_slope[1] * 1e-3
+            );
+        }
     }
     Ok(())
 }
