@@ -615,6 +615,9 @@ pub struct ProbeEntry {
     pub name: String,
     pub node: Option<i64>,
     pub z: Option<f64>,
+    /// The bearing whose installed centre the probe measures from (a
+    /// proximity probe on that bearing's housing); default the nominal axis.
+    pub relative_to: Option<String>,
 }
 
 /// `[[pedestals]]`: a bearing support (pedestal, bracket, foundation): a

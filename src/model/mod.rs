@@ -323,6 +323,10 @@ pub struct Probe {
     pub name: String,
     /// Node index (0-based).
     pub node: usize,
+    /// The model bearing (index) whose installed centre — its housing's
+    /// motion plus its offset — the probe measures from (`relative_to`);
+    /// `None`: from the nominal axis.
+    pub relative_to: Option<usize>,
 }
 
 /// Ideal constraints at a node: `fixed[k]` fixes node DOF `k` (see [`crate::fe`]).

@@ -216,9 +216,23 @@ impl Simulator {
             .model
             .probes
             .iter()
-            .map(|p| ProbeOutput {
-                x: self.rotor.node_value(p.node, DOF_X, &self.state.u),
-                y: self.rotor.node_value(p.node, DOF_Y, &self.state.u),
+            .map(|p| {
+                let (x, y) = (
+                    self.rotor.node_value(p.node, DOF_X, &self.state.u),
+                    self.rotor.node_value(p.node, DOF_Y, &self.state.u),
+                );
+                // From the installed centre of its bearing: the housing's
+                // motion plus the bearing's offset.
+                match p.relative_to {
+                    None => ProbeOutput { x, y },
+                    Some(b) => {
+                        let (h, o) = (&bearings[b].housing, self.rotor.model.bearings[b].offset);
+                        ProbeOutput {
+                            x: x - h.x - o[0],
+                            y: y - h.y - o[1],
+                        }
+                    }
+                }
             })
             .collect();
         let thrust_bearings: Vec<ThrustOutput> = self

@@ -31,6 +31,7 @@ pub fn text(middle: f64) -> String {
 }
 
 /// That line, built.
+#[allow(dead_code)] // each test takes what it needs
 pub fn line(middle: f64) -> Rotor {
     Rotor::new(RotorModel::from_toml(&text(middle), "film3.toml").unwrap()).unwrap()
 }

@@ -212,9 +212,15 @@ pub(super) fn add(t: &mut Table) {
     }
     for (k, p) in t.model.probes.iter().enumerate() {
         let node = p.node + 1;
+        let from = p.relative_to.map_or(String::new(), |b| {
+            format!(
+                ", from the installed centre of bearing {}",
+                t.model.bearings[b].name
+            )
+        });
         t.push(
             format!("probes.{}.x", p.name),
-            format!("Displacement x at probe {} (node {node})", p.name),
+            format!("Displacement x at probe {} (node {node}{from})", p.name),
             Real,
             Output,
             Continuous,
@@ -225,7 +231,7 @@ pub(super) fn add(t: &mut Table) {
         );
         t.push(
             format!("probes.{}.y", p.name),
-            format!("Displacement y at probe {} (node {node})", p.name),
+            format!("Displacement y at probe {} (node {node}{from})", p.name),
             Real,
             Output,
             Continuous,

@@ -6,8 +6,8 @@ use crate::model::error::FieldPath;
 use crate::model::file::{ForceEntry, PortEntry, ProbeEntry, UnbalanceEntry};
 use crate::model::limits::{GRAVITY, UNBALANCE};
 use crate::model::{
-    ExternalForce, ForceKind, HarmonicDirection, HarmonicFrequency, ModelError, Port, Probe,
-    UnbalancePlane,
+    ExternalForce, ForceKind, HarmonicDirection, HarmonicFrequency, ModelError, PlacedBearing,
+    Port, Probe, UnbalancePlane,
 };
 
 /// Check each unbalance plane: unique name, node, `m·e ≥ 0` (kg·m), finite
@@ -42,6 +42,7 @@ pub(super) fn probes(
     root: &FieldPath,
     entries: Vec<ProbeEntry>,
     node_z: &[f64],
+    bearings: &[PlacedBearing],
 ) -> Result<Vec<Probe>, ModelError> {
     let mut probes = Vec::new();
     let mut names = Names::default();
@@ -49,7 +50,34 @@ pub(super) fn probes(
         let p = root.key("probes").index(i);
         let name = names.claim(ctx, &p, pr.name, "probe")?;
         let node = ctx.location(&p, pr.node, pr.z, node_z)?;
-        probes.push(Probe { name, node });
+        let relative_to = match &pr.relative_to {
+            None => None,
+            Some(b) => Some(
+                bearings
+                    .iter()
+                    .position(|placed| &placed.name == b && placed.kind.is_bearing())
+                    .ok_or_else(|| {
+                        let known: Vec<&str> = bearings
+                            .iter()
+                            .filter(|placed| placed.kind.is_bearing())
+                            .map(|placed| placed.name.as_str())
+                            .collect();
+                        ctx.err(
+                            p.key("relative_to"),
+                            format!("{b:?}"),
+                            &format!(
+                                "is not a bearing of the model (its bearings: {})",
+                                known.join(", ")
+                            ),
+                        )
+                    })?,
+            ),
+        };
+        probes.push(Probe {
+            name,
+            node,
+            relative_to,
+        });
     }
     Ok(probes)
 }

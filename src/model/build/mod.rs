@@ -41,7 +41,7 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
     )?;
     pedestals::check_carried(ctx, &root, &pedestals, &bearings)?;
     let unbalances = loads::unbalances(ctx, &root, raw.unbalance, &node_z)?;
-    let probes = loads::probes(ctx, &root, raw.probes, &node_z)?;
+    let probes = loads::probes(ctx, &root, raw.probes, &node_z, &bearings)?;
     let forces = loads::forces(ctx, &root, raw.forces, &node_z)?;
     let ports = loads::ports(ctx, &root, raw.ports, &node_z)?;
     let couplings = couplings::couplings(ctx, &root, raw.couplings, &node_z, &shaft.elements)?;

@@ -119,7 +119,13 @@ pub fn model_summary(rotor: &Rotor) -> String {
     }
     loads_summary(&mut s, m);
     for p in &m.probes {
-        writeln!(s, "  probe {} at node {}", p.name, p.node + 1).ok();
+        let from = p.relative_to.map_or(String::new(), |b| {
+            format!(
+                ", measuring from bearing {}'s installed centre",
+                m.bearings[b].name
+            )
+        });
+        writeln!(s, "  probe {} at node {}{from}", p.name, p.node + 1).ok();
     }
     drive_summary(&mut s, m);
     if let Some(r) = m.reduction {
