@@ -148,7 +148,7 @@ impl Rotor {
     /// Coordinates of the rotor [`Rotor::for_transients`] builds from this
     /// one's model with `modes` fixed-interface modes, without building it:
     /// every free DOF for 0 (the full rotor), else the free DOFs of the kept
-    /// nodes plus `min(modes, interior DOFs)`; `None` when the model has no
+    /// nodes and of the pedestals plus `min(modes, interior DOFs)`; `None` when the model has no
     /// node to keep. Two counts build the same rotor exactly when both or
     /// neither are 0 and their coordinates agree (999 and 1000 modes on a rotor
     /// with fewer interior DOFs are both all of them).
@@ -162,7 +162,14 @@ impl Rotor {
                         .filter(|&k| self.dofs.free(node, k).is_some())
                         .count()
                 };
-                (self.dof_count(), kept.iter().map(at_kept).sum())
+                // The pedestals stay physical too (see `interior`).
+                let pedestals = (0..self.dof_count())
+                    .filter(|&i| matches!(self.dofs.kind(i), Dof::Pedestal { .. }))
+                    .count();
+                (
+                    self.dof_count(),
+                    kept.iter().map(at_kept).sum::<usize>() + pedestals,
+                )
             }
         };
         match modes {
@@ -576,6 +583,38 @@ node = {}
         let dense = dense_eigenvalues(&i.k_ii, &i.m_ii);
         assert!((dense[3] / dense[0] - 1.0) < 1e-9 && dense[4] / dense[3] > 2.0);
         assert_lowest_eigenvalues(&rotor, 12);
+    }
+
+    /// The coordinates counted without building the reduced rotor (what the
+    /// FMU checks a restored state against) are those of the rotor built,
+    /// for every shipped model and 1, 4 and 10 modes — pedestals included
+    /// (the unit on brackets keeps its three pedestals physical: 27
+    /// coordinates with one mode, where the count once said 21).
+    #[test]
+    fn the_counted_coordinates_are_the_built_ones() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/models");
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_none_or(|e| e != "toml") {
+                continue;
+            }
+            let model = RotorModel::from_file(&path).unwrap();
+            let full = Rotor::new(model.clone()).unwrap();
+            for modes in [1, 4, 10] {
+                let Ok(built) = Rotor::for_transients(model.clone(), modes) else {
+                    continue;
+                };
+                assert_eq!(
+                    full.transient_coordinates(modes),
+                    Some(built.dof_count()),
+                    "{}, {modes} modes",
+                    path.display()
+                );
+            }
+            if model.name == "hydro_unit_brackets" {
+                assert_eq!(full.transient_coordinates(1), Some(27));
+            }
+        }
     }
 
     /// The unit with three guide bearings (24 elements, kept nodes 1, 5, 9,

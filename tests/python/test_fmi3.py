@@ -139,8 +139,15 @@ for stem in stems:
         if len(names) != n or [bits(x) for x in whole] != [bits(x) for x in parts]:
             wrong.append(arr.name)
         if arr.causality == "input":
-            b.fmu.setFloat64([arr.valueReference], [x + 1.0 for x in parts])
-            if b.get([b.vr[x] for x in names]) != [x + 1.0 for x in parts]:
+            # A change within every element's declared range (a pull's
+            # dynamic eccentricity stays inside its air gap).
+            by_name = {v.name: v for v in b.md.modelVariables}
+            room = [float(by_name[x].max) - p for x, p in zip(names, parts)
+                    if by_name[x].max is not None]
+            step = min([1.0] + [r / 2 for r in room])
+            changed = [x + step for x in parts]
+            b.fmu.setFloat64([arr.valueReference], changed)
+            if b.get([b.vr[x] for x in names]) != changed:
                 wrong.append(arr.name + " (set)")
             b.fmu.setFloat64([arr.valueReference], parts)
     print(f"{stem}: {len(arrays)} arrays ({', '.join(a.name for a in arrays[:4])}, ...) read as their elements")
