@@ -1,9 +1,11 @@
 //! The layering of `docs/ARCHITECTURE.md`, checked on the sources: every
 //! `crate::…` path in a library file points to its own layer's module or to a
 //! lower layer, and no source file outside `tests/` grows past the size at which
-//! it starts to hold a second job.
+//! it starts to hold a second job; and within a room (a directory under
+//! `src/`), no two parts import each other: a part does not borrow from the
+//! hub that uses it.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// Layers from the ground up (docs/ARCHITECTURE.md). A module may use its own
@@ -156,4 +158,146 @@ fn no_source_file_outgrows_one_job() {
         "files past {MAX_LINES} lines (split by job):\n{}",
         big.join("\n")
     );
+}
+
+/// The directories under `src/` (the rooms, `src/` itself included).
+fn rooms(dir: &Path, out: &mut Vec<PathBuf>) {
+    out.push(dir.to_path_buf());
+    for entry in std::fs::read_dir(dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.is_dir() {
+            rooms(&path, out);
+        }
+    }
+}
+
+/// The identifier at the start of `text` (empty when none).
+fn leading_ident(text: &str) -> String {
+    text.trim_start()
+        .chars()
+        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+        .collect()
+}
+
+/// The parts of a `{…}` group (`text` starts after its `{`), split at the
+/// commas of its own level, and the length of the group up to its `}`.
+fn group_parts(text: &str) -> (Vec<&str>, usize) {
+    let mut parts = Vec::new();
+    let (mut depth, mut start) = (0usize, 0usize);
+    for (i, c) in text.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' if depth == 0 => {
+                parts.push(&text[start..i]);
+                return (parts, i);
+            }
+            '}' => depth -= 1,
+            ',' if depth == 0 => {
+                parts.push(&text[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    parts.push(&text[start..]);
+    (parts, text.len())
+}
+
+/// The names a file's code reaches through `super::` (`use super::x…`,
+/// `use super::{x, y::…}`, `super::x::…` paths), comments and its
+/// `#[cfg(test)]` module left out.
+fn super_names(text: &str) -> BTreeSet<String> {
+    let code = code_lines(text).join("\n");
+    let mut names = BTreeSet::new();
+    let mut rest = code.as_str();
+    while let Some(at) = rest.find("super::") {
+        let after = &rest[at + "super::".len()..];
+        if let Some(group) = after.strip_prefix('{') {
+            let (parts, _) = group_parts(group);
+            names.extend(parts.into_iter().map(leading_ident));
+        } else {
+            names.insert(leading_ident(after));
+        }
+        rest = after;
+    }
+    names.remove("");
+    names
+}
+
+/// The pairs of parts (`(stem, text)` of each file but `mod.rs`, the room's
+/// front) that import each other, each pair once, in name order.
+fn circles(parts: &[(String, String)]) -> Vec<(String, String)> {
+    let stems: BTreeSet<&str> = parts.iter().map(|(s, _)| s.as_str()).collect();
+    let imports: BTreeMap<&str, BTreeSet<String>> = parts
+        .iter()
+        .map(|(stem, text)| {
+            let mut names = super_names(text);
+            names.retain(|n| stems.contains(n.as_str()) && n != stem);
+            (stem.as_str(), names)
+        })
+        .collect();
+    let mut found = Vec::new();
+    for (a, names) in &imports {
+        for b in names {
+            if *a < b.as_str() && imports[b.as_str()].contains(*a) {
+                found.push((a.to_string(), b.clone()));
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn the_scan_sees_two_parts_importing_each_other() {
+    let part = |stem: &str, text: &str| (stem.to_string(), text.to_string());
+    let room = [
+        part(
+            "hub",
+            "use super::work::Buffers;\nuse super::{error, step::Step};\n",
+        ),
+        part("step", "use super::{error::Error, hub::{Hub, HUB}};\n"),
+        part(
+            "work",
+            "/// [`super::hub::Hub`] owns it.\npub struct Buffers;\n",
+        ),
+        part(
+            "error",
+            "pub struct Error;\n#[cfg(test)]\nmod tests { use super::super::hub::Hub; }\n",
+        ),
+        part("leaf", "fn f() { super::hub::run(); }\n"),
+    ];
+    assert_eq!(
+        circles(&room),
+        vec![("hub".to_string(), "step".to_string())]
+    );
+    let mut rooted = room.to_vec();
+    rooted.push(part("run", "fn g() { super::leaf::f(); }\n"));
+    rooted[4] = part("leaf", "fn f() { super::run::g(); }\n");
+    assert_eq!(circles(&rooted).len(), 2);
+}
+
+#[test]
+fn no_two_parts_of_a_room_import_each_other() {
+    let mut dirs = Vec::new();
+    rooms(&src(), &mut dirs);
+    let mut violations = Vec::new();
+    for dir in &dirs {
+        let mut parts = Vec::new();
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            let is_part = path.extension().is_some_and(|e| e == "rs")
+                && path.file_name().is_some_and(|n| n != "mod.rs");
+            if is_part {
+                let stem = path.file_stem().unwrap().to_string_lossy().to_string();
+                parts.push((stem, std::fs::read_to_string(&path).unwrap()));
+            }
+        }
+        for (a, b) in circles(&parts) {
+            violations.push(format!(
+                "{}: {a}.rs and {b}.rs import each other (move what both need into the lower one or a file of its own)",
+                dir.display()
+            ));
+        }
+    }
+    assert!(violations.is_empty(), "{}", violations.join("\n"));
 }

@@ -21,7 +21,7 @@
 
 use nalgebra::Complex;
 
-use super::campbell::{CampbellPoint, CriticalSpeed};
+use super::campbell_point::{CampbellPoint, CriticalSpeed};
 use super::linearize::linearized;
 use super::modal::{ModalError, ModalOptions, Mode, modal_analysis_at, mode_near};
 use super::mode_tracking::{mac, translations};

@@ -6,6 +6,7 @@
 pub mod alignment;
 pub mod backward_crossing;
 pub mod campbell;
+mod campbell_point;
 mod critical_refine;
 pub mod element_operating_point;
 pub mod film_validity;

@@ -1,13 +1,20 @@
-//! The default top speed of every speed sweep (Campbell diagram, unbalance
-//! response, the bearings' curves of the critical speed map): one rule from
-//! the model, so every command and the report sweep the same range.
+//! The operating speed range and the default top speed of every speed sweep
+//! (Campbell diagram, unbalance response, the bearings' curves of the critical
+//! speed map): one rule from the model, so every command and the report sweep the same range.
 
 use std::fmt;
 
 use crate::model::RotorModel;
 use crate::units::RAD_S_TO_RPM;
 
-use super::unbalance::OperatingRange;
+/// Operating speed range (rad/s) a separation margin is measured from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OperatingRange {
+    /// Minimum operating speed (rad/s).
+    pub min: f64,
+    /// Maximum continuous speed (rad/s).
+    pub max: f64,
+}
 
 /// A sweep reaches this factor above the highest speed the machine runs at.
 pub const TOP_SPEED_FACTOR: f64 = 1.25;

@@ -22,8 +22,9 @@
 //! rigid-body rotation is thus identified by its index, not by a threshold on
 //! `ω²`. Where the check passes, the Arnoldi results are kept bit for bit.
 
+use super::torsion_damped::{Pairs, damped_eigenvalues, m_normalized, quadratic};
 use crate::linalg::{
-    ArnoldiOptions, BandMatrix, LinalgError, eigenvalues_below, largest_eigenpairs_real,
+    ArnoldiOptions, LinalgError, eigenvalues_below, largest_eigenpairs_real,
     tridiagonal_eigenvalues_below,
 };
 use crate::model::RotorModel;
@@ -88,7 +89,7 @@ pub fn torsional_modes(
             wanted,
         });
     }
-    let eigenvalues = super::torsion_damped::damped_eigenvalues(model, &chain, &pairs)?;
+    let eigenvalues = damped_eigenvalues(model, &chain, &pairs)?;
     Ok(pairs
         .iter()
         .zip(eigenvalues)
@@ -111,10 +112,6 @@ pub fn torsional_modes(
         })
         .collect())
 }
-
-/// Natural frequencies (rad/s, ascending) and shapes on the free DOFs (any
-/// scale: the Arnoldi ones as they come, for results unchanged to the bit).
-pub(super) type Pairs = Vec<(f64, Vec<f64>)>;
 
 /// Shift-invert Arnoldi with the shift and rigid-body filter scaled by the
 /// stiffest element (fast; its result is checked by [`verified`]): the
@@ -166,20 +163,6 @@ fn element_scale(chain: &TorsionalRotor) -> f64 {
     (0..chain.dof_count())
         .map(|i| chain.stiffness.get(i, i) / chain.mass.get(i, i).max(f64::MIN_POSITIVE))
         .fold(0.0, f64::max)
-}
-
-/// `v / √(vᵀ M v)`.
-pub(super) fn m_normalized(mass: &BandMatrix<f64>, mut v: Vec<f64>) -> Vec<f64> {
-    let norm = quadratic(mass, &v, &v).sqrt();
-    v.iter_mut().for_each(|x| *x /= norm);
-    v
-}
-
-/// `xᵀ A y`.
-pub(super) fn quadratic(a: &BandMatrix<f64>, x: &[f64], y: &[f64]) -> f64 {
-    let mut ay = vec![0.0; y.len()];
-    a.mul_vec(y, &mut ay);
-    x.iter().zip(&ay).map(|(p, q)| p * q).sum()
 }
 
 /// True when the `wanted` reported modes are the lowest elastic ones: the

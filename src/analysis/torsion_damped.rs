@@ -17,13 +17,34 @@
 //! `Q(s)⁻¹` is a tridiagonal complex solve, with `C_ζ` through the
 //! Sherman–Morrison–Woodbury identity. Without any damping nothing is solved:
 //! `s = i ω` exactly.
+//!
+//! The undamped modes come in as [`Pairs`]; [`m_normalized`] and
+//! [`quadratic`] are the `M`-products both this file and
+//! [`super::torsion`] use.
 
 use nalgebra::{Complex, DMatrix, DVector};
 
-use super::torsion::{Pairs, m_normalized, quadratic};
 use crate::linalg::{BandLu, BandMatrix, LinalgError, map_to_complex};
 use crate::model::RotorModel;
 use crate::rotor::torsion::TorsionalRotor;
+
+/// Natural frequencies (rad/s, ascending) and shapes on the free DOFs (any
+/// scale: the Arnoldi ones as they come, for results unchanged to the bit).
+pub(super) type Pairs = Vec<(f64, Vec<f64>)>;
+
+/// `v / √(vᵀ M v)`.
+pub(super) fn m_normalized(mass: &BandMatrix<f64>, mut v: Vec<f64>) -> Vec<f64> {
+    let norm = quadratic(mass, &v, &v).sqrt();
+    v.iter_mut().for_each(|x| *x /= norm);
+    v
+}
+
+/// `xᵀ A y`.
+pub(super) fn quadratic(a: &BandMatrix<f64>, x: &[f64], y: &[f64]) -> f64 {
+    let mut ay = vec![0.0; y.len()];
+    a.mul_vec(y, &mut ay);
+    x.iter().zip(&ay).map(|(p, q)| p * q).sum()
+}
 
 type C64 = Complex<f64>;
 

@@ -23,6 +23,7 @@ use crate::rotor::{AssemblyError, Rotor};
 use super::linear::{LinearError, node_xy, unbalance_response};
 use super::linearize::{LinearizeError, linearized};
 use super::modal::orbit_radii;
+pub use super::speed_range::OperatingRange;
 
 type C64 = Complex<f64>;
 
@@ -335,15 +336,6 @@ pub fn unwrapped_phase(values: &[C64]) -> Vec<f64> {
         out.push(next);
     }
     out
-}
-
-/// Operating speed range (rad/s) a separation margin is measured from.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct OperatingRange {
-    /// Minimum operating speed (rad/s).
-    pub min: f64,
-    /// Maximum continuous speed (rad/s).
-    pub max: f64,
 }
 
 /// Separation margin of one critical speed (fractions, 0.16 = 16 %).

@@ -1,5 +1,5 @@
 //! The film potential's Taylor jets over `L` arcs at once: the operations of
-//! [`super::film::Jet3`] written lane by lane on arrays of `L` values, so
+//! [`crate::bearing::film::Jet3`] written lane by lane on arrays of `L` values, so
 //! that the compiler packs arcs into vector registers (two per SSE2
 //! register, on any x86-64; a tilting-pad bearing evaluates its loaded pads
 //! two at a time, which measured faster than four or eight). Every lane does
@@ -10,7 +10,7 @@
 pub(crate) type Lanes<const L: usize> = [f64; L];
 
 /// A degree-3 Taylor jet per lane, in the monomial order of
-/// [`super::film::Jet3`] (`1, x, y, x², xy, y², x³, x²y, xy², y³`).
+/// [`crate::bearing::film::Jet3`] (`1, x, y, x², xy, y², x³, x²y, xy², y³`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct JetLanes<const L: usize> {
     pub c: [Lanes<L>; 10],
@@ -264,7 +264,7 @@ fn potential_sum_term<const L: usize>(
     }
 }
 
-/// [`super::film::arc_potential_sc`] on every lane of `arcs`: the jets of `x`
+/// [`crate::bearing::film::arc_potential_sc`] on every lane of `arcs`: the jets of `x`
 /// and `y` are linear, so `m = 1 − x² − y²` and the numerators
 /// `N = x sin θ − y cos θ` are written out with the coefficients that are
 /// exactly zero left out, and `N / D` multiplies a linear jet.

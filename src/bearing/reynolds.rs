@@ -42,7 +42,7 @@ use nalgebra::Vector2;
 
 use crate::linalg::BandMatrix;
 
-/// The cavitation condition of a [`super::finite_film::FiniteFilm`].
+/// The cavitation condition of a [`crate::bearing::finite_film::FiniteFilm`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Cavitation {
     /// Half-Sommerfeld: the full film with its negative pressures set to zero.

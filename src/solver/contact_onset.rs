@@ -8,16 +8,6 @@
 
 use super::simulator::Simulator;
 
-/// Whether to stop at a contact's start, and which contacts were closed
-/// after the last completed internal step.
-#[derive(Debug, Default)]
-pub(super) struct ContactOnset {
-    /// Stop at the start of a contact.
-    pub(super) enabled: bool,
-    /// Per site: in contact after the last completed internal step.
-    closed: Vec<bool>,
-}
-
 impl Simulator {
     /// Whether each call of [`Simulator::advance_to`] stops at the first
     /// internal step at which a contact begins ([`Simulator::contact_began_at`]

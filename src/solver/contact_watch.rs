@@ -31,16 +31,6 @@ pub struct ContactWarning {
     pub message: String,
 }
 
-/// The warnings not yet taken. Which limits each site has been reported on
-/// is part of the state ([`SimState::contact_reported`]), so a restored
-/// state raises a warning again.
-///
-/// [`SimState::contact_reported`]: super::SimState::contact_reported
-#[derive(Debug, Default)]
-pub(super) struct ContactWatch {
-    pending: Vec<ContactWarning>,
-}
-
 impl Simulator {
     /// Check every nonlinear bearing at the accepted state (time `t`, spin
     /// `speed`) against the limits of its contact law; the first excursion of

@@ -35,7 +35,7 @@
 //! before it is cut in half.
 
 use super::error::SolverError;
-use super::factor::Factor;
+use super::factor_work::Factor;
 use super::simulator::Simulator;
 use super::sites::Sites;
 

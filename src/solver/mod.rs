@@ -56,17 +56,22 @@
 
 mod adaptive;
 mod condense;
+mod condensed_work;
 pub mod contact_onset;
+mod contact_records;
 pub mod contact_watch;
 mod dense;
 mod error;
 mod factor;
+mod factor_work;
 mod film_start;
 mod inputs;
 mod line_search;
 mod newmark;
+mod newmark_work;
 mod newton;
 mod norm;
+mod observed;
 pub mod observer;
 pub mod offset_continuation;
 mod options;
@@ -85,6 +90,7 @@ mod static_stability;
 pub mod statics;
 mod stats;
 mod torsion;
+mod torsion_work;
 mod warnings;
 
 pub mod time_step;

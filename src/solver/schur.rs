@@ -6,7 +6,7 @@ use crate::linalg::LinalgError;
 
 use super::dense::{lu_in_place, lu_solve};
 use super::error::SolverError;
-use super::factor::Factor;
+use super::factor_work::Factor;
 use super::sites::Sites;
 
 /// Schur solve of a factored `A` bordered by the frozen bearing blocks, on the

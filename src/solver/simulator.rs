@@ -4,19 +4,19 @@ use crate::bearing::{Bearing, BearingEval};
 use crate::rotor::Rotor;
 use crate::units::Short;
 
-use super::contact_onset::ContactOnset;
-use super::contact_watch::ContactWatch;
+use super::condensed_work::CondensedWork;
+use super::contact_records::{ContactOnset, ContactWatch};
 use super::error::SolverError;
-use super::factor::{Factor, FactorWork};
-use super::newmark::NewmarkWork;
-use super::newton::CondensedWork;
+use super::factor_work::{Factor, FactorWork};
+use super::newmark_work::NewmarkWork;
+use super::observed::observed_dofs;
 use super::options::{SolverOptions, check_options};
 use super::schur::SchurSolve;
 use super::sites::Sites;
 use super::state::SimState;
 use super::statics;
 use super::stats::StepStats;
-use super::torsion::Torsion;
+use super::torsion_work::Torsion;
 use super::warnings::{SolverWarning, Warnings};
 use crate::model::Drive;
 
@@ -73,7 +73,7 @@ pub struct Simulator {
     /// (accuracy-controlled steps).
     pub(super) step_start: SimState,
     /// The coordinates the local error estimate looks at
-    /// ([`super::adaptive::observed_dofs`]).
+    /// ([`observed_dofs`]).
     pub(super) error_dofs: Vec<usize>,
 }
 
@@ -156,7 +156,7 @@ impl Simulator {
             .map(|(b, _)| BearingEval::new(2 + b.internal_dofs()))
             .collect();
         let widest = output_evals.iter().map(BearingEval::n).max().unwrap_or(2);
-        let error_dofs = super::adaptive::observed_dofs(&rotor);
+        let error_dofs = observed_dofs(&rotor);
         Ok(Self {
             step_start: state.clone(),
             error_dofs,

@@ -35,122 +35,20 @@
 //! [`Bearing::report`]: crate::bearing::Bearing::report
 //! [`ThrustBearing`]: crate::bearing::thrust::ThrustBearing
 
-use crate::bearing::BearingEval;
 use crate::bearing::thrust::ThrustBearing;
 use crate::fe::{DOF_X, DOF_Y};
-use crate::linalg::{BandLu, BandMatrix};
-use crate::rotor::Rotor;
-use crate::rotor::torsion::TorsionalRotor;
 use crate::units::{RAD_S_TO_RPM, Short};
 
 use super::error::SolverError;
 use super::simulator::Simulator;
 use super::state::SimState;
+use super::torsion_work::Torsion;
 
 /// Coupled iterations allowed per step before it is cut.
 const MAX_COUPLING_ITERATIONS: usize = 50;
 
 /// Newton iterations allowed for the torsional step (thrust friction).
 const MAX_TORSION_ITERATIONS: usize = 50;
-
-/// The torsional chain and its buffers (nothing allocated per step).
-#[derive(Debug)]
-pub(super) struct Torsion {
-    pub chain: TorsionalRotor,
-    /// The load channel of each torque input, with its node's twist DOF.
-    inputs: Vec<(usize, Option<usize>)>,
-    /// Twist DOF of each unbalance plane's node.
-    planes: Vec<Option<usize>>,
-    /// Twist DOF of each site's journal node.
-    site_dofs: Vec<Option<usize>>,
-    /// Thrust bearings at twist DOFs.
-    thrust: Vec<(Option<usize>, ThrustBearing)>,
-    /// Newmark matrix `K + a1 C + a0 M` plus the thrust Jacobian, and its
-    /// factors (storage reused).
-    a: BandMatrix<f64>,
-    lu: BandLu<f64>,
-    /// Iterate: twist, rate, acceleration at the step's end.
-    pub theta: Vec<f64>,
-    pub omega: Vec<f64>,
-    pub alpha: Vec<f64>,
-    /// Coupling torques at the step's end (N·m): the estimate the torsional
-    /// step used, and the one the lateral step gives back.
-    coupling: Vec<f64>,
-    fresh: Vec<f64>,
-    /// Work vectors.
-    rhs: Vec<f64>,
-    scratch: Vec<f64>,
-    /// The torque inputs at the step's end (N·m).
-    input_values: Vec<f64>,
-    /// Evaluation buffers of the sites, for their friction torques.
-    eval: Vec<BearingEval>,
-}
-
-impl Torsion {
-    /// The torque-driven chain of `rotor` with `site_nodes` (each nonlinear
-    /// site's node) and `site_sizes` (their coordinate counts).
-    pub fn new(rotor: &Rotor, site_nodes: &[usize], site_sizes: &[usize]) -> Self {
-        let model = &rotor.model;
-        let chain = TorsionalRotor::new(model);
-        let n = chain.dof_count();
-        let first = model.first_torque_input();
-        let inputs = model
-            .torques
-            .iter()
-            .enumerate()
-            .map(|(k, t)| (first + k, chain.dofs[t.node]))
-            .collect();
-        let planes = model
-            .unbalances
-            .iter()
-            .map(|u| chain.dofs[u.node])
-            .collect();
-        let site_dofs = site_nodes.iter().map(|&node| chain.dofs[node]).collect();
-        let thrust = model
-            .thrust_bearings
-            .iter()
-            .map(|t| (chain.dofs[t.node], t.bearing))
-            .collect();
-        let mut a = chain.stiffness.zeroed_like();
-        for i in 0..n {
-            a.set(i, i, 1.0);
-        }
-        Self {
-            lu: a.lu().expect("the identity factors"),
-            a,
-            inputs,
-            planes,
-            site_dofs,
-            thrust,
-            theta: vec![0.0; n],
-            omega: vec![0.0; n],
-            alpha: vec![0.0; n],
-            coupling: vec![0.0; n],
-            fresh: vec![0.0; n],
-            rhs: vec![0.0; n],
-            scratch: vec![0.0; n],
-            input_values: vec![0.0; model.torques.len()],
-            eval: site_sizes.iter().map(|&m| BearingEval::new(m)).collect(),
-            chain,
-        }
-    }
-
-    /// Inertia-weighted mean of `v` over the free twist DOFs.
-    pub fn mean(&self, v: &[f64]) -> f64 {
-        let j = &self.chain.inertia;
-        v.iter().zip(j).map(|(a, b)| a * b).sum::<f64>() / self.chain.total_inertia()
-    }
-
-    /// The breakaway torque at rest: the thrust bearings' boundary friction
-    /// plus `at_rest`, the contact friction the sites report at standstill.
-    fn breakaway(&self, at_rest: f64) -> f64 {
-        self.thrust
-            .iter()
-            .map(|(_, t)| t.breakaway_torque())
-            .sum::<f64>()
-            + at_rest
-    }
-}
 
 impl Simulator {
     /// The torque (N·m) in shaft element `element` (from node `element` to

@@ -28,7 +28,7 @@ use crate::fmu::instance::{Instance, Intermediate, Status};
 use crate::fmu::variables::Causality;
 use crate::units::Short;
 
-use super::glue::log_to;
+use super::logger::log_to;
 
 /// The importer's intermediate updates of one instance.
 #[derive(Debug)]

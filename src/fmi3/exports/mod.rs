@@ -40,6 +40,7 @@ mod fmu_state;
 mod glue;
 mod intermediate;
 mod lifecycle;
+mod logger;
 mod unsupported;
 mod values;
 

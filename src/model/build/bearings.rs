@@ -1,7 +1,6 @@
 //! `[[bearings]]`: linear spring–dampers, plain and tilting-pad journal
 //! bearings, with the geometric checks thin-film theory needs.
 
-use crate::bearing::contact::ContactLaw;
 use crate::bearing::film_table_cache::PreparedTable;
 use crate::bearing::finite_bearing::{
     FilmSupport, FiniteFilmBearing, PAD_ARC_RANGE, SLENDERNESS_RANGE, slenderness,
@@ -14,14 +13,16 @@ use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{BearingEntry, MagneticPullEntry, RubEntry, SealEntry};
 use crate::model::limits::{
-    CLEARANCE, CONTACT_STIFFNESS, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, OFFSET, RADIUS, STIFFNESS,
-    VISCOSITY,
+    CLEARANCE, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, RADIUS, STIFFNESS, VISCOSITY,
 };
 use crate::model::{
     ModelError, Pedestal, PlacedBearing, PlacedElement, RADIUS_TOLERANCE, TableFile,
 };
 
+use super::contact::contact_law;
 use super::pedestals::lookup;
+use super::placement::centre_offset;
+use super::stators::stators;
 use super::tables::{TableInput, coefficient_table};
 
 /// The radial clearance (m) of a film bearing from `clearance` (radial) or
@@ -53,19 +54,6 @@ fn radial_clearance(
             "give clearance (the radial clearance, m) or diametral_clearance (bore diameter less journal diameter, m)",
         )),
     }
-}
-
-/// The centre offset `(offset_x, offset_y)` (m) of a bearing, seal, stator
-/// or pedestal entry at `p`: each finite and within [`OFFSET`], default 0.
-pub(super) fn centre_offset(
-    ctx: &Ctx,
-    p: &FieldPath,
-    (x, y): (Option<f64>, Option<f64>),
-) -> Result<[f64; 2], ModelError> {
-    Ok([
-        ctx.within(p.key("offset_x"), x.unwrap_or(0.0), &OFFSET)?,
-        ctx.within(p.key("offset_y"), y.unwrap_or(0.0), &OFFSET)?,
-    ])
 }
 
 /// The film theory of a plain or tilting-pad entry: `short` (the kind as
@@ -542,7 +530,7 @@ pub(super) fn bearings(
             offset: centre,
         });
     }
-    bearings.extend(super::stators::stators(
+    bearings.extend(stators(
         ctx,
         root,
         (rubs, seals, pulls),
@@ -552,44 +540,4 @@ pub(super) fn bearings(
         (&mut names, &mut files),
     )?);
     Ok((bearings, files))
-}
-
-/// The shaft's outer radius at `node`: the larger of its elements'.
-pub(super) fn shaft_radius_at(elements: &[PlacedElement], node: usize) -> f64 {
-    elements
-        .iter()
-        .filter(|e| e.node == node || e.node + 1 == node)
-        .map(|e| 0.5 * e.element.section.outer_diameter)
-        .fold(0.0, f64::max)
-}
-
-/// Axial width (m) of a rub's contact for its default steel stiffness.
-pub(super) const RUB_WIDTH: f64 = 0.01;
-
-/// The contact law of a fluid-film bearing: `default` (the steel law of its
-/// geometry) with the model file's `contact_stiffness` (N/m, > 0),
-/// `contact_damping` (N·s/m, ≥ 0) and `friction_coefficient` (≥ 0) where given;
-/// `None` when none is given.
-pub(super) fn contact_law(
-    ctx: &Ctx,
-    p: &FieldPath,
-    default: ContactLaw,
-    [stiffness, damping, friction]: [Option<f64>; 3],
-) -> Result<Option<ContactLaw>, ModelError> {
-    if stiffness.is_none() && damping.is_none() && friction.is_none() {
-        return Ok(None);
-    }
-    let mut law = default;
-    if let Some(k) = stiffness {
-        law.stiffness = ctx.within(p.key("contact_stiffness"), k, &CONTACT_STIFFNESS)?;
-        law.damping = ContactLaw::DAMPING_TIME * law.stiffness;
-    }
-    if let Some(c) = damping {
-        law.damping = ctx.non_negative(p.key("contact_damping"), c)?;
-        ctx.within(p.key("contact_damping"), c, &DAMPING)?;
-    }
-    if let Some(mu) = friction {
-        law.friction = ctx.non_negative(p.key("friction_coefficient"), mu)?;
-    }
-    Ok(Some(law))
 }

@@ -4,11 +4,13 @@
 //! (unbalance), probes, supports, gravity and nominal speed.
 
 mod bearings;
+mod contact;
 mod couplings;
 mod disks;
 mod loads;
 mod materials;
 mod pedestals;
+mod placement;
 mod point_masses;
 mod shaft;
 mod stators;

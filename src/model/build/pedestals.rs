@@ -49,7 +49,7 @@ pub(super) fn pedestals(
             stiffness,
             damping,
             on: None,
-            offset: super::bearings::centre_offset(ctx, &p, (e.offset_x, e.offset_y))?,
+            offset: super::placement::centre_offset(ctx, &p, (e.offset_x, e.offset_y))?,
             on_stator: e.on_stator,
         });
     }

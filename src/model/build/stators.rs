@@ -13,8 +13,9 @@ use crate::model::error::FieldPath;
 use crate::model::file::{MagneticPullEntry, RubEntry, SealEntry};
 use crate::model::{ModelError, Pedestal, PlacedBearing, PlacedElement, TableFile};
 
-use super::bearings::{RUB_WIDTH, centre_offset, contact_law, shaft_radius_at};
+use super::contact::{RUB_WIDTH, contact_law};
 use super::pedestals::lookup;
+use super::placement::{centre_offset, shaft_radius_at};
 use super::tables::{TableInput, coefficient_table};
 use crate::model::limits::{
     CLEARANCE, FLUX_DENSITY, LENGTH, MAX_EXCITATION, PULL_STIFFNESS, RADIUS,
