@@ -2,9 +2,10 @@
 //! on brackets (vertical, unpreloaded guide pads) with a 1 N side force on
 //! its runner compares its films centred, as it does with none — the same
 //! ratios bit for bit — instead of seeking a finite-film equilibrium under a
-//! load of a millionth of the film's scale `μ Ω R L (R/C)²` (which took 14 s
-//! of CPU and found none, and made `rotor static` look hung to the model
-//! fuzzer).
+//! load of a millionth of the film's scale `μ Ω R L (R/C)²` (which took about
+//! 200 times the CPU time the whole `rotor static` takes now, found none,
+//! and made `rotor static` look hung to the model fuzzer; one run each,
+//! back to back).
 
 use rotor_bearing::analysis::film_validity::{NEARLY_UNLOADED, short_film_warnings};
 use rotor_bearing::model::RotorModel;
