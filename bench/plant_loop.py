@@ -1,45 +1,44 @@
-"""The FMPy plant loop of issue 28: a plant study driving the FMU as FMPy's
-FMU2Slave (not simulate_fmu), fmi2DoStep every 5 ms and every output read with
-one fmi2GetReal after each step, on the shipped hydro units and the
-three-guide-bearing unit at rated speed with their unbalance, from the settled
-state the FMU initializes (fmi2ExitInitializationMode: static equilibrium at
-the start speed, the unbalance applied at once).
+"""The FMPy plant loop of issue 51, in ratio form: a plant study driving each
+shipped unit as FMPy's FMU2Slave (not simulate_fmu), fmi2DoStep every 5 ms and
+every output read with one fmi2GetReal after each, at the FMU defaults (no
+solver parameter set), at rated speed with the model's unbalance, from the
+settled state the FMU initializes (fmi2ExitInitializationMode: static
+equilibrium at the start speed, the unbalance applied at once); a unit with a
+magnetic pull runs with the field off (excitation 0) and on (1).
 
-    .venv/bin/python bench/plant_loop.py [--seconds 12] [--window 2] [--runs 3] [--units A,B] [--fmu-dir out]
-        [--out bench/plant_loop_results.md]
+    .venv/bin/python bench/plant_loop.py [--seconds 12] [--window 2] [--runs 3] [--units A,B]
+        [--fmu-dir out] [--out bench/plant_loop_results.md]
 
-Needs the FMUs in out/ (bench/run_all.sh packs them: `bash fmu_pack.sh
---platforms linux64 --model models/NAME.toml`) and a C compiler (`cc`) for the
-no-op library of the FMPy ceiling.
+Needs the FMUs in --fmu-dir, `<model>.fmu` for every models/*.toml (bench/run_all.sh
+packs them: `bash fmu_pack.sh --platforms linux64 --model models/NAME.toml`)
+and a C compiler (`cc`) for the no-op library of FMPy's own cost. The
+28-pad three-guide unit with unpreloaded pads (`hydro_unit_three_guide` with
+`preload = 0`) is packed by run_all.sh from the model file this script writes
+with --write-variants DIR.
 
-Configurations: the internal step (`solver.time_step`) fixed at 1 ms and at
-5 ms (`solver.local_error_tolerance` = 0 where the FMU declares it),
-accuracy-controlled stepping when the FMU declares that parameter (its start
-value when non-zero, else --tolerance; `solver.time_step`, the largest step,
-at its start value), and the FMU's
-defaults (no parameter set) unless they are one of these, which is then marked
-"(FMU default)". Each is timed
-over the whole loop (wall clock around doStep + getReal, median of --runs
-runs) and gives:
+Per unit and field, all measured in the same run:
 
-- real-time factor: simulated seconds / wall seconds;
-- µs per communication point, split into fmi2DoStep and fmi2GetReal of all
-  outputs;
-- orbit error: against a reference run with a 0.05 ms internal step on the
-  same communication points (equal steps), the largest distance between the two journal
-  positions (x, y of bearings.<name>) over the last --window seconds, over
-  every bearing, divided by that bearing's reference orbit peak-to-peak
-  amplitude there (the larger of the x and y ranges); the worst bearing is
-  reported.
-
-The FMPy ceiling: the same FMU2Slave.doStep and getReal calls (ctypes
-marshalling, status check, the list of values) with the two C functions
-replaced by ones that return fmi2OK at once (a no-op library compiled with
-cc), measured in the same run: what FMPy itself costs per communication point.
+- FMPy own: µs per doStep + getReal(all outputs) through FMPy onto C functions
+  that return fmi2OK at once (a no-op library compiled with cc): what FMPy
+  itself costs per communication point (median of 3 × 20 000 calls);
+- FMU own: the loop's wall clock per point minus FMPy own (median of --runs
+  runs of the whole loop); the ratio FMU own / FMPy own is the figure issue 51
+  targets (≤ 1.5);
+- real-time factor: simulated seconds / wall seconds of the loop;
+- Newton iterations per internal step (the FMU's `solver.newton_iterations`
+  and `solver.steps` outputs where declared);
+- orbit error: against a reference run with a fixed internal step of
+  --reference-step on the same communication points, the largest distance
+  between the two journal positions (x, y of bearings.<name>) over the last
+  --window seconds, over every bearing, divided by that bearing's reference
+  orbit peak-to-peak amplitude there (the larger of the x and y ranges);
+  the worst bearing is reported.
 """
 import argparse
 import ctypes
+import glob
 import os
+import re
 import shutil
 import statistics
 import subprocess
@@ -53,15 +52,10 @@ from fmpy.fmi2 import FMU2Slave
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
 COMM = 5e-3
-REFERENCE_STEP = 5e-5
 TOLERANCE_PARAMETER = "solver.local_error_tolerance"
-# Model file and packed FMU (scripts/test.sh packs hydro_unit as RotorBearing.fmu).
-UNITS = [
-    ("hydro_unit", "RotorBearing.fmu"),
-    ("hydro_unit_plain", "hydro_unit_plain.fmu"),
-    ("hydro_unit_brackets", "hydro_unit_brackets.fmu"),
-    ("hydro_unit_three_guide", "hydro_unit_three_guide.fmu"),
-]
+UNPRELOADED = "hydro_unit_three_guide_unpreloaded"
+# fmu_pack.sh without --model packs hydro_unit as the default FMU.
+DEFAULT_FMU = {"hydro_unit": "RotorBearing.fmu"}
 
 NOOP_C = """
 int fmi2DoStep(void *c, double t, double h, int no_set) { return 0; }
@@ -69,16 +63,43 @@ int fmi2GetReal(void *c, const unsigned int *vr, unsigned long n, double *v) { r
 """
 
 
+def shipped_units():
+    """(model name, model file, FMU file name) of every shipped model and the
+    unpreloaded 28-pad variant."""
+    units = []
+    for path in sorted(glob.glob(os.path.join(ROOT, "models", "*.toml"))):
+        name = os.path.splitext(os.path.basename(path))[0]
+        units.append((name, path, f"{name}.fmu"))
+    return units
+
+
+def write_variants(folder):
+    """The 28-pad three-guide unit with unpreloaded pads: the shipped model
+    with every `preload = 0.3` set to 0."""
+    os.makedirs(folder, exist_ok=True)
+    with open(os.path.join(ROOT, "models", "hydro_unit_three_guide.toml")) as f:
+        text = f.read()
+    text, n = re.subn(r"(?m)^preload = 0\.3", "preload = 0.0", text)
+    if n != 3:
+        sys.exit(f"plant_loop.py: expected 3 pad preloads in hydro_unit_three_guide.toml, found {n}")
+    path = os.path.join(folder, UNPRELOADED + ".toml")
+    with open(path, "w") as f:
+        f.write(text)
+    print(path)
+
+
 class Unit:
     """A packed FMU of a model file: its description, rated speed, outputs."""
 
-    def __init__(self, model, fmu, folder):
+    def __init__(self, model, model_file, fmu, folder):
         self.model = model
         self.path = os.path.join(folder, fmu)
+        if not os.path.exists(self.path) and model in DEFAULT_FMU:
+            self.path = os.path.join(folder, DEFAULT_FMU[model])
         if not os.path.exists(self.path):
             sys.exit(f"plant_loop.py: {self.path} missing: bash fmu_pack.sh --platforms linux64 "
-                     f"--model models/{model}.toml")
-        with open(os.path.join(ROOT, "models", model + ".toml"), "rb") as f:
+                     f"--model {os.path.relpath(model_file, ROOT)}")
+        with open(model_file, "rb") as f:
             self.rpm = float(tomllib.load(f)["speed_rpm"])
         self.md = read_model_description(self.path)
         self.vars = {v.name: v for v in self.md.modelVariables}
@@ -89,7 +110,9 @@ class Unit:
                           key=lambda b: self.vars[f"bearings.{b}.x"].valueReference)
         self.journal = [(self.outputs.index(self.vars[f"bearings.{b}.x"].valueReference),
                          self.outputs.index(self.vars[f"bearings.{b}.y"].valueReference)) for b in bearings]
-        self.bearings = bearings
+        self.counters = [self.outputs.index(self.vars[n].valueReference) if n in self.vars else None
+                         for n in ("solver.newton_iterations", "solver.steps")]
+        self.fields = [n for n in self.vars if n.startswith("magnetic_pull.") and n.endswith(".excitation")]
         self.dir = extract(self.path)
 
     def start(self, name):
@@ -102,11 +125,16 @@ class Unit:
         fmu.instantiate()
         for name, value in params.items():
             fmu.setReal([self.vars[name].valueReference], [value])
-        fmu.setReal([self.vars["shaft.speed"].valueReference], [self.rpm * 3.141592653589793 / 30.0])
+        speed = self.rpm * 3.141592653589793 / 30.0
+        if self.vars.get("shaft.speed") is not None and self.vars["shaft.speed"].causality == "input":
+            fmu.setReal([self.vars["shaft.speed"].valueReference], [speed])
+        elif "shaft.initial_speed" in self.vars:
+            fmu.setReal([self.vars["shaft.initial_speed"].valueReference], [speed])
         return fmu
 
     def run(self, params, seconds, keep=True):
-        """The plant loop; returns (wall s, doStep s, getReal s, journal samples)."""
+        """The plant loop; returns (wall s, journal samples, Newton
+        iterations per step or None)."""
         fmu = self.instance(params)
         fmu.setupExperiment(startTime=0.0, stopTime=seconds + COMM)
         fmu.enterInitializationMode()
@@ -115,22 +143,21 @@ class Unit:
         outs, journal = self.outputs, []
         do_step, get_real = fmu.doStep, fmu.getReal
         clock = time.perf_counter
-        t_step = t_get = 0.0
+        values = None
         begin = clock()
         for k in range(count):
-            a = clock()
             do_step(k * COMM, COMM)
-            b = clock()
             values = get_real(outs)
-            c = clock()
-            t_step += b - a
-            t_get += c - b
             if keep:
                 journal.append([(values[i], values[j]) for i, j in self.journal])
         wall = clock() - begin
+        iterations, steps = self.counters
+        per_step = None
+        if iterations is not None and steps is not None and values[steps] > 0:
+            per_step = values[iterations] / values[steps]
         fmu.terminate()
         fmu.freeInstance()
-        return wall, t_step, t_get, journal
+        return wall, journal, per_step
 
     def close(self):
         shutil.rmtree(self.dir, ignore_errors=True)
@@ -147,11 +174,11 @@ def orbit_error(run, reference, window):
         p2p = max(max(x for x, _ in ref) - min(x for x, _ in ref),
                   max(y for _, y in ref) - min(y for _, y in ref))
         dist = max(((gx - rx) ** 2 + (gy - ry) ** 2) ** 0.5 for (gx, gy), (rx, ry) in zip(got, ref))
-        worst = max(worst, dist / p2p)
+        worst = max(worst, dist / p2p if p2p > 0 else (0.0 if dist == 0 else float("inf")))
     return worst
 
 
-def fmpy_ceiling(unit, calls=20000):
+def fmpy_own(unit, calls=20000):
     """µs per doStep + getReal(all outputs of `unit`) through FMPy onto C
     functions that return at once."""
     with tempfile.TemporaryDirectory() as tmp:
@@ -187,74 +214,67 @@ def main():
     p.add_argument("--seconds", type=float, default=12.0, help="simulated time per run (s)")
     p.add_argument("--window", type=float, default=2.0, help="last seconds the orbit error is taken over")
     p.add_argument("--runs", type=int, default=3, help="timed runs per configuration (median)")
-    p.add_argument("--tolerance", type=float, default=1e-4,
-                   help=f"{TOLERANCE_PARAMETER} when its start value is 0")
-    p.add_argument("--units", default=",".join(m for m, _ in UNITS))
+    p.add_argument("--reference-step", type=float, default=5e-5, help="internal step of the reference (s)")
+    p.add_argument("--units", default="", help="comma-separated model names (default: all)")
     p.add_argument("--fmu-dir", default=os.path.join(ROOT, "out"), help="where the packed FMUs are")
+    p.add_argument("--variant-dir", default=os.path.join(ROOT, "out", "bench_models"),
+                   help="where --write-variants put the unpreloaded three-guide model")
+    p.add_argument("--write-variants", metavar="DIR", help="write the variant model files into DIR and exit")
     p.add_argument("--out", default=os.path.join(ROOT, "bench", "plant_loop_results.md"))
     a = p.parse_args()
-    chosen = a.units.split(",")
-    units = [Unit(m, f, a.fmu_dir) for m, f in UNITS if m in chosen]
+    if a.write_variants:
+        write_variants(a.write_variants)
+        return
+    catalogue = shipped_units() + [(UNPRELOADED, os.path.join(a.variant_dir, UNPRELOADED + ".toml"),
+                                    UNPRELOADED + ".fmu")]
+    chosen = a.units.split(",") if a.units else [m for m, _, _ in catalogue]
     window = round(a.window / COMM)
     rows = []
-    ceilings = []
-    for unit in units:
+    for model, model_file, fmu in catalogue:
+        if model not in chosen:
+            continue
+        unit = Unit(model, model_file, fmu, a.fmu_dir)
+        own = statistics.median(fmpy_own(unit) for _ in range(3))
         fixed = {TOLERANCE_PARAMETER: 0.0} if TOLERANCE_PARAMETER in unit.vars else {}
-        configs = [("fixed 1 ms", {"solver.time_step": 1e-3, **fixed}),
-                   ("fixed 5 ms", {"solver.time_step": 5e-3, **fixed})]
-        if TOLERANCE_PARAMETER in unit.vars:
-            tol = unit.start(TOLERANCE_PARAMETER) or a.tolerance
-            largest = unit.start("solver.time_step")
-            configs.append((f"accuracy-controlled ({TOLERANCE_PARAMETER} = {tol:g}, steps up to {largest * 1e3:.3g} ms)",
-                            {"solver.time_step": largest, TOLERANCE_PARAMETER: tol}))
-        defaults = {"solver.time_step": unit.start("solver.time_step")}
-        if TOLERANCE_PARAMETER in unit.vars:
-            defaults[TOLERANCE_PARAMETER] = unit.start(TOLERANCE_PARAMETER) or 0.0
-        chosen_defaults = [k for k, (_, params) in enumerate(configs)
-                           if all(params.get(n, 0.0) == v for n, v in defaults.items())]
-        if chosen_defaults:
-            k = chosen_defaults[0]
-            configs[k] = (configs[k][0] + " (FMU default)", configs[k][1])
-        else:
-            text = ", ".join(f"{n} = {v:g}" for n, v in defaults.items())
-            configs.insert(0, (f"FMU defaults ({text})", {}))
-        _, _, _, reference = unit.run({"solver.time_step": REFERENCE_STEP, **fixed}, a.seconds)
-        for label, params in configs:
+        fields = [("", {})]
+        if unit.fields:
+            fields = [(f"field {label}", {n: value for n in unit.fields}) for label, value in (("off", 0.0), ("on", 1.0))]
+        for field, params in fields:
+            _, reference, _ = unit.run({"solver.time_step": a.reference_step, **fixed, **params}, a.seconds)
             runs = [unit.run(params, a.seconds, keep=(k == 0)) for k in range(a.runs)]
-            journal = runs[0][3]
-            wall, t_step, t_get, _ = sorted(runs, key=lambda r: r[0])[len(runs) // 2]
+            journal, per_step = runs[0][1], runs[0][2]
+            wall = statistics.median(r[0] for r in runs)
             n = round(a.seconds / COMM)
-            row = dict(unit=unit.model, rpm=unit.rpm, config=label,
-                       factor=a.seconds / wall, per=wall / n * 1e6, step=t_step / n * 1e6,
-                       get=t_get / n * 1e6, outputs=len(unit.outputs),
-                       error=orbit_error(journal, reference, window))
+            per = wall / n * 1e6
+            row = dict(unit=unit.model, field=field, rpm=unit.rpm, outputs=len(unit.outputs),
+                       factor=a.seconds / wall, per=per, fmpy=own, ratio=(per - own) / own,
+                       newton=per_step, error=orbit_error(journal, reference, window),
+                       step=unit.start("solver.time_step"), tol=unit.start(TOLERANCE_PARAMETER))
             rows.append(row)
-            print(f"{row['unit']:24s} {row['config']:44s} {row['factor']:7.0f}x real time  "
-                  f"{row['per']:7.1f} us/comm (doStep {row['step']:6.1f}, getReal {row['get']:5.1f})  "
-                  f"orbit error {row['error']:.2e}", flush=True)
-        ceiling = statistics.median(fmpy_ceiling(unit) for _ in range(3))
-        ceilings.append((unit.model, len(unit.outputs), ceiling))
-        print(f"{unit.model:24s} FMPy ceiling: {ceiling:.1f} us per doStep + getReal of {len(unit.outputs)} "
-              f"outputs onto no-op C functions ({COMM / (ceiling * 1e-6):.0f}x real time at most)", flush=True)
+            newton = "" if per_step is None else f"  {per_step:.2f} Newton it/step"
+            print(f"{row['unit']:36s} {field:9s} FMU own / FMPy own {row['ratio']:5.2f}  "
+                  f"({per:7.1f} us/point, FMPy {own:5.1f})  {row['factor']:6.0f}x real time  "
+                  f"orbit error {row['error']:.2e}{newton}", flush=True)
         unit.close()
     with open(a.out, "w") as f:
         f.write(f"`bench/plant_loop.py --seconds {a.seconds:g} --window {a.window:g} --runs {a.runs}`: FMPy "
                 f"`FMU2Slave`, fmi2DoStep every 5 ms, all outputs read with one fmi2GetReal after each, "
-                f"{a.seconds:g} s from the settled state at rated speed with the model's unbalance; "
-                f"median of {a.runs} runs. Orbit error: largest journal distance from a "
-                f"{REFERENCE_STEP * 1e3:g} ms internal-step reference over the last {a.window:g} s, over the "
-                f"reference orbit's peak-to-peak amplitude, worst bearing.\n\n")
-        f.write("| unit | speed | internal step | real-time factor | µs per 5 ms | of it fmi2DoStep | "
-                "fmi2GetReal (outputs) | orbit error |\n|---|---:|---|---:|---:|---:|---:|---:|\n")
+                f"{a.seconds:g} s at the FMU defaults from the settled state at rated speed with the model's "
+                f"unbalance, field off and on where the unit has a magnetic pull; median of {a.runs} runs, "
+                f"all in one run of the script. FMPy own: the same doStep + getReal calls onto C functions "
+                f"that return at once (median of 3 × 20 000). FMU own = the loop's time per point − FMPy own. "
+                f"Orbit error: largest journal distance from a {a.reference_step * 1e3:g} ms fixed-step "
+                f"reference over the last {a.window:g} s, over the reference orbit's peak-to-peak amplitude, "
+                f"worst bearing. `{UNPRELOADED}`: the shipped three-guide unit (28 pads) with preload 0.\n\n")
+        f.write("| unit | speed | field | FMU default step (tolerance) | outputs | **FMU own / FMPy own** | "
+                "real-time factor | Newton it/step | orbit error |\n"
+                "|---|---:|---|---|---:|---:|---:|---:|---:|\n")
         for r in rows:
-            f.write(f"| {r['unit']} | {r['rpm']:g} rpm | {r['config']} | {r['factor']:.0f}× | {r['per']:.1f} | "
-                    f"{r['step']:.1f} | {r['get']:.1f} ({r['outputs']}) | {r['error'] * 100:.3g} % |\n")
-        f.write("\nFMPy's own cost per communication point, the ceiling of any FMU in this loop (same run): "
-                "the same doStep + getReal calls onto C functions that return at once (median of 3 × 20 000).\n\n"
-                "| unit | outputs | FMPy µs per doStep + getReal | real-time factor at most |\n"
-                "|---|---:|---:|---:|\n")
-        for model, n, ceiling in ceilings:
-            f.write(f"| {model} | {n} | {ceiling:.1f} | {COMM / (ceiling * 1e-6):.0f}× |\n")
+            tol = "" if not r["tol"] else f" ({r['tol']:g})"
+            newton = "" if r["newton"] is None else f"{r['newton']:.2f}"
+            f.write(f"| {r['unit']} | {r['rpm']:g} rpm | {r['field'] or '—'} | {r['step'] * 1e3:.3g} ms{tol} | "
+                    f"{r['outputs']} | **{r['ratio']:.2f}** | {r['factor']:.0f}× | {newton} | "
+                    f"{r['error'] * 100:.3g} % |\n")
     print(f"wrote {a.out}")
 
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Regenerate BENCHMARKS.md: criterion hot paths, scaling with rotor size,
-# real-time factors, the FMU layer's overhead, the FMPy plant loop (the hydro
-# units packed as linux64 FMUs into out/), and the comparisons with ROSS (transients and the Campbell
-# diagram; ROSS installed into .venv-ross,
+# real-time factors, the FMU layer's overhead, a step against its floor,
+# finite films in the time loop, the FMPy plant loop (every shipped model
+# packed as a linux64 FMU into out/), and the comparisons with ROSS
+# (transients and the Campbell diagram; ROSS installed into .venv-ross,
 # Python 3.13 from pyenv, ross-rotordynamics from PyPI).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,10 +22,18 @@ hot=$(cargo bench --quiet --bench hot_paths -- --warm-up-time 1 --measurement-ti
 scaling=$(cargo bench --quiet --bench scaling 2>/dev/null | grep -E '^\||fitted')
 realtime=$(cargo bench --quiet --bench realtime 2>/dev/null | grep -E '^\|')
 overhead=$(cargo bench --quiet --bench fmu_overhead 2>/dev/null | grep -E '^\|')
-for model in models/hydro_unit.toml models/hydro_unit_plain.toml models/hydro_unit_brackets.toml \
-  models/hydro_unit_three_guide.toml; do
-  bash fmu_pack.sh --platforms linux64 --model "$model" > /dev/null
+floor=$(cargo bench --quiet --bench step_floor 2>/dev/null | grep -E '^\|')
+finite=$(cargo bench --quiet --bench finite_film 2>/dev/null)
+# Every shipped model as out/<name>.fmu, and the 28-pad three-guide unit with
+# unpreloaded pads the plant loop writes.
+for model in models/*.toml; do
+  name=$(basename "$model" .toml)
+  bash fmu_pack.sh --platforms linux64 --model "$model" --out "out/$name.fmu" > /dev/null
 done
+variants=out/bench_models
+.venv/bin/python bench/plant_loop.py --write-variants "$variants" > /dev/null
+bash fmu_pack.sh --platforms linux64 --model "$variants/hydro_unit_three_guide_unpreloaded.toml" \
+  --out out/hydro_unit_three_guide_unpreloaded.fmu > /dev/null
 .venv/bin/python bench/plant_loop.py > /tmp/plant_loop.log 2>&1 || { cat /tmp/plant_loop.log; exit 1; }
 .venv-ross/bin/python bench/ross_compare.py target/release/rotor > /tmp/ross_compare.log 2>&1 || { cat /tmp/ross_compare.log; exit 1; }
 checks=$(grep -oE '(non)?linear: .*' /tmp/ross_compare.log)
@@ -58,6 +67,16 @@ checks=$(grep -oE '(non)?linear: .*' /tmp/ross_compare.log)
   echo "Per 5 ms communication point with one 5 ms internal step: the bare simulator step, the step plus \`Simulator::outputs\` (the bearing evaluations the outputs need), \`Instance::do_step\` (which evaluates the outputs once into the array every read is served from), and a read of every output one value at a time (\`Instance::get\`, what fmi2GetReal calls per value). Medians of five batches of 400."
   echo
   echo "$overhead"
+  echo
+  echo "## A step against its floor (\`cargo bench --bench step_floor\`)"
+  echo
+  echo "Every shipped model at the FMU's defaults (accuracy-controlled steps), communication every 5 ms: µs per internal step against the floor measured in the same run at the same state, one force-and-Jacobian pass of every nonlinear element plus one banded solve with the steps' factorization. Runs: steady at rated speed (4 s after the first), start-up from rest (linear run-up to rated speed in 10 s, its first 4 s), field switched on (units with a magnetic pull, 2 s after the switch), and ten times the model's unbalance (2 s)."
+  echo
+  echo "$floor"
+  echo
+  echo "## Finite-length films in the time loop (\`cargo bench --bench finite_film\`)"
+  echo
+  echo "$finite"
   echo
   echo "## FMPy plant loop (\`bench/plant_loop.py\`)"
   echo

@@ -65,6 +65,7 @@ mod error;
 mod factor;
 mod factor_work;
 mod film_start;
+mod floor;
 mod inputs;
 mod line_search;
 mod newmark;
