@@ -1,0 +1,201 @@
+//! The API 684/617 unbalance cases of an API machine (issue 48, acceptance
+//! 2) against a hand calculation: `tests/data/api_compressor.toml` is a
+//! practically rigid uniform shaft on two identical damped isotropic
+//! bearings, so its first forward mode is the cylindrical rigid-body mode, a
+//! one-degree-of-freedom oscillator at the mid-span node (where the conical
+//! mode has its node):
+//!
+//! - `M = 7850 · π/4 · 0.1² · 1.0 = 61.653756` kg, `K = 2 · 1e7` N/m,
+//!   `C = 2 · 1756` N·s/m;
+//! - `ω_n = √(K/M) = 569.55442` rad/s, `ζ = C/(2√(K M)) = 0.050006878`;
+//! - response to an unbalance `U` at the centre: `|X| = (U/M) r²/√((1 − r²)² + (2ζr)²)`,
+//!   `r = Ω/ω_n`; its peak at `r_p = 1/√(1 − 2ζ²) = 1.0025101`
+//!   (`N_c = 5452.4962` rpm) is `(U/M) A_p`, `A_p = 1/(2ζ√(1 − ζ²)) = 10.011150`;
+//! - half-power ratios, the roots of `(1 − a) s² + (2a − 4aζ²) s − a = 0`,
+//!   `s = r²`, `a = A_p²/2`: `r_1 = 0.95568617`, `r_2 = 1.0569679`, so
+//!   `AF = r_p/(r_2 − r_1) = 9.8982328`;
+//! - the sweeps reach 1.25 × `max_speed_rpm` = 8750 rpm, past the critical
+//!   whatever the operating range;
+//! - required separation margins: `17 (1 − 1/(AF − 1.5)) = 14.975765` %
+//!   below the range, `min(26, 10 + 14.975765) = 24.975765` % above it.
+//!
+//! The shaft is a thousand times stiffer than steel, not infinitely stiff:
+//! its bending stiffness `48 E I/L³ = 4.9e10` N/m against the bearings' 2e7
+//! moves the mode by a few 1e-4 (the centre moves 4e-4 more than the
+//! journals), the tolerance of the amplitudes and speeds below (1e-3).
+
+use rotor_bearing::analysis::api_unbalance::{
+    ApiCaseKind, ApiRequest, ApiUnbalance, api_cases, api_unbalance, journal_static_loads,
+    overhung_mass,
+};
+use rotor_bearing::analysis::speed_range::default_top_speed;
+use rotor_bearing::analysis::unbalance::{OperatingRange, model_operating_range};
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
+
+const RPM: f64 = std::f64::consts::PI / 30.0;
+const MODEL: &str = include_str!("data/api_compressor.toml");
+const MASS: f64 = 61.653_755_826_699_69;
+const NC_RPM: f64 = 5452.496_188_632_287;
+const AF: f64 = 9.898_232_768_724_718;
+const A_P: f64 = 10.011_149_738_022_297;
+
+fn rotor(text: &str) -> Rotor {
+    let model = RotorModel::from_toml(text, "api_compressor.toml").unwrap();
+    Rotor::new(model).unwrap()
+}
+
+fn run(rotor: &Rotor, operating: OperatingRange) -> ApiUnbalance {
+    let (max, _) = default_top_speed(&rotor.model, Some(&operating));
+    let request = ApiRequest {
+        operating,
+        max,
+        points: 80,
+    };
+    api_unbalance(rotor, &request).unwrap()
+}
+
+fn range(min_rpm: f64, max_rpm: f64) -> OperatingRange {
+    OperatingRange {
+        min: min_rpm * RPM,
+        max: max_rpm * RPM,
+    }
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * b.abs()
+}
+
+/// The mid-span case at N = 6000 rpm, the critical (5452 rpm) inside the
+/// range 5000 … 6000 rpm: every number against the hand calculation.
+#[test]
+fn mid_span_case_equals_the_hand_calculation() {
+    let api = run(&rotor(MODEL), range(5000.0, 6000.0));
+    // A_vl = 25.4 √(12000/6000) = 35.92 µm, capped at 25.4 µm.
+    assert!((api.vibration_limit - 25.4e-6).abs() < 1e-15);
+    let case = &api.cases[0];
+    assert_eq!(case.kind, ApiCaseKind::MidSpan);
+    // W = M (both journals, 30.826878 kg each); U_b = 6350 · 61.653756/6000
+    // = 65.250225 g·mm; applied twice that, at the largest modal
+    // displacement: the centre (node 5) of the slightly bending shaft.
+    let p = case.planes[0];
+    assert_eq!(p.node, 4);
+    assert!(close(p.weight, MASS, 1e-12));
+    assert!(close(p.amount, 65.250_224_916_590_51e-6, 1e-12));
+    assert!(close(p.applied, 2.0 * 65.250_224_916_590_51e-6, 1e-12));
+    assert_eq!(case.criticals.len(), 1, "{:?}", case.criticals);
+    let c = &case.criticals[0];
+    assert!(close(c.peak.speed, NC_RPM * RPM, 1e-3), "{}", c.peak.speed / RPM);
+    let af = c.peak.amplification_factor.unwrap();
+    assert!(close(af, AF, 1e-3), "AF {af}");
+    // A_1 = 2 (U/M) A_p = 2 · 2 · 65.250225e-6/61.653756 · 10.011150 = 42.380534 µm pk-pk.
+    let a1 = 2.0 * 2.0 * 65.250_224_916_590_51e-6 / MASS * A_P;
+    assert!(close(a1, 42.380_533_890_961e-6, 1e-9));
+    assert!(close(c.a1, a1, 1e-3), "A1 {}", c.a1);
+    // S_cc = 25.4/42.380534 = 0.59933176.
+    assert!(close(c.scale_factor, 0.599_331_760_787_877, 1e-3));
+    // Inside the range, nearer its minimum: required 14.975765 %, actual
+    // −(5452.4962 − 5000)/5452.4962 = −8.2988813 %: FAIL.
+    let m = c.margin.unwrap();
+    assert!(close(m.required.unwrap(), 0.149_757_646, 1e-3));
+    assert!(close(m.actual, -0.082_988_813_376, 2e-3), "{}", m.actual);
+    assert!(!m.pass);
+    // The seal at the centre: scaled response S_cc A_1 = A_vl = 25.4 µm
+    // against 0.75 · 2 · 200 µm = 300 µm.
+    let seal = &c.clearances[0];
+    assert_eq!(seal.label, "seal balance_piston");
+    assert!(close(seal.scaled, 25.4e-6, 1e-9), "{}", seal.scaled);
+    assert!(close(seal.limit, 300e-6, 1e-12) && seal.pass);
+    // The quarter-spans, out of phase: nodes 3 and 7 (z = 0.25, 0.75 m), each
+    // W = M/2, at 0° and 180°; the conical mode they excite (√3 ω_n without
+    // its gyroscopic stiffening, 9444 rpm) lies above the sweep (8750 rpm).
+    let q = api.cases.last().unwrap();
+    assert_eq!(q.kind, ApiCaseKind::QuarterSpan);
+    assert_eq!([q.planes[0].node, q.planes[1].node], [2, 6]);
+    assert!(close(q.planes[0].weight, MASS / 2.0, 1e-12));
+    assert!((q.planes[1].phase - std::f64::consts::PI).abs() < 1e-15);
+    assert!(q.criticals.is_empty(), "{:?}", q.criticals);
+    assert_eq!(api.cases.len(), 2, "no overhang: no overhung case");
+}
+
+/// Without `--operating-rpm` the range is `speed_rpm` = 3000: the same
+/// critical passes (24.975765 % required above the range, actual
+/// (5452.4962 − 3000)/3000 = 81.749873 %); N = 3000 rpm doubles U_b, A_1 =
+/// 84.761068 µm, and A_vl/A_1 = 0.29967 is raised to S_cc = 0.5.
+#[test]
+fn the_same_critical_passes_without_the_range() {
+    let rotor = rotor(MODEL);
+    let operating = model_operating_range(&rotor).unwrap();
+    assert!(close(operating.max, 3000.0 * RPM, 1e-15));
+    let api = run(&rotor, operating);
+    let c = &api.cases[0].criticals[0];
+    let m = c.margin.unwrap();
+    assert!(close(m.required.unwrap(), 0.249_757_646, 1e-3));
+    assert!(close(m.actual, 0.817_498_729_5, 2e-3), "{}", m.actual);
+    assert!(m.pass);
+    assert!(close(c.a1, 84.761_067_781_922e-6, 1e-3), "{}", c.a1);
+    assert_eq!(c.scale_factor, 0.5);
+    assert!(close(c.clearances[0].scaled, 0.5 * c.a1, 1e-9));
+}
+
+/// Above 12000 rpm the limit falls: N = 15000 rpm, A_vl = 25.4 √0.8 =
+/// 22.718451 µm; U_b = 6350 · 61.653756/15000 = 26.100090 g·mm, A_1 =
+/// 16.952214 µm, S_cc = 1.3401466; the critical below the range 12000 …
+/// 15000 rpm by (12000 − 5452.4962)/5452.4962 = 120.08 % passes.
+#[test]
+fn the_limit_and_scale_factor_above_12000_rpm() {
+    let api = run(&rotor(MODEL), range(12000.0, 15000.0));
+    assert!(close(api.vibration_limit, 22.718_450_651_397_86e-6, 1e-12));
+    let case = &api.cases[0];
+    assert!(close(case.planes[0].amount, 26.100_089_966_636_2e-6, 1e-12));
+    let c = &case.criticals[0];
+    assert!(close(c.a1, 16.952_213_556_384_42e-6, 1e-3), "{}", c.a1);
+    assert!(close(c.scale_factor, 1.340_146_558_196_337, 1e-3));
+    let m = c.margin.unwrap();
+    assert!(close(m.actual, 1.200_826_847_9, 1e-3) && m.pass);
+}
+
+/// A seal whose clearance is 15 µm: 75 % of its 30 µm diametral clearance
+/// is 22.5 µm, below the scaled response A_vl = 25.4 µm: FAIL. (Without
+/// gravity: the journals' 30 µm sag would close so tight a seal; the API
+/// weights are masses, not the gravity load, and do not change.)
+#[test]
+fn a_tight_seal_fails_the_clearance_check() {
+    let text = MODEL
+        .replace("clearance = 200e-6", "clearance = 15e-6")
+        .replace("gravity = [0.0, -9.81, 0.0]", "gravity = [0.0, 0.0, 0.0]");
+    let api = run(&rotor(&text), range(5000.0, 6000.0));
+    let seal = &api.cases[0].criticals[0].clearances[0];
+    assert!(close(seal.limit, 22.5e-6, 1e-12));
+    assert!(close(seal.scaled, 25.4e-6, 1e-9));
+    assert!(!seal.pass);
+}
+
+/// The overhung case and two-bearing statics: the right bearing moved to
+/// node 7 (z = 0.75 m) and a 10 kg coupling hub at the free end (node 9,
+/// z = 1.0 m). Shaft elements of M/8 = 7.7067195 kg at their midpoints:
+/// `W_right = (M · 0.5 + 10 · 1.0)/0.75 = 54.435837` kg, `W_left = M + 10 −
+/// W_right = 17.217919` kg; outboard of the right bearing two elements and
+/// the hub, `2 M/8 + 10 = 25.413439` kg, placed at the hub;
+/// U_b = 6350 · 25.413439/6000 = 26.895890 g·mm.
+#[test]
+fn overhung_weight_and_journal_loads_by_statics() {
+    let text = MODEL.replace("node = 9\nkxx", "node = 7\nkxx")
+        + "\n[[disks]]\nname = \"coupling\"\nnode = 9\nmass = 10.0\npolar_inertia = 0.01\ndiametral_inertia = 0.005\n";
+    let rotor = rotor(&text);
+    let loads = journal_static_loads(&rotor.model, 0, 6);
+    assert!(close(loads[0], 17.217_918_608_899_9, 1e-12), "{loads:?}");
+    assert!(close(loads[1], 54.435_837_217_799_8, 1e-12));
+    assert!(close(
+        overhung_mass(&rotor.model, 6, true),
+        25.413_438_956_674_92,
+        1e-12
+    ));
+    assert_eq!(overhung_mass(&rotor.model, 0, false), 0.0);
+    let (cases, _) = api_cases(&rotor, 6000.0 * RPM).unwrap();
+    let (kind, planes) = &cases[1];
+    assert_eq!(*kind, ApiCaseKind::Overhung { last_end: true });
+    assert_eq!(planes[0].node, 8);
+    assert!(close(planes[0].amount, 26.895_889_562_480e-6, 1e-9));
+    assert_eq!(cases.len(), 3);
+}
