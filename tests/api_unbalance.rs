@@ -85,7 +85,11 @@ fn mid_span_case_equals_the_hand_calculation() {
     assert!(close(p.applied, 2.0 * 65.250_224_916_590_51e-6, 1e-12));
     assert_eq!(case.criticals.len(), 1, "{:?}", case.criticals);
     let c = &case.criticals[0];
-    assert!(close(c.peak.speed, NC_RPM * RPM, 1e-3), "{}", c.peak.speed / RPM);
+    assert!(
+        close(c.peak.speed, NC_RPM * RPM, 1e-3),
+        "{}",
+        c.peak.speed / RPM
+    );
     let af = c.peak.amplification_factor.unwrap();
     assert!(close(af, AF, 1e-3), "AF {af}");
     // A_1 = 2 (U/M) A_p = 2 · 2 · 65.250225e-6/61.653756 · 10.011150 = 42.380534 µm pk-pk.
@@ -107,8 +111,8 @@ fn mid_span_case_equals_the_hand_calculation() {
     assert!(close(seal.scaled, 25.4e-6, 1e-9), "{}", seal.scaled);
     assert!(close(seal.limit, 300e-6, 1e-12) && seal.pass);
     // The quarter-spans, out of phase: nodes 3 and 7 (z = 0.25, 0.75 m), each
-    // W = M/2, at 0° and 180°; the conical mode they excite (√3 ω_n without
-    // its gyroscopic stiffening, 9444 rpm) lies above the sweep (8750 rpm).
+    // W = M/2, at 0° and 180°; the conical mode they excite (about 9400 rpm,
+    // `rotor modes`) lies above the sweep (8750 rpm).
     let q = api.cases.last().unwrap();
     assert_eq!(q.kind, ApiCaseKind::QuarterSpan);
     assert_eq!([q.planes[0].node, q.planes[1].node], [2, 6]);
@@ -198,4 +202,84 @@ fn overhung_weight_and_journal_loads_by_statics() {
     assert_eq!(planes[0].node, 8);
     assert!(close(planes[0].amount, 26.895_889_562_480e-6, 1e-9));
     assert_eq!(cases.len(), 3);
+}
+
+/// `rotor unbalance` on the model written to a temporary directory.
+fn cli(text: &str, tag: &str, args: &[&str]) -> String {
+    let dir = std::env::temp_dir().join(format!("api_unbalance_{}_{tag}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("api_compressor.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("unbalance")
+        .arg(&path)
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::remove_dir_all(&dir).ok();
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// The command prints the library's cases: the mid-span critical FAILS with
+/// `--operating-rpm 5000:6000` and passes against `speed_rpm`; as `generic`
+/// (and without the key) the output is today's, byte for byte, with no API
+/// case.
+#[test]
+fn the_command_prints_the_cases_for_api_classes_only() {
+    let row = |out: &str| {
+        let at = out.find("case mid-span").expect("the mid-span case");
+        out[at..].lines().nth(2).unwrap().to_string()
+    };
+    let fail = cli(MODEL, "range", &["--operating-rpm", "5000:6000"]);
+    let r = row(&fail);
+    assert!(r.starts_with("probe mid") && r.ends_with("FAIL"), "{r}");
+    assert!(r.contains(" 42.39"), "A1 printed as the library's: {r}");
+    assert!(fail.contains("applied 130.5 g·mm at 0°"), "{fail}");
+    let pass = cli(MODEL, "speed", &[]);
+    assert!(row(&pass).ends_with("pass"), "{pass}");
+    let generic = cli(
+        &MODEL.replace("machine = \"compressor\"", "machine = \"generic\""),
+        "generic",
+        &["--operating-rpm", "5000:6000"],
+    );
+    let none = cli(
+        &MODEL.replace("machine = \"compressor\"\n", ""),
+        "none",
+        &["--operating-rpm", "5000:6000"],
+    );
+    assert_eq!(generic, none);
+    assert!(!generic.contains("API 684/617 unbalance cases"));
+    assert!(fail.starts_with(&generic), "the API cases are appended");
+    for class in ["steam_turbine", "pump"] {
+        let out = cli(
+            &MODEL.replace("\"compressor\"", &format!("\"{class}\"")),
+            class,
+            &["--operating-rpm", "5000:6000"],
+        );
+        assert_eq!(row(&out), r, "{class}");
+    }
+}
+
+/// The report's summary rows and table cells say what the command prints.
+#[test]
+fn the_report_rows_are_the_commands_cells() {
+    use rotor_bearing::report::api::summary_rows;
+    use rotor_bearing::report::text::api_critical_cells;
+    let api = run(&rotor(MODEL), range(5000.0, 6000.0));
+    let rows = summary_rows(&Ok(&api));
+    let c = &api.cases[0].criticals[0];
+    let cells = api_critical_cells(c);
+    assert_eq!(rows.len(), 1);
+    assert_eq!(rows[0][4].text, cells[8]);
+    assert_eq!(cells[8], "FAIL");
+    assert!(
+        rows[0][2]
+            .text
+            .contains(&format!("A1 {} µm pk-pk", cells[2]))
+    );
 }
