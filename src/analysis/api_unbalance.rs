@@ -306,12 +306,12 @@ fn plane(node: usize, weight: f64, mcs_rpm: f64, phase: f64) -> ApiPlane {
     }
 }
 
+/// A case and its planes, before its response is computed.
+pub type PlannedCase = (ApiCaseKind, Vec<ApiPlane>);
+
 /// The planes of every API case of `rotor` at maximum continuous speed `mcs`
 /// (rad/s), with the journal static loads (see the module's notes).
-pub fn api_cases(
-    rotor: &Rotor,
-    mcs: f64,
-) -> Result<(Vec<(ApiCaseKind, Vec<ApiPlane>)>, [f64; 2]), UnbalanceError> {
+pub fn api_cases(rotor: &Rotor, mcs: f64) -> Result<(Vec<PlannedCase>, [f64; 2]), UnbalanceError> {
     let model = &rotor.model;
     let (a, b) = bearing_span(model)?;
     let loads = journal_static_loads(model, a, b);
