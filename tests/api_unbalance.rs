@@ -283,3 +283,36 @@ fn the_report_rows_are_the_commands_cells() {
             .contains(&format!("A1 {} µm pk-pk", cells[2]))
     );
 }
+
+/// On fluid films the first forward modes at 3000 rpm are the films' own,
+/// heavily damped (ζ 0.98 and 0.73 on `models/jeffcott.toml`, `rotor
+/// modes`): the mid-span plane goes where the first mode that can resonate
+/// (ζ 0.26, the disk bouncing on the bent shaft) moves most, the disk at
+/// node 5, not a journal; W = 7850 · π/4 · 0.04² · 0.5 + 20 = 24.932375 kg.
+#[test]
+fn the_mid_span_plane_skips_the_films_overdamped_modes() {
+    let text = include_str!("../models/jeffcott.toml").replacen(
+        "speed_rpm = 3000",
+        "machine = \"compressor\"\nspeed_rpm = 3000",
+        1,
+    );
+    let (cases, loads) = api_cases(&rotor(&text), 3000.0 * RPM).unwrap();
+    let (kind, planes) = &cases[0];
+    assert_eq!(*kind, ApiCaseKind::MidSpan);
+    assert_eq!(planes[0].node, 4);
+    let w = 7850.0 * std::f64::consts::PI / 4.0 * 0.04 * 0.04 * 0.5 + 20.0;
+    assert!(close(planes[0].weight, w, 1e-12), "{}", planes[0].weight);
+    assert!(close(loads[0], w / 2.0, 1e-12) && close(loads[1], w / 2.0, 1e-12));
+    // The quarter-spans, out of phase, leave the disk's probe on the node of
+    // what they excite: its round-off (1e-18 m) makes no criticals; the
+    // mid-span case has the one peak of the disk (no AF: the sweep ends at
+    // 3750 rpm above it, as `rotor unbalance` says).
+    let api = run(&rotor(&text), range(2500.0, 3000.0));
+    for case in &api.cases {
+        for c in &case.criticals {
+            assert!(c.a1 > 1e-6, "{:?}: {c:?}", case.kind);
+        }
+    }
+    assert_eq!(api.cases[0].criticals.len(), 1);
+    assert_eq!(api.cases[0].criticals[0].point, "probe disk");
+}

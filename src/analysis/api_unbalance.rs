@@ -16,8 +16,8 @@
 //! **Cases** (API 684's placement for the first and second modes of a
 //! between-bearing rotor and for an overhang; ROSS `Report._mode_shape`):
 //! - *mid-span* (first mode, in phase): one plane at the node of largest
-//!   modal displacement of the first forward mode at `N` between the
-//!   bearings, `W` the sum of the journal static loads (the rotor's mass);
+//!   modal displacement of the first forward mode at `N` that can
+//!   resonate ([`RESONANT_DAMPING`]) between the bearings, `W` the sum of the journal static loads (the rotor's mass);
 //! - *overhung* (each end with a disk outboard of the bearings, e.g. a
 //!   coupling hub or an overhung impeller): one plane at the outermost disk,
 //!   `W` the static weight of everything outboard of that bearing;
@@ -26,7 +26,8 @@
 //!   of the journal on its side (two-bearing statics).
 //!
 //! **Judgement of each critical** (a peak of the response at the probes, or
-//! at the bearings when the model has no probes; peaks of several points
+//! at the bearings when the model has no probes or the case moves none of
+//! them beyond round-off, [`NEGLIGIBLE_PEAK`]; peaks of several points
 //! within [`SAME_CRITICAL`] of each other are one critical, represented by
 //! the largest): the amplification factor `AF = N_c/(N_2 − N_1)` (API 684
 //! SP6.8.2.1, half-power) and the separation margin of [`super::unbalance`]
@@ -49,7 +50,7 @@ use crate::rotor::Rotor;
 use crate::units::RAD_S_TO_RPM;
 
 use super::linear::node_xy;
-use super::modal::{ModalOptions, Whirl, modes_at};
+use super::modal::{ModalOptions, Mode, Whirl, modes_at};
 use super::shapes::node_orbits;
 use super::unbalance::{
     OperatingRange, Peak, ResponsePoint, SeparationMargin, UnbalanceError, major_semi_axis, peaks,
@@ -267,22 +268,29 @@ fn nearest_node(model: &RotorModel, z: f64) -> usize {
         .unwrap_or(0)
 }
 
+/// Damping ratio below which a mode can show a resonance peak (`AF = 1/(2ζ)
+/// > 1`): the heavily damped film modes below it are no critical speeds.
+pub const RESONANT_DAMPING: f64 = 0.5;
+
 /// The node between `a` and `b` where the first forward mode at `speed`
-/// (else the first mode) has its largest orbit; the mid-span node when the
-/// modes cannot be found.
+/// with `ζ <` [`RESONANT_DAMPING`] (else the first forward mode, else the
+/// first mode) has its largest orbit; the mid-span node when the modes
+/// cannot be found.
 fn first_mode_antinode(rotor: &Rotor, speed: f64, a: usize, b: usize) -> usize {
     let model = &rotor.model;
     let mid = nearest_node(model, 0.5 * (model.node_z[a] + model.node_z[b]));
     let options = ModalOptions {
-        modes: 4,
+        modes: 8,
         target_frequency: 0.0,
     };
     let Ok(modes) = modes_at(rotor, speed, &options) else {
         return mid;
     };
+    let resonant = |m: &&Mode| m.whirl == Whirl::Forward && m.damping_ratio < RESONANT_DAMPING;
     let Some(mode) = modes
         .iter()
-        .find(|m| m.whirl == Whirl::Forward)
+        .find(resonant)
+        .or(modes.iter().find(|m| m.whirl == Whirl::Forward))
         .or(modes.first())
     else {
         return mid;
@@ -399,26 +407,23 @@ pub fn api_unbalance(rotor: &Rotor, request: &ApiRequest) -> Result<ApiUnbalance
         }
         // The judged points: the probes, else the bearings. A point the case
         // does not move (a probe on the excited mode's node) answers
-        // round-off only: it is left out before the grid is refined on it.
+        // round-off only, against the largest response of any point: it is
+        // left out before the grid is refined on it, and when every probe
+        // is such a point the bearings are judged.
         let all = response_points(&excited);
         let probes = excited.model.probes.len();
-        let candidates: Vec<ResponsePoint> = if probes > 0 {
-            all[..probes].to_vec()
-        } else {
-            all.iter()
-                .skip(probes)
-                .zip(&excited.model.bearings)
-                .filter(|(_, b)| b.kind.is_bearing())
-                .map(|(p, _)| p.clone())
-                .collect()
-        };
-        let base = sweep(&excited, &speeds, &candidates)?;
+        let base = sweep(&excited, &speeds, &all)?;
         let peak_of = |p: usize| base.major(p).into_iter().fold(0.0, f64::max);
-        let largest = (0..candidates.len()).map(peak_of).fold(0.0, f64::max);
-        let judged: Vec<ResponsePoint> = (0..candidates.len())
-            .filter(|&p| peak_of(p) > NEGLIGIBLE_PEAK * largest)
-            .map(|p| candidates[p].clone())
-            .collect();
+        let largest = (0..all.len()).map(peak_of).fold(0.0, f64::max);
+        let moved = |p: &usize| peak_of(*p) > NEGLIGIBLE_PEAK * largest;
+        let mut chosen: Vec<usize> = (0..probes).filter(moved).collect();
+        if chosen.is_empty() {
+            chosen = (probes..all.len())
+                .filter(|&p| excited.model.bearings[p - probes].kind.is_bearing())
+                .filter(moved)
+                .collect();
+        }
+        let judged: Vec<ResponsePoint> = chosen.iter().map(|&p| all[p].clone()).collect();
         let refined = refined_sweep(&excited, &speeds, &judged)?;
         let mut found: Vec<Peak> = Vec::new();
         for p in 0..judged.len() {
