@@ -316,3 +316,40 @@ fn the_mid_span_plane_skips_the_films_overdamped_modes() {
     assert_eq!(api.cases[0].criticals.len(), 1);
     assert_eq!(api.cases[0].criticals[0].point, "probe disk");
 }
+
+/// `rotor report` of the compressor with the range: its unbalance section has
+/// the cases' table, and its summary the mid-span critical's FAIL row with
+/// the command's numbers.
+#[test]
+fn the_report_of_a_compressor_judges_its_api_cases() {
+    let dir = std::env::temp_dir().join(format!("api_unbalance_report_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let page = dir.join("report.html");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args([
+            "report",
+            "tests/data/api_compressor.toml",
+            "--operating-rpm",
+        ])
+        .arg("5000:6000")
+        .arg("--out")
+        .arg(&page)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let html = std::fs::read_to_string(&page).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    assert!(html.contains("id=\"api-unbalance\""));
+    let at = html.find(">API unbalance case<").expect("a summary row");
+    let row = &html[at..at + html[at..].find("</tr>").unwrap()];
+    assert!(
+        row.contains("mid-span (1st mode, in phase), probe mid"),
+        "{row}"
+    );
+    assert!(row.contains("A1 42.39"), "{row}");
+    assert!(row.contains("FAIL"), "{row}");
+}
