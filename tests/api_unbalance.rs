@@ -353,3 +353,46 @@ fn the_report_of_a_compressor_judges_its_api_cases() {
     assert!(row.contains("A1 42.39"), "{row}");
     assert!(row.contains("FAIL"), "{row}");
 }
+
+/// A seal standing on a pedestal is judged by the journal's motion relative
+/// to its housing: with the seal's 1e6 N/m coupling a 50 kg pedestal on
+/// 1e6 N/m, the scaled response is `S_cc · 2 r` of `X_journal − X_housing`
+/// (the pedestal's translations follow the nodes' DOFs on all DOFs), not of
+/// the journal alone.
+#[test]
+fn a_seal_on_a_pedestal_is_judged_relative_to_its_housing() {
+    use rotor_bearing::analysis::linear::node_xy;
+    use rotor_bearing::analysis::unbalance::{major_semi_axis, response_at};
+    use rotor_bearing::model::UnbalancePlane;
+    let text = MODEL.replace(
+        "kxx = [0.0, 0.0]",
+        "kxx = [1e6, 1e6]\nkyy = [1e6, 1e6]\npedestal = \"casing\"",
+    ) + "\n[[pedestals]]\nname = \"casing\"\nmass = 50.0\nkxx = 1e6\nkyy = 1e6\ncxx = 500.0\ncyy = 500.0\n";
+    let rotor = rotor(&text);
+    let api = run(&rotor, range(5000.0, 6000.0));
+    let case = &api.cases[0];
+    let c = &case.criticals[0];
+    let mut model = rotor.model.clone();
+    model.unbalances = case
+        .planes
+        .iter()
+        .map(|p| UnbalancePlane {
+            name: "u".into(),
+            node: p.node,
+            magnitude: p.applied,
+            phase: p.phase,
+        })
+        .collect();
+    let excited = Rotor::new(model).unwrap();
+    let q = response_at(&excited, c.peak.speed).unwrap();
+    let (x, y) = node_xy(&q, 4);
+    let at = 4 * rotor.model.node_count();
+    let relative = major_semi_axis((x - q[at], y - q[at + 1]));
+    let absolute = major_semi_axis((x, y));
+    let seal = &c.clearances[0];
+    assert!(close(seal.scaled, c.scale_factor * 2.0 * relative, 1e-12));
+    assert!(
+        (relative / absolute - 1.0).abs() > 0.01,
+        "the housing moves: {relative} against {absolute}"
+    );
+}

@@ -18,8 +18,9 @@
 //! - *mid-span* (first mode, in phase): one plane at the node of largest
 //!   modal displacement of the first forward mode at `N` that can
 //!   resonate ([`RESONANT_DAMPING`]) between the bearings, `W` the sum of the journal static loads (the rotor's mass);
-//! - *overhung* (each end with a disk outboard of the bearings, e.g. a
-//!   coupling hub or an overhung impeller): one plane at the outermost disk,
+//! - *overhung* (each end with a disk or point mass outboard of the
+//!   bearings, e.g. a coupling hub or an overhung impeller): one plane at the
+//!   outermost of them,
 //!   `W` the static weight of everything outboard of that bearing;
 //! - *quarter-span, out of phase* (second mode): planes at the nodes nearest
 //!   the bearing span's quarter points, 0° and 180°, each `W` the static load
@@ -40,13 +41,16 @@
 //! within `0.5 ≤ S_cc ≤ 6` (API 684 SP6.8.2.11 / API 617 (8th ed.) 4.8.2.11,
 //! as ROSS applies it: `Scc = min(max(A1/Amax, 0.5), 6)`); and at every
 //! close clearance (bearing, seal or rub with a clearance) the response at
-//! `N_c` scaled by `S_cc` against 75 % of the minimum running clearance
+//! `N_c` (the journal relative to its housing) scaled by `S_cc` against 75 % of the minimum running clearance
 //! (API 617): pk-pk major axis `2 S_cc r` against the diametral
 //! `0.75 · 2 C`, `C` the radial clearance the journal moves in
 //! ([`BearingKind::journal_clearance`](crate::bearing::BearingKind::journal_clearance)).
 
+use nalgebra::Complex;
+
+use crate::fe::DOF_PER_NODE;
 use crate::model::{RotorModel, UnbalancePlane};
-use crate::rotor::Rotor;
+use crate::rotor::{DOF_PER_PEDESTAL, Rotor};
 use crate::units::RAD_S_TO_RPM;
 
 use super::linear::node_xy;
@@ -56,6 +60,8 @@ use super::unbalance::{
     OperatingRange, Peak, ResponsePoint, SeparationMargin, UnbalanceError, major_semi_axis, peaks,
     refined_sweep, response_at, response_points, separation_margin, speed_grid, sweep,
 };
+
+type C64 = Complex<f64>;
 
 /// `U_b = 4 W/N` oz·in in SI: `6350 W/N` g·mm with `W` in kg and `N` in rpm.
 pub const UB_G_MM_PER_KG_RPM: f64 = 6350.0;
@@ -334,11 +340,13 @@ pub fn api_cases(rotor: &Rotor, mcs: f64) -> Result<(Vec<PlannedCase>, [f64; 2])
         )],
     )];
     for (last_end, bearing) in [(false, a), (true, b)] {
+        let outboard = |n: &usize| if last_end { *n > b } else { *n < a };
         let outer = model
             .disks
             .iter()
-            .filter(|d| if last_end { d.node > b } else { d.node < a })
             .map(|d| d.node)
+            .chain(model.point_masses.iter().map(|p| p.node))
+            .filter(outboard)
             .reduce(|p, q| if last_end { p.max(q) } else { p.min(q) });
         if let Some(node) = outer {
             let w = overhung_mass(model, bearing, last_end);
@@ -467,6 +475,20 @@ pub fn api_unbalance(rotor: &Rotor, request: &ApiRequest) -> Result<ApiUnbalance
     })
 }
 
+/// The journal of model bearing `b` relative to its housing (its pedestal's
+/// translation; the ground without one) in a response on all DOFs.
+fn relative_xy(rotor: &Rotor, q: &[C64], b: usize) -> (C64, C64) {
+    let placed = &rotor.model.bearings[b];
+    let (x, y) = node_xy(q, placed.node);
+    match placed.pedestal {
+        None => (x, y),
+        Some(p) => {
+            let at = rotor.model.node_count() * DOF_PER_NODE + p * DOF_PER_PEDESTAL;
+            (x - q[at], y - q[at + 1])
+        }
+    }
+}
+
 /// The judgement of one critical: margin, `A_1`, `S_cc`, and the response
 /// at `N_c` scaled by `S_cc` at every close clearance (bearing, seal or rub
 /// with a [`journal_clearance`](crate::bearing::BearingKind::journal_clearance);
@@ -494,7 +516,7 @@ fn judge(
         .filter(|(_, b)| !b.kind.is_magnetic_pull())
         .filter_map(|(k, b)| {
             let c = b.kind.journal_clearance()?;
-            let scaled = scc * 2.0 * major_semi_axis(node_xy(&q, b.node));
+            let scaled = scc * 2.0 * major_semi_axis(relative_xy(rotor, &q, k));
             let allowed = CLEARANCE_FRACTION * 2.0 * c;
             Some(ClearanceCheck {
                 label: labels[probes + k].label.clone(),
