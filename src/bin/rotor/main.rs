@@ -389,11 +389,7 @@ enum Command {
     /// Unbalance response over a speed range (Bode and polar plots), its peaks,
     /// amplification factors and API 684 separation margins.
     ///
-    /// For an API machine (`machine = "compressor" | "steam_turbine" | "pump"`)
-    /// it ends with the API 684/617 unbalance cases: mid-span, overhung and
-    /// quarter-span planes of twice 4W/N, each critical's AF, separation
-    /// margin, A_vl, scale factor and the scaled response against 75 % of
-    /// every bearing's and seal's running clearance.
+    /// An API machine (`machine = "compressor" | "steam_turbine" | "pump"`) also gets its API 684/617 unbalance cases.
     Unbalance {
         #[command(flatten)]
         model: ModelArg,
