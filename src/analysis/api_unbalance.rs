@@ -30,20 +30,22 @@
 //! at the bearings when the model has no probes or the case moves none of
 //! them beyond round-off, [`NEGLIGIBLE_PEAK`]; peaks of several points
 //! within [`SAME_CRITICAL`] of each other are one critical, represented by
-//! the largest): the amplification factor `AF = N_c/(N_2 − N_1)` (API 684
-//! SP6.8.2.1, half-power) and the separation margin of [`super::unbalance`]
-//! (API 684 SP6.8.2.10: none required for `AF < 2.5`; below the range
+//! the largest); clause numbers as ROSS `Report` cites them: the
+//! amplification factor `AF = N_c/(N_2 − N_1)` (API 684 SP6.8.2.1,
+//! half-power) and the separation margin of [`super::unbalance`] (API 684
+//! SP6.8.2.10: none required for `AF < 2.5`; below the range
 //! `min(16, 17 (1 − 1/(AF − 1.5)))` %, above it
 //! `min(26, 10 + 17 (1 − 1/(AF − 1.5)))` %); the vibration limit
 //! `A_vl = 25.4 √(12000/N)` µm pk-pk (API 684 SP6.8.2.11), at most 25.4 µm
-//! (the cap of API 617's mechanical-test limit, binding below 12000 rpm);
-//! the scale factor `S_cc = A_vl/A_1`, `A_1` the peak's pk-pk amplitude, kept
-//! within `0.5 ≤ S_cc ≤ 6` (API 684 SP6.8.2.11 / API 617 (8th ed.) 4.8.2.11,
-//! as ROSS applies it: `Scc = min(max(A1/Amax, 0.5), 6)`); and at every
-//! close clearance (bearing, seal or rub with a clearance) the response at
-//! `N_c` (the journal relative to its housing) scaled by `S_cc` against 75 % of the minimum running clearance
-//! (API 617): pk-pk major axis `2 S_cc r` against the diametral
-//! `0.75 · 2 C`, `C` the radial clearance the journal moves in
+//! (the cap of API 617's mechanical-test limit, binding below 12000 rpm;
+//! ROSS leaves it out); the scale factor `S_cc = A_vl/A_1`, `A_1` the
+//! peak's pk-pk amplitude, kept within `0.5 ≤ S_cc ≤ 6` (API 684 SP6.8.2.11,
+//! API 617 4.8.2.11; ROSS: `Scc = min(max(A1/Amax, 0.5), 6)` with its `A1`
+//! the limit); and at every close clearance (bearing, seal or rub with a
+//! clearance) the response at `N_c`, the journal relative to its housing,
+//! scaled by `S_cc` against 75 % of the minimum running clearance (API
+//! 617): pk-pk major axis `2 S_cc r` against the diametral `0.75 · 2 C`, `C`
+//! the radial clearance the journal moves in
 //! ([`BearingKind::journal_clearance`](crate::bearing::BearingKind::journal_clearance)).
 
 use nalgebra::Complex;
