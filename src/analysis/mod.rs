@@ -4,6 +4,7 @@
 //! points, mode-shape orbits, cross-coupling stability and the critical speed map.
 
 pub mod alignment;
+pub mod api_unbalance;
 pub mod backward_crossing;
 pub mod campbell;
 mod campbell_point;

@@ -47,6 +47,15 @@ impl MachineClass {
             .map_or("generic", |(_, n)| n)
     }
 
+    /// A machine judged by API 684/617 with its own unbalance cases
+    /// ([`crate::analysis::api_unbalance`]): compressor, steam turbine, pump.
+    pub fn is_api(self) -> bool {
+        matches!(
+            self,
+            MachineClass::Compressor | MachineClass::SteamTurbine | MachineClass::Pump
+        )
+    }
+
     /// A machine set of a hydraulic power or pumping plant (ISO 10816-5).
     pub fn is_hydro(self) -> bool {
         matches!(

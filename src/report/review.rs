@@ -6,6 +6,7 @@
 //! page and the single commands agree cell for cell.
 
 use crate::analysis::alignment::Alignment;
+use crate::analysis::api_unbalance::ApiUnbalance;
 use crate::analysis::campbell::CampbellStudy;
 use crate::analysis::modal::ModalResult;
 use crate::analysis::operating_point::BearingOperatingPoint;
@@ -429,6 +430,8 @@ pub struct SummaryInputs<'a> {
     pub runaway: f64,
     /// The housing vibration, for a hydro class.
     pub housing: Option<HousingStudy<'a>>,
+    /// The API unbalance cases, for an API class ([`super::api`]).
+    pub api: Option<Result<&'a ApiUnbalance, String>>,
 }
 
 /// The first-page summary: one row per judged item (check, item, value,
@@ -516,6 +519,9 @@ pub fn summary(inputs: &SummaryInputs) -> Table {
             }
         }
         Err(e) => failed(&mut rows, "unbalance response", e),
+    }
+    if let Some(api) = &inputs.api {
+        rows.extend(super::api::summary_rows(api));
     }
     match &inputs.stability {
         Ok(s) => {

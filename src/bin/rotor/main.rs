@@ -388,6 +388,8 @@ enum Command {
     },
     /// Unbalance response over a speed range (Bode and polar plots), its peaks,
     /// amplification factors and API 684 separation margins.
+    ///
+    /// An API machine (`machine = "compressor" | "steam_turbine" | "pump"`) also gets its API 684/617 unbalance cases.
     Unbalance {
         #[command(flatten)]
         model: ModelArg,

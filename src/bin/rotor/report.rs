@@ -10,6 +10,7 @@
 use std::path::{Path, PathBuf};
 
 use rotor_bearing::analysis::alignment::alignment;
+use rotor_bearing::analysis::api_unbalance::{ApiRequest, api_unbalance};
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
 use rotor_bearing::analysis::housing_vibration;
 use rotor_bearing::analysis::modal::ModalOptions;
@@ -32,6 +33,7 @@ use rotor_bearing::plot::{
     PlotError, RAD_S_TO_RPM, campbell_png, mode_shapes_png, rotor_png, stability_png, ucs_png,
     unbalance_png,
 };
+use rotor_bearing::report::api as api_report;
 use rotor_bearing::report::html::{Block, Section, Verdict, page};
 use rotor_bearing::report::hydro::{self, HousingStudy};
 use rotor_bearing::report::review::{self, SummaryInputs};
@@ -220,6 +222,20 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         housing_vibration::housing_vibration(rotor, speed, settle, record).map_err(|e| err(&e))
     });
 
+    // An API machine's unbalance cases, on the unbalance study's speeds.
+    let api = model.machine.is_api().then(|| {
+        let max = match &unbalance {
+            Ok(study) => study.sweep.speeds.last().copied().unwrap_or(top),
+            Err(_) => top,
+        };
+        let request = ApiRequest {
+            operating,
+            max,
+            points: DEFAULT_POINTS,
+        };
+        api_unbalance(rotor, &request).map_err(|e| err(&e))
+    });
+
     let summary = review::summary(&SummaryInputs {
         campbell: campbell.as_ref().map_err(Clone::clone),
         unbalance: unbalance.as_ref().map_err(Clone::clone),
@@ -229,6 +245,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         machine: model.machine,
         runaway: model.max_speed,
         housing: housing.as_ref().map(|h| housing_study(model, h)),
+        api: api.as_ref().map(|a| a.as_ref().map_err(Clone::clone)),
     });
     let overall = review::overall(&summary);
     let file_arg = req
@@ -309,6 +326,17 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             b
         }
         Err(e) => vec![Block::Failure(format!("unbalance response: {e}"))],
+    };
+    let blocks = match &api {
+        None => blocks,
+        Some(Ok(a)) => blocks
+            .into_iter()
+            .chain(api_report::api_blocks(a))
+            .collect(),
+        Some(Err(e)) => blocks
+            .into_iter()
+            .chain([Block::Failure(format!("API unbalance cases: {e}"))])
+            .collect(),
     };
     sections.push(section("unbalance", "Unbalance response", blocks));
 

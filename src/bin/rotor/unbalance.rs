@@ -3,6 +3,7 @@
 
 use std::path::PathBuf;
 
+use rotor_bearing::analysis::api_unbalance::{ApiRequest, api_unbalance};
 use rotor_bearing::analysis::unbalance::{
     OperatingRange, UnbalanceRequest, model_operating_range, unbalance_study, with_unbalance_at,
 };
@@ -79,7 +80,11 @@ pub fn unbalance(rotor: &Rotor, req: Request) -> Result<(), String> {
         Some(n) => format!("{} kg·m at node {n}", req.unbalance),
         None => "the model's unbalance planes".to_string(),
     };
-    let out = text::unbalance_study(&rotor.model.name, &what, &study, req.amplitude);
+    let mut out = text::unbalance_study(&rotor.model.name, &what, &study, req.amplitude);
+    if rotor.model.machine.is_api() {
+        out.push('\n');
+        out.push_str(&api_cases(rotor, &study, operating, req.points));
+    }
     if let Some(path) = req.csv {
         write_file(&path, &report_csv::unbalance(&study.sweep, req.amplitude))?;
     }
@@ -91,4 +96,29 @@ pub fn unbalance(rotor: &Rotor, req: Request) -> Result<(), String> {
     // Printed last: files are written even when stdout is a closed pipe.
     print!("{out}");
     Ok(())
+}
+
+/// The API 684/617 unbalance cases of an API machine, on the study's speed
+/// range, as text (or why they could not be run).
+pub fn api_cases(
+    rotor: &Rotor,
+    study: &rotor_bearing::analysis::unbalance::UnbalanceStudy,
+    operating: Option<OperatingRange>,
+    points: usize,
+) -> String {
+    let machine = rotor.model.machine.name();
+    let Some(operating) = operating else {
+        return format!(
+            "API unbalance cases (machine = {machine}): not run: no operating range (operating_rpm, speed_rpm or --operating-rpm) gives the maximum continuous speed\n"
+        );
+    };
+    let request = ApiRequest {
+        operating,
+        max: study.sweep.speeds.last().copied().unwrap_or(operating.max),
+        points,
+    };
+    match api_unbalance(rotor, &request) {
+        Ok(api) => text::api_unbalance(&api),
+        Err(e) => format!("API unbalance cases (machine = {machine}): not run: {e}\n"),
+    }
 }

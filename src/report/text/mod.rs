@@ -14,6 +14,7 @@ use crate::model::RotorModel;
 use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
 
+mod api_unbalance;
 mod element_points;
 mod modal;
 mod ring_down;
@@ -21,6 +22,9 @@ mod summary;
 mod synchronous;
 mod unbalance;
 
+pub use api_unbalance::{
+    api_critical_cells, api_unbalance, api_verdict, case_planes, worst_clearance,
+};
 pub use element_points::element_points;
 pub use modal::{
     ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
