@@ -20,7 +20,9 @@
 //!   measured over 2 s after the first second (the rows say whether a
 //!   journal touched its bearing: film down to 0).
 //!
-//! Medians of five batches for the floor. `cargo bench --bench step_floor`.
+//! Each window in five segments, the floor measured after each at the
+//! state it ends on; medians over the segments (the ratio the median of
+//! the segments' ratios). `cargo bench --bench step_floor`.
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -61,52 +63,70 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
-/// µs per internal step over `[from, to]` at communication points every
-/// [`COMM`], and the Newton iterations a step.
-fn steps(sim: &mut Simulator, from: f64, to: f64) -> (f64, f64, usize) {
+/// Cost of the steps over `[from, to]` at communication points every
+/// [`COMM`] against the floor: the window in five segments, each followed by
+/// the floor measured at the state it ends on (so that a load on the machine
+/// weighs on both); returns the medians over the segments of µs per step,
+/// µs per force-and-Jacobian pass, µs per banded solve and their ratio, the
+/// Newton iterations a step and the steps.
+fn measure(sim: &mut Simulator, from: f64, to: f64) -> [f64; 6] {
     sim.advance_to(from).unwrap();
     let before = sim.stats();
     let count = ((to - from) / COMM).round() as usize;
-    let t0 = Instant::now();
-    for k in 1..=count {
-        sim.advance_to(from + k as f64 * COMM).unwrap();
-        std::hint::black_box(sim.outputs().unwrap());
+    let segments = 5;
+    let (mut step, mut pass, mut solve, mut ratio) = (vec![], vec![], vec![], vec![]);
+    let mut k = 0;
+    for segment in 1..=segments {
+        let start = sim.stats().steps;
+        let t0 = Instant::now();
+        while k < count * segment / segments {
+            k += 1;
+            sim.advance_to(from + k as f64 * COMM).unwrap();
+            std::hint::black_box(sim.outputs().unwrap());
+        }
+        let n = (sim.stats().steps - start).max(1);
+        let per_step = t0.elapsed().as_secs_f64() / n as f64 * 1e6;
+        let (p, q) = floor(sim);
+        step.push(per_step);
+        pass.push(p);
+        solve.push(q);
+        ratio.push(per_step / (p + q));
     }
-    let wall = t0.elapsed().as_secs_f64();
     let after = sim.stats();
     let n = after.steps - before.steps;
-    (
-        wall / n as f64 * 1e6,
+    [
+        median(step),
+        median(pass),
+        median(solve),
+        median(ratio),
         (after.iterations - before.iterations) as f64 / n as f64,
-        n,
-    )
+        n as f64,
+    ]
 }
 
-/// µs of one force-and-Jacobian pass and of one banded solve at the state in hand.
+/// µs of one force-and-Jacobian pass and of one banded solve at the state in
+/// hand (batches of 400, the faster of two).
 fn floor(sim: &mut Simulator) -> (f64, f64) {
-    let reps = 2000;
-    let mut pass = Vec::new();
-    let mut solve = Vec::new();
-    for _ in 0..5 {
+    let reps = 400;
+    let (mut pass, mut solve) = (f64::INFINITY, f64::INFINITY);
+    for _ in 0..2 {
         let t0 = Instant::now();
         for _ in 0..reps {
             std::hint::black_box(sim.force_and_jacobian_pass().unwrap());
         }
-        pass.push(t0.elapsed().as_secs_f64() / reps as f64 * 1e6);
+        pass = pass.min(t0.elapsed().as_secs_f64() / reps as f64 * 1e6);
         let t0 = Instant::now();
         for _ in 0..reps {
             assert!(sim.banded_solve());
         }
-        solve.push(t0.elapsed().as_secs_f64() / reps as f64 * 1e6);
+        solve = solve.min(t0.elapsed().as_secs_f64() / reps as f64 * 1e6);
     }
-    (median(pass), median(solve))
+    (pass, solve)
 }
 
-fn row(name: &str, run: &str, sim: &mut Simulator, (step, newton, n): (f64, f64, usize)) {
-    let (pass, solve) = floor(sim);
+fn row(name: &str, run: &str, [step, pass, solve, ratio, newton, n]: [f64; 6]) {
     println!(
-        "| {name} | {run} | {n} | {newton:.2} | {step:.1} | {pass:.1} | {solve:.2} | **{:.1}** |",
-        step / (pass + solve)
+        "| {name} | {run} | {n} | {newton:.2} | {step:.1} | {pass:.2} | {solve:.2} | **{ratio:.1}** |"
     );
 }
 
@@ -125,15 +145,13 @@ fn main() {
         let mut sim = simulator(&model);
         sim.set_speed(rated, 0.0).unwrap();
         sim.settle_static().unwrap();
-        let counted = steps(&mut sim, 1.0, 5.0);
-        row(&name, "steady", &mut sim, counted);
+        row(&name, "steady", measure(&mut sim, 1.0, 5.0));
         // Start-up from rest.
         let mut sim = simulator(&model);
         sim.set_speed(0.0, 0.0).unwrap();
         sim.settle_static().unwrap();
         sim.set_speed(0.0, rated / 10.0).unwrap();
-        let counted = steps(&mut sim, 0.0, 4.0);
-        row(&name, "start-up from rest", &mut sim, counted);
+        row(&name, "start-up from rest", measure(&mut sim, 0.0, 4.0));
         // Field switching.
         let pulls: Vec<usize> = (0..model.bearings.len())
             .filter(|&k| model.bearings[k].kind.clone().set_excitation(1.0))
@@ -149,8 +167,7 @@ fn main() {
             for &k in &pulls {
                 sim.set_excitation(k, 1.0).unwrap();
             }
-            let counted = steps(&mut sim, 1.0, 3.0);
-            row(&name, "field switched on", &mut sim, counted);
+            row(&name, "field switched on", measure(&mut sim, 1.0, 3.0));
         }
         // Contact: ten times the unbalance.
         let mut heavy = model.clone();
@@ -160,7 +177,6 @@ fn main() {
         let mut sim = simulator(&heavy);
         sim.set_speed(rated, 0.0).unwrap();
         sim.settle_static().unwrap();
-        let counted = steps(&mut sim, 1.0, 3.0);
-        row(&name, "10x unbalance", &mut sim, counted);
+        row(&name, "10x unbalance", measure(&mut sim, 1.0, 3.0));
     }
 }
