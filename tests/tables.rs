@@ -518,3 +518,75 @@ fn campbell_log_decrements_include_the_seal() {
         );
     }
 }
+
+/// Issue 48: seven seal tables that end at trip speed, and a bearing table
+/// that starts above the diagram's lowest speed, each warn once in a
+/// Campbell run (which sweeps to 1.25 × the trip speed), naming the range of
+/// the diagram's speeds beyond the table on each side (the value the
+/// farthest), not one speed; the library's warning names exactly the speeds
+/// it was given outside the rows.
+#[test]
+fn a_campbell_run_beyond_seal_tables_warns_once_per_element_with_the_range() {
+    let seals: String = (1..=7)
+        .map(|k| {
+            format!(
+                "[[seals]]\nname = \"stage{k}\"\nnode = {}\nspeeds_rpm = [0, 2000, 4000]\nkxy = [0.0, 1e3, 4e3]\nkyx = [0.0, -1e3, -4e3]\n\n",
+                1 + k % 6
+            )
+        })
+        .collect();
+    let text = with_table_bearing(&inline_table())
+        .replace("speed_rpm = 1000", "max_speed_rpm = 4000\nspeed_rpm = 1000")
+        .replace("[[unbalance]]", &format!("{seals}[[unbalance]]"));
+    let model = RotorModel::from_toml(&text, "stages.toml").unwrap();
+    // The library: the speeds outside, by side, with the table's range.
+    let w: Vec<f64> = [100.0, 300.0, 2500.0, 4500.0, 5000.0]
+        .iter()
+        .map(|r| r * RPM)
+        .collect();
+    let warnings = model.table_speed_warnings(&w);
+    assert_eq!(warnings.len(), 8, "{warnings:?}");
+    assert_eq!(
+        warnings[0].to_string(),
+        "stages.toml: bearing non_drive_end = 5000: speeds 100 to 300 rpm and 4500 to 5000 rpm are outside its coefficient table (500 to 4000 rpm): the coefficients are held at the table's first and last values there"
+    );
+    for w in &warnings[1..] {
+        assert!(
+            w.to_string().ends_with(
+                "= 5000: speeds 4500 to 5000 rpm are above its coefficient table (0 to 4000 rpm): the coefficients are held at the table's last values there"
+            ),
+            "{w}"
+        );
+    }
+    // The command: one warning per table, its range the diagram's speeds.
+    let dir = std::env::temp_dir().join(format!("rotor_stage_tables_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("stages.toml");
+    std::fs::write(&path, &text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["campbell", "--steps", "8", "--modes", "4"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    let lines: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.contains("coefficient table"))
+        .collect();
+    assert_eq!(lines.len(), 8, "{stderr}");
+    for k in 1..=7 {
+        let line = lines
+            .iter()
+            .find(|l| l.contains(&format!("seal stage{k} = 5000:")))
+            .unwrap_or_else(|| panic!("stage{k} in {stderr}"));
+        // The grid's speeds above 4000 rpm: 4381.25 … 5000 (8 steps from 50).
+        assert!(
+            line.ends_with(
+                "speeds 4381.25 to 5000 rpm are above its coefficient table (0 to 4000 rpm): the coefficients are held at the table's last values there"
+            ),
+            "{line}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
