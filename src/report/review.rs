@@ -547,9 +547,7 @@ pub fn summary(inputs: &SummaryInputs) -> Table {
                 .into(),
                 delta.into(),
                 "log dec > 0".into(),
-                Cell::verdict(Verdict::of(
-                    !least.is_undamped() && least.log_decrement > 0.0,
-                )),
+                Cell::verdict(Verdict::of(text::log_dec_holds(least))),
             ]);
             match &s.level_one {
                 // API 617's Level I screening is not written for hydro units.

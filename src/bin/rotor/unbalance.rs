@@ -79,7 +79,20 @@ pub fn unbalance(rotor: &Rotor, req: Request) -> Result<(), String> {
         Some(n) => format!("{} kg·m at node {n}", req.unbalance),
         None => "the model's unbalance planes".to_string(),
     };
-    let out = text::unbalance_study(&rotor.model.name, &what, &study, req.amplitude);
+    let model = &rotor.model;
+    let out = if model.machine.is_hydro() {
+        // A hydro unit is judged by its runaway speed, not API 684's margins.
+        text::unbalance_heading(&model.name, &what, &study)
+            + &text::unbalance_runaway(
+                &study.sweep,
+                &study.rows,
+                req.amplitude,
+                model.max_speed,
+                model.machine.name(),
+            )
+    } else {
+        text::unbalance_study(&model.name, &what, &study, req.amplitude)
+    };
     if let Some(path) = req.csv {
         write_file(&path, &report_csv::unbalance(&study.sweep, req.amplitude))?;
     }

@@ -15,6 +15,7 @@ use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
 
 mod element_points;
+mod hydro_verdicts;
 mod modal;
 mod ring_down;
 mod summary;
@@ -22,6 +23,7 @@ mod synchronous;
 mod unbalance;
 
 pub use element_points::element_points;
+pub use hydro_verdicts::{log_dec_holds, stability_verdict, unbalance_runaway};
 pub use modal::{
     ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
     overdamped_roots, overdamped_summary, static_divergence, torsional_modes, zeta_and_log_dec,
@@ -31,7 +33,7 @@ pub use summary::{
     describe_force, describe_pedestal, describe_thrust_bearing, element_kind, model_summary,
 };
 pub use synchronous::synchronous_tables;
-pub use unbalance::{peak_cells, peak_table, unbalance_study};
+pub use unbalance::{peak_cells, peak_table, unbalance_heading, unbalance_study};
 
 /// A number without float noise: at most 6 significant digits, no trailing zeros.
 pub fn short(x: f64) -> String {
