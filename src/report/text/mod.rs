@@ -283,9 +283,21 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
                     format!("{}°", short(f.attitude_angle.to_degrees())),
                 )
             };
+            // A tilting pad's ratio is over the assembled (bearing) clearance.
+            let eccentricity = match f.eccentricity_over_pad_clearance() {
+                Some(over_pad) => format!(
+                    "e/C_b (bearing clearance) {eccentricity}, e/C_p (pad clearance) {}",
+                    if eccentricity == "0" {
+                        "0".to_string()
+                    } else {
+                        short(over_pad)
+                    }
+                ),
+                None => format!("ratio {eccentricity}"),
+            };
             writeln!(
                 s,
-                "  eccentricity ratio {eccentricity}, attitude angle {attitude}, minimum film thickness {} µm",
+                "  eccentricity {eccentricity}, attitude angle {attitude}, minimum film thickness {} µm",
                 short(f.min_film_thickness * 1e6)
             )
             .ok();
@@ -558,9 +570,18 @@ pub fn run_summary(model: &RotorModel, records: &[Outputs]) -> String {
                 .iter()
                 .map(|o| o.bearings[k].report.min_film_thickness)
                 .fold(f64::INFINITY, f64::min);
+            // A tilting pad's ratio is over the assembled (bearing) clearance.
+            let pads = film.is_some_and(|b| {
+                matches!(b.kind.short_film().as_ref(), BearingKind::TiltingPad(_))
+            });
             write!(
                 s,
-                ", eccentricity ratio up to {}, film down to {} µm",
+                ", eccentricity {} up to {}, film down to {} µm",
+                if pads {
+                    "e/C_b (bearing clearance)"
+                } else {
+                    "ratio"
+                },
                 short(e),
                 short(h * 1e6)
             )
