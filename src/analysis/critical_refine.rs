@@ -23,8 +23,11 @@ use nalgebra::Complex;
 
 use super::campbell_point::{CampbellPoint, CriticalSpeed};
 use super::linearize::linearized;
-use super::modal::{ModalError, ModalOptions, Mode, modal_analysis_at, mode_near};
+use super::modal::{
+    ModalError, ModalOptions, Mode, Whirl, modal_analysis_at, mode_near, orbit_radii,
+};
 use super::mode_tracking::{mac, translations};
+use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::rotor::Rotor;
 
 type C64 = Complex<f64>;
@@ -66,6 +69,44 @@ pub(crate) struct Bracket {
     pub branch: usize,
     pub start: Known,
     pub end: Known,
+}
+
+/// The share of the shape's forward or backward part (`Σ r_f²` against
+/// `Σ r_b²` over the nodes) at which a critical speed whose orbits whirl
+/// both ways along the shaft is named by the dominant sense: two to one,
+/// two thirds of the shape's norm in one sense.
+pub const DOMINANT_WHIRL_RATIO: f64 = 2.0;
+
+/// The whirl a critical speed is named by: the mode's own when every node
+/// whirls one way; otherwise (anisotropic supports — table bearings, plain
+/// films — make the orbits ellipses, and the overhung ends or the stations
+/// near a nodal point whirl the other way) the sense of the shape's
+/// dominant circular part, `x + iy = ½[(X + iY) e^{iωt} + conj(X − iY)
+/// e^{−iωt}]` summed over the rotor's `nodes`: forward when `Σ|X + iY|² ≥
+/// 2 Σ|X − iY|²` ([`DOMINANT_WHIRL_RATIO`]), backward the other way round,
+/// mixed only when neither dominates. The forward part is what unbalance
+/// excites.
+pub(crate) fn dominant_whirl(mode: &Mode, nodes: usize, speed: f64) -> Whirl {
+    if mode.whirl != Whirl::Mixed || speed == 0.0 {
+        return mode.whirl;
+    }
+    let (mut forward, mut backward) = (0.0, 0.0);
+    for k in 0..nodes {
+        let node = &mode.shape[k * DOF_PER_NODE..];
+        let (f, b) = orbit_radii(node[DOF_X], node[DOF_Y]);
+        forward += f * f;
+        backward += b * b;
+    }
+    if speed < 0.0 {
+        std::mem::swap(&mut forward, &mut backward);
+    }
+    if forward >= DOMINANT_WHIRL_RATIO * backward {
+        Whirl::Forward
+    } else if backward >= DOMINANT_WHIRL_RATIO * forward {
+        Whirl::Backward
+    } else {
+        Whirl::Mixed
+    }
 }
 
 /// `ω − hΩ` of the mode `m` at `speed`.
@@ -209,7 +250,7 @@ pub(crate) fn refine(
         harmonic,
         rank,
         branch: b,
-        whirl: mode.whirl,
+        whirl: dominant_whirl(&mode, rotor.dofs.node_count(), speed),
         damping_ratio: mode.damping_ratio,
     }))
 }
