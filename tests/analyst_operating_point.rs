@@ -433,6 +433,7 @@ fn a_tilting_pad_eccentricity_is_over_the_assembled_clearance_and_says_so() {
         e / c
     );
     assert!(get("min_film_thickness_m") >= 0.0);
+    assert!(rel(get("eccentricity_pad_clearance"), e / c) < 1e-12);
     // The printed label names the clearance, and gives e/C_p beside it.
     let stdout = String::from_utf8_lossy(&out.stdout);
     let label = format!(
