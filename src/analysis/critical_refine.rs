@@ -71,38 +71,41 @@ pub(crate) struct Bracket {
     pub end: Known,
 }
 
-/// The share of the shape's forward or backward part (`Σ r_f²` against
-/// `Σ r_b²` over the nodes) at which a critical speed whose orbits whirl
-/// both ways along the shaft is named by the dominant sense: two to one,
-/// two thirds of the shape's norm in one sense.
-pub const DOMINANT_WHIRL_RATIO: f64 = 2.0;
+/// The share of a mode's squared amplitude `Σ (r_f² + r_b²)` that the nodes
+/// whirling one way must carry for a critical speed whose nodes whirl both
+/// ways to be named by that sense.
+pub const DOMINANT_WHIRL_SHARE: f64 = 0.9;
 
 /// The whirl a critical speed is named by: the mode's own when every node
 /// whirls one way; otherwise (anisotropic supports — table bearings, plain
-/// films — make the orbits ellipses, and the overhung ends or the stations
-/// near a nodal point whirl the other way) the sense of the shape's
-/// dominant circular part, `x + iy = ½[(X + iY) e^{iωt} + conj(X − iY)
-/// e^{−iωt}]` summed over the rotor's `nodes`: forward when `Σ|X + iY|² ≥
-/// 2 Σ|X − iY|²` ([`DOMINANT_WHIRL_RATIO`]), backward the other way round,
-/// mixed only when neither dominates. The forward part is what unbalance
-/// excites.
+/// films — make the orbits ellipses, and the small orbits of the overhung
+/// ends or of the stations near a nodal point may turn the other way) the
+/// sense of the nodes that carry at least [`DOMINANT_WHIRL_SHARE`] of the
+/// shape's squared amplitude, each node's orbit `r_f² + r_b²` with its
+/// forward and backward radii `|X ± iY|/2` (a node within 1 % of planar
+/// counts for neither sense); mixed only when neither sense dominates.
 pub(crate) fn dominant_whirl(mode: &Mode, nodes: usize, speed: f64) -> Whirl {
     if mode.whirl != Whirl::Mixed || speed == 0.0 {
         return mode.whirl;
     }
-    let (mut forward, mut backward) = (0.0, 0.0);
+    let (mut forward, mut backward, mut total) = (0.0, 0.0, 0.0);
     for k in 0..nodes {
         let node = &mode.shape[k * DOF_PER_NODE..];
         let (f, b) = orbit_radii(node[DOF_X], node[DOF_Y]);
-        forward += f * f;
-        backward += b * b;
+        let size = f * f + b * b;
+        total += size;
+        if f > 1.01 * b {
+            forward += size;
+        } else if b > 1.01 * f {
+            backward += size;
+        }
     }
     if speed < 0.0 {
         std::mem::swap(&mut forward, &mut backward);
     }
-    if forward >= DOMINANT_WHIRL_RATIO * backward {
+    if forward >= DOMINANT_WHIRL_SHARE * total {
         Whirl::Forward
-    } else if backward >= DOMINANT_WHIRL_RATIO * forward {
+    } else if backward >= DOMINANT_WHIRL_SHARE * total {
         Whirl::Backward
     } else {
         Whirl::Mixed
