@@ -353,7 +353,9 @@ fn centred_vertical_journals_print_as_unloaded() {
             "  static load 0 N (unloaded), journal at x = 0 µm, y = 0 µm"
         );
         assert!(
-            lines[1].starts_with("  eccentricity ratio 0, attitude angle —, "),
+            lines[1].starts_with(
+                "  eccentricity e/C_b (bearing clearance) 0, e/C_p (pad clearance) 0, attitude angle —, "
+            ),
             "{}",
             lines[1]
         );
@@ -392,7 +394,8 @@ fn centred_vertical_journals_print_as_unloaded() {
 /// (1e-12), above 1 although `e/C` is below 1 and the film is not crossed
 /// (thinnest film ≥ 0); the operating-point paragraph of `docs/commands.md`,
 /// the FMU outputs of `docs/fmu.md`, `docs/bearings.md` and the FMU's own
-/// variable description say `e/C_b`.
+/// variable description say `e/C_b`, and so does the printed operating
+/// point, with `e/C_p = e/C` (over the pad clearance) beside it.
 #[test]
 fn a_tilting_pad_eccentricity_is_over_the_assembled_clearance_and_says_so() {
     let (c, m) = (1e-4, 0.4);
@@ -430,6 +433,18 @@ fn a_tilting_pad_eccentricity_is_over_the_assembled_clearance_and_says_so() {
         e / c
     );
     assert!(get("min_film_thickness_m") >= 0.0);
+    assert!(rel(get("eccentricity_pad_clearance"), e / c) < 1e-12);
+    // The printed label names the clearance, and gives e/C_p beside it.
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let label = format!(
+        "  eccentricity e/C_b (bearing clearance) {}, e/C_p (pad clearance) {}, attitude angle ",
+        short(ratio),
+        short(e / c)
+    );
+    assert!(
+        stdout.lines().any(|l| l.starts_with(&label)),
+        "{label} in\n{stdout}"
+    );
     let doc = |name: &str| {
         std::fs::read_to_string(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(name)).unwrap()
     };

@@ -518,3 +518,206 @@ fn campbell_log_decrements_include_the_seal() {
         );
     }
 }
+
+/// Issue 48: seven seal tables that end at trip speed, and a bearing table
+/// that starts above the diagram's lowest speed, each warn once in a
+/// Campbell run (which sweeps to 1.25 × the trip speed), naming the range of
+/// the diagram's speeds beyond the table on each side (the value the
+/// farthest), not one speed; the library's warning names exactly the speeds
+/// it was given outside the rows.
+#[test]
+fn a_campbell_run_beyond_seal_tables_warns_once_per_element_with_the_range() {
+    let seals: String = (1..=7)
+        .map(|k| {
+            format!(
+                "[[seals]]\nname = \"stage{k}\"\nnode = {}\nspeeds_rpm = [0, 2000, 4000]\nkxy = [0.0, 1e3, 4e3]\nkyx = [0.0, -1e3, -4e3]\n\n",
+                1 + k % 6
+            )
+        })
+        .collect();
+    let text = with_table_bearing(&inline_table())
+        .replace("speed_rpm = 1000", "max_speed_rpm = 4000\nspeed_rpm = 1000")
+        .replace("[[unbalance]]", &format!("{seals}[[unbalance]]"));
+    let model = RotorModel::from_toml(&text, "stages.toml").unwrap();
+    // The library: the speeds outside, by side, with the table's range.
+    let w: Vec<f64> = [100.0, 300.0, 2500.0, 4500.0, 5000.0]
+        .iter()
+        .map(|r| r * RPM)
+        .collect();
+    let warnings = model.table_speed_warnings(&w);
+    assert_eq!(warnings.len(), 8, "{warnings:?}");
+    assert_eq!(
+        warnings[0].to_string(),
+        "stages.toml: bearing non_drive_end = 5000: speeds 100 to 300 rpm and 4500 to 5000 rpm are outside its coefficient table (500 to 4000 rpm): the coefficients are held at the table's first and last values there"
+    );
+    for w in &warnings[1..] {
+        assert!(
+            w.to_string().ends_with(
+                "= 5000: speeds 4500 to 5000 rpm are above its coefficient table (0 to 4000 rpm): the coefficients are held at the table's last values there"
+            ),
+            "{w}"
+        );
+    }
+    // The command: one warning per table, its range the diagram's speeds.
+    let dir = std::env::temp_dir().join(format!("rotor_stage_tables_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("stages.toml");
+    std::fs::write(&path, &text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["campbell", "--steps", "8", "--modes", "4"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    let lines: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.contains("coefficient table"))
+        .collect();
+    assert_eq!(lines.len(), 8, "{stderr}");
+    for k in 1..=7 {
+        let line = lines
+            .iter()
+            .find(|l| l.contains(&format!("seal stage{k} = 5000:")))
+            .unwrap_or_else(|| panic!("stage{k} in {stderr}"));
+        // The grid's speeds above 4000 rpm: 4381.25 … 5000 (8 steps from 50).
+        assert!(
+            line.ends_with(
+                "speeds 4381.25 to 5000 rpm are above its coefficient table (0 to 4000 rpm): the coefficients are held at the table's last values there"
+            ),
+            "{line}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A compressor-like rotor (1.6 m × 120 mm shaft in 16 elements, five
+/// impellers) on two table bearings whose stiffness is strongly anisotropic
+/// and speed-dependent (kxx rising 0.5 → 2, kyy falling 2 → 0.5 × `s0` over
+/// 2000 … 13000 rpm, as a vendor's tilting-pad tables may run).
+fn anisotropic_table_rotor() -> String {
+    let speeds = [2000.0f64, 4000.0, 6000.0, 8000.0, 10000.0, 12000.0, 13000.0];
+    let list = |f: &dyn Fn(f64) -> f64| {
+        let v: Vec<String> = speeds.iter().map(|&s| format!("{:e}", f(s))).collect();
+        format!("[{}]", v.join(", "))
+    };
+    let table = |s0: f64| {
+        format!(
+            "type = \"table\"\nspeeds_rpm = {}\nkxx = {}\nkyy = {}\ncxx = {}\ncyy = {}\n",
+            list(&|s| s),
+            list(&|s| s0 * (0.5 + 1.5 * s / 13000.0)),
+            list(&|s| s0 * (2.0 - 1.5 * s / 13000.0)),
+            list(&|_| 0.3e-3 * s0),
+            list(&|_| 0.3e-3 * s0)
+        )
+    };
+    let disks: String = [5, 7, 9, 11, 13]
+        .iter()
+        .enumerate()
+        .map(|(k, n)| {
+            format!(
+                "[[disks]]\nname = \"impeller{}\"\nnode = {n}\nmaterial = \"steel\"\nouter_diameter = 0.38\ninner_diameter = 0.12\nwidth = 0.05\n\n",
+                k + 1
+            )
+        })
+        .collect();
+    format!(
+        "name = \"anisotropic_tables\"\nspeed_rpm = 10000\nmax_speed_rpm = 10500\n\n[[materials]]\nname = \"steel\"\nyoungs_modulus = 211e9\nshear_modulus = 81.2e9\ndensity = 7810.0\n\n[[shaft]]\nlength = 1.6\nouter_diameter = 0.12\nmaterial = \"steel\"\nelements = 16\n\n{disks}[[bearings]]\nname = \"drive_end\"\nnode = 2\n{}\n[[bearings]]\nname = \"non_drive_end\"\nnode = 16\n{}\n[[unbalance]]\nname = \"mid\"\nnode = 9\nmagnitude = 1e-4\nphase_deg = 0.0\n",
+        table(1e8),
+        table(0.8e8)
+    )
+}
+
+/// Issue 48: on anisotropic table bearings the orbits are ellipses and the
+/// small orbits of the overhung ends (or of the stations near a nodal point)
+/// whirl against the rest of the shaft, so a critical speed forward over
+/// nearly all its shape was labelled "mixed whirl". At each (not overdamped)
+/// critical the mode on the 1× line (a whole eigen-solve there) is split
+/// here into each node's forward and backward radii `|X ± iY|/2`: the label
+/// is the sense of the nodes carrying 90 % of `Σ (r_f² + r_b²)` (every node
+/// one way: the mode's own label, as before), mixed otherwise; at least two
+/// criticals have nodes whirling both ways and are named forward or backward
+/// (the old label: mixed), and the command prints the study's labels
+/// without a jump.
+#[test]
+fn criticals_on_anisotropic_table_bearings_are_named_by_their_dominant_whirl() {
+    use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
+    use rotor_bearing::analysis::modal::{Whirl, modal_analysis_at, orbit_radii};
+    let text = anisotropic_table_rotor();
+    let rotor = rotor(&text);
+    let study = campbell_study(&rotor, &CampbellRequest::default_for(None)).unwrap();
+    let options = ModalOptions {
+        modes: 8,
+        target_frequency: 0.0,
+    };
+    let mut both_ways = 0;
+    let criticals: Vec<_> = study
+        .criticals
+        .iter()
+        .filter(|c| !c.is_overdamped())
+        .collect();
+    assert!(criticals.len() >= 2, "{criticals:?}");
+    for c in &criticals {
+        let modes = modal_analysis_at(&rotor, c.speed, &options).unwrap().modes;
+        let mode = modes
+            .iter()
+            .min_by(|a, b| {
+                (a.damped_frequency - c.speed)
+                    .abs()
+                    .total_cmp(&(b.damped_frequency - c.speed).abs())
+            })
+            .unwrap();
+        assert!((mode.damped_frequency / c.speed - 1.0).abs() < 1e-6);
+        let (mut f2, mut b2, mut total) = (0.0, 0.0, 0.0);
+        let (mut f_nodes, mut b_nodes) = (0, 0);
+        for k in 0..rotor.model.node_count() {
+            let (f, b) = orbit_radii(mode.shape[4 * k], mode.shape[4 * k + 1]);
+            total += f * f + b * b;
+            if f > 1.01 * b {
+                f_nodes += 1;
+                f2 += f * f + b * b;
+            } else if b > 1.01 * f {
+                b_nodes += 1;
+                b2 += f * f + b * b;
+            }
+        }
+        // Every node one way: the mode's own whirl, as before; else the
+        // sense of the nodes carrying 90 % of the squared amplitude.
+        let want = if f2 >= 0.9 * total {
+            Whirl::Forward
+        } else if b2 >= 0.9 * total {
+            Whirl::Backward
+        } else {
+            Whirl::Mixed
+        };
+        assert_eq!(
+            c.whirl, want,
+            "{c:?}: forward {f2:e}, backward {b2:e} of {total:e}"
+        );
+        if f_nodes > 0 && b_nodes > 0 && want != Whirl::Mixed {
+            both_ways += 1;
+        }
+    }
+    assert!(both_ways >= 2, "{both_ways}");
+    let dir = std::env::temp_dir().join(format!("rotor_aniso_tables_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("m.toml");
+    std::fs::write(&path, &text).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .arg("campbell")
+        .arg(&path)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for c in &criticals {
+        let label = format!("branch {}  {} whirl", c.branch + 1, c.whirl.label());
+        assert!(stdout.contains(&label), "{label} in\n{stdout}");
+    }
+    assert!(!stdout.contains("jumps"), "{stdout}");
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -23,8 +23,11 @@ use nalgebra::Complex;
 
 use super::campbell_point::{CampbellPoint, CriticalSpeed};
 use super::linearize::linearized;
-use super::modal::{ModalError, ModalOptions, Mode, modal_analysis_at, mode_near};
+use super::modal::{
+    ModalError, ModalOptions, Mode, Whirl, modal_analysis_at, mode_near, orbit_radii,
+};
 use super::mode_tracking::{mac, translations};
+use crate::fe::{DOF_PER_NODE, DOF_X, DOF_Y};
 use crate::rotor::Rotor;
 
 type C64 = Complex<f64>;
@@ -66,6 +69,47 @@ pub(crate) struct Bracket {
     pub branch: usize,
     pub start: Known,
     pub end: Known,
+}
+
+/// The share of a mode's squared amplitude `Σ (r_f² + r_b²)` that the nodes
+/// whirling one way must carry for a critical speed whose nodes whirl both
+/// ways to be named by that sense.
+pub const DOMINANT_WHIRL_SHARE: f64 = 0.9;
+
+/// The whirl a critical speed is named by: the mode's own when every node
+/// whirls one way; otherwise (anisotropic supports — table bearings, plain
+/// films — make the orbits ellipses, and the small orbits of the overhung
+/// ends or of the stations near a nodal point may turn the other way) the
+/// sense of the nodes that carry at least [`DOMINANT_WHIRL_SHARE`] of the
+/// shape's squared amplitude, each node's orbit `r_f² + r_b²` with its
+/// forward and backward radii `|X ± iY|/2` (a node within 1 % of planar
+/// counts for neither sense); mixed only when neither sense dominates.
+pub(crate) fn dominant_whirl(mode: &Mode, nodes: usize, speed: f64) -> Whirl {
+    if mode.whirl != Whirl::Mixed || speed == 0.0 {
+        return mode.whirl;
+    }
+    let (mut forward, mut backward, mut total) = (0.0, 0.0, 0.0);
+    for k in 0..nodes {
+        let node = &mode.shape[k * DOF_PER_NODE..];
+        let (f, b) = orbit_radii(node[DOF_X], node[DOF_Y]);
+        let size = f * f + b * b;
+        total += size;
+        if f > 1.01 * b {
+            forward += size;
+        } else if b > 1.01 * f {
+            backward += size;
+        }
+    }
+    if speed < 0.0 {
+        std::mem::swap(&mut forward, &mut backward);
+    }
+    if forward >= DOMINANT_WHIRL_SHARE * total {
+        Whirl::Forward
+    } else if backward >= DOMINANT_WHIRL_SHARE * total {
+        Whirl::Backward
+    } else {
+        Whirl::Mixed
+    }
 }
 
 /// `ω − hΩ` of the mode `m` at `speed`.
@@ -209,7 +253,7 @@ pub(crate) fn refine(
         harmonic,
         rank,
         branch: b,
-        whirl: mode.whirl,
+        whirl: dominant_whirl(&mode, rotor.dofs.node_count(), speed),
         damping_ratio: mode.damping_ratio,
     }))
 }

@@ -72,9 +72,20 @@ pub struct FilmState {
     pub power_loss: f64,
     /// Pads of a tilting-pad bearing, in model order (empty otherwise).
     pub pads: Vec<PadState>,
+    /// The machined pad clearance `C_p` (m) of a tilting-pad bearing (its
+    /// `clearance`, `C_b = C_p (1 − m)`), `None` for every other kind.
+    pub pad_clearance: Option<f64>,
 }
 
 impl FilmState {
+    /// `e/C_p`, the journal's offset over the machined pad clearance, of a
+    /// tilting-pad bearing (whose [`eccentricity`](Self::eccentricity) is
+    /// `e/C_b`); `None` for every other kind.
+    pub fn eccentricity_over_pad_clearance(&self) -> Option<f64> {
+        self.pad_clearance
+            .map(|c_p| self.eccentricity * self.clearance / c_p)
+    }
+
     /// Whether the bearing has a film geometry (a clearance): a table
     /// bearing has none, so its eccentricity, attitude angle and film
     /// thickness are not defined (reports leave them empty, not 0, which
@@ -287,6 +298,10 @@ pub fn operating_point(
                 tilt_offset += n_pads;
                 let q: Vec<f64> = j.iter().chain(tilts).copied().collect();
                 let report = bearing.report(&q, &vec![0.0; q.len()], speed, eval);
+                let pad_clearance = match kind.short_film().as_ref() {
+                    BearingKind::TiltingPad(tp) => Some(tp.clearance),
+                    _ => None,
+                };
                 let pads = match kind.short_film().as_ref() {
                     BearingKind::TiltingPad(tp) => tp
                         .pads
@@ -318,6 +333,7 @@ pub fn operating_point(
                         contact_force: report.contact_force,
                         power_loss: report.power_loss,
                         pads,
+                        pad_clearance,
                     }),
                     stiffness: coefficients.stiffness,
                     damping: coefficients.damping,

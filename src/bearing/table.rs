@@ -108,6 +108,57 @@ impl CoefficientTable {
         )
     }
 
+    /// What a front end says, once for the whole analysis, when some of its
+    /// `speeds` (rad/s) lie outside the table's rows: the range of those
+    /// speeds on each side and the table's range (one speed alone:
+    /// [`outside_message`](Self::outside_message)). `None` when the table
+    /// covers every speed.
+    pub fn outside_speeds_message(&self, speeds: &[f64]) -> Option<String> {
+        let (lo, hi) = self.range();
+        let rpm = |w: f64| (w * 30.0 / std::f64::consts::PI * 1e3).round() / 1e3;
+        let side = |below: bool| {
+            let mut out = speeds
+                .iter()
+                .copied()
+                .filter(|&w| !self.covers(w) && (w < lo) == below);
+            let first = out.next()?;
+            Some(out.fold((first, first), |(a, b), w| (a.min(w), b.max(w))))
+        };
+        let (below, above) = (side(true), side(false));
+        let ends = |(a, b): (f64, f64)| {
+            if rpm(a) == rpm(b) {
+                format!("{} rpm", rpm(a))
+            } else {
+                format!("{} to {} rpm", rpm(a), rpm(b))
+            }
+        };
+        match (below, above) {
+            (None, None) => None,
+            (Some((a, b)), None) | (None, Some((a, b))) if rpm(a) == rpm(b) => {
+                Some(self.outside_message(a))
+            }
+            (Some(r), None) => Some(format!(
+                "speeds {} are below its coefficient table ({} to {} rpm): the coefficients are held at the table's first values there",
+                ends(r),
+                rpm(lo),
+                rpm(hi)
+            )),
+            (None, Some(r)) => Some(format!(
+                "speeds {} are above its coefficient table ({} to {} rpm): the coefficients are held at the table's last values there",
+                ends(r),
+                rpm(lo),
+                rpm(hi)
+            )),
+            (Some(r), Some(t)) => Some(format!(
+                "speeds {} and {} are outside its coefficient table ({} to {} rpm): the coefficients are held at the table's first and last values there",
+                ends(r),
+                ends(t),
+                rpm(lo),
+                rpm(hi)
+            )),
+        }
+    }
+
     /// `K` and `C` at `speed` (rad/s), row-major.
     pub fn at(&self, speed: f64) -> ([[f64; 2]; 2], [[f64; 2]; 2]) {
         let v: [f64; 8] = std::array::from_fn(|k| self.interpolants[k].at(speed));

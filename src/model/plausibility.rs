@@ -312,8 +312,9 @@ impl RotorModel {
     }
 
     /// One warning for each coefficient table (table bearing or seal) that an
-    /// analysis at `speeds` (rad/s) asks for a speed outside its rows, naming
-    /// the farthest such speed and the table's range; its end values hold there.
+    /// analysis at `speeds` (rad/s) asks for speeds outside its rows, naming
+    /// the range of those speeds on each side and the table's range (its end
+    /// values hold there); the warning's value is the farthest such speed.
     pub fn table_speed_warnings(&self, speeds: &[f64]) -> Vec<ModelWarning> {
         let mut warnings = Vec::new();
         for b in &self.bearings {
@@ -330,7 +331,7 @@ impl RotorModel {
                         .abs()
                         .total_cmp(&(b - b.clamp(lo, hi)).abs())
                 });
-            if let Some(speed) = outside {
+            if let (Some(speed), Some(problem)) = (outside, table.outside_speeds_message(speeds)) {
                 warnings.push(ModelWarning {
                     file: self.source.clone(),
                     field: format!(
@@ -339,7 +340,7 @@ impl RotorModel {
                         b.name
                     ),
                     value: (speed * 30.0 / std::f64::consts::PI * 1e3).round() / 1e3,
-                    problem: table.outside_message(speed),
+                    problem,
                 });
             }
         }

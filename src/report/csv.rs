@@ -332,10 +332,12 @@ fn response_table(
 /// position (m), eccentricity ratio, attitude angle (°), minimum film thickness
 /// (m), friction torque (N·m), power loss (W) (empty for linear bearings; the
 /// eccentricity, attitude and film thickness empty for table bearings), then
-/// K (N/m) and C (N·s/m) row-major.
+/// K (N/m) and C (N·s/m) row-major, and last a tilting-pad bearing's `e/C_p`
+/// over its pad clearance (its `eccentricity` is `e/C_b`; empty for other
+/// kinds).
 pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
     let mut out = String::from(
-        "speed_rpm,bearing,load_N,fx_N,fy_N,x_m,y_m,eccentricity,attitude_angle_deg,min_film_thickness_m,friction_torque_Nm,power_loss_W,kxx_N_m,kxy_N_m,kyx_N_m,kyy_N_m,cxx_Ns_m,cxy_Ns_m,cyx_Ns_m,cyy_Ns_m\n",
+        "speed_rpm,bearing,load_N,fx_N,fy_N,x_m,y_m,eccentricity,attitude_angle_deg,min_film_thickness_m,friction_torque_Nm,power_loss_W,kxx_N_m,kxy_N_m,kyx_N_m,kyy_N_m,cxx_Ns_m,cxy_Ns_m,cyx_Ns_m,cyy_Ns_m,eccentricity_pad_clearance\n",
     );
     for p in points {
         write!(
@@ -362,6 +364,15 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
         .ok();
         for v in p.stiffness.iter().chain(&p.damping).flatten() {
             write!(out, ",{v}").ok();
+        }
+        // e/C_p of a tilting-pad bearing (its `eccentricity` is e/C_b).
+        out.push(',');
+        if let Some(e) = p
+            .film
+            .as_ref()
+            .and_then(|f| f.eccentricity_over_pad_clearance())
+        {
+            write!(out, "{e}").ok();
         }
         out.push('\n');
     }

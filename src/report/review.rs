@@ -295,7 +295,16 @@ pub fn operating_blocks(points: &[BearingOperatingPoint]) -> Vec<Block> {
             vec![
                 p.name.clone().into(),
                 load.into(),
-                geometry.map_or_else(dash, |f| short(f.eccentricity).into()),
+                // A tilting pad's ε is over the assembled (bearing) clearance.
+                geometry.map_or_else(dash, |f| match f.eccentricity_over_pad_clearance() {
+                    Some(over_pad) => format!(
+                        "{} (e/C_b, bearing clearance; e/C_p {} over the pad clearance)",
+                        short(f.eccentricity),
+                        short(over_pad)
+                    )
+                    .into(),
+                    None => short(f.eccentricity).into(),
+                }),
                 attitude.into(),
                 geometry.map_or_else(dash, |f| short(f.min_film_thickness * 1e6).into()),
                 film.map_or_else(dash, |f| short(f.friction_torque).into()),
@@ -553,9 +562,7 @@ pub fn summary(inputs: &SummaryInputs) -> Table {
                 .into(),
                 delta.into(),
                 "log dec > 0".into(),
-                Cell::verdict(Verdict::of(
-                    !least.is_undamped() && least.log_decrement > 0.0,
-                )),
+                Cell::verdict(Verdict::of(text::log_dec_holds(least))),
             ]);
             match &s.level_one {
                 // API 617's Level I screening is not written for hydro units.

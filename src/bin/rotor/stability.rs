@@ -93,12 +93,20 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             req.rpm
         ));
     }
+    let machine = rotor.model.machine;
+    // API 617's Level I screening is not written for hydro units.
+    if machine.is_hydro() && req.stages.is_some() {
+        eprintln!(
+            "note: --power, --impeller-diameter and --flow-width are not used: machine = {} is judged by its log decrement, not by API 617 Level I",
+            machine.name()
+        );
+    }
     let request = StabilityRequest {
         sites: sites(rotor, req.at.as_deref())?,
         q_max: req.q_max,
         points: req.points,
         modes: req.modes,
-        stages: req.stages,
+        stages: req.stages.filter(|_| !machine.is_hydro()),
         ..StabilityRequest::at(req.rpm / RAD_S_TO_RPM)
     };
     crate::warn_table_speeds(&rotor.model, &[req.rpm / RAD_S_TO_RPM]);
@@ -107,7 +115,10 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     let result = stability_study(rotor, &request)
         .map_err(|e| format!("{} at {} rpm: {e}", rotor.model.name, req.rpm))?;
     let labels: Vec<String> = result.sites.iter().map(|&n| site_label(rotor, n)).collect();
-    let out = text::stability(&result, &labels);
+    let mut out = text::stability(&result, &labels);
+    if machine.is_hydro() {
+        out.push_str(&text::stability_verdict(&result, machine.name()));
+    }
     if let Some(path) = req.csv {
         write_file(&path, &report_csv::stability(&result))?;
     }

@@ -80,8 +80,21 @@ pub fn unbalance(rotor: &Rotor, req: Request) -> Result<(), String> {
         Some(n) => format!("{} kg·m at node {n}", req.unbalance),
         None => "the model's unbalance planes".to_string(),
     };
-    let mut out = text::unbalance_study(&rotor.model.name, &what, &study, req.amplitude);
-    if rotor.model.machine.is_api() {
+    let model = &rotor.model;
+    let mut out = if model.machine.is_hydro() {
+        // A hydro unit is judged by its runaway speed, not API 684's margins.
+        text::unbalance_heading(&model.name, &what, &study)
+            + &text::unbalance_runaway(
+                &study.sweep,
+                &study.rows,
+                req.amplitude,
+                model.max_speed,
+                model.machine.name(),
+            )
+    } else {
+        text::unbalance_study(&model.name, &what, &study, req.amplitude)
+    };
+    if model.machine.is_api() {
         out.push('\n');
         out.push_str(&api_cases(rotor, &study, operating, req.points));
     }

@@ -16,6 +16,7 @@ use crate::units::RAD_S_TO_RPM;
 
 mod api_unbalance;
 mod element_points;
+mod hydro_verdicts;
 mod modal;
 mod ring_down;
 mod summary;
@@ -26,6 +27,7 @@ pub use api_unbalance::{
     api_critical_cells, api_unbalance, api_verdict, case_planes, worst_clearance,
 };
 pub use element_points::element_points;
+pub use hydro_verdicts::{log_dec_holds, stability_verdict, unbalance_runaway};
 pub use modal::{
     ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
     overdamped_roots, overdamped_summary, static_divergence, torsional_modes, zeta_and_log_dec,
@@ -35,7 +37,7 @@ pub use summary::{
     describe_force, describe_pedestal, describe_thrust_bearing, element_kind, model_summary,
 };
 pub use synchronous::synchronous_tables;
-pub use unbalance::{peak_cells, peak_table, unbalance_study};
+pub use unbalance::{peak_cells, peak_table, unbalance_heading, unbalance_study};
 
 /// A number without float noise: at most 6 significant digits, no trailing zeros.
 pub fn short(x: f64) -> String {
@@ -285,9 +287,21 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
                     format!("{}°", short(f.attitude_angle.to_degrees())),
                 )
             };
+            // A tilting pad's ratio is over the assembled (bearing) clearance.
+            let eccentricity = match f.eccentricity_over_pad_clearance() {
+                Some(over_pad) => format!(
+                    "e/C_b (bearing clearance) {eccentricity}, e/C_p (pad clearance) {}",
+                    if eccentricity == "0" {
+                        "0".to_string()
+                    } else {
+                        short(over_pad)
+                    }
+                ),
+                None => format!("ratio {eccentricity}"),
+            };
             writeln!(
                 s,
-                "  eccentricity ratio {eccentricity}, attitude angle {attitude}, minimum film thickness {} µm",
+                "  eccentricity {eccentricity}, attitude angle {attitude}, minimum film thickness {} µm",
                 short(f.min_film_thickness * 1e6)
             )
             .ok();
@@ -560,9 +574,18 @@ pub fn run_summary(model: &RotorModel, records: &[Outputs]) -> String {
                 .iter()
                 .map(|o| o.bearings[k].report.min_film_thickness)
                 .fold(f64::INFINITY, f64::min);
+            // A tilting pad's ratio is over the assembled (bearing) clearance.
+            let pads = film.is_some_and(|b| {
+                matches!(b.kind.short_film().as_ref(), BearingKind::TiltingPad(_))
+            });
             write!(
                 s,
-                ", eccentricity ratio up to {}, film down to {} µm",
+                ", eccentricity {} up to {}, film down to {} µm",
+                if pads {
+                    "e/C_b (bearing clearance)"
+                } else {
+                    "ratio"
+                },
                 short(e),
                 short(h * 1e6)
             )

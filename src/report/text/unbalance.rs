@@ -119,6 +119,27 @@ pub fn unbalance_study(
     study: &UnbalanceStudy,
     amplitude: Amplitude,
 ) -> String {
+    let mut s = unbalance_heading(name, excitation, study);
+    match &study.operating {
+        Some(r) => writeln!(
+            s,
+            "operating range {:.1} … {:.1} rpm (API 684 separation margins)",
+            r.min * RAD_S_TO_RPM,
+            r.max * RAD_S_TO_RPM
+        ),
+        None => writeln!(
+            s,
+            "no operating range (speed_rpm or --operating-rpm): margins not judged"
+        ),
+    }
+    .ok();
+    s.push_str(&peak_table(&study.sweep, &study.rows, amplitude));
+    s
+}
+
+/// The first lines of [`unbalance_study`]: the excitation, the speed range
+/// with the origin of its top, and the refined grid.
+pub fn unbalance_heading(name: &str, excitation: &str, study: &UnbalanceStudy) -> String {
     let speeds = &study.sweep.speeds;
     let (lo, hi) = (
         speeds.first().copied().unwrap_or(0.0),
@@ -141,20 +162,6 @@ pub fn unbalance_study(
         REFINE_AMPLITUDE_RATIO
     )
     .ok();
-    match &study.operating {
-        Some(r) => writeln!(
-            s,
-            "operating range {:.1} … {:.1} rpm (API 684 separation margins)",
-            r.min * RAD_S_TO_RPM,
-            r.max * RAD_S_TO_RPM
-        ),
-        None => writeln!(
-            s,
-            "no operating range (speed_rpm or --operating-rpm): margins not judged"
-        ),
-    }
-    .ok();
-    s.push_str(&peak_table(&study.sweep, &study.rows, amplitude));
     s
 }
 
