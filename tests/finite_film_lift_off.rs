@@ -13,8 +13,10 @@
 use std::path::{Path, PathBuf};
 
 use rotor_bearing::model::RotorModel;
-use rotor_bearing::rotor::Rotor;
-use rotor_bearing::solver::{Outputs, Simulator, SolverOptions, SpeedProfile, record};
+
+#[path = "common/lift_off.rs"]
+mod lift_off;
+use lift_off::{contact, ramp, settled, static_lift_off};
 
 fn jeffcott(film: &str, dir: &Path) -> RotorModel {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml");
@@ -22,57 +24,6 @@ fn jeffcott(film: &str, dir: &Path) -> RotorModel {
         .unwrap()
         .replace("type = \"plain\"\n", &format!("type = \"plain\"\n{film}"));
     RotorModel::from_toml_cached(&text, "jeffcott_lift_off.toml", Some(dir)).unwrap()
-}
-
-/// Largest contact force over the bearings (N).
-fn contact(o: &Outputs) -> f64 {
-    o.bearings
-        .iter()
-        .map(|b| b.report.contact_force)
-        .fold(0.0, f64::max)
-}
-
-fn settled(model: &RotorModel, speed: f64) -> Outputs {
-    let mut sim =
-        Simulator::new(Rotor::new(model.clone()).unwrap(), SolverOptions::default()).unwrap();
-    sim.set_speed(speed, 0.0).unwrap();
-    sim.settle_static().unwrap();
-    sim.outputs().unwrap()
-}
-
-/// The lowest speed (rad/s) whose static equilibrium keeps every journal
-/// clear of contact, by bisection between `lo` (in contact) and `hi` (clear).
-fn static_lift_off(model: &RotorModel, mut lo: f64, mut hi: f64) -> f64 {
-    let clear = |speed: f64| contact(&settled(model, speed)) == 0.0;
-    assert!(
-        !clear(lo) && clear(hi),
-        "no lift-off between {lo} and {hi} rad/s"
-    );
-    for _ in 0..40 {
-        let mid = 0.5 * (lo + hi);
-        if clear(mid) { hi = mid } else { lo = mid }
-    }
-    hi
-}
-
-/// `model` settled at `from` (rad/s), then ramped to `to` over `ramp` (s),
-/// 10 ms steps, outputs every 37 steps.
-fn ramp(model: &RotorModel, (from, to): (f64, f64), ramp: f64) -> Vec<Outputs> {
-    let step = 1e-2;
-    let options = SolverOptions {
-        time_step: step,
-        ..SolverOptions::default()
-    };
-    let mut sim = Simulator::new(Rotor::new(model.clone()).unwrap(), options).unwrap();
-    sim.set_speed(from, 0.0).unwrap();
-    sim.settle_static().unwrap();
-    let profile = SpeedProfile::Ramp {
-        from,
-        to,
-        duration: ramp,
-    };
-    record(&mut sim, &profile, ramp, 37.0 * step, |_, _| {})
-        .unwrap_or_else(|e| panic!("ramp {from} → {to} rad/s: {e}"))
 }
 
 #[test]
@@ -107,7 +58,7 @@ fn a_rotor_at_rest_lifts_off_on_finite_films_as_on_short_ones() {
             "{cavitation}: static lift-off {lift_off:.4} rad/s on the finite film, {short_lift_off:.4} on the short film"
         );
         let (below, above) = (0.8 * lift_off, 1.2 * lift_off);
-        let up = ramp(&finite, (below, above), 200.0);
+        let up = ramp(&finite, (below, above), (200.0, 0.0), 1e-2);
         assert!(contact(&up[0]) > 0.0, "below lift-off the journals touch");
         let last_contact = up.iter().rposition(|o| contact(o) > 0.0).unwrap();
         let lift = up[last_contact + 1].speed;
@@ -116,7 +67,7 @@ fn a_rotor_at_rest_lifts_off_on_finite_films_as_on_short_ones() {
             (lift - lift_off).abs() < 0.02 * lift_off,
             "{cavitation}: run-up lifts off at {lift} rad/s, static lift-off {lift_off} rad/s"
         );
-        let down = ramp(&finite, (above, below), 200.0);
+        let down = ramp(&finite, (above, below), (200.0, 0.0), 1e-2);
         assert_eq!(contact(&down[0]), 0.0, "floating at {above} rad/s");
         let touch = down[down.iter().position(|o| contact(o) > 0.0).unwrap()].speed;
         eprintln!("{cavitation}: the coast-down touches down at {touch:.4} rad/s");
