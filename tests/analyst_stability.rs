@@ -459,3 +459,122 @@ fn the_default_cross_coupling_sits_where_api_617_places_it() {
         "{stdout}"
     );
 }
+
+/// Wachel per impeller (issue 48): stage data on the impellers
+/// (`[[disks]] role = "impeller"`, `stage_power`, `impeller_diameter`,
+/// `flow_width`, `density_ratio`, `stage_factor`) give each impeller's
+/// `q_A` and their sum `Q_A`, against a hand calculation; the documented
+/// pump's data on its impeller give the screening `--power …` gives, number
+/// for number; the flags, when given, stand for the whole machine; bad stage
+/// data name file, line and field.
+#[test]
+fn level_one_sums_wachel_over_the_impellers() {
+    let pump = include_str!("../examples/my_pump.toml");
+    let dir = std::path::PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("wachel_impellers");
+    std::fs::create_dir_all(&dir).unwrap();
+    let write = |name: &str, text: &str| {
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        path.to_string_lossy().into_owned()
+    };
+    let disk = "[[disks]]\nname = \"impeller\"\nnode = 6";
+    assert!(pump.contains(disk));
+    let one = write(
+        "one.toml",
+        &pump.replace(
+            disk,
+            &format!("{disk}\nrole = \"impeller\"\nstage_power = 150e3\nimpeller_diameter = 0.3\nflow_width = 0.02"),
+        ),
+    );
+    let by_model = run(&["stability", &one, "--rpm", "3600"]);
+    let by_flags = run(&[
+        "stability",
+        &one,
+        "--rpm",
+        "3600",
+        "--power",
+        "150e3",
+        "--impeller-diameter",
+        "0.3",
+        "--flow-width",
+        "0.02",
+    ]);
+    let omega = 3600.0 * PI / 30.0;
+    let qa = 3.0 * 150e3 / (0.3 * 0.02 * omega);
+    let printed = number_after(
+        &by_model,
+        "impeller: 3 × 150000 W × 1 / (0.3 m × 0.02 m × 376.991 rad/s) = ",
+    );
+    assert!((printed / qa - 1.0).abs() < 5e-6, "{by_model}");
+    assert!(
+        by_flags.contains("Q_A = B P (ρd/ρs) / (D H Ω) = 3 × 150000 W"),
+        "{by_flags}"
+    );
+    for key in [
+        "threshold Q = ",
+        "log dec at Q_A = ",
+        "stability margin Q0/Q_A = ",
+    ] {
+        assert_eq!(
+            number_after(&by_model, key),
+            number_after(&by_flags, key),
+            "{key}"
+        );
+    }
+    let verdict = |t: &str| {
+        t.lines()
+            .find(|l| l.starts_with("  Level I: "))
+            .map(str::to_owned)
+    };
+    assert_eq!(verdict(&by_model), verdict(&by_flags));
+    // Two impellers: the pump's and a second stage (an axial one, a gas).
+    let two = write(
+        "two.toml",
+        &format!(
+            "{}\n[[disks]]\nname = \"second\"\nnode = 6\nmass = 1.0\npolar_inertia = 0.0\ndiametral_inertia = 0.0\nrole = \"impeller\"\nstage_power = 50e3\nimpeller_diameter = 0.25\nflow_width = 0.015\ndensity_ratio = 1.2\nstage_factor = 1.5\n",
+            std::fs::read_to_string(&one).unwrap()
+        ),
+    );
+    let stdout = run(&["stability", &two, "--rpm", "3600"]);
+    let q2 = 1.5 * 50e3 * 1.2 / (0.25 * 0.015 * omega);
+    let printed2 = number_after(
+        &stdout,
+        "second: 1.5 × 50000 W × 1.2 / (0.25 m × 0.015 m × 376.991 rad/s) = ",
+    );
+    assert!((printed2 / q2 - 1.0).abs() < 5e-6, "{stdout}");
+    let total = number_after(&stdout, "Q_A = the sum over the 2 impellers = ");
+    assert!((total / (qa + q2) - 1.0).abs() < 5e-6, "{stdout}");
+    // Bad stage data: named by file, line and field.
+    let bad = |name: &str, text: &str, field: &str| {
+        let path = write(name, text);
+        let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .args(["stability", &path, "--rpm", "3600"])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{name}");
+        // `file:LINE: disks[k].field = value: why`.
+        let at = err
+            .find(&format!("{name}:"))
+            .unwrap_or_else(|| panic!("{err}"));
+        let line = err[at + name.len() + 1..].split(':').next().unwrap();
+        assert!(
+            line.parse::<usize>().is_ok() && err.contains(field),
+            "{err}"
+        );
+    };
+    bad(
+        "not_impeller.toml",
+        &pump.replace(disk, &format!("{disk}\nstage_power = 150e3")),
+        "stage_power",
+    );
+    bad(
+        "no_width.toml",
+        &pump.replace(
+            disk,
+            &format!("{disk}\nrole = \"impeller\"\nstage_power = 150e3\nimpeller_diameter = 0.3"),
+        ),
+        "flow_width",
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

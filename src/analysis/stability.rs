@@ -143,11 +143,69 @@ impl StageData {
     }
 }
 
+/// The stage data of one source of anticipated cross-coupling: the whole
+/// machine's (`rotor stability --power …`, named `machine`) or one
+/// impeller's (`[[disks]] role = "impeller"` with `stage_power`, …).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Stage {
+    /// `machine`, or the impeller disk's name.
+    pub name: String,
+    /// Its data.
+    pub data: StageData,
+}
+
+/// The name of the one stage that stands for the whole machine.
+pub const MACHINE_STAGE: &str = "machine";
+
+/// Every impeller of the model with stage data, in file order: Wachel per
+/// impeller (API 617 sums the stages' `q_A`).
+pub fn impeller_stages(rotor: &Rotor) -> Vec<Stage> {
+    rotor
+        .model
+        .disks
+        .iter()
+        .filter_map(|d| {
+            d.stage.map(|st| Stage {
+                name: d.name.clone(),
+                data: StageData {
+                    power: st.power,
+                    diameter: st.diameter,
+                    width: st.width,
+                    density_ratio: st.density_ratio,
+                    stage_factor: st.stage_factor,
+                },
+            })
+        })
+        .collect()
+}
+
+/// The stages of a Level I screening: the machine's data when given (one
+/// stage named [`MACHINE_STAGE`]), else each impeller's of the model
+/// ([`impeller_stages`]) — none for a hydro class, which API 617 does not
+/// judge.
+pub fn level_one_stages(rotor: &Rotor, machine: Option<StageData>) -> Vec<Stage> {
+    match machine {
+        Some(data) => vec![Stage {
+            name: MACHINE_STAGE.to_string(),
+            data,
+        }],
+        None if rotor.model.machine.is_hydro() => Vec::new(),
+        None => impeller_stages(rotor),
+    }
+}
+
+/// The anticipated cross-coupling of `stages` at `speed` (rad/s): the sum
+/// of each stage's `q_A` (N/m); `None` without stages.
+pub fn anticipated(stages: &[Stage], speed: f64) -> Option<f64> {
+    (!stages.is_empty()).then(|| stages.iter().map(|s| s.data.anticipated(speed)).sum())
+}
+
 /// The Level I verdict.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LevelOne {
-    /// The machine data.
-    pub stages: StageData,
+    /// The stages whose `q_A` add up to `Q_A`: the machine's data, or each
+    /// impeller's.
+    pub stages: Vec<Stage>,
     /// `Q_A` (N/m).
     pub anticipated: f64,
     /// `Q_0 / Q_A`; `None` when no threshold was found up to `Q_max`
@@ -372,8 +430,9 @@ pub struct StabilityRequest {
     pub points: usize,
     /// Modes listed and searched for the least stable forward one.
     pub modes: usize,
-    /// The machine's stages for the Level I screening.
-    pub stages: Option<StageData>,
+    /// The stages of the Level I screening (the machine's data, or each
+    /// impeller's, [`impeller_stages`]); empty for none.
+    pub stages: Vec<Stage>,
 }
 
 impl StabilityRequest {
@@ -386,7 +445,7 @@ impl StabilityRequest {
             q_max: None,
             points: 21,
             modes: 8,
-            stages: None,
+            stages: Vec::new(),
         }
     }
 }
@@ -422,10 +481,10 @@ pub fn stability_study(
     request: &StabilityRequest,
 ) -> Result<Stability, StabilityError> {
     let (speed, points, count) = (request.speed, request.points, request.modes);
-    if let Some(stages) = &request.stages {
-        stages.check()?;
+    for stage in &request.stages {
+        stage.data.check()?;
     }
-    let anticipated = request.stages.map(|s| s.anticipated(speed));
+    let anticipated = anticipated(&request.stages, speed);
     let q_max = match (request.q_max, anticipated) {
         (Some(q), _) => q,
         (None, Some(qa)) => LEVEL_I_RANGE * qa,
@@ -566,8 +625,9 @@ pub fn stability_study(
         threshold = Some(best.0);
         threshold_mode = Some(best.1);
     }
-    let level_one = match (request.stages, anticipated) {
-        (Some(stages), Some(qa)) => {
+    let level_one = match anticipated {
+        Some(qa) => {
+            let stages = request.stages.clone();
             let mode_at_anticipated = forward(qa)?;
             let ratio = threshold.map(|q0| q0 / qa);
             Some(LevelOne {
@@ -582,7 +642,7 @@ pub fn stability_study(
                 mode_at_anticipated,
             })
         }
-        _ => None,
+        None => None,
     };
     Ok(Stability {
         speed,

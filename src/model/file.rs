@@ -179,6 +179,16 @@ pub struct DiskEntry {
     /// a hydro runner: where API 617 places the stability study's
     /// cross-coupling on an overhung rotor) or `"other"` (the default).
     pub role: Option<String>,
+    /// An impeller's stage for Wachel's `q_A`: rated power (W).
+    pub stage_power: Option<f64>,
+    /// Impeller diameter (m).
+    pub impeller_diameter: Option<f64>,
+    /// Restrictive flow width (m).
+    pub flow_width: Option<f64>,
+    /// Discharge over suction density (–, default 1).
+    pub density_ratio: Option<f64>,
+    /// Stage factor `B` (–, default 3).
+    pub stage_factor: Option<f64>,
 }
 
 /// `[[bearings]]`, selected by `type`.

@@ -238,3 +238,27 @@ pub const ANGULAR_OFFSET: Limit = Limit {
     unit: "rad",
     why: "couplings are aligned to a fraction of a milliradian; 0.1 rad (5.7°) is a unit slip",
 };
+
+/// A stage's rated power (W): Wachel's anticipated cross-coupling.
+pub const STAGE_POWER: Limit = Limit {
+    min: 1.0,
+    max: 1e10,
+    unit: "W",
+    why: "from a watt to 10 GW: the largest turbine stages carry about 1 GW",
+};
+
+/// A stage's discharge over suction density (–).
+pub const DENSITY_RATIO: Limit = Limit {
+    min: 0.1,
+    max: 100.0,
+    unit: "–",
+    why: "1 for a liquid; a compressor stage raises the density by at most a few times",
+};
+
+/// A stage factor `B` (–): 3 centrifugal (Wachel), 1.5 axial (Alford).
+pub const STAGE_FACTOR: Limit = Limit {
+    min: 0.1,
+    max: 10.0,
+    unit: "–",
+    why: "the published factors are 1.5 (axial) and 3 (centrifugal)",
+};

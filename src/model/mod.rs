@@ -9,6 +9,7 @@ mod build;
 mod context;
 mod error;
 pub mod file;
+pub mod impeller_stage;
 pub mod limits;
 mod load_inputs;
 pub mod machine_class;
@@ -85,6 +86,9 @@ pub struct PlacedDisk {
     pub disk: Disk,
     /// An impeller (stage, runner): `role = "impeller"`.
     pub impeller: bool,
+    /// An impeller's stage data for Wachel's anticipated cross-coupling
+    /// (`stage_power`, `impeller_diameter`, `flow_width`, …); `None` without.
+    pub stage: Option<impeller_stage::ImpellerStage>,
 }
 
 /// A bearing between a shaft node (the journal) and its housing: ground, or

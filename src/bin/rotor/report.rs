@@ -18,7 +18,7 @@ use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operati
 use rotor_bearing::analysis::shaft_loads::coupling_loads;
 use rotor_bearing::analysis::speed_range::default_top_speed;
 use rotor_bearing::analysis::stability::{
-    StabilityRequest, StageData, mid_span_node, site_label, stability_study,
+    StabilityRequest, StageData, level_one_stages, mid_span_node, site_label, stability_study,
 };
 use rotor_bearing::analysis::ucs::{
     DEFAULT_BEARING_SPEEDS, DEFAULT_CRITICALS, DEFAULT_POINTS as UCS_POINTS,
@@ -194,7 +194,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         rotor,
         &StabilityRequest {
             sites: req.sites.clone(),
-            stages: req.stages,
+            stages: level_one_stages(rotor, req.stages),
             ..StabilityRequest::at(speed)
         },
     )

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use rotor_bearing::analysis::ring_down::{RingDown, ring_down};
 use rotor_bearing::analysis::stability::{
-    StabilityRequest, StageData, disks_and_seals, site_label, stability_study,
+    StabilityRequest, StageData, disks_and_seals, level_one_stages, site_label, stability_study,
 };
 use rotor_bearing::plot::{RAD_S_TO_RPM, stability_png};
 use rotor_bearing::report::{csv as report_csv, text};
@@ -106,7 +106,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         q_max: req.q_max,
         points: req.points,
         modes: req.modes,
-        stages: req.stages.filter(|_| !machine.is_hydro()),
+        stages: level_one_stages(rotor, req.stages.filter(|_| !machine.is_hydro())),
         ..StabilityRequest::at(req.rpm / RAD_S_TO_RPM)
     };
     crate::warn_table_speeds(&rotor.model, &[req.rpm / RAD_S_TO_RPM]);

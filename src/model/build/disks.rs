@@ -7,7 +7,10 @@ use super::materials::Materials;
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::DiskEntry;
-use crate::model::limits::{DIAMETER, INERTIA, LENGTH, MASS};
+use crate::model::impeller_stage::{DEFAULT_DENSITY_RATIO, DEFAULT_STAGE_FACTOR, ImpellerStage};
+use crate::model::limits::{
+    DENSITY_RATIO, DIAMETER, INERTIA, LENGTH, MASS, STAGE_FACTOR, STAGE_POWER,
+};
 use crate::model::{ModelError, PlacedDisk};
 
 /// Check each disk: unique name, its node, and either `mass`, `polar_inertia`,
@@ -131,13 +134,80 @@ pub(super) fn disks(
                 ));
             }
         };
+        let stage = stage(ctx, &p, &d, impeller)?;
         disks.push(PlacedDisk {
             name: names.claim(ctx, &p, default_name(d.name, "disk", i), "disk")?,
             node,
             disk,
             impeller,
+            stage,
         });
     }
 
     Ok(disks)
+}
+
+/// An impeller's stage data: `stage_power`, `impeller_diameter` and
+/// `flow_width` together (or none of them), with `density_ratio` (default
+/// 1) and `stage_factor` (default 3); only on `role = "impeller"`.
+fn stage(
+    ctx: &Ctx,
+    p: &FieldPath,
+    d: &DiskEntry,
+    impeller: bool,
+) -> Result<Option<ImpellerStage>, ModelError> {
+    let given = [
+        ("stage_power", d.stage_power),
+        ("impeller_diameter", d.impeller_diameter),
+        ("flow_width", d.flow_width),
+        ("density_ratio", d.density_ratio),
+        ("stage_factor", d.stage_factor),
+    ];
+    let Some((first, Some(value))) = given.iter().find(|(_, v)| v.is_some()) else {
+        return Ok(None);
+    };
+    if !impeller {
+        return Err(ctx.err(
+            p.key(first),
+            value.to_string(),
+            "stage data belong to an impeller: add role = \"impeller\"",
+        ));
+    }
+    // A missing key is named at the entry (it has no line of its own).
+    let need = |key: &'static str, v: Option<f64>| {
+        v.ok_or_else(|| {
+            ctx.err(
+                p.clone(),
+                format!("{key} missing"),
+                "a stage needs stage_power, impeller_diameter and flow_width together",
+            )
+        })
+    };
+    Ok(Some(ImpellerStage {
+        power: ctx.within(
+            p.key("stage_power"),
+            need("stage_power", d.stage_power)?,
+            &STAGE_POWER,
+        )?,
+        diameter: ctx.within(
+            p.key("impeller_diameter"),
+            need("impeller_diameter", d.impeller_diameter)?,
+            &DIAMETER,
+        )?,
+        width: ctx.within(
+            p.key("flow_width"),
+            need("flow_width", d.flow_width)?,
+            &LENGTH,
+        )?,
+        density_ratio: ctx.within(
+            p.key("density_ratio"),
+            d.density_ratio.unwrap_or(DEFAULT_DENSITY_RATIO),
+            &DENSITY_RATIO,
+        )?,
+        stage_factor: ctx.within(
+            p.key("stage_factor"),
+            d.stage_factor.unwrap_or(DEFAULT_STAGE_FACTOR),
+            &STAGE_FACTOR,
+        )?,
+    }))
 }

@@ -7,7 +7,9 @@ use std::fmt::Write;
 use crate::analysis::operating_point::{
     BearingOperatingPoint, PedestalOperatingPoint, ROUND_OFF_LOAD,
 };
-use crate::analysis::stability::{LEVEL_I_MIN_LOG_DEC, LEVEL_I_MIN_RATIO, Stability};
+use crate::analysis::stability::{
+    LEVEL_I_MIN_LOG_DEC, LEVEL_I_MIN_RATIO, MACHINE_STAGE, Stability, StageData,
+};
 use crate::analysis::ucs::CriticalSpeedMap;
 use crate::bearing::{BearingKind, CoefficientTable};
 use crate::model::RotorModel;
@@ -467,20 +469,47 @@ pub fn stability(result: &Stability, sites: &[String]) -> String {
         }
     }
     if let Some(l) = &result.level_one {
-        let st = &l.stages;
         writeln!(s, "API 617 / API 684 Level I screening:").ok();
-        writeln!(
-            s,
-            "  anticipated cross-coupling Q_A = B P (ρd/ρs) / (D H Ω) = {} × {} W × {} / ({} m × {} m × {} rad/s) = {} N/m (Wachel)",
-            short(st.stage_factor),
-            short(st.power),
-            short(st.density_ratio),
-            short(st.diameter),
-            short(st.width),
-            short(result.speed.abs()),
-            short(l.anticipated)
-        )
-        .ok();
+        let term = |st: &StageData, q: f64| {
+            format!(
+                "{} × {} W × {} / ({} m × {} m × {} rad/s) = {} N/m",
+                short(st.stage_factor),
+                short(st.power),
+                short(st.density_ratio),
+                short(st.diameter),
+                short(st.width),
+                short(result.speed.abs()),
+                short(q)
+            )
+        };
+        match l.stages.as_slice() {
+            [one] if one.name == MACHINE_STAGE => {
+                writeln!(
+                    s,
+                    "  anticipated cross-coupling Q_A = B P (ρd/ρs) / (D H Ω) = {} (Wachel)",
+                    term(&one.data, l.anticipated)
+                )
+                .ok();
+            }
+            stages => {
+                writeln!(
+                    s,
+                    "  anticipated cross-coupling of each impeller q_A = B P (ρd/ρs) / (D H Ω) (Wachel):"
+                )
+                .ok();
+                for st in stages {
+                    let q = st.data.anticipated(result.speed);
+                    writeln!(s, "    {}: {}", st.name, term(&st.data, q)).ok();
+                }
+                writeln!(
+                    s,
+                    "  Q_A = the sum over the {} impellers = {} N/m",
+                    stages.len(),
+                    short(l.anticipated)
+                )
+                .ok();
+            }
+        }
         let ratio = match l.ratio {
             Some(r) => format!("{r:.2}"),
             None => format!("> {:.2}", result.q_max / l.anticipated),
