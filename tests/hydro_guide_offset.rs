@@ -120,3 +120,58 @@ fn rotor_info_states_the_offset() {
         .unwrap();
     assert!(!upper.contains("offset ("), "{upper}");
 }
+
+/// At standstill the films carry nothing and nothing pushes the vertical
+/// shaft onto a pad (the offset is within the turbine guide's clearance):
+/// the line stays straight. Before, Newton from the journals resting on
+/// their pads stalled and the FMU of the unit could not initialize at its
+/// start speed (found by the FMU's rollback test on every shipped model).
+/// The FMU initializes at standstill with no static load, and at 300 rpm
+/// (its default reduced rotor: the bearing nodes are kept physical and no
+/// other lateral load acts, so the condensed statics are exact) its static
+/// loads are the line statics' reactions to 1e-6 of the largest.
+#[test]
+fn the_unit_rests_straight_at_standstill_and_its_fmu_reports_the_offset_loads() {
+    use rotor_bearing::fmi2::instance::{Instance, Status};
+    use rotor_bearing::fmi2::variables::{Kind, variables};
+    use rotor_bearing::solver::statics::equilibrium;
+    let installed = rotor("hydro_unit_three_guide_offset");
+    let rest = equilibrium(&installed, 0.0, &SolverOptions::default(), None).unwrap();
+    assert!(rest.displacement.iter().all(|&u| u == 0.0));
+    let m = installed.model.clone();
+    let vars = variables(&m);
+    let vr = |name: &str| {
+        vars.iter()
+            .find(|v| v.name == name)
+            .unwrap_or_else(|| panic!("{name}"))
+            .value_reference
+    };
+    let line = alignment(&installed, 300.0 * RPM, &SolverOptions::default()).unwrap();
+    let largest = line
+        .bearings
+        .iter()
+        .map(|b| b.reaction[0].abs())
+        .fold(0.0, f64::max);
+    for rpm in [0.0, 300.0] {
+        let mut fmu = Instance::new("unit", m.clone()).unwrap();
+        assert_eq!(fmu.setup_experiment(0.0, None), Status::Ok);
+        assert_eq!(fmu.enter_initialization_mode(), Status::Ok);
+        assert_eq!(
+            fmu.set(vr("shaft.speed"), Kind::Real, rpm * RPM),
+            Status::Ok
+        );
+        let status = fmu.exit_initialization_mode();
+        assert_eq!(status, Status::Ok, "{rpm} rpm: {:?}", fmu.drain_messages());
+        for b in &line.bearings {
+            for (a, axis) in ["x", "y"].iter().enumerate() {
+                let name = format!("bearings.{}.static_f{axis}", b.name);
+                let got = fmu.get(vr(&name), Kind::Real).unwrap();
+                let want = if rpm == 0.0 { 0.0 } else { b.reaction[a] };
+                assert!(
+                    (got - want).abs() < 1e-6 * largest,
+                    "{name} at {rpm} rpm: {got} N, statics {want} N"
+                );
+            }
+        }
+    }
+}

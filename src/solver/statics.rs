@@ -223,7 +223,9 @@ fn journal_rest(rotor: &Rotor) -> f64 {
 /// tilts. `time` (s) only labels bearing errors.
 ///
 /// At standstill a fluid film carries nothing and the journals rest on their
-/// bushings or pads: Newton then starts from [`resting_start`]. At any other
+/// bushings or pads: Newton then starts from [`resting_start`] (and, when
+/// that fails, from the given start: journals floating in their clearance
+/// off offset centres). At any other
 /// speed, when Newton from the given start fails or ends with a tilting pad on
 /// its unloaded branch where a loaded tilt exists ([`reseat_pads`]), a rotor
 /// with tilting pads starts again from the bearings' own equilibria
@@ -258,7 +260,15 @@ fn settle_unchecked(
     // The resting start costs a banded factorization: build it only when used.
     if speed == 0.0 {
         if let Some(u) = resting_start(rotor, sites, f_ext) {
-            return newton_static(rotor, sites, speed, options, time, (u, None), f_ext, false);
+            let rested = newton_static(rotor, sites, speed, options, time, (u, None), f_ext, false);
+            if rested.is_ok() {
+                return rested;
+            }
+            // No journal rests after all: a bearing set off the axis within
+            // its clearance with nothing pushing the journal onto it (a
+            // vertical rotor at rest) floats; Newton from the given start.
+            return newton_static(rotor, sites, speed, options, time, (u0, p0), f_ext, false)
+                .or(rested);
         }
     }
     let direct = newton_static(rotor, sites, speed, options, time, (u0, p0), f_ext, false);
