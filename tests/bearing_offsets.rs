@@ -211,10 +211,7 @@ fn fmu_offset_parameters_are_appended_fixed_and_act_as_the_model_file() {
             .iter()
             .all(|v| v.name.contains(".static_") || v.name.contains(".dynamic_"))
     );
-    let names: Vec<&str> = vars[end - 4..end]
-        .iter()
-        .map(|v| v.name.as_str())
-        .collect();
+    let names: Vec<&str> = vars[end - 4..end].iter().map(|v| v.name.as_str()).collect();
     assert_eq!(
         names,
         [
