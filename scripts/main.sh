@@ -45,6 +45,15 @@ $rotor campbell models/turbine_generator_train.toml --csv out/turbine_generator_
   --png out/turbine_generator_train_campbell.png
 $rotor simulate models/turbine_generator_train.toml --rpm 3000 --duration 0.5 \
   --csv out/turbine_generator_train.csv
+# The three-guide hydro unit as installed (issue 49): its turbine guide bearing
+# 0.12 mm off the line of the generator guides (a plumb-line survey). A vertical
+# shaft carries no weight on its guides: the offset alone loads them. Its
+# alignment (load sharing, influence matrix, stability against the offsets)
+# and 2 s at 300 rpm.
+$rotor info models/hydro_unit_three_guide_offset.toml > out/hydro_unit_three_guide_offset_info.txt
+$rotor alignment models/hydro_unit_three_guide_offset.toml --rpm 300 > out/hydro_unit_three_guide_offset_alignment.txt
+$rotor simulate models/hydro_unit_three_guide_offset.toml --rpm 300 --duration 2 --step 5e-3 --output-step 0.02 \
+  --csv out/hydro_unit_three_guide_offset.csv
 # The whole machine: a 300 rpm Francis unit on its bearing brackets with a runner
 # seal and the generator's magnetic pull (docs/machine.md): Campbell diagram and
 # unbalance response as shipped (field off), operating point and a 10 s

@@ -147,11 +147,12 @@ fn restored_states_are_validated() {
                 // the previous accelerations of the accuracy-controlled
                 // step taken (a length and one per rotor coordinate), the
                 // contact flags (two per bearing), the table flags (one per
-                // bearing) and the full rotor's validity watch (four values).
+                // bearing), the full rotor's validity watch (four values)
+                // and the static loads (two per bearing).
                 let n = rotor_bearing::rotor::Rotor::new(m.clone())
                     .unwrap()
                     .dof_count();
-                let flags = 8 * (1 + 4) + 8 * (1 + 2) + 8 * (1 + 4);
+                let flags = 8 * (1 + 4) + 8 * (1 + 2) + 8 * (1 + 4) + 8 * (1 + 4);
                 let at = b.len() - 16 - 6 * 8 - 8 * (1 + n) - flags;
                 put(b, at, -0.02)
             }),

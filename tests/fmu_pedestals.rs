@@ -24,11 +24,20 @@ fn pedestal_and_seal_outputs_are_appended_after_the_existing_variables() {
     let m = model("hydro_unit_brackets");
     // The offset parameters (issue 49) come after everything checked here:
     // two per bearing, seal and pull, then the pulls' dynamic eccentricity
-    // inputs (issue 48), appended last.
+    // inputs (issue 48), then the bearings' static and dynamic loads (issue
+    // 49), appended last.
     let without_offsets = |mut vars: Vec<Variable>, model: &RotorModel| {
+        let later = [
+            ".dynamic_eccentricity",
+            ".static_fx",
+            ".static_fy",
+            ".dynamic_fx",
+            ".dynamic_fy",
+            ".dynamic_load",
+        ];
         while vars
             .last()
-            .is_some_and(|v| v.name.ends_with(".dynamic_eccentricity"))
+            .is_some_and(|v| later.iter().any(|s| v.name.ends_with(s)))
         {
             vars.pop();
         }

@@ -19,6 +19,7 @@
 //! | classic_disk_rotor, classic_disk_rotor_damped | 1.34, 1.00 | the same | the same |
 //! | hydro_unit, hydro_unit_torque (speed-driven), hydro_unit_plain | 2.56, 2.56, 2.996 | the same | the same |
 //! | hydro_unit_three_guide, jeffcott | 2.29, 2.00 | the same | the same |
+//! | hydro_unit_three_guide_offset (turbine guide 0.12 mm off, added later) | – | – | 2.27 |
 //! | hydro_unit_brackets, field off / on | 17.48 / 17.55 | 15.10 / 15.43 | 2.37 / 2.45 |
 //! | vertical_rotor (plain bearing) | 4.83 | 4.83 | 4.83 |
 //! | vertical rotor on unpreloaded pads | 14.26 | 12.71 | 3.95 |

@@ -15,8 +15,9 @@
 //! equilibrium.
 //!
 //! The load a bearing carries is its reaction along the load direction
-//! `d = −g_⊥/|g_⊥|` (up, for gravity along −y), and its elevation is its
-//! offset along `d`. The offsets for a target sharing are found by Newton
+//! `d = −g_⊥/|g_⊥|` (up, for gravity along −y; for a vertical machine the
+//! plane of its largest offset, [`load_direction`]), and its elevation is
+//! its offset along `d`. The offsets for a target sharing are found by Newton
 //! on the elevations with the least-norm (pseudo-inverse) step: the rigid
 //! lift and tilt of the whole line change no reaction and are left alone, and
 //! a target that no alignment reaches (the reactions must balance the line's
@@ -62,7 +63,8 @@ pub struct BearingReaction {
 pub struct Alignment {
     /// Spin speed (rad/s).
     pub speed: f64,
-    /// Unit load direction `d` in the x–y plane (opposite gravity).
+    /// Unit load direction `d` in the x–y plane (opposite gravity; for a
+    /// vertical machine the plane of its largest offset, [`load_direction`]).
     pub direction: [f64; 2],
     /// The bearings (rubs, seals and magnetic pulls act on the line but are
     /// not listed), in model order.
@@ -118,16 +120,41 @@ fn static_stiffness(eval: &BearingEval) -> Matrix2<f64> {
     }
 }
 
-/// The unit load direction `−g_⊥/|g_⊥|` of `rotor`'s model.
-fn load_direction(rotor: &Rotor) -> Result<[f64; 2], AlignmentError> {
+/// The unit load direction of `rotor`'s model: `−g_⊥/|g_⊥|` against
+/// gravity across the shaft. A vertical machine (no gravity across the
+/// shaft) carries no weight on its guide bearings: its loads come from the
+/// offsets, and are taken in the plane of the largest offset of a journal
+/// bearing (the plane a plumb-line survey measures it in), `+x` when no
+/// bearing is offset.
+pub fn load_direction(rotor: &Rotor) -> [f64; 2] {
     let g = rotor.model.gravity;
     let norm = g[0].hypot(g[1]);
-    if norm == 0.0 {
-        return Err(AlignmentError::Input(
-            "gravity has no part across the shaft: the bearings carry no weight to share (a vertical machine)".into(),
-        ));
+    if norm > 0.0 {
+        return [-g[0] / norm, -g[1] / norm];
     }
-    Ok([-g[0] / norm, -g[1] / norm])
+    let largest = rotor
+        .model
+        .bearings
+        .iter()
+        .filter(|b| b.kind.is_bearing())
+        .map(|b| b.offset)
+        .max_by(|a, b| a[0].hypot(a[1]).total_cmp(&b[0].hypot(b[1])))
+        .filter(|o| o[0].hypot(o[1]) > 0.0);
+    match largest {
+        Some(o) => {
+            let r = o[0].hypot(o[1]);
+            [o[0] / r, o[1] / r]
+        }
+        None => [1.0, 0.0],
+    }
+}
+
+/// Whether gravity has a part across the shaft of `rotor` (a horizontal or
+/// inclined machine whose bearings share its weight); `false` for a
+/// vertical machine.
+pub fn carries_weight(rotor: &Rotor) -> bool {
+    let g = rotor.model.gravity;
+    g[0].hypot(g[1]) > 0.0
 }
 
 /// The free DOFs of the journal and housing of model bearing `b` in
@@ -152,7 +179,7 @@ pub fn alignment(
     speed: f64,
     options: &SolverOptions,
 ) -> Result<Alignment, AlignmentError> {
-    let direction = load_direction(rotor)?;
+    let direction = load_direction(rotor);
     let model = &rotor.model;
     let solver = |source| AlignmentError::Solver { speed, source };
     let eq = line_equilibrium(rotor, speed, options, None).map_err(solver)?;

@@ -51,8 +51,8 @@ pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
 /// the step proposal and previous accelerations of accuracy-controlled steps,
 /// 8 which contact and coefficient-table warnings have been raised and the
 /// reduced rotor's validity watch, 9 whether the pads are settled on their
-/// own balance).
-pub const VERSION: u64 = 9;
+/// own balance, 10 each bearing's static load).
+pub const VERSION: u64 = 10;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -208,7 +208,7 @@ const SCALARS: [Scalar; 19] = [
 ];
 
 /// The vector fields, in image order.
-const VECTORS: [Vector; 20] = [
+const VECTORS: [Vector; 21] = [
     ("u", |s| &s.sim.u, |s| &mut s.sim.u),
     ("ud", |s| &s.sim.ud, |s| &mut s.sim.ud),
     ("udd", |s| &s.sim.udd, |s| &mut s.sim.udd),
@@ -265,6 +265,11 @@ const VECTORS: [Vector; 20] = [
         |s| &mut s.sim.table_warned,
     ),
     ("validity_watch", |s| &s.watch, |s| &mut s.watch),
+    (
+        "static_load",
+        |s| &s.sim.static_load,
+        |s| &mut s.sim.static_load,
+    ),
 ];
 
 /// The vector of the run's history, of any length its own check accepts.
@@ -491,6 +496,7 @@ mod tests {
                 udd_previous: v(8, 20.0),
                 contact_reported: vec![0.0, 1.0],
                 table_warned: vec![1.0, 0.0],
+                static_load: v(4, 22.0),
                 step_proposal: 2.5e-4,
                 pad_balancing: 1.0,
             },

@@ -661,7 +661,7 @@ mod tests {
                 power_loss: 0.75,
                 ..BearingReport::default()
             },
-            housing: Default::default(),
+            ..Default::default()
         };
         let record = Outputs {
             time: 0.125,

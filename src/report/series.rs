@@ -73,7 +73,7 @@ mod tests {
             fx: 0.0,
             fy: 0.0,
             report: BearingReport::default(),
-            housing: Default::default(),
+            ..Default::default()
         };
         Outputs {
             time: k,

@@ -89,6 +89,7 @@ impl SimState {
             step_proposal,
             contact_reported,
             table_warned,
+            static_load,
             pad_balancing,
         } = other;
         for (dst, src) in [
@@ -110,6 +111,7 @@ impl SimState {
             (&mut self.udd_previous, udd_previous),
             (&mut self.contact_reported, contact_reported),
             (&mut self.table_warned, table_warned),
+            (&mut self.static_load, static_load),
         ] {
             dst.clone_from(src);
         }

@@ -113,3 +113,29 @@ pub(super) fn reseat_pads(sites: &Sites, u: &[f64], p: &mut [f64], speed: f64) -
     }
     moved
 }
+
+/// Smallest journal displacement from its centre, over the length scale
+/// (the smallest clearance), at which [`pushed_off_centre`] judges a film.
+const PUSH_DISPLACEMENT: f64 = 1e-3;
+/// Largest cosine between a pad bearing's force on the journal and the
+/// journal's displacement from its centre at a held equilibrium.
+const PUSH_COSINE: f64 = 1e-2;
+
+/// Whether a tilting-pad bearing of `sites` (their forces evaluated at the
+/// journal positions of `u`) pushes its journal further from its centre,
+/// `F·q > 0` (attitude angle beyond 90°): a film restores, and a tilting-pad
+/// bearing's attitude is near zero, so such an equilibrium has its pads on
+/// a branch the running bearing does not hold (one its linearization finds
+/// diverging).
+pub(super) fn pushed_off_centre(sites: &Sites, u: &[f64]) -> bool {
+    sites.list.iter().filter(|s| s.internal > 0).any(|site| {
+        let q = [
+            site.journal[0].of(u) - site.centre[0],
+            site.journal[1].of(u) - site.centre[1],
+        ];
+        let f = [site.eval.force[0], site.eval.force[1]];
+        let (nq, nf) = (q[0].hypot(q[1]), f[0].hypot(f[1]));
+        nq > PUSH_DISPLACEMENT * sites.length_scale
+            && f[0] * q[0] + f[1] * q[1] > PUSH_COSINE * nf * nq
+    })
+}

@@ -39,11 +39,24 @@ pub struct BearingOutput {
     /// Film reports (eccentricity, friction…), from the journal's motion
     /// relative to its housing.
     pub report: BearingReport,
+    /// Static load: the force of the bearing on the journal at the static
+    /// equilibrium the run started from ([`SimState::static_load`], N).
+    ///
+    /// [`SimState::static_load`]: super::SimState::static_load
+    pub static_fx: f64,
+    /// Static load y (N).
+    pub static_fy: f64,
     /// The housing's absolute motion (zero on rigid ground).
     pub housing: HousingOutput,
 }
 
 impl BearingOutput {
+    /// Dynamic load: the force on the journal minus its static load,
+    /// `(fx − static_fx, fy − static_fy)` (N).
+    pub fn dynamic_load(&self) -> (f64, f64) {
+        (self.fx - self.static_fx, self.fy - self.static_fy)
+    }
+
     /// Journal displacement relative to the housing, `(x, y)` (m).
     pub fn relative(&self) -> (f64, f64) {
         (self.x - self.housing.x, self.y - self.housing.y)
@@ -122,6 +135,30 @@ pub struct Outputs {
 }
 
 impl Simulator {
+    /// Record each bearing's force at the current state, a static
+    /// equilibrium, as its static load (a magnetic pull's rotating 1× part,
+    /// turning with the shaft, left out); not counted as a reported output.
+    pub(super) fn take_static_load(&mut self) -> Result<(), SolverError> {
+        let recalled = self.stats.outputs_recalled;
+        let o = self.outputs();
+        self.stats.outputs_recalled = recalled;
+        let (t, angle) = (self.state.time, self.state.spin_angle);
+        for (k, b) in o?.bearings.iter().enumerate() {
+            let (mut fx, mut fy) = (b.fx, b.fy);
+            if let Some(i) = self.rotor.model.pull_input(k) {
+                let e =
+                    self.state.loads[i] + self.state.load_rates[i] * (t - self.state.speed_time);
+                if let Some([rx, ry]) = self.rotor.pull_rotating_force(k, e, angle) {
+                    fx -= rx;
+                    fy -= ry;
+                }
+            }
+            self.state.static_load[2 * k] = fx;
+            self.state.static_load[2 * k + 1] = fy;
+        }
+        Ok(())
+    }
+
     /// Outputs at the current state.
     pub fn outputs(&mut self) -> Result<Outputs, SolverError> {
         let t = self.state.time;
@@ -209,6 +246,8 @@ impl Simulator {
                 fy,
                 report,
                 housing,
+                static_fx: self.state.static_load[2 * k],
+                static_fy: self.state.static_load[2 * k + 1],
             });
         }
         let probes = self

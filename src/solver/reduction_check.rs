@@ -451,6 +451,7 @@ mod tests {
             udd_previous: vec![],
             contact_reported: vec![],
             table_warned: vec![],
+            static_load: vec![],
             step_proposal: 0.0,
             pad_balancing: 0.0,
         };

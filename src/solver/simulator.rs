@@ -135,6 +135,7 @@ impl Simulator {
             udd_previous: Vec::new(),
             contact_reported: vec![0.0; 2 * sites.list.len()],
             table_warned: vec![0.0; rotor.model.bearings.len()],
+            static_load: vec![0.0; 2 * rotor.model.bearings.len()],
             step_proposal: 0.0,
             pad_balancing: 0.0,
         };
@@ -247,6 +248,7 @@ impl Simulator {
             || state.twist_torque.len() != s.twist_torque.len()
             || state.contact_reported.len() != s.contact_reported.len()
             || state.table_warned.len() != s.table_warned.len()
+            || state.static_load.len() != s.static_load.len()
             || !(state.udd_previous.is_empty() || state.udd_previous.len() == s.u.len())
         {
             return Err(SolverError::Input(
@@ -338,7 +340,8 @@ impl Simulator {
     /// (velocities and accelerations zero, nonlinear bearings included), by
     /// Newton with backtracking on the full static Jacobian
     /// ([`statics::equilibrium`](super::statics::equilibrium), started from the
-    /// current displacement).
+    /// current displacement). Each bearing's force there is its static load
+    /// ([`SimState::static_load`]).
     pub fn settle_static(&mut self) -> Result<(), SolverError> {
         let speed = self.speed_at(self.state.time);
         let time = self.state.time;
@@ -369,7 +372,8 @@ impl Simulator {
         self.state.udd_previous.clear();
         self.factor = None;
         self.record_factor();
-        self.running_acceleration()
+        self.running_acceleration()?;
+        self.take_static_load()
     }
 
     /// Make the accelerations consistent with the equations of motion at the

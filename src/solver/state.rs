@@ -75,6 +75,15 @@ pub struct SimState {
     /// For each model bearing, whether its coefficient table has warned of a
     /// speed outside its rows (1) or not (0).
     pub table_warned: Vec<f64>,
+    /// The static load of each model bearing, `[fx, fy]` a bearing (N, the
+    /// force of its law on the journal, a pull's rotating 1× part left out)
+    /// at the equilibrium [`Simulator::settle_static`] last found: the load
+    /// the bearing carries from gravity, the static loads and its offset.
+    /// Zero before the first settling; kept while the run goes on (its
+    /// dynamic load is the current force minus it).
+    ///
+    /// [`Simulator::settle_static`]: super::Simulator::settle_static
+    pub static_load: Vec<f64>,
 }
 
 impl SimState {
@@ -93,7 +102,7 @@ impl SimState {
             ("step_proposal", self.step_proposal),
             ("pad_balancing", self.pad_balancing),
         ];
-        let vectors: [(&str, &[f64]); 18] = [
+        let vectors: [(&str, &[f64]); 19] = [
             ("u", &self.u),
             ("ud", &self.ud),
             ("udd", &self.udd),
@@ -112,6 +121,7 @@ impl SimState {
             ("udd_previous", &self.udd_previous),
             ("contact_reported", &self.contact_reported),
             ("table_warned", &self.table_warned),
+            ("static_load", &self.static_load),
         ];
         let bad = scalars
             .iter()

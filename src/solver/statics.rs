@@ -10,7 +10,7 @@ use crate::rotor::Rotor;
 
 use super::error::SolverError;
 use super::factor::make_factor;
-use super::film_start::{film_start, is_offset, reseat_pads};
+use super::film_start::{film_start, is_offset, pushed_off_centre, reseat_pads};
 use super::norm::inf_norm;
 use super::options::SolverOptions;
 use super::schur::SchurSolve;
@@ -223,7 +223,9 @@ fn journal_rest(rotor: &Rotor) -> f64 {
 /// tilts. `time` (s) only labels bearing errors.
 ///
 /// At standstill a fluid film carries nothing and the journals rest on their
-/// bushings or pads: Newton then starts from [`resting_start`]. At any other
+/// bushings or pads: Newton then starts from [`resting_start`] (and, when
+/// that fails, from the given start: journals floating in their clearance
+/// off offset centres). At any other
 /// speed, when Newton from the given start fails or ends with a tilting pad on
 /// its unloaded branch where a loaded tilt exists ([`reseat_pads`]), a rotor
 /// with tilting pads starts again from the bearings' own equilibria
@@ -258,17 +260,62 @@ fn settle_unchecked(
     // The resting start costs a banded factorization: build it only when used.
     if speed == 0.0 {
         if let Some(u) = resting_start(rotor, sites, f_ext) {
-            return newton_static(rotor, sites, speed, options, time, (u, None), f_ext, false);
+            let rested = newton_static(rotor, sites, speed, options, time, (u, None), f_ext, false);
+            if rested.is_ok() {
+                return rested;
+            }
+            // No journal rests after all: a bearing set off the axis within
+            // its clearance with nothing pushing the journal onto it (a
+            // vertical rotor at rest) floats; Newton from the given start.
+            return newton_static(rotor, sites, speed, options, time, (u0, p0), f_ext, false)
+                .or(rested);
         }
     }
     let direct = newton_static(rotor, sites, speed, options, time, (u0, p0), f_ext, false);
     let settled = |sites: &Sites, (u, p): &(Vec<f64>, Vec<f64>)| {
         !reseat_pads(sites, u, &mut p.clone(), speed)
     };
-    if direct.as_ref().is_ok_and(|e| settled(sites, e)) {
-        return direct;
-    }
     let pads = sites.n_internal > 0;
+    let direct = match direct {
+        Ok(e) if settled(sites, &e) => {
+            let (u, p) = e;
+            if !pads || !pushed_off_centre(sites, &u) {
+                return Ok((u, p));
+            }
+            // A pad bearing pushes its journal off its centre: Newton from
+            // the bearings' own equilibria; when that finds no held one, the
+            // direct equilibrium as before (evaluated again: the sites hold it).
+            if let Some((u0, p0)) = film_start(rotor, sites, f_ext, speed) {
+                let outcome = newton_static(
+                    rotor,
+                    sites,
+                    speed,
+                    options,
+                    time,
+                    (u0, Some(p0)),
+                    f_ext,
+                    true,
+                );
+                if outcome
+                    .as_ref()
+                    .is_ok_and(|e| settled(sites, e) && !pushed_off_centre(sites, &e.0))
+                {
+                    return outcome;
+                }
+            }
+            return newton_static(
+                rotor,
+                sites,
+                speed,
+                options,
+                time,
+                (u, Some(p)),
+                f_ext,
+                false,
+            );
+        }
+        other => other,
+    };
     if let Some((u, p)) = pads
         .then(|| film_start(rotor, sites, f_ext, speed))
         .flatten()

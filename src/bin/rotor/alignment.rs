@@ -6,7 +6,9 @@
 //! `analysis::offset_stability`.
 
 use clap::Args;
-use rotor_bearing::analysis::alignment::{alignment, equal_specific_loads, offsets_for_loads};
+use rotor_bearing::analysis::alignment::{
+    Alignment, AlignmentError, alignment, carries_weight, equal_specific_loads, offsets_for_loads,
+};
 use rotor_bearing::analysis::offset_stability::{STEP, offset_sensitivity};
 use rotor_bearing::analysis::operating_point::operating_point;
 use rotor_bearing::analysis::shaft_loads::{coupling_loads, largest_stress, section_loads};
@@ -52,11 +54,17 @@ pub fn run(rotor: &Rotor, args: AlignmentArgs) -> Result<(), String> {
     let line = alignment(rotor, speed, &options).map_err(|e| at(&e))?;
     let films = operating_point(rotor, speed).map_err(|e| at(&e))?;
     let d = line.direction;
+    let weight = carries_weight(rotor);
     println!(
-        "alignment of {name} at {} rpm: loads and elevations along ({:.3}, {:.3}) (against gravity)",
+        "alignment of {name} at {} rpm: loads and elevations along ({:.3}, {:.3}) ({})",
         Short(rpm),
         d[0] + 0.0,
-        d[1] + 0.0
+        d[1] + 0.0,
+        if weight {
+            "against gravity"
+        } else {
+            "a vertical machine: in the plane of its largest offset"
+        }
     );
     println!(
         "{:<14} {:>6} {:>12} {:>12} {:>12} {:>12} {:>12} {:>10} {:>8} {:>9}",
@@ -116,44 +124,17 @@ pub fn run(rotor: &Rotor, args: AlignmentArgs) -> Result<(), String> {
         println!();
     }
     let (target, what) = match args.target {
-        Some(t) => (t, "the given target"),
-        None => (equal_specific_loads(&line), "equal specific load"),
+        Some(t) => (Some(t), "the given target"),
+        // A vertical machine's guide bearings share no weight: the straight
+        // line unloads them all.
+        None if !weight => (None, ""),
+        None => (Some(equal_specific_loads(&line)), "equal specific load"),
     };
-    let total: f64 = line.loads().iter().sum();
-    let found = offsets_for_loads(
-        rotor,
-        speed,
-        &options,
-        &target,
-        LOAD_TOLERANCE * total.abs().max(1.0),
-        MAX_STEPS,
-    )
-    .map_err(|e| at(&e))?;
-    println!(
-        "offsets for {what} (least-norm change of the elevations, {} Newton steps):",
-        found.iterations
-    );
-    println!(
-        "{:<14} {:>12} {:>12} {:>12} {:>12} {:>12}",
-        "bearing", "offset_x µm", "offset_y µm", "change µm", "target N", "achieved N"
-    );
-    for (k, b) in found.achieved.bearings.iter().enumerate() {
-        let before = line.bearings[k].offset;
-        let change = (b.offset[0] - before[0]) * d[0] + (b.offset[1] - before[1]) * d[1];
+    if let Some(target) = target {
+        print_target(rotor, speed, &options, &line, &target, what).map_err(|e| at(&e))?;
+    } else {
         println!(
-            "{:<14} {:>12.2} {:>12.2} {:>12.2} {:>12.1} {:>12.1}",
-            b.name,
-            b.offset[0] * 1e6,
-            b.offset[1] * 1e6,
-            change * 1e6,
-            found.target[k],
-            b.load
-        );
-    }
-    if found.unreachable > LOAD_TOLERANCE * total.abs().max(1.0) {
-        println!(
-            "no alignment reaches this target: {:.3e} N of it is out of reach (the loads must balance the line's weight and its moment); the offsets meet it in the least-squares sense",
-            found.unreachable
+            "a vertical machine carries no weight on its guide bearings: the straight line (all offsets zero) unloads them; --target asks for other loads"
         );
     }
     let all = rotor.dofs.expand(&line.equilibrium.displacement);
@@ -198,6 +179,55 @@ pub fn run(rotor: &Rotor, args: AlignmentArgs) -> Result<(), String> {
                 s.log_decrement_slope[1] * 1e-3
             );
         }
+    }
+    Ok(())
+}
+
+/// The offsets that give `target` (`what` it is) and the loads they give.
+fn print_target(
+    rotor: &Rotor,
+    speed: f64,
+    options: &SolverOptions,
+    line: &Alignment,
+    target: &[f64],
+    what: &str,
+) -> Result<(), AlignmentError> {
+    let d = line.direction;
+    let total: f64 = line.loads().iter().sum();
+    let found = offsets_for_loads(
+        rotor,
+        speed,
+        options,
+        target,
+        LOAD_TOLERANCE * total.abs().max(1.0),
+        MAX_STEPS,
+    )?;
+    println!(
+        "offsets for {what} (least-norm change of the elevations, {} Newton steps):",
+        found.iterations
+    );
+    println!(
+        "{:<14} {:>12} {:>12} {:>12} {:>12} {:>12}",
+        "bearing", "offset_x µm", "offset_y µm", "change µm", "target N", "achieved N"
+    );
+    for (k, b) in found.achieved.bearings.iter().enumerate() {
+        let before = line.bearings[k].offset;
+        let change = (b.offset[0] - before[0]) * d[0] + (b.offset[1] - before[1]) * d[1];
+        println!(
+            "{:<14} {:>12.2} {:>12.2} {:>12.2} {:>12.1} {:>12.1}",
+            b.name,
+            b.offset[0] * 1e6,
+            b.offset[1] * 1e6,
+            change * 1e6,
+            found.target[k],
+            b.load
+        );
+    }
+    if found.unreachable > LOAD_TOLERANCE * total.abs().max(1.0) {
+        println!(
+            "no alignment reaches this target: {:.3e} N of it is out of reach (the loads must balance the line's weight and its moment); the offsets meet it in the least-squares sense",
+            found.unreachable
+        );
     }
     Ok(())
 }

@@ -105,6 +105,14 @@ fn output_value(o: &Outputs, binding: Binding) -> f64 {
         Binding::TorqueSpeed(k) => o.torques[k].speed,
         Binding::TorqueAngle(k) => o.torques[k].angle,
         Binding::ShaftTorque(k) => o.shaft_torques[k],
+        Binding::StaticFx(k) => o.bearings[k].static_fx,
+        Binding::StaticFy(k) => o.bearings[k].static_fy,
+        Binding::DynamicFx(k) => o.bearings[k].dynamic_load().0,
+        Binding::DynamicFy(k) => o.bearings[k].dynamic_load().1,
+        Binding::DynamicLoad(k) => {
+            let (x, y) = o.bearings[k].dynamic_load();
+            x.hypot(y)
+        }
         _ => f64::NAN,
     }
 }

@@ -11,6 +11,7 @@ use crate::solver::SolverOptions;
 pub use crate::solver::time_step::DEFAULT_LOCAL_ERROR_TOLERANCE;
 use crate::solver::time_step::largest_adaptive_step;
 
+mod bearing_loads;
 mod drive;
 mod loads;
 mod losses;
@@ -114,6 +115,17 @@ pub enum Binding {
     OffsetX(usize),
     /// Centre offset y of model bearing `k` off the nominal axis (m).
     OffsetY(usize),
+    /// Static load x of bearing `k`, its force on the journal at the
+    /// equilibrium of initialization (N).
+    StaticFx(usize),
+    /// Static load y of bearing `k` (N).
+    StaticFy(usize),
+    /// Dynamic load x of bearing `k`, its force minus the static load (N).
+    DynamicFx(usize),
+    /// Dynamic load y of bearing `k` (N).
+    DynamicFy(usize),
+    /// Magnitude of the dynamic load of bearing `k` (N).
+    DynamicLoad(usize),
 }
 
 /// FMI base type.
@@ -302,6 +314,9 @@ impl Table<'_> {
                     | Binding::ThrustFriction(_)
                     | Binding::ThrustPowerLoss(_)
                     | Binding::PowerLoss
+                    | Binding::DynamicFx(_)
+                    | Binding::DynamicFy(_)
+                    | Binding::DynamicLoad(_)
             );
         let (min, max) = value_range(binding, self.model);
         self.out.push(Variable {
@@ -359,5 +374,6 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
     losses::add(&mut t);
     offsets::add(&mut t);
     rotating_pull::add(&mut t);
+    bearing_loads::add(&mut t);
     t.out
 }

@@ -76,9 +76,19 @@ pub fn model_summary(rotor: &Rotor) -> String {
             Some(p) => format!(" on pedestal {}", m.pedestals[p].name),
             None => String::new(),
         };
+        // Its installed centre off the nominal axis (issue 49).
+        let off = if b.offset == [0.0, 0.0] {
+            String::new()
+        } else {
+            format!(
+                ", centre offset ({}, {}) µm",
+                short(b.offset[0] * 1e6),
+                short(b.offset[1] * 1e6)
+            )
+        };
         writeln!(
             s,
-            "  {what} {} at node {}{on}: {}",
+            "  {what} {} at node {}{on}{off}: {}",
             b.name,
             b.node + 1,
             describe_bearing(&b.kind)
