@@ -62,10 +62,17 @@ fn library() -> Fmi3Binding {
 
 fn model() -> (RotorModel, PathBuf) {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml");
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fmi3_abi_resources");
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::copy(&path, dir.join("model.toml")).unwrap();
-    (RotorModel::from_file(&path).unwrap(), dir)
+    // Written once per run: a copy made while a parallel test's instance
+    // reads `model.toml` would hand it a truncated file.
+    static RESOURCES: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    let dir = RESOURCES.get_or_init(|| {
+        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+            .join(format!("fmi3_abi_resources_{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::copy(&path, dir.join("model.toml")).unwrap();
+        dir
+    });
+    (RotorModel::from_file(&path).unwrap(), dir.clone())
 }
 
 fn instantiate(lib: &Fmi3Binding, token: &str, dir: &std::path::Path, tag: usize) -> fmi3Instance {

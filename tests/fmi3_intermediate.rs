@@ -183,10 +183,20 @@ fn library() -> &'static Fmi3Binding {
 
 fn model() -> (RotorModel, PathBuf) {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml");
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("fmi3_intermediate_resources");
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::copy(&path, dir.join("model.toml")).unwrap();
-    (RotorModel::from_file(&path).unwrap(), dir)
+    // The resources are written once per run: the tests run in parallel, and
+    // a copy made while another test's instance reads `model.toml` let that
+    // one read a truncated file (its instantiation failed now and then).
+    static RESOURCES: std::sync::OnceLock<PathBuf> = std::sync::OnceLock::new();
+    let dir = RESOURCES.get_or_init(|| {
+        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!(
+            "fmi3_intermediate_resources_{}",
+            std::process::id()
+        ));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::copy(&path, dir.join("model.toml")).unwrap();
+        dir
+    });
+    (RotorModel::from_file(&path).unwrap(), dir.clone())
 }
 
 fn vr(model: &RotorModel, name: &str) -> u32 {

@@ -645,7 +645,7 @@ fn shipped_models_are_plausible() {
         );
         count += 1;
     }
-    assert_eq!(count, 10);
+    assert_eq!(count, 11);
 }
 
 #[test]
