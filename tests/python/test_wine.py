@@ -113,14 +113,16 @@ def remote_run(job):
     np.save(spec["result"], res)
 
 
-DYNAMIC_LOAD = (".dynamic_fx", ".dynamic_fy", ".dynamic_load")
+BEARING_LOADS = (".dynamic_fx", ".dynamic_fy", ".dynamic_load", ".static_fx", ".static_fy")
 
 
 def load_scale_source(name, names):
-    """A bearing's dynamic load is its force less its static load: its
-    round-off is that of the force, so the force components (`.fx`, `.fy` of
-    the same bearing, where output) set its scale; None for other outputs."""
-    for suffix in DYNAMIC_LOAD:
+    """A bearing's static load is its force at the equilibrium, its dynamic
+    load the force less the static one: their round-off is that of the force
+    (a horizontal rotor's static_fx is zero to the Newton tolerance), so the
+    force components (`.fx`, `.fy` of the same bearing, where output) set
+    their scale; None for other outputs."""
+    for suffix in BEARING_LOADS:
         if name.endswith(suffix):
             stem = name[: -len(suffix)]
             return [n for n in (stem + ".fx", stem + ".fy") if n in names]
@@ -381,7 +383,7 @@ def main(root):
             WL, half = hex_rows(win.stdout, "cont")   # the linux64 state continued by win64
             LW, _ = hex_rows(lin2.stdout, "cont")     # the win64 state continued by linux64
             scale = np.max(np.abs(L), axis=0)
-            # A dynamic load's scale is its bearing's force (load_scale_source).
+            # A bearing load's scale is its bearing's force (load_scale_source).
             names = [v.name for v in md.modelVariables if v.causality == "output"]
             for j, n in enumerate(names):
                 forces = load_scale_source(n, names)
