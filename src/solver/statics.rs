@@ -247,6 +247,32 @@ pub(super) fn settle(
     Ok(outcome)
 }
 
+/// Rotor displacements and pad tilts of a static equilibrium.
+type RotorAndPads = (Vec<f64>, Vec<f64>);
+
+/// Newton from the bearings' own equilibria ([`film_start`]), damped;
+/// `None` when they give no start.
+fn from_film_start(
+    rotor: &Rotor,
+    sites: &mut Sites,
+    speed: f64,
+    options: &SolverOptions,
+    time: f64,
+    f_ext: &[f64],
+) -> Option<Result<RotorAndPads, SolverError>> {
+    let (u, p) = film_start(rotor, sites, f_ext, speed)?;
+    Some(newton_static(
+        rotor,
+        sites,
+        speed,
+        options,
+        time,
+        (u, Some(p)),
+        f_ext,
+        true,
+    ))
+}
+
 /// [`settle`] without the stability check.
 fn settle_unchecked(
     rotor: &Rotor,
@@ -285,17 +311,7 @@ fn settle_unchecked(
             // A pad bearing pushes its journal off its centre: Newton from
             // the bearings' own equilibria; when that finds no held one, the
             // direct equilibrium as before (evaluated again: the sites hold it).
-            if let Some((u0, p0)) = film_start(rotor, sites, f_ext, speed) {
-                let outcome = newton_static(
-                    rotor,
-                    sites,
-                    speed,
-                    options,
-                    time,
-                    (u0, Some(p0)),
-                    f_ext,
-                    true,
-                );
+            if let Some(outcome) = from_film_start(rotor, sites, speed, options, time, f_ext) {
                 if outcome
                     .as_ref()
                     .is_ok_and(|e| settled(sites, e) && !pushed_off_centre(sites, &e.0))
@@ -316,20 +332,10 @@ fn settle_unchecked(
         }
         other => other,
     };
-    if let Some((u, p)) = pads
-        .then(|| film_start(rotor, sites, f_ext, speed))
+    if let Some(outcome) = pads
+        .then(|| from_film_start(rotor, sites, speed, options, time, f_ext))
         .flatten()
     {
-        let outcome = newton_static(
-            rotor,
-            sites,
-            speed,
-            options,
-            time,
-            (u, Some(p)),
-            f_ext,
-            true,
-        );
         if outcome.as_ref().is_ok_and(|e| settled(sites, e)) {
             return outcome;
         }
