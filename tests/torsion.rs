@@ -581,3 +581,38 @@ fn the_cli_simulates_a_torque_driven_shaft() {
         "{err}"
     );
 }
+
+/// A coast to rest: the unit of the breakaway test turning at 0.5 rad/s with
+/// no input torque slows on its bearings' friction, and once its mean speed
+/// reaches zero with no torque to break it away it sticks: every later
+/// output is exactly zero speed (the sites' breakaway torque is taken where
+/// the speed reaches or crosses zero).
+#[test]
+fn a_coasting_unit_sticks_at_rest() {
+    let model = torque_driven_hydro(false);
+    let h = 2e-3;
+    let mut sim = Simulator::new(
+        Rotor::new(model).unwrap(),
+        SolverOptions {
+            time_step: h,
+            ..SolverOptions::default()
+        },
+    )
+    .unwrap();
+    sim.set_speed(0.5, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    let mut stopped = None;
+    for n in 1..=2000 {
+        let t = n as f64 * h;
+        sim.advance_to(t).unwrap();
+        let speed = sim.outputs().unwrap().speed;
+        match stopped {
+            None if speed == 0.0 => stopped = Some(t),
+            None => assert!(speed > 0.0, "t = {t}: {speed} rad/s"),
+            Some(_) => assert_eq!(speed, 0.0, "t = {t}"),
+        }
+    }
+    let stopped = stopped.expect("the unit coasts to rest");
+    println!("stopped at {stopped} s");
+    assert!(stopped < 3.0, "{stopped}");
+}

@@ -127,17 +127,15 @@ impl Simulator {
             let range = site.offset..site.offset + site.internal;
             site.q[2..].copy_from_slice(&p[range.clone()]);
             site.qd[2..].copy_from_slice(&pd[range]);
-            let eval = &mut tors.eval[k];
-            site.bearing
-                .evaluate(&site.q, &site.qd, speed, eval)
+            // The report's numbers without the Jacobians (`Bearing::output`).
+            let torque = site
+                .bearing
+                .output(&site.q, &site.qd, speed, &mut tors.eval[k])
                 .map_err(|source| SolverError::Bearing {
                     name: site.name.clone(),
                     time: self.state.time,
                     source,
-                })?;
-            let torque = site
-                .bearing
-                .report(&site.q, &site.qd, speed, eval)
+                })?
                 .friction_torque;
             total += torque.abs();
             if let (true, Some(i)) = (add, tors.site_dofs[k]) {
@@ -285,7 +283,15 @@ impl Simulator {
                 && absorb_coupling_change(tors, h, self.options.tolerance);
             std::mem::swap(&mut tors.coupling, &mut tors.fresh);
             if change <= self.options.tolerance * size || absorbed {
-                let at_rest = self.site_friction(0.0, false, false)?;
+                // The sites' breakaway torque matters only where the mean
+                // speed reaches or crosses zero (`commit_coupled_step`).
+                let w1 = tors.mean(&tors.omega);
+                let w0 = self.speed_at(self.state.time);
+                let at_rest = if w1 == 0.0 || w0 * w1 < 0.0 {
+                    self.site_friction(0.0, false, false)?
+                } else {
+                    0.0
+                };
                 self.commit_coupled_step(h, drive, at_rest);
                 return Ok(None);
             }
@@ -296,7 +302,8 @@ impl Simulator {
 
     /// Take the converged coupled step: twist, coupling torques, lateral
     /// state; a mean speed that reaches or crosses zero with the input torque
-    /// within the breakaway torque (`at_rest`: the sites' part) sticks.
+    /// within the breakaway torque (`at_rest`: the sites' part, needed only
+    /// then) sticks.
     fn commit_coupled_step(&mut self, h: f64, drive: f64, at_rest: f64) {
         let w0 = self.speed_at(self.state.time);
         self.commit_lateral_step(h);
