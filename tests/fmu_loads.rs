@@ -135,6 +135,7 @@ fn load_variables_are_appended_in_channel_order() {
             "bearings.turbine_guide.dynamic_fx",
             "bearings.turbine_guide.dynamic_fy",
             "bearings.turbine_guide.dynamic_load",
+            "forces.vortex_rope.ratio",
         ]
     );
     let channels = m.load_inputs();
@@ -161,6 +162,7 @@ fn load_variables_are_appended_in_channel_order() {
     );
     for v in vars[first + 6..].iter().filter(|v| {
         v.name != "solver.local_error_tolerance"
+            && !matches!(v.binding, Binding::ForceFrequency(_))
             && !is_offset(v)
             && !v.name.ends_with(".dynamic_eccentricity")
     }) {
@@ -530,4 +532,114 @@ fn non_finite_load_inputs_are_errors() {
             );
         }
     }
+}
+
+/// A harmonic force's frequency is tunable (issue 48: the vortex rope's
+/// ratio from the plant): `forces.vortex_rope.ratio` set to 0.27 at
+/// t = 0.05 s turns the rope (2e4 N, part load) at 0.27 × the running speed from there, its
+/// angle going on without a jump. Truth: a second FMU whose model file has
+/// the ratio 0.27 and the phase `φ₀ + (0.3 − 0.27) φ_c` (`φ_c` the spin
+/// angle at the change), both with the rope's amplitude held at 0 until the
+/// change (so that the two runs are the same until then): the runs agree
+/// bit for bit afterwards, in every output. The ratio is in the FMU state
+/// (a rollback brings back the old one, and the run repeats bit for bit),
+/// reads back as set, and a value beyond its declared range is refused.
+#[test]
+fn a_harmonic_forces_ratio_is_tunable_without_a_jump() {
+    use rotor_bearing::model::{ForceKind, HarmonicFrequency};
+    let m = model("hydro_unit_brackets");
+    let rope = m
+        .forces
+        .iter()
+        .position(|f| f.name == "vortex_rope")
+        .unwrap();
+    let ForceKind::Harmonic {
+        magnitude,
+        phase,
+        frequency: HarmonicFrequency::Ratio(r0),
+        ..
+    } = m.forces[rope].kind
+    else {
+        panic!("the vortex rope is a harmonic force with a ratio")
+    };
+    assert_eq!((r0, magnitude), (0.3, 0.0));
+    // Part load (the model file's comment): the rope at 2e4 N.
+    let magnitude = 2e4;
+    let ratio = vr(&m, "forces.vortex_rope.ratio");
+    let amplitude = vr(&m, "forces.vortex_rope.magnitude");
+    let outputs: Vec<u32> = variables(&m)
+        .iter()
+        .filter(|v| v.causality == Causality::Output && v.kind == Kind::Real)
+        .map(|v| v.value_reference)
+        .collect();
+    let begin = |model: &RotorModel, name: &str| {
+        let mut fmu = Instance::new(name, model.clone()).unwrap();
+        assert_eq!(
+            fmu.set(vr(model, "shaft.speed"), Kind::Real, 300.0 * RPM),
+            Status::Ok
+        );
+        assert_eq!(fmu.set(amplitude, Kind::Real, 0.0), Status::Ok);
+        start(&mut fmu);
+        fmu
+    };
+    let trace = |fmu: &mut Instance, from: usize, to: usize| {
+        let mut values = Vec::new();
+        for k in from..to {
+            assert_eq!(fmu.do_step(k as f64 * 5e-3, 5e-3), Status::Ok);
+            values.extend(
+                outputs
+                    .iter()
+                    .map(|&r| fmu.get(r, Kind::Real).unwrap().to_bits()),
+            );
+        }
+        values
+    };
+    let mut a = begin(&m, "tuned");
+    assert_eq!(a.get(ratio, Kind::Real), Ok(0.3));
+    trace(&mut a, 0, 10);
+    let spin = a.get(vr(&m, "shaft.spin_angle"), Kind::Real).unwrap();
+    assert!(spin > 1.0, "{spin}");
+    let saved = a.snapshot().unwrap();
+    assert_eq!(a.set(ratio, Kind::Real, 0.27), Status::Ok);
+    assert_eq!(a.get(ratio, Kind::Real), Ok(0.27));
+    assert_eq!(a.set(amplitude, Kind::Real, magnitude), Status::Ok);
+    let tuned = trace(&mut a, 10, 60);
+
+    let mut shifted = m.clone();
+    if let ForceKind::Harmonic {
+        phase: p,
+        frequency: f,
+        ..
+    } = &mut shifted.forces[rope].kind
+    {
+        *p = phase + (r0 - 0.27) * spin;
+        *f = HarmonicFrequency::Ratio(0.27);
+    }
+    let mut b = begin(&shifted, "shifted");
+    let before_b = trace(&mut b, 0, 10);
+    assert_eq!(b.set(amplitude, Kind::Real, magnitude), Status::Ok);
+    assert!(
+        tuned == trace(&mut b, 10, 60),
+        "the tuned ratio is not the shifted model's"
+    );
+    assert!(!before_b.is_empty());
+
+    // The old ratio comes back with the state, and the run repeats.
+    assert_eq!(a.restore(&saved), Status::Ok);
+    assert_eq!(a.get(ratio, Kind::Real), Ok(0.3));
+    let bytes = a.serialize(&saved).unwrap();
+    assert_eq!(a.set(amplitude, Kind::Real, magnitude), Status::Ok);
+    let untuned = trace(&mut a, 10, 60);
+    assert!(untuned != tuned);
+    let restored = a.deserialize(&bytes).unwrap();
+    assert_eq!(a.restore(&restored), Status::Ok);
+    assert_eq!(a.set(amplitude, Kind::Real, magnitude), Status::Ok);
+    assert!(
+        trace(&mut a, 10, 60) == untuned,
+        "the serialized state's run differs"
+    );
+    // Beyond the declared range: refused by name.
+    assert_eq!(a.set(ratio, Kind::Real, 2000.0), Status::Error);
+    let text = a.drain_messages().pop().unwrap().2;
+    assert!(text.contains("forces.vortex_rope.ratio = 2000"), "{text}");
 }

@@ -46,9 +46,10 @@ pub const UNITS: [UnitSpec; 9] = [
 
 /// Units declared only when a variable uses one (so that a model without
 /// such variables keeps its description, and GUID, as it was).
-pub const UNITS_WHEN_USED: [UnitSpec; 2] = [
+pub const UNITS_WHEN_USED: [UnitSpec; 3] = [
     ("m/s", [0, 1, -1, 0], &[("mm/s", 1e3)]),
     ("W", [1, 2, -3, 0], &[("kW", 1e-3)]),
+    ("Hz", [0, 0, -1, 0], &[]),
 ];
 
 /// GUID of a description text (placeholder GUID inside): two FNV-1a 64-bit hashes.

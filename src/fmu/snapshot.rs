@@ -51,8 +51,9 @@ pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
 /// the step proposal and previous accelerations of accuracy-controlled steps,
 /// 8 which contact and coefficient-table warnings have been raised and the
 /// reduced rotor's validity watch, 9 whether the pads are settled on their
-/// own balance, 10 each bearing's static load).
-pub const VERSION: u64 = 10;
+/// own balance, 10 each bearing's static load, 11 each harmonic force's
+/// phase and frequency, tunable in the FMU).
+pub const VERSION: u64 = 11;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -208,7 +209,7 @@ const SCALARS: [Scalar; 19] = [
 ];
 
 /// The vector fields, in image order.
-const VECTORS: [Vector; 21] = [
+const VECTORS: [Vector; 23] = [
     ("u", |s| &s.sim.u, |s| &mut s.sim.u),
     ("ud", |s| &s.sim.ud, |s| &mut s.sim.ud),
     ("udd", |s| &s.sim.udd, |s| &mut s.sim.udd),
@@ -269,6 +270,16 @@ const VECTORS: [Vector; 21] = [
         "static_load",
         |s| &s.sim.static_load,
         |s| &mut s.sim.static_load,
+    ),
+    (
+        "harmonic_phase",
+        |s| &s.sim.harmonic_phase,
+        |s| &mut s.sim.harmonic_phase,
+    ),
+    (
+        "harmonic_frequency",
+        |s| &s.sim.harmonic_frequency,
+        |s| &mut s.sim.harmonic_frequency,
     ),
 ];
 
@@ -497,6 +508,8 @@ mod tests {
                 contact_reported: vec![0.0, 1.0],
                 table_warned: vec![1.0, 0.0],
                 static_load: v(4, 22.0),
+                harmonic_phase: v(1, 23.0),
+                harmonic_frequency: v(1, 24.0),
                 step_proposal: 2.5e-4,
                 pad_balancing: 1.0,
             },

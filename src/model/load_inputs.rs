@@ -3,7 +3,7 @@
 //! drive torques, in that order, with their physical bounds — what the FMU
 //! declares as inputs and the simulator holds as `loads`.
 
-use super::{ForceKind, RotorModel};
+use super::{ForceKind, HarmonicFrequency, RotorModel};
 use crate::bearing::BearingKind;
 
 /// One input channel of the loads: a component of a static force, a
@@ -92,6 +92,29 @@ impl RotorModel {
             });
         }
         out
+    }
+
+    /// The harmonic `[[forces]]` in model order: each one's force index, phase
+    /// (rad) and frequency (its ratio to the running speed, or its angular
+    /// frequency in rad/s), the values a simulation starts from and the FMU
+    /// tunes (`forces.<f>.ratio`, `forces.<f>.frequency`).
+    pub fn harmonic_forces(&self) -> impl Iterator<Item = (usize, f64, f64)> + '_ {
+        self.forces
+            .iter()
+            .enumerate()
+            .filter_map(|(i, f)| match f.kind {
+                ForceKind::Harmonic {
+                    phase, frequency, ..
+                } => Some((
+                    i,
+                    phase,
+                    match frequency {
+                        HarmonicFrequency::Ratio(r) => r,
+                        HarmonicFrequency::Fixed(w) => w,
+                    },
+                )),
+                ForceKind::Static(_) => None,
+            })
     }
 
     /// The channel in [`Self::load_inputs`] of model bearing `k`'s dynamic

@@ -38,14 +38,34 @@ impl Rotor {
     }
 
     /// Add every load of the input values `values` at time `t` (s) and spin
-    /// angle `spin_angle` (rad) to `f`: static, harmonic and port forces.
-    pub fn add_loads_at(&self, values: &[f64], t: f64, spin_angle: f64, f: &mut [f64]) {
-        self.add_loads(values, Some((t, spin_angle)), f);
+    /// angle `spin_angle` (rad) to `f`: static, harmonic and port forces, the
+    /// harmonic ones at the phases and frequencies `harmonic` (one
+    /// `(phase, frequency)` each, [`RotorModel::harmonic_forces`] order;
+    /// the model's when `None`).
+    ///
+    /// [`RotorModel::harmonic_forces`]: crate::model::RotorModel::harmonic_forces
+    pub fn add_loads_at(
+        &self,
+        values: &[f64],
+        harmonic: Option<(&[f64], &[f64])>,
+        t: f64,
+        spin_angle: f64,
+        f: &mut [f64],
+    ) {
+        self.add_loads(values, Some((t, spin_angle, harmonic)), f);
     }
 
-    /// The loads of `values`; harmonic forces only with `at = (t, spin angle)`.
-    fn add_loads(&self, values: &[f64], at: Option<(f64, f64)>, f: &mut [f64]) {
+    /// The loads of `values`; harmonic forces only with `at = (t, spin
+    /// angle, their phases and frequencies)`.
+    #[allow(clippy::type_complexity)]
+    fn add_loads(
+        &self,
+        values: &[f64],
+        at: Option<(f64, f64, Option<(&[f64], &[f64])>)>,
+        f: &mut [f64],
+    ) {
         let mut k = 0;
+        let mut h = 0;
         for force in &self.model.forces {
             match force.kind {
                 ForceKind::Static(_) => {
@@ -58,12 +78,20 @@ impl Rotor {
                     direction,
                     ..
                 } => {
-                    if let Some((t, spin)) = at {
+                    if let Some((t, spin, harmonic)) = at {
                         let a = values[k];
+                        let (phase, value) = match harmonic {
+                            Some((phases, frequencies)) => (phases[h], frequencies[h]),
+                            None => match frequency {
+                                HarmonicFrequency::Ratio(r) | HarmonicFrequency::Fixed(r) => {
+                                    (phase, r)
+                                }
+                            },
+                        };
                         let theta = phase
                             + match frequency {
-                                HarmonicFrequency::Ratio(r) => r * spin,
-                                HarmonicFrequency::Fixed(w) => w * t,
+                                HarmonicFrequency::Ratio(_) => value * spin,
+                                HarmonicFrequency::Fixed(_) => value * t,
                             };
                         let (s, c) = theta.sin_cos();
                         let (fx, fy) = match direction {
@@ -76,6 +104,7 @@ impl Rotor {
                         self.add_at(f, force.node, fx, fy);
                     }
                     k += 1;
+                    h += 1;
                 }
             }
         }
@@ -87,7 +116,7 @@ impl Rotor {
             if !placed.kind.is_magnetic_pull() {
                 continue;
             }
-            if let Some((_, spin)) = at {
+            if let Some((_, spin, _)) = at {
                 if let Some([fx, fy]) = self.pull_rotating_force(b, values[k], spin) {
                     self.add_at(f, placed.node, fx, fy);
                     if let Some(p) = placed.pedestal {

@@ -91,6 +91,8 @@ impl SimState {
             table_warned,
             static_load,
             pad_balancing,
+            harmonic_phase,
+            harmonic_frequency,
         } = other;
         for (dst, src) in [
             (&mut self.u, u),
@@ -112,6 +114,8 @@ impl SimState {
             (&mut self.contact_reported, contact_reported),
             (&mut self.table_warned, table_warned),
             (&mut self.static_load, static_load),
+            (&mut self.harmonic_phase, harmonic_phase),
+            (&mut self.harmonic_frequency, harmonic_frequency),
         ] {
             dst.clone_from(src);
         }

@@ -1,9 +1,10 @@
 //! The simulator's inputs: speed (or a torque-driven shaft's initial speed),
 //! unbalance, load channels (forces, ports, torques), and the tunable bearing
-//! parameters (viscosity, field excitation).
+//! parameters (viscosity, field excitation), the harmonic forces' frequencies.
 
 use super::error::SolverError;
 use super::simulator::Simulator;
+use crate::model::{ForceKind, HarmonicFrequency};
 use crate::units::{RAD_S_TO_RPM, Short};
 
 impl Simulator {
@@ -185,6 +186,46 @@ impl Simulator {
             )));
         }
         *plane_slot(&mut self.state.unbalance_phase, plane)? = phase;
+        Ok(())
+    }
+
+    /// Set the frequency of harmonic force `index` (the order of
+    /// [`RotorModel::harmonic_forces`]) from now on: its ratio to the running
+    /// speed, or its angular frequency (rad/s, not negative) for a force of
+    /// fixed frequency, as the model file gives it. The force's angle goes on
+    /// from where it is, `θ = θ_now + ν (x − x_now)` (`x` the spin angle or
+    /// the time): its phase moves by `(ν_old − ν) x_now`, so the force turns
+    /// at the new frequency without a jump.
+    ///
+    /// [`RotorModel::harmonic_forces`]: crate::model::RotorModel::harmonic_forces
+    pub fn set_force_frequency(&mut self, index: usize, frequency: f64) -> Result<(), SolverError> {
+        let count = self.state.harmonic_frequency.len();
+        let Some((force, _, _)) = self.rotor.model.harmonic_forces().nth(index) else {
+            return Err(SolverError::Input(format!(
+                "no harmonic force {index} (the model has {count})"
+            )));
+        };
+        let f = &self.rotor.model.forces[force];
+        let ratio = matches!(
+            f.kind,
+            ForceKind::Harmonic {
+                frequency: HarmonicFrequency::Ratio(_),
+                ..
+            }
+        );
+        if !(frequency.is_finite() && (ratio || frequency >= 0.0)) {
+            return Err(SolverError::Input(format!(
+                "{} of harmonic force {}: {} must be finite{}",
+                if ratio { "ratio" } else { "frequency" },
+                f.name,
+                Short(frequency),
+                if ratio { "" } else { " and not negative" }
+            )));
+        }
+        let s = &mut self.state;
+        let x = if ratio { s.spin_angle } else { s.time };
+        s.harmonic_phase[index] += (s.harmonic_frequency[index] - frequency) * x;
+        s.harmonic_frequency[index] = frequency;
         Ok(())
     }
 }

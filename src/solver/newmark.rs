@@ -186,8 +186,12 @@ impl Simulator {
             {
                 *v = l + r * since;
             }
+            let harmonic = (
+                self.state.harmonic_phase.as_slice(),
+                self.state.harmonic_frequency.as_slice(),
+            );
             self.rotor
-                .add_loads_at(&w.load_values, t, spin_angle, &mut w.f_ext);
+                .add_loads_at(&w.load_values, Some(harmonic), t, spin_angle, &mut w.f_ext);
         } else {
             // The preload of linear bearings and pedestals set off the axis
             // (in `add_loads_at` with the load inputs; nothing without offsets).

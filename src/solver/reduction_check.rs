@@ -452,6 +452,8 @@ mod tests {
             contact_reported: vec![],
             table_warned: vec![],
             static_load: vec![],
+            harmonic_phase: vec![],
+            harmonic_frequency: vec![],
             step_proposal: 0.0,
             pad_balancing: 0.0,
         };

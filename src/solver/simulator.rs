@@ -136,6 +136,8 @@ impl Simulator {
             contact_reported: vec![0.0; 2 * sites.list.len()],
             table_warned: vec![0.0; rotor.model.bearings.len()],
             static_load: vec![0.0; 2 * rotor.model.bearings.len()],
+            harmonic_phase: rotor.model.harmonic_forces().map(|h| h.1).collect(),
+            harmonic_frequency: rotor.model.harmonic_forces().map(|h| h.2).collect(),
             step_proposal: 0.0,
             pad_balancing: 0.0,
         };
@@ -249,6 +251,8 @@ impl Simulator {
             || state.contact_reported.len() != s.contact_reported.len()
             || state.table_warned.len() != s.table_warned.len()
             || state.static_load.len() != s.static_load.len()
+            || state.harmonic_phase.len() != s.harmonic_phase.len()
+            || state.harmonic_frequency.len() != s.harmonic_frequency.len()
             || !(state.udd_previous.is_empty() || state.udd_previous.len() == s.u.len())
         {
             return Err(SolverError::Input(

@@ -84,6 +84,16 @@ pub struct SimState {
     ///
     /// [`Simulator::settle_static`]: super::Simulator::settle_static
     pub static_load: Vec<f64>,
+    /// Each harmonic `[[forces]]` entry's phase (rad), model order of the
+    /// harmonic forces: its angle is `θ = phase + frequency × x`, `x` the
+    /// spin angle (a ratio to the running speed) or the time (a fixed
+    /// frequency). The model's phase, moved where its frequency is changed
+    /// so that the angle goes on without a jump
+    /// ([`Simulator::set_force_frequency`](super::Simulator::set_force_frequency)).
+    pub harmonic_phase: Vec<f64>,
+    /// Each harmonic force's frequency: its ratio to the running speed, or
+    /// its angular frequency (rad/s).
+    pub harmonic_frequency: Vec<f64>,
 }
 
 impl SimState {
@@ -102,7 +112,7 @@ impl SimState {
             ("step_proposal", self.step_proposal),
             ("pad_balancing", self.pad_balancing),
         ];
-        let vectors: [(&str, &[f64]); 19] = [
+        let vectors: [(&str, &[f64]); 21] = [
             ("u", &self.u),
             ("ud", &self.ud),
             ("udd", &self.udd),
@@ -122,6 +132,8 @@ impl SimState {
             ("contact_reported", &self.contact_reported),
             ("table_warned", &self.table_warned),
             ("static_load", &self.static_load),
+            ("harmonic_phase", &self.harmonic_phase),
+            ("harmonic_frequency", &self.harmonic_frequency),
         ];
         let bad = scalars
             .iter()

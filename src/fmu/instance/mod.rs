@@ -42,7 +42,8 @@ use super::states::Call;
 pub use super::states::{Phase, Version};
 use super::variables::{
     Binding, Causality, DEFAULT_LOCAL_ERROR_TOLERANCE, DEFAULT_MAX_ITERATIONS, DEFAULT_TOLERANCE,
-    Kind, START_SPEED, Variability, Variable, default_fmu_time_step, variables,
+    Kind, START_SPEED, Variability, Variable, default_fmu_time_step, force_frequency_scale,
+    variables,
 };
 
 mod fmu_state;
@@ -266,6 +267,8 @@ impl Instance {
         state.unbalance_phase.clone_from(&old.unbalance_phase);
         state.loads.clone_from(&old.loads);
         state.load_rates.clone_from(&old.load_rates);
+        state.harmonic_phase.clone_from(&old.harmonic_phase);
+        state.harmonic_frequency.clone_from(&old.harmonic_frequency);
         sim.set_state(state)?;
         if self.model.drive == Drive::Torque {
             sim.set_speed(self.params.initial_speed, 0.0)?;
@@ -525,6 +528,9 @@ impl Instance {
                 }
             }
             Binding::UnbalancePhase(k) => self.sim.set_unbalance_phase(k, value),
+            Binding::ForceFrequency(h) => self
+                .sim
+                .set_force_frequency(h, value * force_frequency_scale(&self.model, h)),
             Binding::Speed => self.sim.set_speed(value, 0.0),
             Binding::Unbalance(k) => self.sim.set_unbalance(k, value),
             Binding::Load(i) => self.sim.set_load(i, value, 0.0),

@@ -11,7 +11,7 @@ use crate::solver::Outputs;
 use crate::units::Short;
 
 use super::super::states::Call;
-use super::super::variables::{Binding, Causality, Kind, Variable};
+use super::super::variables::{Binding, Causality, Kind, Variable, force_frequency_scale};
 use super::{Instance, Phase, Status, category};
 
 /// The outputs at the current state, by value reference.
@@ -190,6 +190,9 @@ impl Instance {
             Binding::OffsetX(k) => self.model.bearings[k].offset[0],
             Binding::OffsetY(k) => self.model.bearings[k].offset[1],
             Binding::UnbalancePhase(k) => s.unbalance_phase[k],
+            Binding::ForceFrequency(h) => {
+                s.harmonic_frequency[h] / force_frequency_scale(&self.model, h)
+            }
             Binding::Speed => self.sim.speed_at(s.time),
             Binding::Unbalance(k) => s.unbalance[k] + s.unbalance_rate[k] * (s.time - s.speed_time),
             Binding::Load(i) => self.sim.load_at(i, s.time),

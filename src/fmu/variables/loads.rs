@@ -10,6 +10,49 @@ use super::Variability::*;
 use super::{Binding, OutputSpec, Table};
 use crate::model::ForceKind;
 
+/// Append the harmonic forces' frequencies to `t` (after every other
+/// variable, so that no earlier value reference moves): tunable parameters
+/// `forces.<f>.ratio` (to the running speed) or `forces.<f>.frequency` (Hz),
+/// the model file's values at start. A change takes effect from the next
+/// step, the force's angle going on without a jump
+/// ([`Simulator::set_force_frequency`](crate::solver::Simulator::set_force_frequency)).
+pub(super) fn add_frequencies(t: &mut Table) {
+    let model = t.model;
+    for (h, (force, _, frequency)) in model.harmonic_forces().enumerate() {
+        let (n, node) = (&model.forces[force].name, model.forces[force].node + 1);
+        let (name, description, unit, start) = if super::force_has_ratio(model, force) {
+            (
+                format!("forces.{n}.ratio"),
+                format!(
+                    "Frequency of the harmonic force {n} (node {node}) as a multiple of the running speed (e.g. 0.3 a vortex rope): its angle goes on from where it is at the change"
+                ),
+                Some("1"),
+                frequency,
+            )
+        } else {
+            (
+                format!("forces.{n}.frequency"),
+                format!(
+                    "Fixed frequency of the harmonic force {n} (node {node}): its angle goes on from where it is at the change"
+                ),
+                Some("Hz"),
+                frequency / std::f64::consts::TAU,
+            )
+        };
+        t.push(
+            name,
+            description,
+            Real,
+            Parameter,
+            Tunable,
+            unit,
+            None,
+            Some(start),
+            Binding::ForceFrequency(h),
+        );
+    }
+}
+
 /// Append the loads' variables to `t`.
 pub(super) fn add(t: &mut Table) {
     let model = t.model;

@@ -81,6 +81,10 @@ pub enum Binding {
     HousingVy(usize),
     /// Field excitation of the magnetic pull that is model bearing `k`.
     Excitation(usize),
+    /// Frequency of harmonic force `h` (the order of
+    /// [`RotorModel::harmonic_forces`]): its ratio to the running speed, or
+    /// its fixed frequency (Hz).
+    ForceFrequency(usize),
     /// Load input channel `i` (the order of
     /// [`RotorModel::load_inputs`]): a force (N), a port force (N) or a
     /// drive torque (N·m).
@@ -197,6 +201,30 @@ pub const EXCITATION_RANGE: (f64, f64) = (0.0, crate::model::limits::MAX_EXCITAT
 
 /// Allowed oil viscosities (Pa·s): positive, from a gas film to a heavy grease
 /// (the model file's range, [`crate::model::limits::VISCOSITY`]).
+/// The largest ratio of a harmonic force's frequency to the running speed
+/// the FMU takes (blade passing of the largest impellers is under 100×).
+pub const FORCE_RATIO_BOUND: f64 = 1000.0;
+
+/// Whether model force `force` is harmonic with a ratio to the running speed.
+pub fn force_has_ratio(model: &RotorModel, force: usize) -> bool {
+    matches!(
+        model.forces[force].kind,
+        crate::model::ForceKind::Harmonic {
+            frequency: crate::model::HarmonicFrequency::Ratio(_),
+            ..
+        }
+    )
+}
+
+/// What the simulator's frequency of harmonic force `h` is per unit of its
+/// FMU variable: 1 for a ratio, 2π for a fixed frequency (Hz to rad/s).
+pub fn force_frequency_scale(model: &RotorModel, h: usize) -> f64 {
+    match model.harmonic_forces().nth(h) {
+        Some((force, _, _)) if !force_has_ratio(model, force) => std::f64::consts::TAU,
+        _ => 1.0,
+    }
+}
+
 pub const VISCOSITY_RANGE: (f64, f64) = (
     crate::model::limits::VISCOSITY.min,
     crate::model::limits::VISCOSITY.max,
@@ -220,6 +248,12 @@ pub fn value_range(binding: Binding, model: &RotorModel) -> (Option<f64>, Option
         ),
         Binding::Viscosity(_) => pair(VISCOSITY_RANGE),
         Binding::Excitation(_) => pair(EXCITATION_RANGE),
+        Binding::ForceFrequency(h) => match model.harmonic_forces().nth(h) {
+            Some((force, _, _)) if force_has_ratio(model, force) => {
+                pair((-FORCE_RATIO_BOUND, FORCE_RATIO_BOUND))
+            }
+            _ => (Some(0.0), None),
+        },
         Binding::OffsetX(_) | Binding::OffsetY(_) => pair((
             crate::model::limits::OFFSET.min,
             crate::model::limits::OFFSET.max,
@@ -375,5 +409,6 @@ pub fn variables(model: &RotorModel) -> Vec<Variable> {
     offsets::add(&mut t);
     rotating_pull::add(&mut t);
     bearing_loads::add(&mut t);
+    loads::add_frequencies(&mut t);
     t.out
 }
