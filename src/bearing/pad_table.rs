@@ -30,8 +30,13 @@
 //! [`POSITION_ANGLES`] × [`SOURCE_DIRECTIONS`]. Between nodes the
 //! tensor-product cubic Hermite interpolant whose nodal slopes `W_t`, `W_φ`,
 //! `W_ψ`, `W_tφ`, `W_tψ`, `W_φψ`, `W_tφψ` are those of the interpolating
-//! cubic splines along each axis (periodic in `φ` and `ψ`, clamped in `t`):
-//! C¹ everywhere. The Jacobians are its analytic derivatives:
+//! cubic splines along each axis (periodic in `φ` and `ψ`, clamped in `t`),
+//! except that a node where `W = 0` next to another such node along an axis
+//! (the pad unloaded: its film clipped or cavitated all over) has a zero
+//! slope along it, so the interpolant is exactly zero where the film carries
+//! nothing: an unloaded pad then feels no spurious moment from the spline's
+//! ripple and parks on its pivot rest as with direct solves. Hermite
+//! interpolation is C¹ whatever the nodal slopes. The Jacobians are its analytic derivatives:
 //!
 //! `∂L'/∂x = r (cos φ G_ε − sin φ G_φ/ε)`, `∂L'/∂y = r (sin φ G_ε + cos φ G_φ/ε)`,
 //! `∂L'/∂s_x = cos ψ G − sin ψ G_ψ`, `∂L'/∂s_y = sin ψ G + cos ψ G_ψ`,
@@ -369,8 +374,22 @@ fn along_axis(
             continue;
         }
         let line: Vec<f64> = (0..n).map(|m| field[start + m * stride]).collect();
+        let periodic = axis != 0;
         for (m, s) in fit(&line).into_iter().enumerate() {
-            out[start + m * stride] = s;
+            // An unloaded stretch (the film clipped or cavitated over the
+            // whole pad: W = 0 exactly) keeps a zero slope, so the
+            // interpolant is exactly zero there as the film's load is.
+            let neighbour = |d: isize| {
+                let k = m as isize + d;
+                if periodic {
+                    Some(line[k.rem_euclid(n as isize) as usize])
+                } else {
+                    usize::try_from(k).ok().and_then(|k| line.get(k).copied())
+                }
+            };
+            let unloaded =
+                line[m] == 0.0 && (neighbour(-1) == Some(0.0) || neighbour(1) == Some(0.0));
+            out[start + m * stride] = if unloaded { 0.0 } else { s };
         }
     }
     out

@@ -165,17 +165,21 @@ fn film_theory(
         };
     }
     if tables == Some(true) {
-        if !matches!(bearing.support, FilmSupport::Plain(_)) {
-            return Err(ctx.err(
-                p.key("film_tables"),
-                "true",
-                "force tables are built for plain bearings only: tilting pads solve their films directly (remove it)",
+        let fail = |e: crate::bearing::reynolds::ReynoldsError| {
+            ctx.err(p.key("film_tables"), "true", &e.to_string())
+        };
+        if matches!(bearing.support, FilmSupport::Plain(_)) {
+            bearing.table = Some(std::sync::Arc::new(
+                PreparedTable::load_or_build(&bearing.film(), ctx.film_cache).map_err(fail)?,
             ));
+        } else {
+            let film = bearing.film();
+            for arc in bearing.pad_arcs() {
+                bearing.pad_tables.push(std::sync::Arc::new(
+                    PreparedTable::load_or_build_pad(&film, arc, ctx.film_cache).map_err(fail)?,
+                ));
+            }
         }
-        bearing.table = Some(std::sync::Arc::new(
-            PreparedTable::load_or_build(&bearing.film(), ctx.film_cache)
-                .map_err(|e| ctx.err(p.key("film_tables"), "true", &e.to_string()))?,
-        ));
     }
     Ok(BearingKind::FiniteFilm(bearing))
 }
