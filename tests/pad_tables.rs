@@ -349,3 +349,84 @@ fn pad_transient_with_tables_follows_the_direct_solves() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The CLI and the FMU with pad tables: reading the hydro unit with
+/// `film_tables = true` on its finite pads builds one table for both
+/// bearings (all pads 36°) and says so with its time; `rotor fmu-stage`
+/// writes it to `resources/film_tables`, where the FMU's model reading finds
+/// it (read, not rebuilt, and equal to the cached one bit for bit).
+#[test]
+fn pad_tables_travel_in_the_fmu_resources() {
+    let dir = std::env::temp_dir().join(format!("rotor-pad-fmu-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/hydro_unit.toml");
+    let text = std::fs::read_to_string(path).unwrap().replace(
+        "type = \"tilting_pad\"\n",
+        "type = \"tilting_pad\"\nfilm = \"finite\"\nfilm_mesh = [12, 2]\ncavitation = \"gumbel\"\nfilm_tables = true\n",
+    );
+    let model = dir.join("hydro_pad_tables.toml");
+    std::fs::write(&model, text).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .env("ROTOR_CACHE_DIR", dir.join("cache"))
+        .args([
+            "fmu-stage",
+            model.to_str().unwrap(),
+            dir.join("fmu").to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.contains("bearing generator_guide: film table pad arc 36.00°")
+            && stderr.contains("mesh 12 × 2, gumbel cavitation: built in"),
+        "{stderr}"
+    );
+    assert!(
+        !stderr.contains("bearing turbine_guide: film table"),
+        "{stderr}"
+    );
+    let resources = dir.join("fmu/resources");
+    let tables = resources.join(rotor_bearing::fmu::resources::FILM_TABLES);
+    let files: Vec<_> = std::fs::read_dir(&tables)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert_eq!(files.len(), 1, "{files:?}");
+    assert!(
+        files[0]
+            .file_name()
+            .unwrap()
+            .to_string_lossy()
+            .starts_with("pad-")
+    );
+    let m = rotor_bearing::model::RotorModel::from_file_cached(
+        &resources.join("model.toml"),
+        Some(&tables),
+    )
+    .unwrap();
+    let cached = rotor_bearing::model::RotorModel::from_toml_cached(
+        &std::fs::read_to_string(&model).unwrap(),
+        "m.toml",
+        Some(&dir.join("cache")),
+    )
+    .unwrap();
+    let mut seen = 0;
+    for (b, c) in m.bearings.iter().zip(&cached.bearings) {
+        if let (
+            rotor_bearing::bearing::BearingKind::FiniteFilm(f),
+            rotor_bearing::bearing::BearingKind::FiniteFilm(g),
+        ) = (&b.kind, &c.kind)
+        {
+            assert_eq!(
+                f.pad_tables[0].origin,
+                TableOrigin::Loaded(files[0].clone())
+            );
+            assert!(f.pad_tables[0].table == g.pad_tables[0].table);
+            seen += 1;
+        }
+    }
+    assert_eq!(seen, 2);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

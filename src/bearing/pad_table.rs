@@ -245,25 +245,53 @@ impl PadTable {
         };
         let (j, v) = locate(phi, hp, self.np);
         let (k, w) = locate(psi, hs, self.ns);
-        let basis = [hermite(u), hermite(v), hermite(w)];
+        let (bu, du) = hermite(u);
+        let (bv, dv) = hermite(v);
+        let (bw, dw) = hermite(w);
+        // Contracted one axis at a time (ψ, then φ, then t): index
+        // `2p + a` of a basis is the order-`p` function of end `a`.
         let mut out = [[0.0f64; 2]; 4];
         for a in 0..2 {
+            // Over φ and ψ at this t end: per t order p, the value and its
+            // φ and ψ derivatives.
+            let mut along = [[[0.0f64; 2]; 3]; 2];
             for b in 0..2 {
                 let jb = (j + b) % self.np;
+                // Over ψ at this (t, φ) end: per (p, q), value and ψ slope.
+                let mut sw = [[[0.0f64; 2]; 2]; 4];
                 for c in 0..2 {
                     let kc = (k + c) % self.ns;
                     let node = &self.nodes[((i + a) * self.np + jb) * self.ns + kc];
-                    for (idx, coef) in node.iter().enumerate() {
-                        let (p, q, r) = (idx & 1, (idx >> 1) & 1, (idx >> 2) & 1);
-                        let (bu, du) = (basis[0].0[2 * p + a], basis[0].1[2 * p + a]);
-                        let (bv, dv) = (basis[1].0[2 * q + b], basis[1].1[2 * q + b]);
-                        let (bw, dw) = (basis[2].0[2 * r + c], basis[2].1[2 * r + c]);
-                        let weights = [bu * bv * bw, du * bv * bw, bu * dv * bw, bu * bv * dw];
-                        for (o, wt) in out.iter_mut().zip(weights) {
-                            o[0] += coef[0] * wt;
-                            o[1] += coef[1] * wt;
+                    for pq in 0..4 {
+                        for r in 0..2 {
+                            let coef = node[pq + 4 * r];
+                            let (fb, fd) = (bw[2 * r + c], dw[2 * r + c]);
+                            for m in 0..2 {
+                                sw[pq][0][m] += coef[m] * fb;
+                                sw[pq][1][m] += coef[m] * fd;
+                            }
                         }
                     }
+                }
+                for p in 0..2 {
+                    for q in 0..2 {
+                        let [val, dpsi] = sw[p + 2 * q];
+                        let (fb, fd) = (bv[2 * q + b], dv[2 * q + b]);
+                        for m in 0..2 {
+                            along[p][0][m] += val[m] * fb;
+                            along[p][1][m] += val[m] * fd;
+                            along[p][2][m] += dpsi[m] * fb;
+                        }
+                    }
+                }
+            }
+            for (p, [val, dphi, dpsi]) in along.iter().enumerate() {
+                let (fb, fd) = (bu[2 * p + a], du[2 * p + a]);
+                for m in 0..2 {
+                    out[0][m] += val[m] * fb;
+                    out[1][m] += val[m] * fd;
+                    out[2][m] += dphi[m] * fb;
+                    out[3][m] += dpsi[m] * fb;
                 }
             }
         }
