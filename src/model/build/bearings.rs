@@ -63,7 +63,9 @@ fn radial_clearance(
 /// cavitation condition (default Swift–Stieber). `film_mesh` and
 /// `cavitation` belong to the finite film only; the slenderness (L/D, a
 /// pad's L/(R β)) and pad arc must lie in the ranges the finite film is
-/// stated for ([`SLENDERNESS_RANGE`], [`PAD_ARC_RANGE`]).
+/// stated for ([`SLENDERNESS_RANGE`], [`PAD_ARC_RANGE`]). `film_tables =
+/// true` loads or builds the force tables through the cache: a plain film's
+/// one, or one per pad arc of a tilting-pad bearing.
 fn film_theory(
     ctx: &Ctx,
     p: &FieldPath,
