@@ -5,9 +5,10 @@
 //! plain bearings) at 0.1 ms steps and the hydro unit (two tilting-pad
 //! guide bearings) at its 5 ms step, each at its nominal speed from its
 //! static equilibrium. The finite film solves Reynolds' equation directly at
-//! every evaluation; plain films with `film_tables = true` interpolate their
-//! force tables (built here once into a scratch cache, and timed). `cargo
-//! bench --bench finite_film` (`-- --tables-only`: the tabled row alone).
+//! every evaluation; plain films and tilting pads with `film_tables = true`
+//! interpolate their force tables (built here once into a scratch cache,
+//! and timed). `cargo bench --bench finite_film` (`-- --tables-only`: the
+//! tabled rows alone; `-- --pads-only`: the pads' row alone).
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -20,9 +21,10 @@ use rotor_bearing::model::RotorModel;
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::{Simulator, SolverOptions};
 
-/// The model file with `film = "finite"` and `extra` (for plain bearings)
-/// after the `type` of every plain and tilting-pad bearing.
-fn finite(text: &str, extra: &str) -> String {
+/// The model file with `film = "finite"` and `extra` (for plain bearings),
+/// `pad_extra` (for tilting pads) after the `type` of every plain and
+/// tilting-pad bearing.
+fn finite(text: &str, extra: &str, pad_extra: &str) -> String {
     let mut out = String::new();
     for line in text.lines() {
         out.push_str(line);
@@ -33,6 +35,9 @@ fn finite(text: &str, extra: &str) -> String {
         }
         if t == "type = \"plain\"" {
             out.push_str(extra);
+        }
+        if t == "type = \"tilting_pad\"" {
+            out.push_str(pad_extra);
         }
     }
     out
@@ -69,6 +74,11 @@ fn main() {
     if std::env::args().any(|a| a == "--list") {
         return;
     }
+    // `-- --pads-only`: the tilting pads' tables alone.
+    if std::env::args().any(|a| a == "--pads-only") {
+        pad_tables();
+        return;
+    }
     println!("| model | step | short film µs/step | finite film µs/step | ratio |");
     println!("|---|---:|---:|---:|---:|");
     let read = |name: &str| {
@@ -86,7 +96,7 @@ fn main() {
     for &(name, step, steps) in direct {
         let text = read(name);
         let short = per_step(&text, step, steps * 10);
-        let long = per_step(&finite(&text, ""), step, steps);
+        let long = per_step(&finite(&text, "", ""), step, steps);
         println!(
             "| {name} | {step} s | {short:.1} | {long:.0} | {:.0} |",
             long / short
@@ -95,7 +105,7 @@ fn main() {
     // Force tables: the same run, short and tabled films alternated three
     // times (the median ratio), and the table's build for the geometry.
     let text = read("jeffcott");
-    let tabled = finite(&text, "film_tables = true\n");
+    let tabled = finite(&text, "film_tables = true\n", "");
     let _ = std::fs::remove_dir_all(cache());
     let model = RotorModel::from_toml_cached(&tabled, "bench.toml", Some(&cache())).unwrap();
     let BearingKind::FiniteFilm(f) = &model.bearings[0].kind else {
@@ -132,45 +142,55 @@ fn main() {
         film_table_cache::describe(&gumbel),
         t0.elapsed().as_secs_f64()
     );
-    pad_table_estimate();
+    pad_tables();
 }
 
-/// What a pad's table would cost: one Swift–Stieber solve of a 60° pad on
-/// the default pad mesh (48 × 16), timed over 200 states, times the solves
-/// of a 4-D table — the film position `(ξ, η)` on 33 × 33 nodes and the
-/// direction of `(ω, ξ̇, η̇)` on 24 × 48 nodes of the sphere (the load is
-/// homogeneous of degree 1 in them), the resolution the plain table needs
-/// per angle.
-fn pad_table_estimate() {
-    use nalgebra::Vector2;
-    use rotor_bearing::bearing::JournalState;
-    use rotor_bearing::bearing::finite_film::FiniteFilm;
-    use rotor_bearing::bearing::reynolds::ReynoldsMesh;
-    let film = FiniteFilm {
-        radius: 0.25,
-        length: 0.2,
-        clearance: 2e-4,
-        viscosity: 0.03,
-        mesh: ReynoldsMesh::PAD,
-        cavitation: Cavitation::SwiftStieber,
+/// Tilting pads' force tables: the hydro unit (two guide bearings of eight
+/// 36° pads, L/(Rβ) = 1.1) on the short film and on tabled finite pads
+/// (`film_tables = true`, default pad mesh 48 × 16, Swift–Stieber),
+/// alternated three times (the median ratio), with the pad table's build,
+/// and the build of the same pad's Gümbel table.
+fn pad_tables() {
+    use rotor_bearing::bearing::pad_table::{PadGeometry, PadTable};
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/hydro_unit.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let tabled = finite(&text, "", "film_tables = true\n");
+    let _ = std::fs::remove_dir_all(cache());
+    let model = RotorModel::from_toml_cached(&tabled, "bench.toml", Some(&cache())).unwrap();
+    let BearingKind::FiniteFilm(f) = &model.bearings[0].kind else {
+        panic!("not a finite film")
     };
-    let half = std::f64::consts::FRAC_PI_6;
-    let arc = Some((-half, half));
-    let t0 = Instant::now();
-    let n = 200;
-    for k in 0..n {
-        let a = k as f64 / n as f64;
-        let state = JournalState {
-            position: Vector2::new(1e-4 * (0.2 + 0.6 * a), 3e-5 * (a - 0.5)),
-            velocity: Vector2::new(1e-3 * (a - 0.5), 2e-3 * a),
-        };
-        std::hint::black_box(film.force(&state, 50.0, arc).unwrap());
-    }
-    let solve = t0.elapsed().as_secs_f64() / n as f64;
-    let solves = 33.0 * 33.0 * 24.0 * 48.0;
+    let table = &f.pad_tables[0];
+    let build = table.build_seconds;
+    let geometry = table.table.geometry();
+    let mut ratios: Vec<(f64, f64, f64)> = (0..3)
+        .map(|_| {
+            let short = per_step(&text, 5e-3, 400);
+            let long = per_step(&tabled, 5e-3, 400);
+            (long / short, short, long)
+        })
+        .collect();
+    ratios.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (ratio, short, long) = ratios[1];
+    println!();
     println!(
-        "\nPad (60°, mesh 48 × 16, Swift–Stieber): {:.2} ms per solve; a 4-D table of 33 × 33 positions × 24 × 48 directions ({solves:.2e} solves) would take {:.0} min per pad geometry",
-        solve * 1e3,
-        solves * solve / 60.0
+        "| model | step | short pads µs/step | tabled finite pads µs/step | ratio | pad table build (one arc) |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|");
+    println!(
+        "| hydro_unit, film_tables = true ({}) | 0.005 s | {short:.2} | {long:.2} | {ratio:.2} | {build:.0} s |",
+        film_table_cache::describe(&geometry)
+    );
+    let _ = std::fs::remove_dir_all(cache());
+    let gumbel = PadGeometry {
+        cavitation: Cavitation::Gumbel,
+        ..geometry
+    };
+    let t0 = Instant::now();
+    std::hint::black_box(PadTable::build(gumbel).unwrap());
+    println!(
+        "\nPad table build, {}: {:.2} s",
+        film_table_cache::describe(&gumbel),
+        t0.elapsed().as_secs_f64()
     );
 }

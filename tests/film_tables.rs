@@ -273,9 +273,9 @@ fn transient_with_tables_follows_the_direct_solves() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// `film_tables` in a model: refused without `film = "finite"` and on
-/// tilting pads, each error naming file, line, field and value; `false`
-/// is the direct film.
+/// `film_tables` in a model: refused without `film = "finite"`, the error
+/// naming file, line, field and value; `false` is the direct film (tilting
+/// pads' tables: `tests/pad_tables.rs`).
 #[test]
 fn film_tables_key_is_checked() {
     let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml");
@@ -308,17 +308,6 @@ fn film_tables_key_is_checked() {
         panic!("not a finite film")
     };
     assert!(f.table.is_none());
-    let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("models/hydro_unit.toml");
-    let pads = std::fs::read_to_string(path).unwrap().replacen(
-        "type = \"tilting_pad\"\n",
-        "type = \"tilting_pad\"\nfilm = \"finite\"\nfilm_tables = true\n",
-        1,
-    );
-    let e = err(&pads);
-    assert!(
-        e.contains("bearings[0].film_tables = true:") && e.contains("plain bearings only"),
-        "{e}"
-    );
 }
 
 /// The CLI and the FMU: reading a model with `film_tables = true` builds its

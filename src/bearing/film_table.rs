@@ -59,14 +59,14 @@ pub const ECCENTRICITY_INTERVALS: usize = 64;
 /// Nodes of the table around the circle of source directions `χ`.
 pub const DIRECTIONS: usize = 192;
 /// Exponent `k` of the factor `(1 − ε²)^k` taken out of the table.
-const DECAY: f64 = 2.5;
+pub(crate) const DECAY: f64 = 2.5;
 
 /// `(1 − ε²)^k` of `e2 = 1 − ε²`, `k` = [`DECAY`] = 5/2.
-fn decay(e2: f64) -> f64 {
+pub(crate) fn decay(e2: f64) -> f64 {
     e2 * e2 * e2.sqrt()
 }
 /// Below this eccentricity ratio `H_χ/ε` is taken as its limit `H_εχ`.
-const CENTRE: f64 = 1e-7;
+pub(crate) const CENTRE: f64 = 1e-7;
 
 /// What a plain film's table depends on: the slenderness `(2R/L)²` of the
 /// Reynolds problem, the mesh and the cavitation condition (the viscosity,
@@ -117,7 +117,7 @@ impl std::fmt::Debug for FilmTable {
 }
 
 /// `t = −ln(1 − ε)` at the table's last node.
-fn t_limit() -> f64 {
+pub(crate) fn t_limit() -> f64 {
     -(1.0 - FILM_SATURATION_LIMIT).ln()
 }
 
@@ -330,13 +330,13 @@ impl FilmTable {
 }
 
 /// The rotation by `angle` (rad).
-fn rotate(angle: f64) -> Matrix2<f64> {
+pub(crate) fn rotate(angle: f64) -> Matrix2<f64> {
     let (s, c) = angle.sin_cos();
     Matrix2::new(c, -s, s, c)
 }
 
 /// Cubic Hermite basis on `[0, 1]` (`h00, h01, h10, h11`) and its derivatives.
-fn hermite(u: f64) -> ([f64; 4], [f64; 4]) {
+pub(crate) fn hermite(u: f64) -> ([f64; 4], [f64; 4]) {
     let u2 = u * u;
     let u3 = u2 * u;
     (
@@ -357,7 +357,7 @@ fn hermite(u: f64) -> ([f64; 4], [f64; 4]) {
 
 /// Slopes of the periodic interpolating cubic spline on `n` nodes spaced
 /// `h`: `s_{j−1} + 4 s_j + s_{j+1} = 3 (f_{j+1} − f_{j−1})/h`, cyclic.
-fn periodic_slopes(n: usize, h: f64) -> impl Fn(&[f64]) -> Vec<f64> {
+pub(crate) fn periodic_slopes(n: usize, h: f64) -> impl Fn(&[f64]) -> Vec<f64> {
     let mut m = DMatrix::<f64>::zeros(n, n);
     for j in 0..n {
         m[(j, j)] += 4.0;
@@ -376,7 +376,7 @@ fn periodic_slopes(n: usize, h: f64) -> impl Fn(&[f64]) -> Vec<f64> {
 /// Slopes of the interpolating cubic spline on `n ≥ 4` nodes spaced `h`,
 /// clamped at both ends to the four-point one-sided slopes
 /// `(−11 f₀ + 18 f₁ − 9 f₂ + 2 f₃)/(6h)`.
-fn clamped_slopes(n: usize, h: f64) -> impl Fn(&[f64]) -> Vec<f64> {
+pub(crate) fn clamped_slopes(n: usize, h: f64) -> impl Fn(&[f64]) -> Vec<f64> {
     let mut m = DMatrix::<f64>::zeros(n, n);
     m[(0, 0)] = 1.0;
     m[(n - 1, n - 1)] = 1.0;

@@ -1,14 +1,16 @@
-//! The on-disk cache of plain-film force tables ([`super::film_table`]):
-//! one file per table geometry, `film-<key>.table` in the cache directory,
+//! The on-disk cache of film force tables, plain films' ([`super::film_table`])
+//! and tilting pads' ([`super::pad_table`]): one file per table geometry,
+//! `film-<key>.table` (plain) or `pad-<key>.table` in the cache directory,
 //! `<key>` the 64-bit FNV-1a hash of the geometry and the table format, in
-//! hex.
+//! hex ([`CacheKey`] says what each kind's header holds).
 //!
 //! **Directory** ([`cache_dir`]): `$ROTOR_CACHE_DIR` if set, else
 //! `$XDG_CACHE_HOME/rotor`, else `$HOME/.cache/rotor`; none of them: no
 //! cache (the table is built in memory every run).
 //!
-//! **File**: the magic `rotor-film-table`, the format version, the geometry
-//! in full (slenderness bits, mesh, cavitation), the node counts, the nodal
+//! **File**: the magic (`rotor-film-table`, `rotor-pad-tables`), the format
+//! version, the geometry in full (slenderness bits, a pad's arc bits, mesh,
+//! cavitation), the node counts, the nodal
 //! values `W` as little-endian `f64`, then the FNV-1a hash of all that. A
 //! file that is short, of another version or geometry, with a wrong hash or
 //! a non-finite value is not trusted: the table is rebuilt and the file
@@ -20,11 +22,8 @@ use std::time::Instant;
 
 use super::film_table::{DIRECTIONS, ECCENTRICITY_INTERVALS, FilmTable, TableGeometry};
 use super::finite_film::FiniteFilm;
+use super::pad_table::{PadGeometry, PadTable};
 use super::reynolds::{Cavitation, ReynoldsError, ReynoldsMesh};
-
-/// Format version of the file and of the table (grid, factor, spline).
-const VERSION: u32 = 1;
-const MAGIC: &[u8; 16] = b"rotor-film-table";
 
 /// Where a table came from.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,32 +64,167 @@ fn cavitation_code(c: Cavitation) -> u8 {
     }
 }
 
-/// The file's header: magic, version, geometry and node counts.
-fn header(geometry: &TableGeometry) -> Vec<u8> {
-    let mut out = Vec::new();
-    out.extend_from_slice(MAGIC);
-    out.extend_from_slice(&VERSION.to_le_bytes());
-    out.extend_from_slice(&geometry.slenderness.to_bits().to_le_bytes());
-    out.extend_from_slice(&(geometry.mesh.circumferential as u64).to_le_bytes());
-    out.extend_from_slice(&(geometry.mesh.axial as u64).to_le_bytes());
-    out.push(cavitation_code(geometry.cavitation));
-    out.extend_from_slice(&((ECCENTRICITY_INTERVALS + 1) as u64).to_le_bytes());
-    out.extend_from_slice(&(DIRECTIONS as u64).to_le_bytes());
-    out
+/// A table geometry the cache keys files by: its header bytes (magic,
+/// format version, geometry in full, node counts), its table and how that
+/// is built. The plain film's ([`TableGeometry`]) and a pad's
+/// ([`PadGeometry`]).
+pub trait CacheKey: Copy + PartialEq {
+    /// The table of this geometry.
+    type Table: CachedTable<Key = Self>;
+    /// The file name's prefix.
+    const PREFIX: &'static str;
+    /// The file's header.
+    fn header(&self) -> Vec<u8>;
+    /// How many `f64` the table's file holds after the header.
+    fn numbers(&self) -> usize;
+    /// Build the table (deterministically).
+    fn build(&self) -> Result<Self::Table, ReynoldsError>;
+    /// The table of the nodal numbers read from a file.
+    fn table(&self, numbers: Vec<f64>) -> Self::Table;
+    /// The geometry in words (for messages).
+    fn describe(&self) -> String;
 }
 
-/// The cache file of `geometry` in `dir`.
-pub fn table_path(dir: &Path, geometry: &TableGeometry) -> PathBuf {
-    dir.join(format!("film-{:016x}.table", fnv1a(&header(geometry))))
+/// A table the cache stores: its geometry and nodal numbers.
+pub trait CachedTable: PartialEq {
+    type Key: CacheKey<Table = Self>;
+    /// What the table was built for.
+    fn key(&self) -> Self::Key;
+    /// The nodal values, in file order.
+    fn numbers(&self) -> Vec<f64>;
+}
+
+fn mesh_bytes(out: &mut Vec<u8>, mesh: ReynoldsMesh, cavitation: Cavitation) {
+    out.extend_from_slice(&(mesh.circumferential as u64).to_le_bytes());
+    out.extend_from_slice(&(mesh.axial as u64).to_le_bytes());
+    out.push(cavitation_code(cavitation));
+}
+
+impl CacheKey for TableGeometry {
+    type Table = FilmTable;
+    const PREFIX: &'static str = "film";
+
+    /// Magic `rotor-film-table`, version 1, slenderness bits, mesh,
+    /// cavitation, node counts.
+    fn header(&self) -> Vec<u8> {
+        let mut out = Vec::new();
+        out.extend_from_slice(b"rotor-film-table");
+        out.extend_from_slice(&1u32.to_le_bytes());
+        out.extend_from_slice(&self.slenderness.to_bits().to_le_bytes());
+        mesh_bytes(&mut out, self.mesh, self.cavitation);
+        out.extend_from_slice(&((ECCENTRICITY_INTERVALS + 1) as u64).to_le_bytes());
+        out.extend_from_slice(&(DIRECTIONS as u64).to_le_bytes());
+        out
+    }
+
+    fn numbers(&self) -> usize {
+        (ECCENTRICITY_INTERVALS + 1) * DIRECTIONS * 2
+    }
+
+    fn build(&self) -> Result<FilmTable, ReynoldsError> {
+        FilmTable::build(*self)
+    }
+
+    fn table(&self, numbers: Vec<f64>) -> FilmTable {
+        let values = numbers.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
+        FilmTable::from_values(*self, ECCENTRICITY_INTERVALS + 1, DIRECTIONS, values)
+    }
+
+    fn describe(&self) -> String {
+        let ReynoldsMesh {
+            circumferential,
+            axial,
+        } = self.mesh;
+        format!(
+            "L/D = {:.4}, mesh {circumferential} × {axial}, {} cavitation",
+            1.0 / self.slenderness.sqrt(),
+            self.cavitation.name()
+        )
+    }
+}
+
+impl CachedTable for FilmTable {
+    type Key = TableGeometry;
+    fn key(&self) -> TableGeometry {
+        self.geometry()
+    }
+    fn numbers(&self) -> Vec<f64> {
+        self.values().iter().flatten().copied().collect()
+    }
+}
+
+impl CacheKey for PadGeometry {
+    type Table = PadTable;
+    const PREFIX: &'static str = "pad";
+
+    /// Magic `rotor-pad-tables`, version 1, slenderness and arc bits, mesh,
+    /// cavitation, node counts.
+    fn header(&self) -> Vec<u8> {
+        let mut out = Vec::new();
+        out.extend_from_slice(b"rotor-pad-tables");
+        out.extend_from_slice(&1u32.to_le_bytes());
+        out.extend_from_slice(&self.slenderness.to_bits().to_le_bytes());
+        out.extend_from_slice(&self.arc.to_bits().to_le_bytes());
+        mesh_bytes(&mut out, self.mesh, self.cavitation);
+        let (nt, np, ns) = PadTable::NODES;
+        for n in [nt, np, ns] {
+            out.extend_from_slice(&(n as u64).to_le_bytes());
+        }
+        out
+    }
+
+    fn numbers(&self) -> usize {
+        let (nt, np, ns) = PadTable::NODES;
+        nt * np * ns * 2
+    }
+
+    fn build(&self) -> Result<PadTable, ReynoldsError> {
+        PadTable::build(*self)
+    }
+
+    fn table(&self, numbers: Vec<f64>) -> PadTable {
+        let values = numbers.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
+        PadTable::from_values(*self, values)
+    }
+
+    fn describe(&self) -> String {
+        let ReynoldsMesh {
+            circumferential,
+            axial,
+        } = self.mesh;
+        format!(
+            "pad arc {:.2}°, L/(Rβ) = {:.4}, mesh {circumferential} × {axial}, {} cavitation",
+            self.arc.to_degrees(),
+            2.0 / (self.slenderness.sqrt() * self.arc),
+            self.cavitation.name()
+        )
+    }
+}
+
+impl CachedTable for PadTable {
+    type Key = PadGeometry;
+    fn key(&self) -> PadGeometry {
+        self.geometry()
+    }
+    fn numbers(&self) -> Vec<f64> {
+        self.values().iter().flatten().copied().collect()
+    }
+}
+
+/// The cache file of `geometry` in `dir`: `<prefix>-<hash of the header>.table`.
+pub fn table_path<K: CacheKey>(dir: &Path, geometry: &K) -> PathBuf {
+    dir.join(format!(
+        "{}-{:016x}.table",
+        K::PREFIX,
+        fnv1a(&geometry.header())
+    ))
 }
 
 /// The bytes of a table's file.
-pub fn encode(table: &FilmTable) -> Vec<u8> {
-    let mut out = header(&table.geometry());
-    for w in table.values() {
-        for v in w {
-            out.extend_from_slice(&v.to_le_bytes());
-        }
+pub fn encode<T: CachedTable>(table: &T) -> Vec<u8> {
+    let mut out = table.key().header();
+    for v in table.numbers() {
+        out.extend_from_slice(&v.to_le_bytes());
     }
     let hash = fnv1a(&out);
     out.extend_from_slice(&hash.to_le_bytes());
@@ -98,15 +232,14 @@ pub fn encode(table: &FilmTable) -> Vec<u8> {
 }
 
 /// The table of a file's bytes, or why they are not one of `geometry`.
-pub fn decode(bytes: &[u8], geometry: &TableGeometry) -> Result<FilmTable, String> {
-    let head = header(geometry);
-    let (nt, nc) = (ECCENTRICITY_INTERVALS + 1, DIRECTIONS);
-    let size = head.len() + nt * nc * 16 + 8;
+pub fn decode<K: CacheKey>(bytes: &[u8], geometry: &K) -> Result<K::Table, String> {
+    let head = geometry.header();
+    let size = head.len() + geometry.numbers() * 8 + 8;
     if bytes.len() != size {
         return Err(format!("{} bytes, not {size}", bytes.len()));
     }
-    if bytes[..MAGIC.len()] != MAGIC[..] {
-        return Err("not a film table".into());
+    if bytes[..16] != head[..16] {
+        return Err("not a film table of this kind".into());
     }
     if bytes[..head.len()] != head[..] {
         return Err("another format version or geometry".into());
@@ -123,17 +256,16 @@ pub fn decode(bytes: &[u8], geometry: &TableGeometry) -> Result<FilmTable, Strin
     if let Some(bad) = numbers.iter().find(|v| !v.is_finite()) {
         return Err(format!("non-finite value {bad}"));
     }
-    let values = numbers.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
-    Ok(FilmTable::from_values(*geometry, nt, nc, values))
+    Ok(geometry.table(numbers))
 }
 
 /// The table of `geometry`: read from `dir` if a trusted file is there,
-/// else built ([`FilmTable::build`]) and written there (a failed write
+/// else built ([`CacheKey::build`]) and written there (a failed write
 /// only loses the cache); with the seconds the build took (0 when read).
-pub fn load_or_build(
-    geometry: &TableGeometry,
+pub fn load_or_build<K: CacheKey>(
+    geometry: &K,
     dir: Option<&Path>,
-) -> Result<(FilmTable, TableOrigin, f64), ReynoldsError> {
+) -> Result<(K::Table, TableOrigin, f64), ReynoldsError> {
     let path = dir.map(|d| table_path(d, geometry));
     let mut rejected = None;
     if let Some(path) = &path {
@@ -145,7 +277,7 @@ pub fn load_or_build(
         }
     }
     let start = Instant::now();
-    let table = FilmTable::build(*geometry)?;
+    let table = geometry.build()?;
     let seconds = start.elapsed().as_secs_f64();
     let written = path.filter(|p| write(p, &encode(&table)).is_ok());
     let origin = match (rejected, dir) {
@@ -170,29 +302,22 @@ fn write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 }
 
 /// The mesh a table geometry names (for messages).
-pub fn describe(geometry: &TableGeometry) -> String {
-    let ReynoldsMesh {
-        circumferential,
-        axial,
-    } = geometry.mesh;
-    format!(
-        "L/D = {:.4}, mesh {circumferential} × {axial}, {} cavitation",
-        1.0 / geometry.slenderness.sqrt(),
-        geometry.cavitation.name()
-    )
+pub fn describe<K: CacheKey>(geometry: &K) -> String {
+    geometry.describe()
 }
 
-/// A plain film's table with where it came from and what its build took:
-/// what a bearing carries. Two are equal when their tables are.
+/// A film's table (a plain film's by default, or a pad's) with where it
+/// came from and what its build took: what a bearing carries. Two are
+/// equal when their tables are.
 #[derive(Debug, Clone)]
-pub struct PreparedTable {
-    pub table: FilmTable,
+pub struct PreparedTable<T = FilmTable> {
+    pub table: T,
     pub origin: TableOrigin,
     /// Seconds the build took (0 when read from the cache).
     pub build_seconds: f64,
 }
 
-impl PartialEq for PreparedTable {
+impl<T: PartialEq> PartialEq for PreparedTable<T> {
     fn eq(&self, other: &Self) -> bool {
         self.table == other.table
     }
@@ -203,7 +328,27 @@ impl PreparedTable {
     /// cache in `dir` ([`load_or_build`]).
     pub fn load_or_build(film: &FiniteFilm, dir: Option<&Path>) -> Result<Self, ReynoldsError> {
         film.check()?;
-        let (table, origin, build_seconds) = load_or_build(&TableGeometry::of(film), dir)?;
+        Self::of_geometry(&TableGeometry::of(film), dir)
+    }
+}
+
+impl PreparedTable<PadTable> {
+    /// The table of a pad of arc `arc` (rad) on `film` ([`PadGeometry::of`])
+    /// through the cache in `dir` ([`load_or_build`]).
+    pub fn load_or_build_pad(
+        film: &FiniteFilm,
+        arc: f64,
+        dir: Option<&Path>,
+    ) -> Result<Self, ReynoldsError> {
+        film.check()?;
+        Self::of_geometry(&PadGeometry::of(film, arc), dir)
+    }
+}
+
+impl<T: CachedTable> PreparedTable<T> {
+    /// The table of `geometry` through the cache in `dir` ([`load_or_build`]).
+    pub fn of_geometry(geometry: &T::Key, dir: Option<&Path>) -> Result<Self, ReynoldsError> {
+        let (table, origin, build_seconds) = load_or_build(geometry, dir)?;
         Ok(Self {
             table,
             origin,
@@ -213,7 +358,7 @@ impl PreparedTable {
 
     /// One line on the table: its geometry, and built (seconds) or read.
     pub fn describe(&self) -> String {
-        let what = describe(&self.table.geometry());
+        let what = self.table.key().describe();
         match &self.origin {
             TableOrigin::Loaded(path) => format!("{what}: read from {}", path.display()),
             TableOrigin::Built(path) => format!(

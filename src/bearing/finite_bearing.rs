@@ -15,10 +15,11 @@ use super::contact::ContactExtent;
 use super::film_table::TableGeometry;
 use super::film_table_cache::PreparedTable;
 use super::finite_film::FiniteFilm;
-use super::reynolds::{Cavitation, ReynoldsMesh};
+use super::pad_table::{PadGeometry, PadTable};
+use super::reynolds::{Cavitation, ReynoldsError, ReynoldsMesh};
 use super::{
-    Bearing, BearingError, BearingEval, BearingKind, BearingReport, JournalState, PlainBearing,
-    TiltingPadBearing, check_state,
+    Bearing, BearingError, BearingEval, BearingForce, BearingKind, BearingReport, JournalState,
+    PlainBearing, TiltingPadBearing, check_state,
 };
 
 /// The bearing a finite-length film supports.
@@ -43,6 +44,10 @@ pub struct FiniteFilmBearing {
     /// [`super::film_table`]): used while they match the film's geometry,
     /// the direct solves otherwise.
     pub table: Option<Arc<PreparedTable>>,
+    /// Force tables of tilting pads (`film_tables = true`,
+    /// [`super::pad_table`]), one per pad arc: a pad uses the one built for
+    /// its film's geometry and arc, the direct solves when none is.
+    pub pad_tables: Vec<Arc<PreparedTable<PadTable>>>,
 }
 
 impl FiniteFilmBearing {
@@ -51,12 +56,25 @@ impl FiniteFilmBearing {
     /// finite-film bearing on its own mesh with `cavitation`; `None` for
     /// other kinds.
     pub fn of(kind: &BearingKind, cavitation: Cavitation) -> Option<Self> {
-        let (support, mesh, table) = match kind {
-            BearingKind::Plain(b) => (FilmSupport::Plain(*b), ReynoldsMesh::FULL_CIRCLE, None),
-            BearingKind::TiltingPad(b) => {
-                (FilmSupport::TiltingPad(b.clone()), ReynoldsMesh::PAD, None)
-            }
-            BearingKind::FiniteFilm(f) => (f.support.clone(), f.mesh, f.table.clone()),
+        let (support, mesh, table, pad_tables) = match kind {
+            BearingKind::Plain(b) => (
+                FilmSupport::Plain(*b),
+                ReynoldsMesh::FULL_CIRCLE,
+                None,
+                Vec::new(),
+            ),
+            BearingKind::TiltingPad(b) => (
+                FilmSupport::TiltingPad(b.clone()),
+                ReynoldsMesh::PAD,
+                None,
+                Vec::new(),
+            ),
+            BearingKind::FiniteFilm(f) => (
+                f.support.clone(),
+                f.mesh,
+                f.table.clone(),
+                f.pad_tables.clone(),
+            ),
             _ => return None,
         };
         Some(Self {
@@ -64,6 +82,7 @@ impl FiniteFilmBearing {
             mesh,
             cavitation,
             table,
+            pad_tables,
         })
     }
 
@@ -89,6 +108,68 @@ impl FiniteFilmBearing {
         self.table
             .as_deref()
             .filter(|t| t.table.geometry() == TableGeometry::of(film))
+    }
+
+    /// The force table of pad `k`'s film if the bearing carries one built
+    /// for `film`'s geometry and that pad's arc.
+    fn pad_table_for(&self, film: &FiniteFilm, arc: f64) -> Option<&PadTable> {
+        let geometry = PadGeometry::of(film, arc);
+        self.pad_tables
+            .iter()
+            .map(|t| &t.table)
+            .find(|t| t.geometry() == geometry)
+    }
+
+    /// The film of pad `k` of `b` at its effective journal `state`: force
+    /// and Jacobians from the pad's table if there is one
+    /// ([`PadTable::force_and_jacobian`]), else the direct Reynolds solve
+    /// ([`FiniteFilm::force_and_jacobian`]) — the same question, over the
+    /// pad's arc.
+    fn pad_film(
+        &self,
+        film: &FiniteFilm,
+        b: &TiltingPadBearing,
+        k: usize,
+        state: &JournalState,
+        speed: f64,
+    ) -> Result<BearingForce, ReynoldsError> {
+        let pad = &b.pads[k];
+        let arc = pad.film_arc();
+        match self.pad_table_for(film, pad.arc()) {
+            Some(t) => t.force_and_jacobian(film, state, speed, arc),
+            None => film.force_and_jacobian(state, speed, Some(arc)),
+        }
+    }
+
+    /// The force alone of [`Self::pad_film`].
+    fn pad_film_force(
+        &self,
+        film: &FiniteFilm,
+        b: &TiltingPadBearing,
+        k: usize,
+        state: &JournalState,
+        speed: f64,
+    ) -> Result<nalgebra::Vector2<f64>, ReynoldsError> {
+        let pad = &b.pads[k];
+        let arc = pad.film_arc();
+        match self.pad_table_for(film, pad.arc()) {
+            Some(t) => Ok(t.force_and_jacobian(film, state, speed, arc)?.force),
+            None => film.force(state, speed, Some(arc)),
+        }
+    }
+
+    /// The distinct pad arcs (rad) of a tilting-pad support, in pad order
+    /// (none for a plain one): one table each.
+    pub fn pad_arcs(&self) -> Vec<f64> {
+        let mut arcs: Vec<f64> = Vec::new();
+        if let FilmSupport::TiltingPad(b) = &self.support {
+            for pad in &b.pads {
+                if !arcs.contains(&pad.arc()) {
+                    arcs.push(pad.arc());
+                }
+            }
+        }
+        arcs
     }
 
     /// The short-film bearing of the same geometry.
@@ -184,8 +265,7 @@ impl Bearing for FiniteFilmBearing {
                 let law = b.contact_law();
                 for k in 0..b.pads.len() {
                     let (s, c, state) = b.pad_state(k, q, qdot);
-                    let arc = Some(b.pads[k].film_arc());
-                    let part = film.force_and_jacobian(&state, speed, arc)?;
+                    let part = self.pad_film(&film, b, k, &state, speed)?;
                     out.add_transformed(&part, Some((k, -s, c)));
                     if let Some((contact, _)) = b.pad_contact(&law, k, &state, speed) {
                         out.add_transformed(&contact, Some((k, -s, c)));
@@ -242,8 +322,7 @@ impl Bearing for FiniteFilmBearing {
                 let law = b.contact_law();
                 for k in 0..b.pads.len() {
                     let (s, c, state) = b.pad_state(k, q, qdot);
-                    let arc = Some(b.pads[k].film_arc());
-                    let mut force = film.force(&state, speed, arc)?;
+                    let mut force = self.pad_film_force(&film, b, k, &state, speed)?;
                     if let Some((contact, _)) = b.pad_contact(&law, k, &state, speed) {
                         force += contact.force;
                     }

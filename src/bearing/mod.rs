@@ -48,6 +48,7 @@ pub mod finite_film;
 pub mod linear;
 pub mod magnetic_pull;
 pub mod offset;
+pub mod pad_table;
 pub mod plain;
 pub mod reynolds;
 pub mod rub;
@@ -450,16 +451,30 @@ impl BearingKind {
         }
     }
 
-    /// A plain finite film's force table that was built (not read from
-    /// the cache) when the model was read: its geometry and build time
-    /// ([`film_table_cache::PreparedTable::describe`]).
+    /// A finite film's force tables (a plain film's, or tilting pads' one
+    /// per arc) that were built (not read from the cache) when the model was
+    /// read: their geometry and build time
+    /// ([`film_table_cache::PreparedTable::describe`]), one table a line.
     pub fn film_table_note(&self) -> Option<String> {
         let BearingKind::FiniteFilm(f) = self else {
             return None;
         };
-        let table = f.table.as_deref()?;
-        (!matches!(table.origin, film_table_cache::TableOrigin::Loaded(_)))
-            .then(|| table.describe())
+        let built = |origin: &film_table_cache::TableOrigin| {
+            !matches!(origin, film_table_cache::TableOrigin::Loaded(_))
+        };
+        let lines: Vec<String> = f
+            .table
+            .iter()
+            .filter(|t| built(&t.origin))
+            .map(|t| t.describe())
+            .chain(
+                f.pad_tables
+                    .iter()
+                    .filter(|t| built(&t.origin))
+                    .map(|t| t.describe()),
+            )
+            .collect();
+        (!lines.is_empty()).then(|| lines.join("\n"))
     }
 
     /// Whether this is a magnetic pull rather than a bearing.

@@ -16,7 +16,7 @@ pub(crate) struct Ctx<'a> {
     pub(crate) text: &'a str,
     /// File name shown in messages.
     pub(crate) source: &'a str,
-    /// Where plain films' force tables are cached (`film_tables = true`).
+    /// Where finite films' force tables (plain films' and pads') are cached (`film_tables = true`).
     pub(crate) film_cache: Option<&'a std::path::Path>,
 }
 

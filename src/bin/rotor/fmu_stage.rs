@@ -46,19 +46,25 @@ pub fn stage(model: &Path, dir: &Path, fmi: u8) -> Result<(), String> {
         }
         std::fs::copy(path, &target).map_err(|e| format!("{}: {e}", path.display()))?;
     }
-    // Force tables of plain finite films travel in resources/film_tables.
+    // Force tables of finite films (plain films' and tilting pads') travel
+    // in resources/film_tables.
     let tables = dir
         .join("resources")
         .join(rotor_bearing::fmu::resources::FILM_TABLES);
     for b in &m.bearings {
         if let rotor_bearing::bearing::BearingKind::FiniteFilm(f) = &b.kind {
-            if let Some(t) = &f.table {
-                use rotor_bearing::bearing::film_table_cache::{encode, table_path};
-                std::fs::create_dir_all(&tables)
+            use rotor_bearing::bearing::film_table_cache::{CachedTable, encode, table_path};
+            fn put<T: CachedTable>(tables: &Path, table: &T) -> Result<(), String> {
+                std::fs::create_dir_all(tables)
                     .map_err(|e| format!("{}: {e}", tables.display()))?;
-                let path = table_path(&tables, &t.table.geometry());
-                std::fs::write(&path, encode(&t.table))
-                    .map_err(|e| format!("{}: {e}", path.display()))?;
+                let path = table_path(tables, &table.key());
+                std::fs::write(&path, encode(table)).map_err(|e| format!("{}: {e}", path.display()))
+            }
+            if let Some(t) = &f.table {
+                put(&tables, &t.table)?;
+            }
+            for t in &f.pad_tables {
+                put(&tables, &t.table)?;
             }
         }
     }

@@ -463,7 +463,9 @@ fn read_model(path: &Path) -> Result<RotorModel, String> {
     // A force table built (not read from the cache) is told with its time.
     for b in &model.bearings {
         if let Some(note) = b.kind.film_table_note() {
-            eprintln!("bearing {}: film table {note}", b.name);
+            for line in note.lines() {
+                eprintln!("bearing {}: film table {line}", b.name);
+            }
         }
     }
     Ok(model)

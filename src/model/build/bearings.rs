@@ -63,7 +63,9 @@ fn radial_clearance(
 /// cavitation condition (default Swift–Stieber). `film_mesh` and
 /// `cavitation` belong to the finite film only; the slenderness (L/D, a
 /// pad's L/(R β)) and pad arc must lie in the ranges the finite film is
-/// stated for ([`SLENDERNESS_RANGE`], [`PAD_ARC_RANGE`]).
+/// stated for ([`SLENDERNESS_RANGE`], [`PAD_ARC_RANGE`]). `film_tables =
+/// true` loads or builds the force tables through the cache: a plain film's
+/// one, or one per pad arc of a tilting-pad bearing.
 fn film_theory(
     ctx: &Ctx,
     p: &FieldPath,
@@ -165,17 +167,21 @@ fn film_theory(
         };
     }
     if tables == Some(true) {
-        if !matches!(bearing.support, FilmSupport::Plain(_)) {
-            return Err(ctx.err(
-                p.key("film_tables"),
-                "true",
-                "force tables are built for plain bearings only: tilting pads solve their films directly (remove it)",
+        let fail = |e: crate::bearing::reynolds::ReynoldsError| {
+            ctx.err(p.key("film_tables"), "true", &e.to_string())
+        };
+        if matches!(bearing.support, FilmSupport::Plain(_)) {
+            bearing.table = Some(std::sync::Arc::new(
+                PreparedTable::load_or_build(&bearing.film(), ctx.film_cache).map_err(fail)?,
             ));
+        } else {
+            let film = bearing.film();
+            for arc in bearing.pad_arcs() {
+                bearing.pad_tables.push(std::sync::Arc::new(
+                    PreparedTable::load_or_build_pad(&film, arc, ctx.film_cache).map_err(fail)?,
+                ));
+            }
         }
-        bearing.table = Some(std::sync::Arc::new(
-            PreparedTable::load_or_build(&bearing.film(), ctx.film_cache)
-                .map_err(|e| ctx.err(p.key("film_tables"), "true", &e.to_string()))?,
-        ));
     }
     Ok(BearingKind::FiniteFilm(bearing))
 }
