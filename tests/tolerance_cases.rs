@@ -8,6 +8,8 @@
 use std::path::Path;
 use std::process::Command;
 
+use rotor_bearing::analysis::api_unbalance::{ApiRequest, api_unbalance};
+use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
 use rotor_bearing::analysis::operating_point::operating_point;
 use rotor_bearing::analysis::speed_range::OperatingRange;
 use rotor_bearing::analysis::stability::{StabilityRequest, stability_study};
@@ -48,12 +50,29 @@ fn case_file(text: &str, viscosity: f64, clearance: f64, preload: f64) -> String
         .join("\n")
 }
 
-/// The three criteria computed here for one case: the least stable forward
-/// mode's log decrement, the largest amplification factor of the unbalance
-/// response and the least minimum film thickness (µm) at 3000 rpm.
-fn criteria(text: &str) -> [f64; 3] {
+/// The five criteria computed here for one case at 3000 rpm (the operating
+/// range that speed alone): the least stable forward mode's log decrement,
+/// the largest amplification factor of the unbalance response, the least
+/// minimum film thickness (µm), the least separation margin surplus
+/// `SM − SM_required` (%) of the Campbell criticals that need one (+∞ when
+/// none does) and the largest API scaled response over its allowed
+/// clearance.
+fn criteria(text: &str) -> [f64; 5] {
     let rotor = Rotor::new(RotorModel::from_toml(text, "case.toml").unwrap()).unwrap();
     let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let range = OperatingRange {
+        min: speed,
+        max: speed,
+    };
+    let campbell = campbell_study(&rotor, &CampbellRequest::default_for(Some(range))).unwrap();
+    let surplus = campbell
+        .margins
+        .iter()
+        .filter_map(|m| {
+            let sm = m.margin.as_ref()?;
+            Some(100.0 * (sm.actual - sm.required?))
+        })
+        .fold(f64::INFINITY, f64::min);
     let s = stability_study(&rotor, &StabilityRequest::at(speed)).unwrap();
     let log_dec = s.curve[0].1.log_decrement;
     let u = unbalance_study(
@@ -62,10 +81,7 @@ fn criteria(text: &str) -> [f64; 3] {
             min: 0.0,
             max: None,
             points: DEFAULT_POINTS,
-            operating: Some(OperatingRange {
-                min: speed,
-                max: speed,
-            }),
+            operating: Some(range),
         },
     )
     .unwrap();
@@ -79,7 +95,23 @@ fn criteria(text: &str) -> [f64; 3] {
         .iter()
         .filter_map(|p| p.film.as_ref().map(|f| f.min_film_thickness))
         .fold(f64::INFINITY, f64::min);
-    [log_dec, af, 1e6 * h]
+    let api = api_unbalance(
+        &rotor,
+        &ApiRequest {
+            operating: range,
+            max: *u.sweep.speeds.last().unwrap(),
+            points: DEFAULT_POINTS,
+        },
+    )
+    .unwrap();
+    let clearance = api
+        .cases
+        .iter()
+        .flat_map(|c| &c.criticals)
+        .flat_map(|c| &c.clearances)
+        .map(|c| c.scaled / c.limit)
+        .fold(f64::NEG_INFINITY, f64::max);
+    [log_dec, af, 1e6 * h, surplus, clearance]
 }
 
 /// The governing row `rotor cases` prints for a criterion: worst value and case number.
@@ -127,7 +159,7 @@ fn rotor_cases_runs_every_combination_and_its_worst_case_is_the_worst_of_them() 
             files.push(case_file(&text, mu, 100e-6 * f, 0.0));
         }
     }
-    let results: Vec<[f64; 3]> = files.iter().map(|f| criteria(f)).collect();
+    let results: Vec<[f64; 5]> = files.iter().map(|f| criteria(f)).collect();
     // The cases differ: the check could not pass by one case standing for all.
     let spread = |k: usize| {
         let v: Vec<f64> = results.iter().map(|r| r[k]).collect();
@@ -154,6 +186,8 @@ fn rotor_cases_runs_every_combination_and_its_worst_case_is_the_worst_of_them() 
         ("log dec, least stable forward mode", 0, true),
         ("amplification factor (largest)", 1, false),
         ("minimum film thickness (µm)", 2, true),
+        ("separation margin surplus SM − SM_req (%)", 3, true),
+        ("API scaled response / allowed clearance", 4, false),
     ] {
         let (value, case) = governing(&out, label);
         let i = argext(k, least);
