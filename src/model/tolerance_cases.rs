@@ -141,31 +141,33 @@ impl CaseSettings {
     }
 }
 
-/// A plain film with the case's viscosity and clearance (its contact gap
-/// follows a stated contact law's clearance).
-fn plain_case(b: &mut PlainBearing, case: &CaseSettings) {
+/// A film's viscosity, clearance and stated contact law in the case (the
+/// contact gap follows the clearance).
+fn film_case(
+    viscosity: &mut f64,
+    clearance: &mut f64,
+    contact: &mut Option<ContactLaw>,
+    case: &CaseSettings,
+) {
     if let Some((_, mu)) = case.temperature {
-        b.viscosity = mu;
+        *viscosity = mu;
     }
     if let Some(f) = case.clearance_factor {
-        b.clearance *= f;
-        if let Some(law) = &mut b.contact {
-            regap(law, b.clearance);
+        *clearance *= f;
+        if let Some(law) = contact {
+            regap(law, *clearance);
         }
     }
 }
 
-/// Tilting pads with the case's viscosity, clearance and preload.
+/// A plain film in the case.
+fn plain_case(b: &mut PlainBearing, case: &CaseSettings) {
+    film_case(&mut b.viscosity, &mut b.clearance, &mut b.contact, case);
+}
+
+/// Tilting pads in the case, with its preload.
 fn pads_case(b: &mut TiltingPadBearing, case: &CaseSettings) {
-    if let Some((_, mu)) = case.temperature {
-        b.viscosity = mu;
-    }
-    if let Some(f) = case.clearance_factor {
-        b.clearance *= f;
-        if let Some(law) = &mut b.contact {
-            regap(law, b.clearance);
-        }
-    }
+    film_case(&mut b.viscosity, &mut b.clearance, &mut b.contact, case);
     if let Some(m) = case.preload {
         for pad in &mut b.pads {
             *pad = Pad::new(pad.pivot(), pad.arc(), pad.offset(), m);
