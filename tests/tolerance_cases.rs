@@ -304,6 +304,13 @@ fn bad_cases_name_file_line_field_and_value() {
             "below absolute zero",
         ),
         (
+            "[cases]\niso_vg = 46\noil_temperature_c = [35.0, 2000.0]\n",
+            3,
+            "cases.oil_temperature_c[1]",
+            "2000",
+            "[-50, 200] °C",
+        ),
+        (
             "[cases]\nclearance_factor = [1.1, 0.9]\n",
             2,
             "cases.clearance_factor",

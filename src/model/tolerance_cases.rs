@@ -20,6 +20,10 @@ use crate::bearing::plain::PlainBearing;
 use crate::bearing::tilting_pad::{Pad, TiltingPadBearing};
 use crate::units::Short;
 
+/// The oil supply temperatures `[cases]` accepts (°C): a mineral oil's
+/// liquid range, where its viscosity and density laws hold.
+pub const OIL_TEMPERATURE_C: [f64; 2] = [-50.0, 200.0];
+
 /// `[cases]` as written.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -296,6 +300,16 @@ pub(super) fn validate(
                         &format!(
                             "is {} K, below absolute zero: give the oil temperature in °C",
                             Short(kelvin)
+                        ),
+                    ));
+                }
+                if !(OIL_TEMPERATURE_C[0]..=OIL_TEMPERATURE_C[1]).contains(&c) {
+                    return Err(ctx.err(
+                        path.index(i),
+                        Short(c),
+                        &format!(
+                            "must lie in [{}, {}] °C, where a mineral oil is a liquid the ASTM D341 law describes",
+                            OIL_TEMPERATURE_C[0], OIL_TEMPERATURE_C[1]
                         ),
                     ));
                 }
