@@ -319,6 +319,7 @@ fn info_label(section: &str, entry: &toml::Table) -> String {
         "couplings" => "coupling".into(),
         "thrust_bearings" => "thrust bearing".into(),
         "reduction" => "reduction".into(),
+        "cases" => "tolerance cases".into(),
         other => panic!("no `rotor info` label for the section [{other}]"),
     }
 }

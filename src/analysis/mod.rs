@@ -31,6 +31,7 @@ pub mod shapes;
 pub mod spectrum;
 pub mod speed_range;
 pub mod stability;
+pub mod tolerance_cases;
 pub mod torsion;
 mod torsion_damped;
 pub mod ucs;

@@ -48,6 +48,7 @@ pub mod finite_film;
 pub mod linear;
 pub mod magnetic_pull;
 pub mod offset;
+pub mod oil;
 pub mod pad_table;
 pub mod plain;
 pub mod reynolds;

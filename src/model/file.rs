@@ -104,6 +104,9 @@ pub struct ModelFile {
     /// `[reduction]`: transients on a reduced rotor.
     #[serde(default)]
     pub reduction: Option<ReductionEntry>,
+    /// `[cases]`: the tolerance cases (oil temperature, clearance, preload).
+    #[serde(default)]
+    pub cases: Option<super::tolerance_cases::CasesEntry>,
 }
 
 /// `[reduction]`: run transients on a Craig–Bampton reduced rotor (the

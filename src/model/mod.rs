@@ -17,6 +17,7 @@ mod plausibility;
 pub mod schema;
 mod source_map;
 pub mod speed_table;
+pub mod tolerance_cases;
 
 pub use error::ModelError;
 use error::Seg;
@@ -407,6 +408,8 @@ pub struct RotorModel {
     /// The reduced rotor transients run on (`[reduction]`, see
     /// [`crate::rotor::Rotor::reduced`]); `None`: the full rotor.
     pub reduction: Option<ReductionRequest>,
+    /// The tolerance cases (`[cases]`), `None` without the section.
+    pub tolerance_cases: Option<tolerance_cases::ToleranceCases>,
 }
 
 /// What a model's `[reduction]` asks for.

@@ -23,6 +23,7 @@
 //! ```
 
 pub mod api;
+pub mod cases;
 pub mod csv;
 pub mod html;
 pub mod hydro;

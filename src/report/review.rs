@@ -36,7 +36,7 @@ fn verdict_of(text: &str) -> Verdict {
 }
 
 /// A verdict cell from a command's verdict text, keeping its words.
-fn verdict_cell(text: &str) -> Cell {
+pub(crate) fn verdict_cell(text: &str) -> Cell {
     Cell {
         text: text.to_string(),
         verdict: Some(verdict_of(text)),

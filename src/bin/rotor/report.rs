@@ -20,6 +20,7 @@ use rotor_bearing::analysis::speed_range::default_top_speed;
 use rotor_bearing::analysis::stability::{
     StabilityRequest, StageData, level_one_stages, mid_span_node, site_label, stability_study,
 };
+use rotor_bearing::analysis::tolerance_cases::tolerance_cases;
 use rotor_bearing::analysis::ucs::{
     DEFAULT_BEARING_SPEEDS, DEFAULT_CRITICALS, DEFAULT_POINTS as UCS_POINTS,
     DEFAULT_STIFFNESS_RANGE, bearing_speeds, critical_speed_map, stiffness_grid,
@@ -34,6 +35,7 @@ use rotor_bearing::plot::{
     unbalance_png,
 };
 use rotor_bearing::report::api as api_report;
+use rotor_bearing::report::cases as cases_report;
 use rotor_bearing::report::html::{Block, Section, Verdict, page};
 use rotor_bearing::report::hydro::{self, HousingStudy};
 use rotor_bearing::report::review::{self, SummaryInputs};
@@ -236,7 +238,13 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         api_unbalance(rotor, &request).map_err(|e| err(&e))
     });
 
-    let summary = review::summary(&SummaryInputs {
+    // The tolerance cases of a model with a [cases] section.
+    let cases = model
+        .tolerance_cases
+        .is_some()
+        .then(|| tolerance_cases(rotor, speed, operating).map_err(|e| err(&e)));
+
+    let mut summary = review::summary(&SummaryInputs {
         campbell: campbell.as_ref().map_err(Clone::clone),
         unbalance: unbalance.as_ref().map_err(Clone::clone),
         stability: stability.as_ref().map_err(Clone::clone),
@@ -247,6 +255,11 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         housing: housing.as_ref().map(|h| housing_study(model, h)),
         api: api.as_ref().map(|a| a.as_ref().map_err(Clone::clone)),
     });
+    if let Some(c) = &cases {
+        summary.rows.extend(cases_report::summary_rows(
+            &c.as_ref().map_err(Clone::clone),
+        ));
+    }
     let overall = review::overall(&summary);
     let file_arg = req
         .source
@@ -454,6 +467,18 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         Err(e) => vec![Block::Failure(format!("critical speed map: {e}"))],
     };
     sections.push(section("ucs", "Undamped critical speed map", blocks));
+
+    if let Some(c) = &cases {
+        let blocks = match c {
+            Ok(study) => {
+                let mut b = vec![Block::Text(same("cases"))];
+                b.extend(cases_report::cases_blocks(&name, study));
+                b
+            }
+            Err(e) => vec![Block::Failure(format!("tolerance cases: {e}"))],
+        };
+        sections.push(section("cases", "Tolerance cases", blocks));
+    }
 
     std::fs::remove_dir_all(&dir).ok();
     write_file(

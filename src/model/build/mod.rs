@@ -121,8 +121,10 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
             }
         }),
     };
+    let tolerance_cases = super::tolerance_cases::validate(ctx, &root, raw.cases, &bearings)?;
     let model = RotorModel {
         reduction,
+        tolerance_cases,
         nominal_speed,
         max_speed,
         max_speed_stated: raw.max_speed_rpm.is_some(),

@@ -17,6 +17,7 @@ use crate::solver::Outputs;
 use crate::units::RAD_S_TO_RPM;
 
 mod api_unbalance;
+mod cases;
 mod element_points;
 mod hydro_verdicts;
 mod modal;
@@ -28,6 +29,7 @@ mod unbalance;
 pub use api_unbalance::{
     api_critical_cells, api_unbalance, api_verdict, case_planes, worst_clearance,
 };
+pub use cases::{case_value, cases_heading, governing_cells, tolerance_cases};
 pub use element_points::element_points;
 pub use hydro_verdicts::{log_dec_holds, stability_verdict, unbalance_runaway};
 pub use modal::{

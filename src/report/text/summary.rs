@@ -147,6 +147,32 @@ pub fn model_summary(rotor: &Rotor) -> String {
         };
         writeln!(s, "  reduction: transients run on a reduced rotor, {modes}").ok();
     }
+    if let Some(c) = &m.tolerance_cases {
+        let mut ranges = Vec::new();
+        if let (Some([lo, hi]), Some(oil)) = (c.temperature, c.oil) {
+            let zero = crate::bearing::oil::CELSIUS_ZERO;
+            ranges.push(format!(
+                "oil {} to {} °C (ν40 {}, ν100 {} mm²/s)",
+                short(lo - zero),
+                short(hi - zero),
+                short(oil.nu_40),
+                short(oil.nu_100)
+            ));
+        }
+        if let Some([lo, hi]) = c.clearance_factor {
+            ranges.push(format!("clearance × {} to {}", short(lo), short(hi)));
+        }
+        if let Some([lo, hi]) = c.preload {
+            ranges.push(format!("preload {} to {}", short(lo), short(hi)));
+        }
+        let count = c.cases().len();
+        writeln!(
+            s,
+            "  tolerance cases: {}; {count} cases (rotor cases)",
+            ranges.join(", ")
+        )
+        .ok();
+    }
     let [gx, gy, gz] = m.gravity.map(short);
     writeln!(s, "  gravity ({gx}, {gy}, {gz}) m/s²").ok();
     s
