@@ -79,7 +79,8 @@ fn static_loads(fmu: &mut Instance, m: &RotorModel) -> Vec<[f64; 2]> {
 }
 
 /// Five outputs a journal bearing, in N, after every earlier variable
-/// (the offsets and the pulls' dynamic eccentricity before them); the
+/// (the offsets and the pulls' dynamic eccentricity before them, the harmonic
+/// forces' frequencies of issue 48 after them); the
 /// dynamic ones depend directly on the speed input like the force itself.
 #[test]
 fn load_outputs_are_appended_after_every_other_variable() {
@@ -89,7 +90,14 @@ fn load_outputs_are_appended_after_every_other_variable() {
         "classic_disk_rotor",
     ] {
         let m = model(name);
-        let vars = variables(&m);
+        let mut vars = variables(&m);
+        // The harmonic forces' frequencies (issue 48) come after them.
+        while vars
+            .last()
+            .is_some_and(|v| matches!(v.binding, Binding::ForceFrequency(_)))
+        {
+            vars.pop();
+        }
         let journal: Vec<&str> = m
             .bearings
             .iter()

@@ -148,12 +148,13 @@ fn restored_states_are_validated() {
                 // step taken (a length and one per rotor coordinate), the
                 // contact flags (two per bearing), the table flags (one per
                 // bearing), the full rotor's validity watch (four values)
-                // and the static loads (two per bearing).
+                // and the static loads (two per bearing), then the harmonic
+                // forces' phases and frequencies (two empty vectors' lengths).
                 let n = rotor_bearing::rotor::Rotor::new(m.clone())
                     .unwrap()
                     .dof_count();
                 let flags = 8 * (1 + 4) + 8 * (1 + 2) + 8 * (1 + 4) + 8 * (1 + 4);
-                let at = b.len() - 16 - 6 * 8 - 8 * (1 + n) - flags;
+                let at = b.len() - 16 - 6 * 8 - 8 * (1 + n) - flags - 2 * 8;
                 put(b, at, -0.02)
             }),
         ),

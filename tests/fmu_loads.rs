@@ -218,7 +218,8 @@ fn is_offset(v: &Variable) -> bool {
     matches!(v.binding, Binding::OffsetX(_) | Binding::OffsetY(_))
 }
 
-/// The bearings' static and dynamic loads (issue 49), appended last of all.
+/// The bearings' static and dynamic loads (issue 49), appended after every
+/// other variable but the harmonic forces' frequencies (issue 48).
 fn is_bearing_load(v: &Variable) -> bool {
     matches!(
         v.binding,

@@ -25,9 +25,11 @@ fn pedestal_and_seal_outputs_are_appended_after_the_existing_variables() {
     // The offset parameters (issue 49) come after everything checked here:
     // two per bearing, seal and pull, then the pulls' dynamic eccentricity
     // inputs (issue 48), then the bearings' static and dynamic loads (issue
-    // 49), appended last.
+    // 49), then the harmonic forces' frequencies (issue 48).
     let without_offsets = |mut vars: Vec<Variable>, model: &RotorModel| {
         let later = [
+            ".ratio",
+            ".frequency",
             ".dynamic_eccentricity",
             ".static_fx",
             ".static_fy",
