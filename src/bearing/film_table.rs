@@ -299,33 +299,71 @@ impl FilmTable {
         state: &JournalState,
         speed: f64,
     ) -> Result<BearingForce, ReynoldsError> {
-        let cl = film.clearance;
-        let (position, saturation) = film_position(state.position, cl);
-        let v = state.velocity;
-        let source = Vector2::new(
-            speed * position.x - 2.0 * v.y,
-            speed * position.y + 2.0 * v.x,
-        ) / cl;
-        for (what, value) in [
-            ("source A/C (1/s)", source.x),
-            ("source B/C (1/s)", source.y),
-        ] {
-            if !value.is_finite() {
-                return Err(ReynoldsError::Input {
-                    what,
-                    value,
-                    why: "is not finite",
-                });
-            }
+        let at = film_source(film, state, speed)?;
+        let dimensionless = self.load(at.position / film.clearance, at.source);
+        Ok(film_force(film, speed, at.saturation, dimensionless))
+    }
+}
+
+/// A journal state as a film table reads it: the saturated film position
+/// (m, [`film_position`]), the saturation's Jacobian and the source
+/// `s = (A, B)/C` (1/s, module docs).
+pub(crate) struct FilmSource {
+    pub position: Vector2<f64>,
+    pub saturation: Matrix2<f64>,
+    pub source: Vector2<f64>,
+}
+
+/// The [`FilmSource`] of `film` at the journal `state` and spin `speed`;
+/// an error when the source is not finite.
+pub(crate) fn film_source(
+    film: &FiniteFilm,
+    state: &JournalState,
+    speed: f64,
+) -> Result<FilmSource, ReynoldsError> {
+    let cl = film.clearance;
+    let (position, saturation) = film_position(state.position, cl);
+    let v = state.velocity;
+    let source = Vector2::new(
+        speed * position.x - 2.0 * v.y,
+        speed * position.y + 2.0 * v.x,
+    ) / cl;
+    for (what, value) in [
+        ("source A/C (1/s)", source.x),
+        ("source B/C (1/s)", source.y),
+    ] {
+        if !value.is_finite() {
+            return Err(ReynoldsError::Input {
+                what,
+                value,
+                why: "is not finite",
+            });
         }
-        let (load, d_pos, d_src) = self.load(position / cl, source);
-        let scale = 6.0 * film.viscosity * (film.radius / cl).powi(2) * film.radius * film.length;
-        let quarter = Matrix2::new(0.0, -1.0, 1.0, 0.0);
-        Ok(BearingForce {
-            force: -load * scale,
-            stiffness: (d_pos + d_src * speed) * (scale / cl) * saturation,
-            damping: d_src * quarter * (2.0 * scale / cl),
-        })
+    }
+    Ok(FilmSource {
+        position,
+        saturation,
+        source,
+    })
+}
+
+/// The film force and its `K`, `C` from the dimensionless load `L` and its
+/// derivatives by position and source (module docs): `F = −6μ (R/C)² R L ·
+/// L`, `K = (∂L/∂x + ω ∂L/∂s) · scale/C` times the saturation's Jacobian,
+/// `C = ∂L/∂s J · 2 scale/C`.
+pub(crate) fn film_force(
+    film: &FiniteFilm,
+    speed: f64,
+    saturation: Matrix2<f64>,
+    (load, d_pos, d_src): (Vector2<f64>, Matrix2<f64>, Matrix2<f64>),
+) -> BearingForce {
+    let cl = film.clearance;
+    let scale = 6.0 * film.viscosity * (film.radius / cl).powi(2) * film.radius * film.length;
+    let quarter = Matrix2::new(0.0, -1.0, 1.0, 0.0);
+    BearingForce {
+        force: -load * scale,
+        stiffness: (d_pos + d_src * speed) * (scale / cl) * saturation,
+        damping: d_src * quarter * (2.0 * scale / cl),
     }
 }
 

@@ -56,11 +56,11 @@ use std::f64::consts::TAU;
 use nalgebra::{Matrix2, Vector2};
 
 use super::film_table::{
-    CENTRE, DECAY, clamped_slopes, decay, hermite, periodic_slopes, rotate, t_limit,
+    CENTRE, DECAY, clamped_slopes, decay, film_force, film_source, hermite, periodic_slopes,
+    rotate, t_limit,
 };
 use super::finite_film::FiniteFilm;
 use super::reynolds::{Cavitation, FilmProblem, ReynoldsError, ReynoldsMesh, direction_loads};
-use super::short_film::film_position;
 use super::{BearingForce, JournalState};
 
 /// Intervals of the table in `t = −ln(1 − ε)`.
@@ -348,36 +348,12 @@ impl PadTable {
         speed: f64,
         arc: (f64, f64),
     ) -> Result<BearingForce, ReynoldsError> {
-        let cl = film.clearance;
-        let (position, saturation) = film_position(state.position, cl);
-        let v = state.velocity;
-        let source = Vector2::new(
-            speed * position.x - 2.0 * v.y,
-            speed * position.y + 2.0 * v.x,
-        ) / cl;
-        for (what, value) in [
-            ("source A/C (1/s)", source.x),
-            ("source B/C (1/s)", source.y),
-        ] {
-            if !value.is_finite() {
-                return Err(ReynoldsError::Input {
-                    what,
-                    value,
-                    why: "is not finite",
-                });
-            }
-        }
+        let at = film_source(film, state, speed)?;
         let back = rotate(arc.0);
         let into = back.transpose();
-        let (load, d_pos, d_src) = self.load(into * position / cl, into * source);
-        let (load, d_pos, d_src) = (back * load, back * d_pos * into, back * d_src * into);
-        let scale = 6.0 * film.viscosity * (film.radius / cl).powi(2) * film.radius * film.length;
-        let quarter = Matrix2::new(0.0, -1.0, 1.0, 0.0);
-        Ok(BearingForce {
-            force: -load * scale,
-            stiffness: (d_pos + d_src * speed) * (scale / cl) * saturation,
-            damping: d_src * quarter * (2.0 * scale / cl),
-        })
+        let (load, d_pos, d_src) = self.load(into * at.position / film.clearance, into * at.source);
+        let turned = (back * load, back * d_pos * into, back * d_src * into);
+        Ok(film_force(film, speed, at.saturation, turned))
     }
 }
 
