@@ -134,10 +134,7 @@ fn governing(out: &str, label: &str) -> (f64, usize) {
 #[test]
 fn rotor_cases_runs_every_combination_and_its_worst_case_is_the_worst_of_them() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cases_rotor.toml");
-    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
-        .args(["cases", path.to_str().unwrap()])
-        .output()
-        .unwrap();
+    let out = rotor_cases(&path);
     assert!(
         out.status.success(),
         "{}",
@@ -218,10 +215,7 @@ fn a_model_without_the_section_is_unchanged() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("plain.toml");
     std::fs::write(&file, without_cases(&text)).unwrap();
-    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
-        .args(["cases", file.to_str().unwrap()])
-        .output()
-        .unwrap();
+    let out = rotor_cases(&file);
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
@@ -364,6 +358,14 @@ fn parses_as_xml(html: &str) {
     }
 }
 
+/// `rotor cases MODEL`.
+fn rotor_cases(model: &Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["cases", model.to_str().unwrap()])
+        .output()
+        .unwrap()
+}
+
 fn report(model: &Path, page: &Path) -> String {
     let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
         .args([
@@ -390,11 +392,7 @@ fn report(model: &Path, page: &Path) -> String {
 #[test]
 fn the_report_summarizes_the_governing_cases() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/cases_rotor.toml");
-    let printed = Command::new(env!("CARGO_BIN_EXE_rotor"))
-        .args(["cases", path.to_str().unwrap()])
-        .output()
-        .unwrap();
-    let printed = String::from_utf8(printed.stdout).unwrap();
+    let printed = String::from_utf8(rotor_cases(&path).stdout).unwrap();
     let dir = std::env::temp_dir().join(format!("tolerance-report-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let html = report(&path, &dir.join("with.html"));
