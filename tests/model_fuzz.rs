@@ -313,7 +313,11 @@ fn mutate(text: &str, rng: &mut Rng) -> (String, Mutation) {
 /// Run `rotor COMMAND FILE` with a timeout: `None` on a hang, else exit code
 /// and stderr, or the first line of stdout with a NaN or infinity.
 fn rotor(command: &str, file: &Path, timeout: Duration) -> Option<(Option<i32>, String)> {
+    // Film tables (the compressor's) built once into the test's own cache,
+    // not the user's.
+    let cache = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("model_fuzz_cache");
     let mut child = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .env("ROTOR_CACHE_DIR", cache)
         .arg(command)
         .arg(file)
         .stdout(Stdio::piped())

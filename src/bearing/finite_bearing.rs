@@ -358,6 +358,25 @@ impl Bearing for FiniteFilmBearing {
             .map(|eq| eq.q)
     }
 
+    /// Pad `m`'s moment balance alone, as the short film's
+    /// ([`TiltingPadBearing`]'s), with the pad's finite film (table or
+    /// direct solve); `None` for a plain film (no internal coordinates).
+    fn internal_balance(
+        &self,
+        m: usize,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+    ) -> Option<Result<[f64; 3], BearingError>> {
+        let FilmSupport::TiltingPad(b) = &self.support else {
+            return None;
+        };
+        let film = self.film();
+        Some(b.pad_balance_of(m, q, qdot, speed, &|state| {
+            Ok(self.pad_film(&film, b, m, state, speed)?)
+        }))
+    }
+
     fn guess_internal(&self, journal: [f64; 2], speed: f64, internal: &mut [f64]) {
         self.short().guess_internal(journal, speed, internal);
     }

@@ -296,6 +296,24 @@ impl TiltingPadBearing {
         qdot: &[f64],
         speed: f64,
     ) -> Result<[f64; 3], BearingError> {
+        let film = self.film();
+        let window = &self.pads[k].window;
+        self.pad_balance_of(k, q, qdot, speed, &|state| {
+            Ok(film.force(state, speed, Some(window))?)
+        })
+    }
+
+    /// [`Self::pad_balance`] with pad `k`'s film force and Jacobians at its
+    /// effective journal state given by `film` (the short film's, or a
+    /// finite film's: `super::finite_bearing`).
+    pub(crate) fn pad_balance_of(
+        &self,
+        k: usize,
+        q: &[f64],
+        qdot: &[f64],
+        speed: f64,
+        film: &dyn Fn(&JournalState) -> Result<BearingForce, BearingError>,
+    ) -> Result<[f64; 3], BearingError> {
         let n = 2 + self.pads.len();
         if q.len() != n || qdot.len() != n || k >= self.pads.len() {
             return Err(BearingError::Dimension {
@@ -317,9 +335,7 @@ impl TiltingPadBearing {
                 out[slot] += t[0] * col[0] + t[1] * col[1];
             }
         };
-        add(&self
-            .film()
-            .force(&state, speed, Some(&self.pads[k].window))?);
+        add(&film(&state)?);
         if let Some((contact, _)) = self.pad_contact(&self.contact_law(), k, &state, speed) {
             add(&contact);
         }

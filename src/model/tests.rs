@@ -645,7 +645,7 @@ fn shipped_models_are_plausible() {
         );
         count += 1;
     }
-    assert_eq!(count, 11);
+    assert_eq!(count, 12);
 }
 
 #[test]
