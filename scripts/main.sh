@@ -45,6 +45,19 @@ $rotor campbell models/turbine_generator_train.toml --csv out/turbine_generator_
   --png out/turbine_generator_train_campbell.png
 $rotor simulate models/turbine_generator_train.toml --rpm 3000 --duration 0.5 \
   --csv out/turbine_generator_train.csv
+# A six-stage centrifugal compressor on two five-pad tilting-pad bearings with
+# finite-length films (issue 47; L/D 0.45, 60° pads, load between pads, preload
+# 0.3; the films' force tables are built once and cached): its operating point,
+# Campbell diagram, stability (API 617 Level I), a 3 s start-up from rest on its
+# pads to the maximum continuous speed, and its design-review report judged as a
+# compressor (issue 48: API 684 unbalance cases and margins over 8000-11500 rpm).
+$rotor info models/compressor.toml > out/compressor_info.txt
+$rotor operating-point models/compressor.toml > out/compressor_operating_point.txt
+$rotor campbell models/compressor.toml --csv out/compressor_campbell.csv --png out/compressor_campbell.png
+$rotor stability models/compressor.toml > out/compressor_stability.txt
+$rotor simulate models/compressor.toml --ramp-rpm 0:11500 --duration 3 --step 1e-4 --output-step 1e-3 \
+  --csv out/compressor_start_up.csv --plots out/compressor_start_up > out/compressor_start_up_windows.txt
+$rotor report models/compressor.toml --out out/compressor_report.html
 # The three-guide hydro unit as installed (issue 49): its turbine guide bearing
 # 0.12 mm off the line of the generator guides (a plumb-line survey). A vertical
 # shaft carries no weight on its guides: the offset alone loads them. Its
