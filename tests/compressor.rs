@@ -162,3 +162,34 @@ fn the_compressor_lifts_off_and_starts_to_its_maximum_continuous_speed() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A model read again in the same process (an FMU instantiated again) takes
+/// the tables it already prepared, as read from the cache file, without
+/// reading or preparing them again: the same table, shared.
+#[test]
+fn a_model_read_again_shares_its_tables() {
+    let dir = scratch("compressor_shared_tables");
+    let first = compressor(&dir);
+    let again = compressor(&dir);
+    let tables = |m: &RotorModel| -> Vec<_> {
+        m.bearings
+            .iter()
+            .filter_map(|b| match &b.kind {
+                BearingKind::FiniteFilm(f) => Some(f.pad_tables[0].clone()),
+                _ => None,
+            })
+            .collect()
+    };
+    let (a, b) = (tables(&first), tables(&again));
+    assert_eq!(a.len(), 2);
+    for (t, u) in a.iter().zip(&b) {
+        assert!(std::sync::Arc::ptr_eq(&t.table, &u.table));
+        assert!(matches!(
+            u.origin,
+            rotor_bearing::bearing::film_table_cache::TableOrigin::Loaded(_)
+        ));
+    }
+    // The two bearings (one pad arc, one geometry) share one table too.
+    assert!(std::sync::Arc::ptr_eq(&a[0].table, &a[1].table));
+    std::fs::remove_dir_all(&dir).ok();
+}

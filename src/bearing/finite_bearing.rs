@@ -116,7 +116,7 @@ impl FiniteFilmBearing {
         let geometry = PadGeometry::of(film, arc);
         self.pad_tables
             .iter()
-            .map(|t| &t.table)
+            .map(|t| &*t.table)
             .find(|t| t.geometry() == geometry)
     }
 

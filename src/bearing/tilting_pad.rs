@@ -299,7 +299,7 @@ impl TiltingPadBearing {
         let film = self.film();
         let window = &self.pads[k].window;
         self.pad_balance_of(k, q, qdot, speed, &|state| {
-            Ok(film.force(state, speed, Some(window))?)
+            film.force(state, speed, Some(window))
         })
     }
 

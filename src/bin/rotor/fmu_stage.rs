@@ -61,10 +61,10 @@ pub fn stage(model: &Path, dir: &Path, fmi: u8) -> Result<(), String> {
                 std::fs::write(&path, encode(table)).map_err(|e| format!("{}: {e}", path.display()))
             }
             if let Some(t) = &f.table {
-                put(&tables, &t.table)?;
+                put(&tables, &*t.table)?;
             }
             for t in &f.pad_tables {
-                put(&tables, &t.table)?;
+                put(&tables, &*t.table)?;
             }
         }
     }
