@@ -4,10 +4,12 @@
 
 use std::path::PathBuf;
 
+use rotor_bearing::analysis::level_two::level_two;
 use rotor_bearing::analysis::ring_down::{RingDown, ring_down};
 use rotor_bearing::analysis::stability::{
     StabilityRequest, StageData, disks_and_seals, level_one_stages, site_label, stability_study,
 };
+use rotor_bearing::analysis::unbalance::model_operating_range;
 use rotor_bearing::plot::{RAD_S_TO_RPM, stability_png};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
@@ -137,11 +139,33 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     if req.at.is_none() {
         placement_note(rotor, &request, &result)?;
     }
+    if machine.is_api() {
+        print!("{}", level_two_text(rotor, &request, req.rpm)?);
+    }
     if req.verify {
         let checks = verify(rotor, result.speed, &result.modes)?;
         print!("{}", text::ring_downs(&checks));
     }
     Ok(())
+}
+
+/// An API machine's Level II analysis at its maximum continuous speed (the
+/// top of the model's operating range, else `--rpm`), with the Level I
+/// stages' `Q_A` when there are stages.
+pub fn level_two_text(
+    rotor: &Rotor,
+    request: &StabilityRequest,
+    rpm: f64,
+) -> Result<String, String> {
+    let mcs = model_operating_range(rotor).map_or(rpm.abs() / RAD_S_TO_RPM, |r| r.max);
+    let l = level_two(rotor, mcs, &request.stages, request.modes)
+        .map_err(|e| format!("{}: API 617 Level II: {e}", rotor.model.name))?;
+    let labels: Vec<String> = l
+        .anticipated
+        .as_ref()
+        .map(|(_, _, c)| c.sites.iter().map(|&n| site_label(rotor, n)).collect())
+        .unwrap_or_default();
+    Ok(format!("\n{}", text::level_two(&l, &labels)))
 }
 
 /// The three least-damped oscillating modes rung down in the transient.
