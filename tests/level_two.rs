@@ -151,3 +151,67 @@ fn rotor_stability_prints_level_two_at_the_maximum_continuous_speed() {
     assert!(printed.contains("Hz: FAIL\n"), "{printed}");
     assert!(!printed.contains("with the anticipated"), "{printed}");
 }
+
+/// `rotor report` of the compressor (seal Q = 1.5e6 N/m, stage data,
+/// `--operating-rpm 2000:3500`) carries the two Level II rows in its summary
+/// with the findings and verdicts `rotor stability` prints for the same
+/// range, and the section's table.
+#[test]
+fn the_report_summary_carries_the_commands_level_two() {
+    let dir = std::env::temp_dir().join(format!("level-two-report-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("c.toml");
+    std::fs::write(&path, compressor(1.5e6)).unwrap();
+    let page = dir.join("report.html");
+    let stages = [
+        "--power",
+        "1e5",
+        "--impeller-diameter",
+        "0.3",
+        "--flow-width",
+        "0.02",
+        "--operating-rpm",
+        "2000:3500",
+    ];
+    let run = |command: &str, extra: &[&str]| {
+        let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .args([command, path.to_str().unwrap()])
+            .args(stages)
+            .args(extra)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let printed = run("stability", &[]);
+    run("report", &["--out", page.to_str().unwrap()]);
+    let html = std::fs::read_to_string(&page).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    assert!(html.contains("id=\"level-two\""));
+    for (row_name, prefix) in [
+        (
+            "stability (API 617 Level II)<",
+            "  Level II (model as built): ",
+        ),
+        (
+            "stability (API 617 Level II with Q_A)<",
+            "  Level II with Q_A: ",
+        ),
+    ] {
+        let line = printed
+            .lines()
+            .find_map(|l| l.strip_prefix(prefix))
+            .unwrap_or_else(|| panic!("{printed}"));
+        let (finding, verdict) = line.rsplit_once(": ").unwrap();
+        assert_eq!(verdict, "FAIL", "{line}");
+        let at = html.find(row_name).expect("a summary row");
+        let row = &html[at..at + html[at..].find("</tr>").unwrap()];
+        assert!(row.contains(finding), "{finding}\n{row}");
+        assert!(row.contains("3500 rpm (MCS)"), "{row}");
+        assert!(row.contains(">FAIL<"), "{row}");
+    }
+}

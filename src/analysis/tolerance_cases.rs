@@ -15,6 +15,10 @@
 //!   pass when it is positive;
 //! - API 617 Level I (when the model states impeller stages): the log
 //!   decrement at `Q_A`; pass on the ratio and the log decrement;
+//! - API 617 Level II (API classes): the least log decrement of the judged
+//!   forward modes at the maximum continuous speed (the operating range's
+//!   top), as built and, with impeller stages, with `Q_A`
+//!   ([`super::level_two`]); pass when ≥ 0.1;
 //! - API clearance (API classes): the largest scaled response over its
 //!   allowance of the API unbalance cases (API 684/617); pass when ≤ 1;
 //! - film thickness: the least minimum film thickness of the fluid films at
@@ -25,6 +29,7 @@ use crate::rotor::Rotor;
 
 use super::api_unbalance::{ApiRequest, api_unbalance};
 use super::campbell::{CampbellRequest, campbell_study};
+use super::level_two::{LevelTwoCase, level_two};
 use super::operating_point::operating_point;
 use super::speed_range::OperatingRange;
 use super::stability::{StabilityRequest, level_one_stages, mid_span_node, stability_study};
@@ -37,6 +42,8 @@ pub enum Criterion {
     AmplificationFactor,
     LogDecrement,
     LevelOne,
+    LevelTwo,
+    LevelTwoAnticipated,
     ApiClearance,
     FilmThickness,
 }
@@ -49,6 +56,8 @@ impl Criterion {
             Criterion::AmplificationFactor => "amplification factor (largest)",
             Criterion::LogDecrement => "log dec, least stable forward mode",
             Criterion::LevelOne => "log dec at Q_A (API 617 Level I)",
+            Criterion::LevelTwo => "log dec at MCS (API 617 Level II)",
+            Criterion::LevelTwoAnticipated => "log dec at MCS with Q_A (API 617 Level II)",
             Criterion::ApiClearance => "API scaled response / allowed clearance",
             Criterion::FilmThickness => "minimum film thickness (µm)",
         }
@@ -261,6 +270,36 @@ pub fn case_criteria(
         ));
     }
     if rotor.model.machine.is_api() {
+        let stages = level_one_stages(rotor, None);
+        let level = level_two(
+            rotor,
+            operating.max,
+            &stages,
+            StabilityRequest::at(speed).modes,
+        )
+        .map_err(|e| e.to_string());
+        let judged = |case: &LevelTwoCase| {
+            Some(Judged {
+                value: case.governing().map_or(0.0, |m| m.log_decrement),
+                pass: case.pass(),
+            })
+        };
+        out.push((
+            Criterion::LevelTwo,
+            level
+                .as_ref()
+                .map_err(Clone::clone)
+                .map(|l| judged(&l.as_built)),
+        ));
+        if !stages.is_empty() {
+            out.push((
+                Criterion::LevelTwoAnticipated,
+                level
+                    .as_ref()
+                    .map_err(Clone::clone)
+                    .map(|l| l.anticipated.as_ref().and_then(|(_, _, case)| judged(case))),
+            ));
+        }
         let max = sweep_top.unwrap_or(operating.max * super::speed_range::TOP_SPEED_FACTOR);
         let api = api_unbalance(
             rotor,

@@ -9,7 +9,7 @@ use rotor_bearing::analysis::ring_down::{RingDown, ring_down};
 use rotor_bearing::analysis::stability::{
     StabilityRequest, StageData, disks_and_seals, level_one_stages, site_label, stability_study,
 };
-use rotor_bearing::analysis::unbalance::model_operating_range;
+use rotor_bearing::analysis::unbalance::OperatingRange;
 use rotor_bearing::plot::{RAD_S_TO_RPM, stability_png};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
@@ -19,6 +19,9 @@ use crate::write_file;
 /// What `rotor stability` was asked for.
 pub struct Request {
     pub rpm: f64,
+    /// The operating range (`--operating-rpm`, else the model's): its top
+    /// is the maximum continuous speed of API 617 Level II.
+    pub operating: Option<OperatingRange>,
     pub q_max: Option<f64>,
     pub points: usize,
     pub modes: usize,
@@ -140,7 +143,10 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         placement_note(rotor, &request, &result)?;
     }
     if machine.is_api() {
-        print!("{}", level_two_text(rotor, &request, req.rpm)?);
+        let mcs = req
+            .operating
+            .map_or(req.rpm.abs() / RAD_S_TO_RPM, |r| r.max);
+        print!("{}", level_two_text(rotor, &request, mcs)?);
     }
     if req.verify {
         let checks = verify(rotor, result.speed, &result.modes)?;
@@ -149,15 +155,13 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     Ok(())
 }
 
-/// An API machine's Level II analysis at its maximum continuous speed (the
-/// top of the model's operating range, else `--rpm`), with the Level I
-/// stages' `Q_A` when there are stages.
+/// An API machine's Level II analysis at its maximum continuous speed
+/// `mcs` (rad/s), with the Level I stages' `Q_A` when there are stages.
 pub fn level_two_text(
     rotor: &Rotor,
     request: &StabilityRequest,
-    rpm: f64,
+    mcs: f64,
 ) -> Result<String, String> {
-    let mcs = model_operating_range(rotor).map_or(rpm.abs() / RAD_S_TO_RPM, |r| r.max);
     let l = level_two(rotor, mcs, &request.stages, request.modes)
         .map_err(|e| format!("{}: API 617 Level II: {e}", rotor.model.name))?;
     let labels: Vec<String> = l
