@@ -442,3 +442,79 @@ fn the_report_summarizes_the_governing_cases() {
 fn short(x: f64) -> String {
     rotor_bearing::report::text::short(x)
 }
+
+/// A hydro class is judged by its own criteria in every case (issue 48):
+/// `rotor cases` on the test rotor as a `hydro_generator` with runaway speed
+/// 6000 rpm prints the first critical speed against the runaway speed, the
+/// log decrement and the film thickness — no API 684 margin, AF or API
+/// criterion — and each case's first critical (and verdict) is that of the
+/// case's model written out and run through the Campbell study: the
+/// nominal case's 2675 rpm fails, the cold tight case's 6058 rpm passes.
+#[test]
+fn a_hydro_unit_cases_are_judged_by_its_class_criteria() {
+    use rotor_bearing::analysis::tolerance_cases::{Criterion, tolerance_cases};
+    let text = model_text().replace("machine = \"compressor\"", "machine = \"hydro_generator\"");
+    assert!(text.contains("hydro_generator") && text.contains("max_speed_rpm = 6000"));
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "hydro.toml").unwrap()).unwrap();
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let range = OperatingRange {
+        min: speed,
+        max: speed,
+    };
+    let study = tolerance_cases(&rotor, speed, range).unwrap();
+    let kinds: Vec<Criterion> = study.governing.iter().map(|g| g.criterion).collect();
+    assert_eq!(
+        kinds,
+        [
+            Criterion::FirstCritical,
+            Criterion::LogDecrement,
+            Criterion::FilmThickness
+        ]
+    );
+    let oil = Oil::iso_vg(32).unwrap();
+    let mut files = vec![without_cases(&text)];
+    for t in [35.0, 55.0] {
+        let mu = oil.dynamic_viscosity(CELSIUS_ZERO + t).unwrap();
+        for f in [0.9, 1.1] {
+            files.push(case_file(&text, mu, 100e-6 * f, 0.0));
+        }
+    }
+    let runaway = 6000.0 * std::f64::consts::PI / 30.0;
+    let mut verdicts = Vec::new();
+    for (case, file) in study.cases.iter().zip(&files) {
+        let r = Rotor::new(RotorModel::from_toml(file, "case.toml").unwrap()).unwrap();
+        let first = campbell_study(&r, &CampbellRequest::default_for(Some(range)))
+            .unwrap()
+            .first_critical_speed()
+            .unwrap();
+        let judged = case
+            .outcome(Criterion::FirstCritical)
+            .unwrap()
+            .clone()
+            .unwrap()
+            .unwrap();
+        assert!(
+            (judged.value / first - 1.0).abs() < 1e-12,
+            "{}: {} against {first}",
+            case.case.label,
+            judged.value
+        );
+        assert_eq!(judged.pass, first > runaway);
+        verdicts.push(judged.pass);
+    }
+    assert_eq!(verdicts, [false, true, false, false, false]);
+    let dir = std::env::temp_dir().join(format!("tolerance-hydro-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("hydro.toml");
+    std::fs::write(&path, &text).unwrap();
+    let out = String::from_utf8(rotor_cases(&path).stdout).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    let (value, case) = governing(&out, "first critical speed (rpm) > runaway");
+    assert_eq!(case, 1, "{out}");
+    let nominal = study.cases[0].outcome(Criterion::FirstCritical).unwrap();
+    let rpm = nominal.clone().unwrap().unwrap().value * 30.0 / std::f64::consts::PI;
+    assert!((value - rpm).abs() <= 1e-5 * rpm, "{value} against {rpm}");
+    for api in ["separation margin", "amplification factor", "API"] {
+        assert!(!out.contains(api), "{api} in\n{out}");
+    }
+}
