@@ -146,7 +146,12 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         let mcs = req
             .operating
             .map_or(req.rpm.abs() / RAD_S_TO_RPM, |r| r.max);
-        print!("{}", level_two_text(rotor, &request, mcs)?);
+        // A Level II that cannot be computed is said, not fatal: the
+        // study above stands.
+        match level_two_text(rotor, &request, mcs) {
+            Ok(text) => print!("{text}"),
+            Err(e) => println!("\n{e}: not computed"),
+        }
     }
     if req.verify {
         let checks = verify(rotor, result.speed, &result.modes)?;
