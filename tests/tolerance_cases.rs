@@ -518,3 +518,65 @@ fn a_hydro_unit_cases_are_judged_by_its_class_criteria() {
         assert!(!out.contains(api), "{api} in\n{out}");
     }
 }
+
+/// With an impeller's stage data the API 617 Level II with the anticipated
+/// cross-coupling is a criterion of every case: each case's value is the
+/// least log decrement `level_two` gives on that case's model written out,
+/// with the impeller's `Q_A` at the maximum continuous speed, and the
+/// governing case the one of the least.
+#[test]
+fn level_two_with_q_a_is_judged_in_every_case() {
+    use rotor_bearing::analysis::stability::impeller_stages;
+    use rotor_bearing::analysis::tolerance_cases::{Criterion, tolerance_cases};
+    let text = model_text().replace(
+        "[[disks]]\nname = \"disk\"\nnode = 5\n",
+        "[[disks]]\nname = \"disk\"\nrole = \"impeller\"\nstage_power = 2e4\nimpeller_diameter = 0.2\nflow_width = 0.01\nnode = 5\n",
+    );
+    assert!(text.contains("role = \"impeller\""));
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "impeller.toml").unwrap()).unwrap();
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let range = OperatingRange {
+        min: speed,
+        max: speed,
+    };
+    let study = tolerance_cases(&rotor, speed, range).unwrap();
+    let oil = Oil::iso_vg(32).unwrap();
+    let mut files = vec![without_cases(&text)];
+    for t in [35.0, 55.0] {
+        let mu = oil.dynamic_viscosity(CELSIUS_ZERO + t).unwrap();
+        for f in [0.9, 1.1] {
+            files.push(case_file(&text, mu, 100e-6 * f, 0.0));
+        }
+    }
+    let mut values = Vec::new();
+    for (case, file) in study.cases.iter().zip(&files) {
+        let r = Rotor::new(RotorModel::from_toml(file, "case.toml").unwrap()).unwrap();
+        let l = level_two(&r, range.max, &impeller_stages(&r), 8).unwrap();
+        let (_, _, with) = l.anticipated.as_ref().unwrap();
+        let expected = with.governing().unwrap().log_decrement;
+        let judged = case
+            .outcome(Criterion::LevelTwoAnticipated)
+            .unwrap()
+            .clone()
+            .unwrap()
+            .unwrap();
+        assert!(
+            (judged.value - expected).abs() <= 1e-12 * expected.abs(),
+            "{}: {} against {expected}",
+            case.case.label,
+            judged.value
+        );
+        assert_eq!(judged.pass, expected >= 0.1);
+        values.push(expected);
+    }
+    let least = (0..values.len())
+        .min_by(|&a, &b| values[a].total_cmp(&values[b]))
+        .unwrap();
+    let g = study
+        .governing
+        .iter()
+        .find(|g| g.criterion == Criterion::LevelTwoAnticipated)
+        .unwrap();
+    assert_eq!(g.worst.unwrap().0, least, "{values:?}");
+    println!("Level II with Q_A per case: {values:?}");
+}
