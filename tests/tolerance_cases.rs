@@ -10,6 +10,7 @@ use std::process::Command;
 
 use rotor_bearing::analysis::api_unbalance::{ApiRequest, api_unbalance};
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
+use rotor_bearing::analysis::level_two::level_two;
 use rotor_bearing::analysis::operating_point::operating_point;
 use rotor_bearing::analysis::speed_range::OperatingRange;
 use rotor_bearing::analysis::stability::{StabilityRequest, stability_study};
@@ -56,8 +57,9 @@ fn case_file(text: &str, viscosity: f64, clearance: f64, preload: f64) -> String
 /// minimum film thickness (µm), the least separation margin surplus
 /// `SM − SM_required` (%) of the Campbell criticals that need one (+∞ when
 /// none does) and the largest API scaled response over its allowed
-/// clearance.
-fn criteria(text: &str) -> [f64; 5] {
+/// clearance, and API 617 Level II's least log decrement of the judged
+/// forward modes at the maximum continuous speed (3000 rpm, the range's top).
+fn criteria(text: &str) -> [f64; 6] {
     let rotor = Rotor::new(RotorModel::from_toml(text, "case.toml").unwrap()).unwrap();
     let speed = 3000.0 * std::f64::consts::PI / 30.0;
     let range = OperatingRange {
@@ -111,7 +113,9 @@ fn criteria(text: &str) -> [f64; 5] {
         .flat_map(|c| &c.clearances)
         .map(|c| c.scaled / c.limit)
         .fold(f64::NEG_INFINITY, f64::max);
-    [log_dec, af, 1e6 * h, surplus, clearance]
+    let level = level_two(&rotor, range.max, &[], 8).unwrap();
+    let level_two = level.as_built.governing().unwrap().log_decrement;
+    [log_dec, af, 1e6 * h, surplus, clearance, level_two]
 }
 
 /// The governing row `rotor cases` prints for a criterion: worst value and case number.
@@ -156,7 +160,7 @@ fn rotor_cases_runs_every_combination_and_its_worst_case_is_the_worst_of_them() 
             files.push(case_file(&text, mu, 100e-6 * f, 0.0));
         }
     }
-    let results: Vec<[f64; 5]> = files.iter().map(|f| criteria(f)).collect();
+    let results: Vec<[f64; 6]> = files.iter().map(|f| criteria(f)).collect();
     // The cases differ: the check could not pass by one case standing for all.
     let spread = |k: usize| {
         let v: Vec<f64> = results.iter().map(|r| r[k]).collect();
@@ -185,6 +189,7 @@ fn rotor_cases_runs_every_combination_and_its_worst_case_is_the_worst_of_them() 
         ("minimum film thickness (µm)", 2, true),
         ("separation margin surplus SM − SM_req (%)", 3, true),
         ("API scaled response / allowed clearance", 4, false),
+        ("log dec at MCS (API 617 Level II)", 5, true),
     ] {
         let (value, case) = governing(&out, label);
         let i = argext(k, least);
@@ -405,6 +410,7 @@ fn the_report_summarizes_the_governing_cases() {
         "separation margin surplus SM − SM_req (%)",
         "amplification factor (largest)",
         "log dec, least stable forward mode",
+        "log dec at MCS (API 617 Level II)",
         "API scaled response / allowed clearance",
         "minimum film thickness (µm)",
     ];
@@ -435,4 +441,142 @@ fn the_report_summarizes_the_governing_cases() {
 /// The printed value as `rotor cases` prints it (`report::text::short`).
 fn short(x: f64) -> String {
     rotor_bearing::report::text::short(x)
+}
+
+/// A hydro class is judged by its own criteria in every case (issue 48):
+/// `rotor cases` on the test rotor as a `hydro_generator` with runaway speed
+/// 6000 rpm prints the first critical speed against the runaway speed, the
+/// log decrement and the film thickness — no API 684 margin, AF or API
+/// criterion — and each case's first critical (and verdict) is that of the
+/// case's model written out and run through the Campbell study: the
+/// nominal case's 2675 rpm fails, the cold tight case's 6058 rpm passes.
+#[test]
+fn a_hydro_unit_cases_are_judged_by_its_class_criteria() {
+    use rotor_bearing::analysis::tolerance_cases::{Criterion, tolerance_cases};
+    let text = model_text().replace("machine = \"compressor\"", "machine = \"hydro_generator\"");
+    assert!(text.contains("hydro_generator") && text.contains("max_speed_rpm = 6000"));
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "hydro.toml").unwrap()).unwrap();
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let range = OperatingRange {
+        min: speed,
+        max: speed,
+    };
+    let study = tolerance_cases(&rotor, speed, range).unwrap();
+    let kinds: Vec<Criterion> = study.governing.iter().map(|g| g.criterion).collect();
+    assert_eq!(
+        kinds,
+        [
+            Criterion::FirstCritical,
+            Criterion::LogDecrement,
+            Criterion::FilmThickness
+        ]
+    );
+    let oil = Oil::iso_vg(32).unwrap();
+    let mut files = vec![without_cases(&text)];
+    for t in [35.0, 55.0] {
+        let mu = oil.dynamic_viscosity(CELSIUS_ZERO + t).unwrap();
+        for f in [0.9, 1.1] {
+            files.push(case_file(&text, mu, 100e-6 * f, 0.0));
+        }
+    }
+    let runaway = 6000.0 * std::f64::consts::PI / 30.0;
+    let mut verdicts = Vec::new();
+    for (case, file) in study.cases.iter().zip(&files) {
+        let r = Rotor::new(RotorModel::from_toml(file, "case.toml").unwrap()).unwrap();
+        let first = campbell_study(&r, &CampbellRequest::default_for(Some(range)))
+            .unwrap()
+            .first_critical_speed()
+            .unwrap();
+        let judged = case
+            .outcome(Criterion::FirstCritical)
+            .unwrap()
+            .clone()
+            .unwrap()
+            .unwrap();
+        assert!(
+            (judged.value / first - 1.0).abs() < 1e-12,
+            "{}: {} against {first}",
+            case.case.label,
+            judged.value
+        );
+        assert_eq!(judged.pass, first > runaway);
+        verdicts.push(judged.pass);
+    }
+    assert_eq!(verdicts, [false, true, false, false, false]);
+    let dir = std::env::temp_dir().join(format!("tolerance-hydro-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("hydro.toml");
+    std::fs::write(&path, &text).unwrap();
+    let out = String::from_utf8(rotor_cases(&path).stdout).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    let (value, case) = governing(&out, "first critical speed (rpm) > runaway");
+    assert_eq!(case, 1, "{out}");
+    let nominal = study.cases[0].outcome(Criterion::FirstCritical).unwrap();
+    let rpm = nominal.clone().unwrap().unwrap().value * 30.0 / std::f64::consts::PI;
+    assert!((value - rpm).abs() <= 1e-5 * rpm, "{value} against {rpm}");
+    for api in ["separation margin", "amplification factor", "API"] {
+        assert!(!out.contains(api), "{api} in\n{out}");
+    }
+}
+
+/// With an impeller's stage data the API 617 Level II with the anticipated
+/// cross-coupling is a criterion of every case: each case's value is the
+/// least log decrement `level_two` gives on that case's model written out,
+/// with the impeller's `Q_A` at the maximum continuous speed, and the
+/// governing case the one of the least.
+#[test]
+fn level_two_with_q_a_is_judged_in_every_case() {
+    use rotor_bearing::analysis::stability::impeller_stages;
+    use rotor_bearing::analysis::tolerance_cases::{Criterion, tolerance_cases};
+    let text = model_text().replace(
+        "[[disks]]\nname = \"disk\"\nnode = 5\n",
+        "[[disks]]\nname = \"disk\"\nrole = \"impeller\"\nstage_power = 2e4\nimpeller_diameter = 0.2\nflow_width = 0.01\nnode = 5\n",
+    );
+    assert!(text.contains("role = \"impeller\""));
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "impeller.toml").unwrap()).unwrap();
+    let speed = 3000.0 * std::f64::consts::PI / 30.0;
+    let range = OperatingRange {
+        min: speed,
+        max: speed,
+    };
+    let study = tolerance_cases(&rotor, speed, range).unwrap();
+    let oil = Oil::iso_vg(32).unwrap();
+    let mut files = vec![without_cases(&text)];
+    for t in [35.0, 55.0] {
+        let mu = oil.dynamic_viscosity(CELSIUS_ZERO + t).unwrap();
+        for f in [0.9, 1.1] {
+            files.push(case_file(&text, mu, 100e-6 * f, 0.0));
+        }
+    }
+    let mut values = Vec::new();
+    for (case, file) in study.cases.iter().zip(&files) {
+        let r = Rotor::new(RotorModel::from_toml(file, "case.toml").unwrap()).unwrap();
+        let l = level_two(&r, range.max, &impeller_stages(&r), 8).unwrap();
+        let (_, _, with) = l.anticipated.as_ref().unwrap();
+        let expected = with.governing().unwrap().log_decrement;
+        let judged = case
+            .outcome(Criterion::LevelTwoAnticipated)
+            .unwrap()
+            .clone()
+            .unwrap()
+            .unwrap();
+        assert!(
+            (judged.value - expected).abs() <= 1e-12 * expected.abs(),
+            "{}: {} against {expected}",
+            case.case.label,
+            judged.value
+        );
+        assert_eq!(judged.pass, expected >= 0.1);
+        values.push(expected);
+    }
+    let least = (0..values.len())
+        .min_by(|&a, &b| values[a].total_cmp(&values[b]))
+        .unwrap();
+    let g = study
+        .governing
+        .iter()
+        .find(|g| g.criterion == Criterion::LevelTwoAnticipated)
+        .unwrap();
+    assert_eq!(g.worst.unwrap().0, least, "{values:?}");
+    println!("Level II with Q_A per case: {values:?}");
 }

@@ -17,14 +17,25 @@
 //! between-bearing rotor and for an overhang; ROSS `Report._mode_shape`):
 //! - *mid-span* (first mode, in phase): one plane at the node of largest
 //!   modal displacement of the first forward mode at `N` that can
-//!   resonate ([`RESONANT_DAMPING`]) between the bearings, `W` the sum of the journal static loads (the rotor's mass);
+//!   resonate ([`RESONANT_DAMPING`]) between the bearings, `W` the sum of the
+//!   static loads of the two journals adjacent to the span that holds it
+//!   (on two bearings: both journals, the rotor's mass);
 //! - *overhung* (each end with a disk or point mass outboard of the
 //!   bearings, e.g. a coupling hub or an overhung impeller): one plane at the
 //!   outermost of them,
 //!   `W` the static weight of everything outboard of that bearing;
 //! - *quarter-span, out of phase* (second mode): planes at the nodes nearest
-//!   the bearing span's quarter points, 0° and 180°, each `W` the static load
-//!   of the journal on its side (two-bearing statics).
+//!   the quarter points of the second mode's span, 0° and 180°, each `W` the
+//!   static load of the journal on its side; on two bearings the span is the
+//!   bearing span, on more the span that holds the largest orbit of the
+//!   second forward mode that can resonate.
+//!
+//! **Journal static loads.** On two bearings by two-bearing statics
+//! ([`journal_static_loads`]); on three or more, a statically indeterminate
+//! line, from the bearings' reactions at the line's static equilibrium under
+//! gravity at `N` with the model's offsets and every bearing's stiffness
+//! ([`super::alignment::alignment`]: the three-moment solution on stiff
+//! supports), each along the load direction over `|g_⊥|`.
 //!
 //! **Judgement of each critical** (a peak of the response at the probes, or
 //! at the bearings when the model has no probes or the case moves none of
@@ -53,8 +64,10 @@ use nalgebra::Complex;
 use crate::fe::DOF_PER_NODE;
 use crate::model::{RotorModel, UnbalancePlane};
 use crate::rotor::{DOF_PER_PEDESTAL, Rotor};
+use crate::solver::SolverOptions;
 use crate::units::RAD_S_TO_RPM;
 
+use super::alignment::{alignment, carries_weight};
 use super::linear::node_xy;
 use super::modal::{ModalOptions, Mode, Whirl, modes_at};
 use super::shapes::node_orbits;
@@ -198,8 +211,8 @@ pub struct ApiUnbalance {
     pub operating: OperatingRange,
     /// `A_vl` (m pk-pk).
     pub vibration_limit: f64,
-    /// Static loads of the two journals (kg), first then last bearing.
-    pub journal_loads: [f64; 2],
+    /// Static loads of the journals (kg), by axial position.
+    pub journal_loads: Vec<f64>,
     /// The cases.
     pub cases: Vec<ApiCase>,
 }
@@ -223,25 +236,68 @@ fn masses(model: &RotorModel) -> Vec<(f64, f64)> {
     shaft.chain(disks).chain(points).collect()
 }
 
-/// Nodes of the first and last bearing (supporting bearings only).
-fn bearing_span(model: &RotorModel) -> Result<(usize, usize), UnbalanceError> {
-    let nodes: Vec<usize> = model
+/// Nodes of the supporting bearings (seals, pulls and rubs are no
+/// supports), distinct, by axial position; at least two.
+fn support_nodes(model: &RotorModel) -> Result<Vec<usize>, UnbalanceError> {
+    let mut distinct: Vec<usize> = model
         .bearings
         .iter()
         .filter(|b| b.kind.is_bearing())
         .map(|b| b.node)
         .collect();
-    let mut distinct = nodes.clone();
     distinct.sort_unstable();
     distinct.dedup();
-    if distinct.len() != 2 {
+    distinct.sort_by(|&a, &b| model.node_z[a].total_cmp(&model.node_z[b]));
+    if distinct.len() < 2 {
         return Err(UnbalanceError::Options(format!(
-            "the API unbalance cases need a rotor on two bearings (journal static loads by statics); model {} has bearings at {} node(s)",
+            "the API unbalance cases need a rotor on at least two bearings (journal static loads by statics); model {} has bearings at {} node(s)",
             model.name,
             distinct.len()
         )));
     }
-    Ok((distinct[0], distinct[1]))
+    Ok(distinct)
+}
+
+/// Static loads (kg) of the journals at `supports` (nodes by axial
+/// position, three or more) of a statically indeterminate line: the
+/// bearings' reactions along the load direction at the line's static
+/// equilibrium under gravity at `speed` (rad/s) with the model's offsets
+/// ([`alignment`]), summed per node and divided by `|g_⊥|`.
+fn indeterminate_loads(
+    rotor: &Rotor,
+    supports: &[usize],
+    speed: f64,
+) -> Result<Vec<f64>, UnbalanceError> {
+    let model = &rotor.model;
+    if !carries_weight(rotor) {
+        return Err(UnbalanceError::Options(format!(
+            "the API unbalance cases of model {} on {} bearings need the journals' static loads, and gravity has no part across its shaft",
+            model.name,
+            supports.len()
+        )));
+    }
+    let g = model.gravity[0].hypot(model.gravity[1]);
+    let line = alignment(rotor, speed, &SolverOptions::default())
+        .map_err(|e| UnbalanceError::Options(format!("journal static loads: {e}")))?;
+    Ok(supports
+        .iter()
+        .map(|&node| {
+            line.bearings
+                .iter()
+                .filter(|r| model.bearings[r.bearing].node == node)
+                .map(|r| r.load / g)
+                .sum()
+        })
+        .collect())
+}
+
+/// The span `(i, i + 1)` of `supports` (nodes by axial position) that holds
+/// `node`: the journals adjacent to a mode's largest orbit.
+fn span_of(model: &RotorModel, supports: &[usize], node: usize) -> usize {
+    let z = model.node_z[node];
+    (0..supports.len() - 1)
+        .find(|&i| z <= model.node_z[supports[i + 1]])
+        .unwrap_or(supports.len() - 2)
 }
 
 /// Static loads (kg) of the journals at nodes `a < b` from two-bearing
@@ -285,6 +341,14 @@ pub const RESONANT_DAMPING: f64 = 0.5;
 /// first mode) has its largest orbit; the mid-span node when the modes
 /// cannot be found.
 fn first_mode_antinode(rotor: &Rotor, speed: f64, a: usize, b: usize) -> usize {
+    mode_antinode(rotor, speed, (a, b), 0)
+}
+
+/// The node between `a` and `b` where the `which`-th (0-based) forward mode
+/// at `speed` with `ζ <` [`RESONANT_DAMPING`] (the last such when there
+/// are fewer; else the `which`-th forward mode, else the first mode) has
+/// its largest orbit; the mid-span node when the modes cannot be found.
+fn mode_antinode(rotor: &Rotor, speed: f64, (a, b): (usize, usize), which: usize) -> usize {
     let model = &rotor.model;
     let mid = nearest_node(model, 0.5 * (model.node_z[a] + model.node_z[b]));
     let options = ModalOptions {
@@ -295,10 +359,13 @@ fn first_mode_antinode(rotor: &Rotor, speed: f64, a: usize, b: usize) -> usize {
         return mid;
     };
     let resonant = |m: &&Mode| m.whirl == Whirl::Forward && m.damping_ratio < RESONANT_DAMPING;
+    let forward = |m: &&Mode| m.whirl == Whirl::Forward;
     let Some(mode) = modes
         .iter()
-        .find(resonant)
-        .or(modes.iter().find(|m| m.whirl == Whirl::Forward))
+        .filter(resonant)
+        .take(which + 1)
+        .last()
+        .or(modes.iter().filter(forward).take(which + 1).last())
         .or(modes.first())
     else {
         return mid;
@@ -326,20 +393,23 @@ fn plane(node: usize, weight: f64, mcs_rpm: f64, phase: f64) -> ApiPlane {
 pub type PlannedCase = (ApiCaseKind, Vec<ApiPlane>);
 
 /// The planes of every API case of `rotor` at maximum continuous speed `mcs`
-/// (rad/s), with the journal static loads (see the module's notes).
-pub fn api_cases(rotor: &Rotor, mcs: f64) -> Result<(Vec<PlannedCase>, [f64; 2]), UnbalanceError> {
+/// (rad/s), with the journal static loads (kg, by axial position; see the
+/// module's notes).
+pub fn api_cases(rotor: &Rotor, mcs: f64) -> Result<(Vec<PlannedCase>, Vec<f64>), UnbalanceError> {
     let model = &rotor.model;
-    let (a, b) = bearing_span(model)?;
-    let loads = journal_static_loads(model, a, b);
+    let supports = support_nodes(model)?;
+    let (a, b) = (supports[0], supports[supports.len() - 1]);
+    let loads = if supports.len() == 2 {
+        journal_static_loads(model, a, b).to_vec()
+    } else {
+        indeterminate_loads(rotor, &supports, mcs)?
+    };
     let n = mcs * RAD_S_TO_RPM;
+    let antinode = first_mode_antinode(rotor, mcs, a, b);
+    let first = span_of(model, &supports, antinode);
     let mut cases = vec![(
         ApiCaseKind::MidSpan,
-        vec![plane(
-            first_mode_antinode(rotor, mcs, a, b),
-            loads[0] + loads[1],
-            n,
-            0.0,
-        )],
+        vec![plane(antinode, loads[first] + loads[first + 1], n, 0.0)],
     )];
     for (last_end, bearing) in [(false, a), (true, b)] {
         let outboard = |n: &usize| if last_end { *n > b } else { *n < a };
@@ -358,7 +428,17 @@ pub fn api_cases(rotor: &Rotor, mcs: f64) -> Result<(Vec<PlannedCase>, [f64; 2])
             ));
         }
     }
-    let (za, zb) = (model.node_z[a], model.node_z[b]);
+    // The second mode's span: the whole span on two bearings, else the span
+    // of the second resonant forward mode's largest orbit.
+    let second = if supports.len() == 2 {
+        0
+    } else {
+        span_of(model, &supports, mode_antinode(rotor, mcs, (a, b), 1))
+    };
+    let (za, zb) = (
+        model.node_z[supports[second]],
+        model.node_z[supports[second + 1]],
+    );
     let quarter = [
         nearest_node(model, za + 0.25 * (zb - za)),
         nearest_node(model, za + 0.75 * (zb - za)),
@@ -366,8 +446,8 @@ pub fn api_cases(rotor: &Rotor, mcs: f64) -> Result<(Vec<PlannedCase>, [f64; 2])
     cases.push((
         ApiCaseKind::QuarterSpan,
         vec![
-            plane(quarter[0], loads[0], n, 0.0),
-            plane(quarter[1], loads[1], n, std::f64::consts::PI),
+            plane(quarter[0], loads[second], n, 0.0),
+            plane(quarter[1], loads[second + 1], n, std::f64::consts::PI),
         ],
     ));
     Ok((cases, loads))

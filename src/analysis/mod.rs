@@ -15,6 +15,7 @@ pub mod forced;
 pub mod frequency_table;
 pub mod held_equilibrium;
 pub mod housing_vibration;
+pub mod level_two;
 pub mod linear;
 pub mod linearize;
 pub mod modal;

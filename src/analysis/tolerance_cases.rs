@@ -4,7 +4,13 @@
 //! each by the study its command runs with that command's defaults, and the
 //! case that governs each criterion (its worst value over the cases).
 //!
-//! The criteria of one rotor ([`case_criteria`]):
+//! The criteria of one rotor ([`case_criteria`]); a hydro class
+//! (`hydro_generator`, `pump_turbine`) is judged by the report's criteria of
+//! its class instead of API 684/617's: the first critical speed (Campbell)
+//! above the runaway speed `max_speed_rpm`, the least stable forward mode's
+//! log decrement (> 0) and the film thickness — no separation margin, AF,
+//! Level I/II or API clearance (its ISO 10816-5 housing zones, a nonlinear
+//! transient per case, are not among the cases);
 //! - separation margin: the least `SM − SM_required` of the Campbell
 //!   study's criticals that need a margin (API 684); pass when every one has
 //!   its margin;
@@ -15,6 +21,10 @@
 //!   pass when it is positive;
 //! - API 617 Level I (when the model states impeller stages): the log
 //!   decrement at `Q_A`; pass on the ratio and the log decrement;
+//! - API 617 Level II (API classes): the least log decrement of the judged
+//!   forward modes at the maximum continuous speed (the operating range's
+//!   top), as built and, with impeller stages, with `Q_A`
+//!   ([`super::level_two`]); pass when ≥ 0.1;
 //! - API clearance (API classes): the largest scaled response over its
 //!   allowance of the API unbalance cases (API 684/617); pass when ≤ 1;
 //! - film thickness: the least minimum film thickness of the fluid films at
@@ -22,9 +32,12 @@
 
 use crate::model::tolerance_cases::CaseSettings;
 use crate::rotor::Rotor;
+use crate::units::RAD_S_TO_RPM;
 
 use super::api_unbalance::{ApiRequest, api_unbalance};
-use super::campbell::{CampbellRequest, campbell_study};
+use super::campbell::{CampbellRequest, CampbellStudy, campbell_study};
+use super::level_two::{LevelTwoCase, level_two};
+use super::modal::ModalError;
 use super::operating_point::operating_point;
 use super::speed_range::OperatingRange;
 use super::stability::{StabilityRequest, level_one_stages, mid_span_node, stability_study};
@@ -34,9 +47,12 @@ use super::unbalance::{DEFAULT_POINTS, UnbalanceRequest, unbalance_study, with_u
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Criterion {
     SeparationMargin,
+    FirstCritical,
     AmplificationFactor,
     LogDecrement,
     LevelOne,
+    LevelTwo,
+    LevelTwoAnticipated,
     ApiClearance,
     FilmThickness,
 }
@@ -46,9 +62,12 @@ impl Criterion {
     pub fn label(self) -> &'static str {
         match self {
             Criterion::SeparationMargin => "separation margin surplus SM − SM_req (%)",
+            Criterion::FirstCritical => "first critical speed (rpm) > runaway",
             Criterion::AmplificationFactor => "amplification factor (largest)",
             Criterion::LogDecrement => "log dec, least stable forward mode",
             Criterion::LevelOne => "log dec at Q_A (API 617 Level I)",
+            Criterion::LevelTwo => "log dec at MCS (API 617 Level II)",
+            Criterion::LevelTwoAnticipated => "log dec at MCS with Q_A (API 617 Level II)",
             Criterion::ApiClearance => "API scaled response / allowed clearance",
             Criterion::FilmThickness => "minimum film thickness (µm)",
         }
@@ -67,6 +86,7 @@ impl Criterion {
         match self {
             Criterion::SeparationMargin => 100.0 * value,
             Criterion::FilmThickness => 1e6 * value,
+            Criterion::FirstCritical => value * RAD_S_TO_RPM,
             _ => value,
         }
     }
@@ -169,6 +189,13 @@ pub fn case_criteria(
 ) -> Vec<(Criterion, Outcome)> {
     let mut out = Vec::new();
     let campbell = campbell_study(rotor, &CampbellRequest::default_for(Some(operating)));
+    let hydro = rotor.model.machine.is_hydro();
+    if hydro {
+        out.push((Criterion::FirstCritical, first_critical(rotor, campbell)));
+        out.extend(stability_criteria(rotor, speed));
+        out.push(film_criterion(rotor, speed));
+        return out;
+    }
     out.push((
         Criterion::SeparationMargin,
         campbell.map_err(|e| e.to_string()).map(|study| {
@@ -229,6 +256,93 @@ pub fn case_criteria(
             })
         }),
     ));
+    out.extend(stability_criteria(rotor, speed));
+    if rotor.model.machine.is_api() {
+        let stages = level_one_stages(rotor, None);
+        let level = level_two(
+            rotor,
+            operating.max,
+            &stages,
+            StabilityRequest::at(speed).modes,
+        )
+        .map_err(|e| e.to_string());
+        let judged = |case: &LevelTwoCase| {
+            Some(Judged {
+                value: case.governing().map_or(0.0, |m| m.log_decrement),
+                pass: case.pass(),
+            })
+        };
+        out.push((
+            Criterion::LevelTwo,
+            level
+                .as_ref()
+                .map_err(Clone::clone)
+                .map(|l| judged(&l.as_built)),
+        ));
+        if !stages.is_empty() {
+            out.push((
+                Criterion::LevelTwoAnticipated,
+                level
+                    .as_ref()
+                    .map_err(Clone::clone)
+                    .map(|l| l.anticipated.as_ref().and_then(|(_, _, case)| judged(case))),
+            ));
+        }
+        let max = sweep_top.unwrap_or(operating.max * super::speed_range::TOP_SPEED_FACTOR);
+        let api = api_unbalance(
+            rotor,
+            &ApiRequest {
+                operating,
+                max,
+                points: DEFAULT_POINTS,
+            },
+        );
+        out.push((
+            Criterion::ApiClearance,
+            api.map_err(|e| e.to_string()).map(|a| {
+                let checks: Vec<_> = a
+                    .cases
+                    .iter()
+                    .flat_map(|c| &c.criticals)
+                    .flat_map(|c| &c.clearances)
+                    .collect();
+                extreme(checks.iter().map(|c| c.scaled / c.limit), false).map(|value| Judged {
+                    value,
+                    pass: checks.iter().all(|c| c.pass),
+                })
+            }),
+        ));
+    }
+    out.push(film_criterion(rotor, speed));
+    out
+}
+
+/// A hydro unit's first critical speed (`report::hydro`): the lowest
+/// Campbell critical above the runaway speed (`max_speed_rpm`); with none,
+/// the diagram's top when it reaches the runaway speed, else not judged.
+fn first_critical(rotor: &Rotor, campbell: Result<CampbellStudy, ModalError>) -> Outcome {
+    let runaway = rotor.model.max_speed.abs();
+    let study = campbell.map_err(|e| e.to_string())?;
+    match study.first_critical_speed() {
+        Some(first) => Ok(Some(Judged {
+            value: first,
+            pass: first > runaway,
+        })),
+        None if study.top >= runaway => Ok(Some(Judged {
+            value: study.top,
+            pass: true,
+        })),
+        None => Err(format!(
+            "no critical speed up to {:.1} rpm, below the runaway speed",
+            study.top * RAD_S_TO_RPM
+        )),
+    }
+}
+
+/// The least stable forward mode's log decrement (every class) and, with
+/// impeller stages, the Level I log decrement at `Q_A`.
+fn stability_criteria(rotor: &Rotor, speed: f64) -> Vec<(Criterion, Outcome)> {
+    let mut out = Vec::new();
     let stability = stability_study(
         rotor,
         &StabilityRequest {
@@ -260,33 +374,12 @@ pub fn case_criteria(
             })),
         ));
     }
-    if rotor.model.machine.is_api() {
-        let max = sweep_top.unwrap_or(operating.max * super::speed_range::TOP_SPEED_FACTOR);
-        let api = api_unbalance(
-            rotor,
-            &ApiRequest {
-                operating,
-                max,
-                points: DEFAULT_POINTS,
-            },
-        );
-        out.push((
-            Criterion::ApiClearance,
-            api.map_err(|e| e.to_string()).map(|a| {
-                let checks: Vec<_> = a
-                    .cases
-                    .iter()
-                    .flat_map(|c| &c.criticals)
-                    .flat_map(|c| &c.clearances)
-                    .collect();
-                extreme(checks.iter().map(|c| c.scaled / c.limit), false).map(|value| Judged {
-                    value,
-                    pass: checks.iter().all(|c| c.pass),
-                })
-            }),
-        ));
-    }
-    out.push((
+    out
+}
+
+/// The least minimum film thickness of the fluid films at `speed`.
+fn film_criterion(rotor: &Rotor, speed: f64) -> (Criterion, Outcome) {
+    (
         Criterion::FilmThickness,
         operating_point(rotor, speed)
             .map_err(|e| e.to_string())
@@ -297,8 +390,7 @@ pub fn case_criteria(
                     pass: films.iter().all(|f| f.contact_force <= 0.0),
                 })
             }),
-    ));
-    out
+    )
 }
 
 /// What stops the cases.

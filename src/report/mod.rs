@@ -27,6 +27,7 @@ pub mod cases;
 pub mod csv;
 pub mod html;
 pub mod hydro;
+pub mod level_two;
 pub mod review;
 pub mod series;
 pub mod stamp;

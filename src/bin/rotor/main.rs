@@ -284,6 +284,11 @@ enum Command {
         rpm: Option<f64>,
         #[command(flatten)]
         stages: StageArgs,
+        /// Operating range MIN:MAX (rpm) of an API class: its top is the maximum
+        /// continuous speed of the API 617 Level II analysis. Default: the model's
+        /// operating_rpm, else its speed_rpm, else --rpm.
+        #[arg(long)]
+        operating_rpm: Option<String>,
         /// Largest cross-coupled stiffness Q (N/m); default 10 × Q_A with stage data,
         /// else a tenth of the largest direct bearing stiffness.
         #[arg(long)]
@@ -584,6 +589,7 @@ fn run(cli: Cli) -> Result<(), String> {
             model,
             rpm,
             stages,
+            operating_rpm,
             cross_coupling_max,
             points,
             modes,
@@ -593,10 +599,12 @@ fn run(cli: Cli) -> Result<(), String> {
         } => {
             let rotor = load(&model)?;
             let rpm = model_rpm(&rotor.model, rpm)?;
+            let operating = modal::operating_range(&rotor, operating_rpm.as_deref())?;
             stability::run(
                 &rotor,
                 stability::Request {
                     rpm,
+                    operating,
                     q_max: cross_coupling_max,
                     points,
                     modes,

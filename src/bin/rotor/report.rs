@@ -13,6 +13,7 @@ use rotor_bearing::analysis::alignment::alignment;
 use rotor_bearing::analysis::api_unbalance::{ApiRequest, api_unbalance};
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
 use rotor_bearing::analysis::housing_vibration;
+use rotor_bearing::analysis::level_two::level_two;
 use rotor_bearing::analysis::modal::ModalOptions;
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::analysis::shaft_loads::coupling_loads;
@@ -38,6 +39,7 @@ use rotor_bearing::report::api as api_report;
 use rotor_bearing::report::cases as cases_report;
 use rotor_bearing::report::html::{Block, Section, Verdict, page};
 use rotor_bearing::report::hydro::{self, HousingStudy};
+use rotor_bearing::report::level_two::{level_two_blocks, level_two_summary_rows};
 use rotor_bearing::report::review::{self, SummaryInputs};
 use rotor_bearing::report::stamp::{now_utc, sha256_hex, software_version};
 use rotor_bearing::report::text::short;
@@ -238,6 +240,17 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         api_unbalance(rotor, &request).map_err(|e| err(&e))
     });
 
+    // An API machine's Level II at the maximum continuous speed.
+    let level_two = model.machine.is_api().then(|| {
+        level_two(
+            rotor,
+            operating.max,
+            &level_one_stages(rotor, req.stages),
+            StabilityRequest::at(speed).modes,
+        )
+        .map_err(|e| err(&e))
+    });
+
     // The tolerance cases of a model with a [cases] section.
     let cases = model
         .tolerance_cases
@@ -255,6 +268,16 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         housing: housing.as_ref().map(|h| housing_study(model, h)),
         api: api.as_ref().map(|a| a.as_ref().map_err(Clone::clone)),
     });
+    if let Some(l) = &level_two {
+        // After the stability rows of the summary.
+        let at = summary
+            .rows
+            .iter()
+            .rposition(|r| r.first().is_some_and(|c| c.text.starts_with("stability")))
+            .map_or(summary.rows.len(), |k| k + 1);
+        let rows = level_two_summary_rows(&l.as_ref().map_err(Clone::clone));
+        summary.rows.splice(at..at, rows);
+    }
     if let Some(c) = &cases {
         summary.rows.extend(cases_report::summary_rows(
             &c.as_ref().map_err(Clone::clone),
@@ -451,6 +474,19 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         }
         Err(e) => vec![Block::Failure(format!("stability: {e}"))],
     };
+    let mut blocks = blocks;
+    match &level_two {
+        Some(Ok(l)) => {
+            let sites: Vec<String> = l
+                .anticipated
+                .as_ref()
+                .map(|(_, _, c)| c.sites.iter().map(|&n| site_label(rotor, n)).collect())
+                .unwrap_or_default();
+            blocks.extend(level_two_blocks(l, &sites));
+        }
+        Some(Err(e)) => blocks.push(Block::Failure(format!("API 617 Level II: {e}"))),
+        None => {}
+    }
     sections.push(section("stability", "Stability", blocks));
 
     let blocks = match &ucs {

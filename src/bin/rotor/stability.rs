@@ -4,10 +4,12 @@
 
 use std::path::PathBuf;
 
+use rotor_bearing::analysis::level_two::level_two;
 use rotor_bearing::analysis::ring_down::{RingDown, ring_down};
 use rotor_bearing::analysis::stability::{
     StabilityRequest, StageData, disks_and_seals, level_one_stages, site_label, stability_study,
 };
+use rotor_bearing::analysis::unbalance::OperatingRange;
 use rotor_bearing::plot::{RAD_S_TO_RPM, stability_png};
 use rotor_bearing::report::{csv as report_csv, text};
 use rotor_bearing::rotor::Rotor;
@@ -17,6 +19,9 @@ use crate::write_file;
 /// What `rotor stability` was asked for.
 pub struct Request {
     pub rpm: f64,
+    /// The operating range (`--operating-rpm`, else the model's): its top
+    /// is the maximum continuous speed of API 617 Level II.
+    pub operating: Option<OperatingRange>,
     pub q_max: Option<f64>,
     pub points: usize,
     pub modes: usize,
@@ -137,11 +142,39 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
     if req.at.is_none() {
         placement_note(rotor, &request, &result)?;
     }
+    if machine.is_api() {
+        let mcs = req
+            .operating
+            .map_or(req.rpm.abs() / RAD_S_TO_RPM, |r| r.max);
+        // A Level II that cannot be computed is said, not fatal: the
+        // study above stands.
+        match level_two_text(rotor, &request, mcs) {
+            Ok(text) => print!("{text}"),
+            Err(e) => println!("\n{e}: not computed"),
+        }
+    }
     if req.verify {
         let checks = verify(rotor, result.speed, &result.modes)?;
         print!("{}", text::ring_downs(&checks));
     }
     Ok(())
+}
+
+/// An API machine's Level II analysis at its maximum continuous speed
+/// `mcs` (rad/s), with the Level I stages' `Q_A` when there are stages.
+pub fn level_two_text(
+    rotor: &Rotor,
+    request: &StabilityRequest,
+    mcs: f64,
+) -> Result<String, String> {
+    let l = level_two(rotor, mcs, &request.stages, request.modes)
+        .map_err(|e| format!("{}: API 617 Level II: {e}", rotor.model.name))?;
+    let labels: Vec<String> = l
+        .anticipated
+        .as_ref()
+        .map(|(_, _, c)| c.sites.iter().map(|&n| site_label(rotor, n)).collect())
+        .unwrap_or_default();
+    Ok(format!("\n{}", text::level_two(&l, &labels)))
 }
 
 /// The three least-damped oscillating modes rung down in the transient.

@@ -88,19 +88,28 @@ pub fn case_planes(case: &ApiCase) -> String {
         .join("; ")
 }
 
+/// `a kg and b kg`, `a kg, b kg and c kg`, … (by axial position).
+fn journal_loads(loads: &[f64]) -> String {
+    let each: Vec<String> = loads.iter().map(|w| format!("{} kg", short(*w))).collect();
+    match each.split_last() {
+        Some((last, rest)) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        Some((last, _)) => last.clone(),
+        None => String::new(),
+    }
+}
+
 /// What `rotor unbalance` and the report print for an API machine: the
 /// speeds and limits, then each case's planes and criticals with every
 /// close clearance.
 pub fn api_unbalance(api: &ApiUnbalance) -> String {
     let n = api.mcs * RAD_S_TO_RPM;
     let mut s = format!(
-        "API 684/617 unbalance cases: maximum continuous speed N = {} rpm (operating range {} … {} rpm); U_b = 6350 W/N g·mm (4W/N oz·in), {}× U_b applied per plane; journal static loads {} kg and {} kg\n",
+        "API 684/617 unbalance cases: maximum continuous speed N = {} rpm (operating range {} … {} rpm); U_b = 6350 W/N g·mm (4W/N oz·in), {}× U_b applied per plane; journal static loads {}\n",
         short(n),
         short(api.operating.min * RAD_S_TO_RPM),
         short(n),
         short(APPLIED_FACTOR),
-        short(api.journal_loads[0]),
-        short(api.journal_loads[1])
+        journal_loads(&api.journal_loads)
     );
     writeln!(
         s,
