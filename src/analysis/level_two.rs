@@ -36,9 +36,11 @@ use nalgebra::Complex;
 use crate::rotor::Rotor;
 
 use super::linearize::linearized_from;
-use super::modal::{ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis};
-use super::stability::{StabilityError, Stage, anticipated, api617_placement, with_cross_coupling};
-use super::whirl_modes::{coefficients_at, own_frequency, with_pads};
+use super::modal::{ModalOptions, ModalResult, Mode, OverdampedRoot, Whirl, modal_analysis};
+use super::stability::{
+    StabilityError, Stage, add_cross_coupling, anticipated, api617_placement, with_cross_coupling,
+};
+use super::whirl_modes::{coefficients_at, own_frequency, reconcile_and, with_pads};
 
 type C64 = Complex<f64>;
 
@@ -120,26 +122,45 @@ fn forward_modes(
         .into_iter()
         .filter(OverdampedRoot::is_growing)
         .collect();
-    let mut out = Vec::new();
-    for m in analysis
-        .modes
+    let modes = match pads {
+        None => analysis.modes,
+        Some(eq) => {
+            // Every mode at its own frequency, held against the exact
+            // eigenvalues with the pad coordinates ([`reconcile`]): with
+            // Q_A, the compressor's forward 84 Hz seed iterated to the 81 Hz
+            // backward mode beside it, and the forward one was lost.
+            let linear_at = |s: C64| -> Result<Rotor, StabilityError> {
+                with_cross_coupling(
+                    &rotor.with_bearing_coefficients(&coefficients_at(eq, s))?,
+                    sites,
+                    q,
+                )
+            };
+            let mut own: Vec<Mode> = analysis
+                .modes
+                .into_iter()
+                .map(|m| own_frequency(&linear_at, speed, m))
+                .collect::<Result<_, _>>()?;
+            own.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
+            // (`sites` hold a cross-coupling: `linear_at` added it above.)
+            let held = reconcile_and(
+                ModalResult {
+                    modes: own,
+                    overdamped: Vec::new(),
+                },
+                (rotor, eq, speed),
+                &linear_at,
+                &|r| {
+                    let _ = add_cross_coupling(r, sites, q);
+                },
+            )?;
+            held.modes
+        }
+    };
+    let mut out: Vec<Mode> = modes
         .into_iter()
         .filter(|m| m.whirl == Whirl::Forward)
-    {
-        out.push(match pads {
-            None => m,
-            Some(eq) => {
-                let linear_at = |s: C64| -> Result<Rotor, StabilityError> {
-                    with_cross_coupling(
-                        &rotor.with_bearing_coefficients(&coefficients_at(eq, s))?,
-                        sites,
-                        q,
-                    )
-                };
-                own_frequency(&linear_at, speed, m)?
-            }
-        });
-    }
+        .collect();
     out.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
     Ok((out, diverging))
 }

@@ -83,6 +83,18 @@ pub fn state_matrix_with_pads(
     equilibrium: &Equilibrium,
     speed: f64,
 ) -> Result<DMatrix<f64>, PadEigenError> {
+    state_matrix_with_pads_and(rotor, equilibrium, speed, &|_| {})
+}
+
+/// [`state_matrix_with_pads`] with `adjust` applied to the linear rotor
+/// (its fluid films' coefficients zero) before the pads are added: the
+/// stability studies' cross-coupled stiffness.
+pub fn state_matrix_with_pads_and(
+    rotor: &Rotor,
+    equilibrium: &Equilibrium,
+    speed: f64,
+    adjust: &dyn Fn(&mut Rotor),
+) -> Result<DMatrix<f64>, PadEigenError> {
     let zero: Vec<JournalCoefficients> = equilibrium
         .bearings
         .iter()
@@ -92,7 +104,8 @@ pub fn state_matrix_with_pads(
             damping: [[0.0; 2]; 2],
         })
         .collect();
-    let base = rotor.with_bearing_coefficients(&zero)?;
+    let mut base = rotor.with_bearing_coefficients(&zero)?;
+    adjust(&mut base);
     let n = base.dof_count();
     let pads: usize = equilibrium.bearings.iter().map(|(_, e)| e.n() - 2).sum();
     let size = n + pads;

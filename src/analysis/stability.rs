@@ -34,10 +34,12 @@ use crate::rotor::{AssemblyError, Rotor};
 type C64 = nalgebra::Complex<f64>;
 
 use super::linearize::{LinearizeError, linearized_from};
-use super::modal::{ModalError, ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis, modes};
+use super::modal::{
+    ModalError, ModalOptions, ModalResult, Mode, OverdampedRoot, Whirl, modal_analysis, modes,
+};
 use super::operating_point::{OperatingPointError, operating_point};
 use super::pad_eigen::PadEigenError;
-use super::whirl_modes::{coefficients_at, own_frequency, reconcile, with_pads};
+use super::whirl_modes::{coefficients_at, own_frequency, reconcile, reconcile_and, with_pads};
 
 /// Why a stability check failed.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -344,12 +346,24 @@ pub fn with_cross_coupling(
     q: f64,
 ) -> Result<Rotor, StabilityError> {
     let mut out = linear.with_bearing_coefficients(&[])?;
+    add_cross_coupling(&mut out, sites, q)?;
+    Ok(out)
+}
+
+/// Add `[[0, q], [−q, 0]]` (N/m), split equally over `sites` (0-based
+/// nodes), to `rotor`'s stiffness at their x, y DOFs (its nonlinear
+/// bearings, if any, left as they are).
+pub fn add_cross_coupling(
+    rotor: &mut Rotor,
+    sites: &[usize],
+    q: f64,
+) -> Result<(), StabilityError> {
     let share = q / sites.len().max(1) as f64;
     for &node in sites {
-        match (linear.dofs.free(node, DOF_X), linear.dofs.free(node, DOF_Y)) {
+        match (rotor.dofs.free(node, DOF_X), rotor.dofs.free(node, DOF_Y)) {
             (Some(ix), Some(iy)) => {
-                out.stiffness.add(ix, iy, share);
-                out.stiffness.add(iy, ix, -share);
+                rotor.stiffness.add(ix, iy, share);
+                rotor.stiffness.add(iy, ix, -share);
             }
             _ => {
                 return Err(StabilityError::Options(format!(
@@ -359,7 +373,7 @@ pub fn with_cross_coupling(
             }
         }
     }
-    Ok(out)
+    Ok(())
 }
 
 /// The forward mode of least logarithmic decrement among the first `count`
@@ -550,19 +564,32 @@ pub fn stability_study(
                 q,
             )
         };
-        let mut least: Option<Mode> = None;
-        for m in modes(&coupled, speed, &options)?
+        // Every mode at its own frequency, held against the exact
+        // eigenvalues with the pad coordinates and the cross-coupling
+        // ([`reconcile_and`]): a forward seed can iterate to the backward
+        // mode beside it (the compressor's 84 Hz pair with Q), and the
+        // forward mode would be lost.
+        let mut own: Vec<Mode> = modes(&coupled, speed, &options)?
+            .into_iter()
+            .map(|m| own_frequency(&linear_at, speed, m))
+            .collect::<Result<_, _>>()?;
+        own.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
+        let held = reconcile_and(
+            ModalResult {
+                modes: own,
+                overdamped: Vec::new(),
+            },
+            (rotor, eq, speed),
+            &linear_at,
+            &|r| {
+                let _ = add_cross_coupling(r, &sites, q);
+            },
+        )?;
+        let least = held
+            .modes
             .into_iter()
             .filter(|m| m.whirl == Whirl::Forward)
-        {
-            let m = own_frequency(&linear_at, speed, m)?;
-            if least
-                .as_ref()
-                .is_none_or(|l| m.log_decrement < l.log_decrement)
-            {
-                least = Some(m);
-            }
-        }
+            .min_by(|a, b| a.log_decrement.total_cmp(&b.log_decrement));
         least.ok_or_else(|| {
             StabilityError::Options(format!(
                 "no forward mode among the first {count} at {speed} rad/s (a spinning rotor is needed: give a speed)"

@@ -27,7 +27,7 @@ use super::linearize::{LinearizeError, linearized_from};
 use super::modal::mode_from_pair;
 use super::modal::{ModalError, ModalOptions, ModalResult, Mode, modal_analysis};
 use super::modal::{NON_OSCILLATING_DAMPING_RATIO, OverdampedRoot};
-use super::pad_eigen::{PadEigenError, eigenvalues_of, rotor_vector, state_matrix_with_pads};
+use super::pad_eigen::{PadEigenError, eigenvalues_of, rotor_vector, state_matrix_with_pads_and};
 
 /// Why the modes could not be found.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -177,14 +177,29 @@ where
 /// goes unlisted.
 pub fn reconcile<E>(
     result: ModalResult,
-    (rotor, equilibrium, speed): (&Rotor, &Equilibrium, f64),
+    at: (&Rotor, &Equilibrium, f64),
     linear_at: &dyn Fn(C64) -> Result<Rotor, E>,
 ) -> Result<ModalResult, E>
 where
     E: From<ModalError> + From<PadEigenError>,
 {
+    reconcile_and(result, at, linear_at, &|_| {})
+}
+
+/// [`reconcile`] with `adjust` applied to the linear rotor of the exact
+/// eigenproblem ([`super::pad_eigen::state_matrix_with_pads_and`]): what
+/// `linear_at` adds besides the pads (a stability study's cross-coupling).
+pub fn reconcile_and<E>(
+    result: ModalResult,
+    (rotor, equilibrium, speed): (&Rotor, &Equilibrium, f64),
+    linear_at: &dyn Fn(C64) -> Result<Rotor, E>,
+    adjust: &dyn Fn(&mut Rotor),
+) -> Result<ModalResult, E>
+where
+    E: From<ModalError> + From<PadEigenError>,
+{
     let ModalResult { modes, .. } = result;
-    let f = state_matrix_with_pads(rotor, equilibrium, speed)?;
+    let f = state_matrix_with_pads_and(rotor, equilibrium, speed, adjust)?;
     let exact = eigenvalues_of(&f)?;
     let real_part = (1.0 - NON_OSCILLATING_DAMPING_RATIO.powi(2)).sqrt();
     let scale = exact.iter().fold(0.0_f64, |a, l| a.max(l.norm()));
