@@ -297,9 +297,10 @@ impl TiltingPadBearing {
         speed: f64,
     ) -> Result<[f64; 3], BearingError> {
         let film = self.film();
-        let window = &self.pads[k].window;
+        // (A pad `k` beyond the bearing's is refused by `pad_balance_of`.)
+        let window = self.pads.get(k).map(|p| p.window);
         self.pad_balance_of(k, q, qdot, speed, &|state| {
-            film.force(state, speed, Some(window))
+            film.force(state, speed, window.as_ref())
         })
     }
 
