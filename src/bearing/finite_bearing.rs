@@ -234,6 +234,10 @@ impl Bearing for FiniteFilmBearing {
         self.short().internal_dofs()
     }
 
+    fn internal_mass(&self, m: usize) -> f64 {
+        self.short().internal_mass(m)
+    }
+
     fn evaluate(
         &self,
         q: &[f64],

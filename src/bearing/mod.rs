@@ -132,11 +132,18 @@ pub struct BearingReport {
 }
 
 /// Generalized forces and Jacobians of a bearing with `n = 2 + m` coordinates
-/// `q = [x, y, internal…]` (internal: pad tilts of a tilting-pad bearing).
+/// `q = [x, y, internal…]` (internal: pad tilts of a tilting-pad bearing),
+/// and the constant mass of the internal coordinates.
 /// Buffers are sized once, so evaluation allocates nothing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BearingEval {
     n: usize,
+    /// Mass of each internal coordinate (kg; the diagonal `M_pp`, length
+    /// `n − 2`), written by [`Bearing::evaluate`] from
+    /// [`Bearing::internal_mass`]; zeros for massless coordinates. Its
+    /// inertia `−M_pp p̈` is the integrator's and the linear analyses'
+    /// (`Z = K + sC + s²M`), not part of `force`.
+    pub mass: Vec<f64>,
     /// Generalized forces `Q` (N on the journal, then N for each pad tilt).
     pub force: Vec<f64>,
     /// `K = −∂Q/∂q`, row-major `n × n`.
@@ -150,6 +157,7 @@ impl BearingEval {
     pub fn new(n: usize) -> Self {
         Self {
             n,
+            mass: vec![0.0; n.saturating_sub(2)],
             force: vec![0.0; n],
             stiffness: vec![0.0; n * n],
             damping: vec![0.0; n * n],
@@ -239,6 +247,14 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
     /// tilts `η = ψ R` (m) of a tilting-pad bearing; none for other kinds.
     fn internal_dofs(&self) -> usize {
         0
+    }
+
+    /// The constant mass (kg) of internal coordinate `m`, its inertia
+    /// `−M_m q̈_m` in its balance (a pad's moment of inertia over the squared
+    /// radius on its tilt `η = ψR`); zero (the default) for a massless
+    /// coordinate, whose balance is first order.
+    fn internal_mass(&self, _m: usize) -> f64 {
+        0.0
     }
 
     /// Forces and Jacobians at `q = [x, y, internal…]`, `q̇` likewise (SI), spin
