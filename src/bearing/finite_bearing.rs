@@ -262,22 +262,19 @@ impl Bearing for FiniteFilmBearing {
                 out.add_transformed(&contact, None);
             }
             FilmSupport::TiltingPad(b) => {
-                let n = 2 + b.pads.len();
+                let n = 2 + b.internal_dofs();
                 check_state(n, q, qdot, speed, out)?;
                 out.clear();
-                let (c_rest, k_rest) = b.pivot_rest(speed);
+                b.write_mass(out);
                 let law = b.contact_law();
                 for k in 0..b.pads.len() {
                     let (s, c, state) = b.pad_state(k, q, qdot);
                     let part = self.pad_film(&film, b, k, &state, speed)?;
-                    out.add_transformed(&part, Some((k, -s, c)));
+                    b.add_pad_part(out, k, (s, c), &part);
                     if let Some((contact, _)) = b.pad_contact(&law, k, &state, speed) {
-                        out.add_transformed(&contact, Some((k, -s, c)));
+                        b.add_pad_part(out, k, (s, c), &contact);
                     }
-                    let i = 2 + k;
-                    out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
-                    out.stiffness[i * n + i] += k_rest;
-                    out.damping[i * n + i] += c_rest;
+                    b.add_pivot(out, k, q, qdot, speed, true);
                 }
             }
         }
@@ -319,10 +316,9 @@ impl Bearing for FiniteFilmBearing {
                 out.add_force(&(force + contact.force), None);
             }
             FilmSupport::TiltingPad(b) => {
-                let n = 2 + b.pads.len();
+                let n = 2 + b.internal_dofs();
                 check_state(n, q, qdot, speed, out)?;
                 out.force.fill(0.0);
-                let (c_rest, k_rest) = b.pivot_rest(speed);
                 let law = b.contact_law();
                 for k in 0..b.pads.len() {
                     let (s, c, state) = b.pad_state(k, q, qdot);
@@ -330,9 +326,8 @@ impl Bearing for FiniteFilmBearing {
                     if let Some((contact, _)) = b.pad_contact(&law, k, &state, speed) {
                         force += contact.force;
                     }
-                    out.add_force(&force, Some((k, -s, c)));
-                    let i = 2 + k;
-                    out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+                    b.add_pad_force(out, k, (s, c), &force);
+                    b.add_pivot(out, k, q, qdot, speed, false);
                 }
             }
         }

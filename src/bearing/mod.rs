@@ -49,6 +49,8 @@ pub mod linear;
 pub mod magnetic_pull;
 pub mod offset;
 pub mod oil;
+pub mod pad;
+mod pad_coordinates;
 pub mod pad_table;
 pub mod plain;
 pub mod reynolds;
@@ -201,6 +203,34 @@ impl BearingEval {
         self.force[1] += f.y;
         if let Some((m, a, b)) = internal {
             self.force[2 + m] += a * f.x + b * f.y;
+        }
+    }
+
+    /// Add a journal-type contribution `f, K, C` acting on the effective
+    /// journal coordinates `(x_e, y_e) = (x, y) + Σ q_i (a_i, b_i)` of two
+    /// internal coordinates `internal = [(i, a_i, b_i); 2]` (indices into `q`),
+    /// i.e. with `T = [[1, 0, a_1, a_2], [0, 1, b_1, b_2]]`: `Q += Tᵀ f`,
+    /// `K += Tᵀ K T`, `C += Tᵀ C T` (a pad's tilt and radial displacement).
+    fn add_columns(&mut self, part: &BearingForce, internal: [(usize, f64, f64); 2]) {
+        let n = self.n;
+        let cols = [(0, 1.0, 0.0), (1, 0.0, 1.0), internal[0], internal[1]];
+        let f = &part.force;
+        for &(r, a, b) in &cols {
+            self.force[r] += a * f.x + b * f.y;
+        }
+        for (mat, out) in [
+            (&part.stiffness, &mut self.stiffness),
+            (&part.damping, &mut self.damping),
+        ] {
+            for &(c, a, b) in &cols {
+                let col = [
+                    mat[(0, 0)] * a + mat[(0, 1)] * b,
+                    mat[(1, 0)] * a + mat[(1, 1)] * b,
+                ];
+                for &(r, ra, rb) in &cols {
+                    out[r * n + c] += ra * col[0] + rb * col[1];
+                }
+            }
         }
     }
 

@@ -6,7 +6,7 @@ use crate::bearing::finite_bearing::{
     FilmSupport, FiniteFilmBearing, PAD_ARC_RANGE, SLENDERNESS_RANGE, slenderness,
 };
 use crate::bearing::reynolds::{Cavitation, ReynoldsMesh};
-use crate::bearing::tilting_pad::Pad;
+use crate::bearing::tilting_pad::{Pad, PadSupport};
 use crate::bearing::{BearingKind, PlainBearing, TableBearing, TiltingPadBearing};
 
 use crate::model::context::{Ctx, Names, default_name};
@@ -421,6 +421,9 @@ pub(super) fn bearings(
                 pad_arc_deg,
                 pivot_offset,
                 preload,
+                pivot_stiffness,
+                pad_inertia,
+                pad_mass,
                 contact_stiffness,
                 contact_damping,
                 friction_coefficient,
@@ -508,6 +511,7 @@ pub(super) fn bearings(
                         .map(|d| Pad::new(d.to_radians(), arc.to_radians(), offset, preload))
                         .collect(),
                     contact: None,
+                    support: pad_support(ctx, &p, [pivot_stiffness, pad_inertia, pad_mass])?,
                 };
                 bearing.contact = contact_law(
                     ctx,
@@ -546,4 +550,37 @@ pub(super) fn bearings(
         (&mut names, &mut files),
     )?);
     Ok((bearings, files))
+}
+
+/// The pads' support from `pivot_stiffness` (N/m, > 0; none: rigid),
+/// `pad_inertia` (kg·m², ≥ 0) and `pad_mass` (kg, ≥ 0, only on a pivot
+/// with a stiffness).
+fn pad_support(
+    ctx: &Ctx,
+    p: &FieldPath,
+    [pivot_stiffness, pad_inertia, pad_mass]: [Option<f64>; 3],
+) -> Result<PadSupport, ModelError> {
+    let pivot_stiffness = pivot_stiffness
+        .map(|k| ctx.positive(p.key("pivot_stiffness"), k))
+        .transpose()?;
+    let pad_inertia = ctx.non_negative(p.key("pad_inertia"), pad_inertia.unwrap_or(0.0))?;
+    let pad_mass = match pad_mass {
+        None => 0.0,
+        Some(m) => {
+            let m = ctx.non_negative(p.key("pad_mass"), m)?;
+            if pivot_stiffness.is_none() {
+                return Err(ctx.err(
+                    p.key("pad_mass"),
+                    m,
+                    "needs pivot_stiffness: a pad on a rigid pivot has no radial motion to give mass to",
+                ));
+            }
+            m
+        }
+    };
+    Ok(PadSupport {
+        pivot_stiffness,
+        pad_inertia,
+        pad_mass,
+    })
 }
