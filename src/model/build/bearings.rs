@@ -13,7 +13,8 @@ use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{BearingEntry, MagneticPullEntry, RubEntry, SealEntry};
 use crate::model::limits::{
-    CLEARANCE, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, RADIUS, STIFFNESS, VISCOSITY,
+    CLEARANCE, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, PAD_INERTIA, PAD_MASS, PIVOT_STIFFNESS,
+    RADIUS, STIFFNESS, VISCOSITY,
 };
 use crate::model::{
     ModelError, Pedestal, PlacedBearing, PlacedElement, RADIUS_TOLERANCE, TableFile,
@@ -561,13 +562,17 @@ fn pad_support(
     [pivot_stiffness, pad_inertia, pad_mass]: [Option<f64>; 3],
 ) -> Result<PadSupport, ModelError> {
     let pivot_stiffness = pivot_stiffness
-        .map(|k| ctx.positive(p.key("pivot_stiffness"), k))
+        .map(|k| ctx.within(p.key("pivot_stiffness"), k, &PIVOT_STIFFNESS))
         .transpose()?;
-    let pad_inertia = ctx.non_negative(p.key("pad_inertia"), pad_inertia.unwrap_or(0.0))?;
+    let pad_inertia = ctx.within(
+        p.key("pad_inertia"),
+        pad_inertia.unwrap_or(0.0),
+        &PAD_INERTIA,
+    )?;
     let pad_mass = match pad_mass {
         None => 0.0,
         Some(m) => {
-            let m = ctx.non_negative(p.key("pad_mass"), m)?;
+            let m = ctx.within(p.key("pad_mass"), m, &PAD_MASS)?;
             if pivot_stiffness.is_none() {
                 return Err(ctx.err(
                     p.key("pad_mass"),

@@ -98,7 +98,7 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
                 short(b.length * 1e3),
                 short(b.clearance * 1e6),
                 short(b.viscosity)
-            )
+            ) + &pad_support(&b.support)
         }
         BearingKind::Rub(r) => format!(
             "rub element, radial gap {} µm, rotor radius {} mm, contact stiffness {} N/m, damping {} N·s/m, friction μ = {}",
@@ -625,6 +625,26 @@ pub fn run_summary(model: &RotorModel, records: &[Outputs]) -> String {
         s.push('\n');
     }
     s
+}
+
+/// The pads' pivot stiffness and inertia for a bearing's description
+/// (nothing for rigid pivots and massless pads).
+fn pad_support(support: &crate::bearing::tilting_pad::PadSupport) -> String {
+    let mut parts = Vec::new();
+    if let Some(k) = support.pivot_stiffness {
+        parts.push(format!("pivot stiffness {} N/m", short(k)));
+    }
+    if support.pad_inertia != 0.0 {
+        parts.push(format!("pad inertia {} kg·m²", short(support.pad_inertia)));
+    }
+    if support.pad_mass != 0.0 {
+        parts.push(format!("pad mass {} kg", short(support.pad_mass)));
+    }
+    if parts.is_empty() {
+        String::new()
+    } else {
+        format!(", {}", parts.join(", "))
+    }
 }
 
 #[cfg(test)]
