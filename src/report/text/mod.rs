@@ -330,11 +330,14 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
         for (k, pad) in p.film.iter().flat_map(|f| f.pads.iter()).enumerate() {
             writeln!(
                 s,
-                "  pad {} (pivot {}°): tilt {} µm ({} mrad), minimum film thickness {} µm",
+                "  pad {} (pivot {}°): tilt {} µm ({} mrad), {}minimum film thickness {} µm",
                 k + 1,
                 short(pad.pivot.to_degrees()),
                 short(pad.tilt * 1e6),
                 short(pad.tilt_angle * 1e3),
+                pad.radial
+                    .map(|xi| format!("radial displacement {} µm, ", short(xi * 1e6)))
+                    .unwrap_or_default(),
                 short(pad.min_film_thickness * 1e6)
             )
             .ok();
