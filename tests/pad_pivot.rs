@@ -373,3 +373,87 @@ fn modes_of_heavy_pads_on_pivot_springs_agree_with_the_transient() {
         );
     }
 }
+
+/// The Jacobians of a bearing on pivot springs (`Tᵀ K T`, `Tᵀ C T` with the
+/// radial column `−u`, the springs' `k_piv`) are the derivatives of its
+/// generalized forces: central differences over every coordinate and rate
+/// of a five-pad bearing with preload, journal off centre and moving, to
+/// 1e-6 of the largest entry; and the start the statics take
+/// (`guess_internal`) has every spring carrying its pad's film push to the
+/// bisection's 1e-9 and every tilt at zero moment.
+#[test]
+fn the_jacobians_on_pivot_springs_are_the_derivatives_of_the_forces() {
+    let k_piv = 3e7;
+    let b = TiltingPadBearing {
+        radius: 0.05,
+        length: 0.03,
+        clearance: 1e-4,
+        viscosity: 0.02,
+        pads: (0..5)
+            .map(|k| Pad::new((18.0 + 72.0 * k as f64).to_radians(), 0.9, 0.6, 0.3))
+            .collect(),
+        contact: None,
+        support: PadSupport {
+            pivot_stiffness: Some(k_piv),
+            pad_inertia: 1e-5,
+            pad_mass: 0.1,
+        },
+    };
+    let n = 2 + b.internal_dofs();
+    assert_eq!(n, 12);
+    let journal = [0.1e-4, -0.3e-4];
+    let mut q = vec![journal[0], journal[1]];
+    q.extend(std::iter::repeat_n(0.0, 10));
+    b.guess_internal(journal, SPEED, &mut q[2..]);
+    let mut eval = BearingEval::new(n);
+    b.evaluate(&q, &vec![0.0; n], SPEED, &mut eval).unwrap();
+    let load = eval.force[0].hypot(eval.force[1]);
+    for k in 0..5 {
+        let push = b.pad_force(k, &q, &vec![0.0; n], SPEED).unwrap();
+        let pivot = b.pads[k].pivot();
+        let radial = -(push.x * pivot.cos() + push.y * pivot.sin());
+        assert!(
+            (k_piv * q[7 + k] - radial).abs() <= 1e-9 * load,
+            "pad {k} spring"
+        );
+        assert!(
+            eval.force[2 + k].abs() <= 1e-6 * load,
+            "pad {k} moment {}",
+            eval.force[2 + k]
+        );
+    }
+    assert_eq!(eval.mass[..5], [1e-5 / (0.05 * 0.05); 5]);
+    assert_eq!(eval.mass[5..], [0.1; 5]);
+    assert!(b.internal_balance(0, &q, &vec![0.0; n], SPEED).is_none());
+    let qd: Vec<f64> = (0..n).map(|i| 1e-4 * ((i as f64) * 0.7).sin()).collect();
+    b.evaluate(&q, &qd, SPEED, &mut eval).unwrap();
+    let scale_k = eval.stiffness.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let scale_c = eval.damping.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let mut plus = BearingEval::new(n);
+    let mut minus = BearingEval::new(n);
+    for j in 0..n {
+        for (rates, scale) in [(false, scale_k), (true, scale_c)] {
+            let h = if rates { 1e-7 } else { 1e-10 };
+            let (mut qp, mut qm) = (q.clone(), q.clone());
+            let (mut dp, mut dm) = (qd.clone(), qd.clone());
+            if rates {
+                dp[j] += h;
+                dm[j] -= h;
+            } else {
+                qp[j] += h;
+                qm[j] -= h;
+            }
+            b.evaluate(&qp, &dp, SPEED, &mut plus).unwrap();
+            b.evaluate(&qm, &dm, SPEED, &mut minus).unwrap();
+            for i in 0..n {
+                let fd = -(plus.force[i] - minus.force[i]) / (2.0 * h);
+                let an = if rates { eval.c(i, j) } else { eval.k(i, j) };
+                assert!(
+                    (fd - an).abs() <= 1e-6 * scale,
+                    "{} [{i}][{j}]: {an} vs {fd}",
+                    if rates { "C" } else { "K" }
+                );
+            }
+        }
+    }
+}
