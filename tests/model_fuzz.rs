@@ -11,7 +11,7 @@
 //! misalignments (`parallel_offset`, `angular_offset`, as `[value, 0.0]`);
 //! the couplings' stiffnesses and dampings are mutated where the shipped
 //! train (`models/turbine_generator_train.toml`) gives them. Tilting-pad
-//! entries get `pivot_stiffness`, `pad_inertia` or `pad_mass` inserted
+//! entries get `pivot_stiffness`, `pad_inertia`, `pad_mass` or `pivot_damping` inserted
 //! (issue 47) with the same values.
 //!
 //! `ROTOR_MODEL_FUZZ_MUTANTS` sets the mutants per model (default 100),
@@ -51,6 +51,7 @@ const POSITIVE: &[&str] = &[
 const NON_NEGATIVE: &[&str] = &[
     "pad_inertia",
     "pad_mass",
+    "pivot_damping",
     "polar_inertia",
     "diametral_inertia",
     "lateral_damping",
@@ -79,7 +80,12 @@ const OFFSETS: &[&str] = &["offset_x", "offset_y"];
 
 /// A tilting-pad bearing's pivot stiffness and pad inertia (issue 47),
 /// inserted into the tilting-pad entries.
-const PAD_SUPPORT: &[&str] = &["pivot_stiffness", "pad_inertia", "pad_mass"];
+const PAD_SUPPORT: &[&str] = &[
+    "pivot_stiffness",
+    "pad_inertia",
+    "pad_mass",
+    "pivot_damping",
+];
 
 /// Sections whose entries take `offset_x`, `offset_y`.
 const OFFSET_SECTIONS: &[&str] = &[

@@ -219,7 +219,7 @@ fn jeffcott_on_pads(keys: &str) -> RotorModel {
 #[test]
 fn a_rotor_on_pivot_springs_rests_where_each_spring_carries_its_pad() {
     let k_piv = 5e7;
-    let extra = "pad_mass = 0.05\npad_inertia = 1e-6";
+    let extra = "pad_mass = 0.05\npad_inertia = 1e-6\npivot_damping = 1e3";
     let model = jeffcott_on_pads(&format!("pivot_stiffness = {k_piv:e}\n{extra}"));
     let rotor = Rotor::new(model).unwrap();
     let speed = 3000.0 * std::f64::consts::PI / 30.0;
@@ -397,6 +397,7 @@ fn the_jacobians_on_pivot_springs_are_the_derivatives_of_the_forces() {
             pivot_stiffness: Some(k_piv),
             pad_inertia: 1e-5,
             pad_mass: 0.1,
+            pivot_damping: 2e4,
         },
     };
     let n = 2 + b.internal_dofs();

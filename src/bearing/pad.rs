@@ -9,7 +9,7 @@
 //! `X_e = X + mC cos θp − η sin θp − ξ cos θp`,
 //! `Y_e = Y + mC sin θp + η cos θp − ξ sin θp`, so the columns of
 //! `T = ∂(X_e, Y_e)/∂(X, Y, η, ξ)` are the unit vectors, `t = (−sin θp, cos θp)`
-//! and `−u`. The pivot spring adds `−k_piv ξ` to `Q_ξ = −u·F`; the pad's
+//! and `−u`. The pivot spring adds `−k_piv ξ − c_piv ξ̇` to `Q_ξ = −u·F`; the pad's
 //! moment of inertia `I` about its pivot gives its tilt the mass `I/R²`
 //! (kinetic energy `½ I ψ̇² = ½ (I/R²) η̇²`), its mass `m_p` its radial
 //! coordinate the mass `m_p`.
@@ -95,6 +95,9 @@ pub struct PadSupport {
     /// Each pad's mass `m_p` (kg) on its radial coordinate `ξ` (only with a
     /// pivot stiffness).
     pub pad_mass: f64,
+    /// Radial damping `c_piv` of each pivot (N·s/m), in parallel with its
+    /// stiffness (only with a pivot stiffness).
+    pub pivot_damping: f64,
 }
 
 impl PadSupport {

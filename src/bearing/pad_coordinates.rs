@@ -113,9 +113,11 @@ impl TiltingPadBearing {
         }
         if let Some(k_piv) = self.support.pivot_stiffness {
             let r = 2 + self.pads.len() + k;
-            out.force[r] -= k_piv * q[r];
+            let c_piv = self.support.pivot_damping;
+            out.force[r] -= k_piv * q[r] + c_piv * qdot[r];
             if jacobians {
                 out.stiffness[r * n + r] += k_piv;
+                out.damping[r * n + r] += c_piv;
             }
         }
     }

@@ -342,6 +342,9 @@ pub enum BearingEntry {
         /// Each pad's mass (kg) on its pivot spring, default 0 (needs
         /// `pivot_stiffness`).
         pad_mass: Option<f64>,
+        /// Radial damping of each pad's pivot (N·s/m), default 0 (needs
+        /// `pivot_stiffness`).
+        pivot_damping: Option<f64>,
         /// Contact penalty stiffness (N/m) once the journal touches; default
         /// the steel line contact `(π/4) E* L` of `ContactLaw::steel`.
         contact_stiffness: Option<f64>,

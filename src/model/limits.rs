@@ -139,6 +139,14 @@ pub const PIVOT_STIFFNESS: Limit = Limit {
     why: "a pad's pivot, liner and housing in series are about 1e8–1e10 N/m; 1e15 N/m is rigid",
 };
 
+/// Radial damping of a tilting pad's pivot (N·s/m).
+pub const PIVOT_DAMPING: Limit = Limit {
+    min: 0.0,
+    max: 1e12,
+    unit: "N·s/m",
+    why: "a pivot's own damping is far below its pad's squeeze film, about 1e7–1e9 N·s/m",
+};
+
 /// A tilting pad's moment of inertia about its pivot (kg·m²).
 pub const PAD_INERTIA: Limit = Limit {
     min: 0.0,

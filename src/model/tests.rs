@@ -233,6 +233,8 @@ fn hydrodynamic_bearing_errors() {
         (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_stiffness = 1e20\n"), "m.toml:25: bearings[0].pivot_stiffness = 1e20: must lie in [1, 1e15] N/m"),
         (format!("{tp}pads = 4\npad_arc_deg = 60.0\npad_inertia = -1.0\n"), "bearings[0].pad_inertia = -1"),
         (format!("{tp}pads = 4\npad_arc_deg = 60.0\npad_mass = 2.0\n"), "bearings[0].pad_mass = 2: needs pivot_stiffness"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_damping = 5.0\n"), "bearings[0].pivot_damping = 5: needs pivot_stiffness"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_stiffness = 1e9\npivot_damping = -5.0\n"), "bearings[0].pivot_damping = -5"),
         (
             "\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = 0.05\njournal_collar = true\nlength = 0.03\nclearance = 0.01\nviscosity = 0.02\n".to_string(),
             "bearings[0].clearance = 0.01",

@@ -637,6 +637,12 @@ fn pad_support(support: &crate::bearing::tilting_pad::PadSupport) -> String {
     if let Some(k) = support.pivot_stiffness {
         parts.push(format!("pivot stiffness {} N/m", short(k)));
     }
+    if support.pivot_damping != 0.0 {
+        parts.push(format!(
+            "pivot damping {} N·s/m",
+            short(support.pivot_damping)
+        ));
+    }
     if support.pad_inertia != 0.0 {
         parts.push(format!("pad inertia {} kg·m²", short(support.pad_inertia)));
     }
