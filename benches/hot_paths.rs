@@ -50,6 +50,7 @@ fn bearings(c: &mut Criterion) {
                 })
                 .collect(),
             contact: None,
+            support: Default::default(),
         };
         let n = 2 + pads;
         let mut q = vec![0.0; n];

@@ -137,6 +137,7 @@ fn short_limit_is_the_ocvirk_film() {
             viscosity: VISCOSITY,
             pads: pads.clone(),
             contact: None,
+            support: Default::default(),
         });
         let mut worst = [0.0f64; 2];
         for (b, kind) in [plain, tilting].iter().enumerate() {

@@ -10,7 +10,9 @@
 //! that take them, with the same values, and so are the couplings'
 //! misalignments (`parallel_offset`, `angular_offset`, as `[value, 0.0]`);
 //! the couplings' stiffnesses and dampings are mutated where the shipped
-//! train (`models/turbine_generator_train.toml`) gives them.
+//! train (`models/turbine_generator_train.toml`) gives them. Tilting-pad
+//! entries get `pivot_stiffness`, `pad_inertia`, `pad_mass` or `pivot_damping` inserted
+//! (issue 47) with the same values.
 //!
 //! `ROTOR_MODEL_FUZZ_MUTANTS` sets the mutants per model (default 100),
 //! `ROTOR_FUZZ_SEED` the first seed (default 1); each failure prints its seed
@@ -39,6 +41,7 @@ const POSITIVE: &[&str] = &[
     "pad_arc_deg",
     "elements",
     "pads",
+    "pivot_stiffness",
     "lateral_stiffness",
     "angular_stiffness",
     "torsional_stiffness",
@@ -46,6 +49,9 @@ const POSITIVE: &[&str] = &[
 
 /// Keys whose value must not be negative (zero disk inertias make a point mass).
 const NON_NEGATIVE: &[&str] = &[
+    "pad_inertia",
+    "pad_mass",
+    "pivot_damping",
     "polar_inertia",
     "diametral_inertia",
     "lateral_damping",
@@ -71,6 +77,15 @@ const SIZES: &[&str] = &[
 /// Keys of centre offsets (m, issue 49), inserted into the entries that take
 /// them: beyond a metre off the axis is no machine and must be refused.
 const OFFSETS: &[&str] = &["offset_x", "offset_y"];
+
+/// A tilting-pad bearing's pivot stiffness and pad inertia (issue 47),
+/// inserted into the tilting-pad entries.
+const PAD_SUPPORT: &[&str] = &[
+    "pivot_stiffness",
+    "pad_inertia",
+    "pad_mass",
+    "pivot_damping",
+];
 
 /// Sections whose entries take `offset_x`, `offset_y`.
 const OFFSET_SECTIONS: &[&str] = &[
@@ -172,6 +187,14 @@ impl Mutation {
     }
 }
 
+/// Whether the entry under the header on line `header` is a tilting-pad bearing.
+fn tilting_pad_block(lines: &[&str], header: usize) -> bool {
+    lines[header + 1..]
+        .iter()
+        .take_while(|l| !l.trim_start().starts_with('['))
+        .any(|l| l.replace(' ', "").starts_with("type=\"tilting_pad\""))
+}
+
 /// `key = number` lines (`key` and the byte range of the number).
 fn numeric_assignments(lines: &[&str]) -> Vec<(usize, String)> {
     lines
@@ -231,6 +254,9 @@ fn mutate(text: &str, rng: &mut Rng) -> (String, Mutation) {
             let (key, assignment) = if lines[header].trim() == "[[couplings]]" {
                 let key = COUPLING_OFFSETS[rng.below(COUPLING_OFFSETS.len())].0;
                 (key.to_string(), format!("{key} = [{value}, 0.0]"))
+            } else if rng.below(2) == 0 && tilting_pad_block(&lines, header) {
+                let key = PAD_SUPPORT[rng.below(PAD_SUPPORT.len())];
+                (key.to_string(), format!("{key} = {value}"))
             } else {
                 let key = OFFSETS[rng.below(OFFSETS.len())];
                 (key.to_string(), format!("{key} = {value}"))

@@ -91,6 +91,7 @@ fn symmetric_tilting_pads_mirror_under_reverse_spin() {
             .map(|p| Pad::new(p.to_radians(), 80f64.to_radians(), 0.5, 0.2))
             .collect(),
         contact: None,
+        support: Default::default(),
     };
     let states = [
         (

@@ -79,6 +79,7 @@ fn tilting(name: &str, speed: f64, mesh: ReynoldsMesh) -> (Matrix2<f64>, Matrix2
             })
             .collect(),
         contact: None,
+        support: Default::default(),
     });
     let mut bearing = FiniteFilmBearing::of(&kind, Cavitation::SwiftStieber).unwrap();
     bearing.mesh = mesh;

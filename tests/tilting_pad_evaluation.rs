@@ -193,6 +193,7 @@ fn bearing(
             })
             .collect(),
         contact: None,
+        support: Default::default(),
     }
 }
 

@@ -43,6 +43,7 @@ fn bearing(case: &Value) -> (TiltingPadBearing, f64, f64) {
             viscosity: num(&p["mu"]),
             pads,
             contact: None,
+            support: Default::default(),
         },
         num(&p["omega"]),
         num(&p["W"]),

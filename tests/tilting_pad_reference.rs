@@ -41,6 +41,7 @@ fn bearing(r: &Value) -> (TiltingPadBearing, f64) {
             viscosity: num(&p["mu"]),
             pads,
             contact: None,
+            support: Default::default(),
         },
         num(&p["omega"]),
     )
@@ -270,6 +271,7 @@ fn many_pads_and_contact_are_handled() {
                 })
                 .collect(),
             contact: None,
+            support: Default::default(),
         };
         let n = 2 + pads;
         let mut out = BearingEval::new(n);

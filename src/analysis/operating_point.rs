@@ -45,6 +45,9 @@ pub struct PadState {
     pub tilt_angle: f64,
     /// Minimum film thickness on the pad (m).
     pub min_film_thickness: f64,
+    /// Radial displacement `ξ` of the pad on its pivot spring, outward (m);
+    /// `None` on a rigid pivot.
+    pub radial: Option<f64>,
 }
 
 /// Fraction of the force a bearing's stiffness makes over one clearance,
@@ -311,6 +314,7 @@ pub fn operating_point(
                             pivot: pad.pivot(),
                             tilt: tilts[k],
                             tilt_angle: tilts[k] / tp.radius,
+                            radial: tp.support.pivot_stiffness.map(|_| tilts[tp.pads.len() + k]),
                             min_film_thickness: tp.pad_min_film_thickness(k, &q),
                         })
                         .collect(),

@@ -7,7 +7,8 @@
 //! slow backward whirl of a rotor held only by unpreloaded pads under
 //! magnetic pull, which the synchronous condensation shows as a fast real
 //! divergence) it cannot reach. Here the linearized rotor keeps the pad
-//! coordinates `p` (massless, as in the transient):
+//! coordinates `p` (massless, as in the transient, unless a pad has inertia:
+//! then its rate is a state too, [`with_pad_inertia`]):
 //!
 //! `M ü + D u̇ + D_up ṗ + K u + K_up p = 0`, `D_pu u̇ + D_pp ṗ + K_pu u + K_pp p = 0`,
 //!
@@ -145,6 +146,14 @@ pub fn state_matrix_with_pads_and(
         }
         offset += eval.n() - 2;
     }
+    let pad_mass: Vec<f64> = equilibrium
+        .bearings
+        .iter()
+        .flat_map(|(_, e)| e.mass.iter().copied())
+        .collect();
+    if pad_mass.iter().any(|&m| m != 0.0) {
+        return with_pad_inertia(&k, &d, &base.mass.to_dense(), &pad_mass);
+    }
     // x = (u, p, u̇), ẋ = F x: the pad rows give ṗ = −D_pp⁻¹(K_pu u + K_pp p
     // + D_pu u̇), the rotor rows M ü = −(K_uu u + K_up p + D_uu u̇ + D_up ṗ).
     let s = 2 * n + pads;
@@ -178,6 +187,83 @@ pub fn state_matrix_with_pads_and(
         return Err(PadEigenError::Singular);
     };
     f.view_mut((size, 0), (n, s)).copy_from(&(-acceleration));
+    if !f.iter().all(|x| x.is_finite()) {
+        return Err(PadEigenError::Singular);
+    }
+    Ok(f)
+}
+
+/// The state matrix of `ẋ = F x` when some internal coordinates have mass
+/// (`pad_mass`, kg, one per pad coordinate, [`crate::bearing::BearingEval::mass`]):
+/// over `q = (u, p)` (stiffness `k`, damping `d`, rotor mass `m`) the
+/// coordinates with mass `a` (the rotor's and the massive pads') keep their
+/// rates as states, `x = (q, ȧ)`; the massless ones `b` follow from their
+/// first-order rows, `ḃ = −D_bb⁻¹(K_b q + D_ba ȧ)`, and
+/// `M_a ä = −(K_a q + D_aa ȧ + D_ab ḃ)`.
+fn with_pad_inertia(
+    k: &DMatrix<f64>,
+    d: &DMatrix<f64>,
+    m: &DMatrix<f64>,
+    pad_mass: &[f64],
+) -> Result<DMatrix<f64>, PadEigenError> {
+    let n = m.nrows();
+    let size = k.nrows();
+    let massive: Vec<usize> = (0..n)
+        .chain(
+            (0..pad_mass.len())
+                .filter(|&p| pad_mass[p] != 0.0)
+                .map(|p| n + p),
+        )
+        .collect();
+    let massless: Vec<usize> = (0..pad_mass.len())
+        .filter(|&p| pad_mass[p] == 0.0)
+        .map(|p| n + p)
+        .collect();
+    let na = massive.len();
+    let s = size + na;
+    // Rows of `set` over x: `[K_set | D_set,a]`.
+    let rows = |set: &[usize]| {
+        DMatrix::from_fn(set.len(), s, |r, c| {
+            if c < size {
+                k[(set[r], c)]
+            } else {
+                d[(set[r], massive[c - size])]
+            }
+        })
+    };
+    let mut f = DMatrix::<f64>::zeros(s, s);
+    for (a, &i) in massive.iter().enumerate() {
+        f[(i, size + a)] = 1.0;
+    }
+    let mut massive_rows = rows(&massive);
+    if !massless.is_empty() {
+        let dbb = DMatrix::from_fn(massless.len(), massless.len(), |r, c| {
+            d[(massless[r], massless[c])]
+        });
+        let Some(x) = dbb.lu().solve(&rows(&massless)) else {
+            return Err(PadEigenError::Singular);
+        };
+        let rate = -x;
+        for (r, &i) in massless.iter().enumerate() {
+            f.row_mut(i).copy_from(&rate.row(r));
+        }
+        let dab = DMatrix::from_fn(na, massless.len(), |r, c| d[(massive[r], massless[c])]);
+        massive_rows += dab * rate;
+    }
+    let ma = DMatrix::from_fn(na, na, |r, c| {
+        let (i, j) = (massive[r], massive[c]);
+        if i < n && j < n {
+            m[(i, j)]
+        } else if i == j {
+            pad_mass[i - n]
+        } else {
+            0.0
+        }
+    });
+    let Some(acceleration) = ma.lu().solve(&massive_rows) else {
+        return Err(PadEigenError::Singular);
+    };
+    f.view_mut((size, 0), (na, s)).copy_from(&(-acceleration));
     if !f.iter().all(|x| x.is_finite()) {
         return Err(PadEigenError::Singular);
     }

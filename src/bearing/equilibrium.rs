@@ -260,8 +260,8 @@ fn newton(
 
 /// Journal stiffness and damping with the internal coordinates condensed for
 /// harmonic motion at `frequency` Ω (rad/s): `Z = K + iΩC`,
-/// `Z_red = Z_jj − Z_jp Z_pp⁻¹ Z_pj`, `K_red = Re Z_red`, `C_red = Im Z_red / Ω`
-/// (massless internal coordinates). Without internal coordinates this is the
+/// `Z_red = Z_jj − Z_jp Z_pp⁻¹ Z_pj`, `K_red = Re Z_red`, `C_red = Im Z_red / Ω`,
+/// with the internal coordinates' mass in `Z_pp` (`−Ω² M_pp`, [`BearingEval::mass`]). Without internal coordinates this is the
 /// journal block itself. At Ω = 0 the damping follows from the derivative
 /// `dZ_red/d(iΩ)` at zero.
 pub fn condensed_coefficients(eval: &BearingEval, frequency: f64) -> (Matrix2<f64>, Matrix2<f64>) {
@@ -271,9 +271,10 @@ pub fn condensed_coefficients(eval: &BearingEval, frequency: f64) -> (Matrix2<f6
         return (j.stiffness, j.damping);
     }
     let reduce = |omega: f64| -> Option<Matrix2<Complex<f64>>> {
-        let z = DMatrix::from_fn(n, n, |i, j| {
+        let mut z = DMatrix::from_fn(n, n, |i, j| {
             Complex::new(eval.k(i, j), omega * eval.c(i, j))
         });
+        add_inertia(&mut z, eval, Complex::new(0.0, omega));
         let zpp = z.view((2, 2), (n - 2, n - 2)).into_owned();
         let zpj = z.view((2, 0), (n - 2, 2)).into_owned();
         let zjp = z.view((0, 2), (2, n - 2)).into_owned();
@@ -296,8 +297,8 @@ pub fn condensed_coefficients(eval: &BearingEval, frequency: f64) -> (Matrix2<f6
 }
 
 /// Stiffness and damping of a bearing whose internal coordinates (pad
-/// tilts, massless) are condensed at the complex frequency `s` (1/s) of a
-/// mode, `λ = σ + iω`: `Z(s) = K + sC`, `Z_red = Z_jj − Z_jp Z_pp⁻¹ Z_pj`,
+/// tilts) are condensed at the complex frequency `s` (1/s) of a
+/// mode, `λ = σ + iω`: `Z(s) = K + sC + s²M` (`M` on the internal rows only), `Z_red = Z_jj − Z_jp Z_pp⁻¹ Z_pj`,
 /// and the one real pair with `K_eff + s C_eff = Z_red(s)`:
 /// `C_eff = Im Z_red / ω`, `K_eff = Re Z_red − σ C_eff`. A mode computed
 /// with them at its own eigenvalue is a mode of the rotor with the pads as
@@ -308,9 +309,10 @@ pub fn condensed_at(eval: &BearingEval, s: Complex<f64>) -> (Matrix2<f64>, Matri
     if n == 2 || s.im == 0.0 {
         return condensed_coefficients(eval, s.im);
     }
-    let z = DMatrix::from_fn(n, n, |i, j| {
+    let mut z = DMatrix::from_fn(n, n, |i, j| {
         Complex::new(eval.k(i, j) + s.re * eval.c(i, j), s.im * eval.c(i, j))
     });
+    add_inertia(&mut z, eval, s);
     let zpp = z.view((2, 2), (n - 2, n - 2)).into_owned();
     let zpj = z.view((2, 0), (n - 2, 2)).into_owned();
     let zjp = z.view((0, 2), (2, n - 2)).into_owned();
@@ -321,6 +323,17 @@ pub fn condensed_at(eval: &BearingEval, s: Complex<f64>) -> (Matrix2<f64>, Matri
     let c = Matrix2::from_fn(|i, j| red[(i, j)].im / s.im);
     let k = Matrix2::from_fn(|i, j| red[(i, j)].re - s.re * c[(i, j)]);
     (k, c)
+}
+
+/// The inertia of the internal coordinates at `s`, `s² M_pp`, onto the
+/// diagonal of their block of `z` (nothing for massless ones, so a bearing
+/// without masses reduces bit for bit as before).
+fn add_inertia(z: &mut DMatrix<Complex<f64>>, eval: &BearingEval, s: Complex<f64>) {
+    for (p, &m) in eval.mass.iter().enumerate() {
+        if m != 0.0 {
+            z[(2 + p, 2 + p)] += s * s * m;
+        }
+    }
 }
 
 /// A point of a bearing's coefficient curve: equilibrium under a load along −y

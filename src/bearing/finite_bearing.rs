@@ -234,6 +234,10 @@ impl Bearing for FiniteFilmBearing {
         self.short().internal_dofs()
     }
 
+    fn internal_mass(&self, m: usize) -> f64 {
+        self.short().internal_mass(m)
+    }
+
     fn evaluate(
         &self,
         q: &[f64],
@@ -258,22 +262,19 @@ impl Bearing for FiniteFilmBearing {
                 out.add_transformed(&contact, None);
             }
             FilmSupport::TiltingPad(b) => {
-                let n = 2 + b.pads.len();
+                let n = 2 + b.internal_dofs();
                 check_state(n, q, qdot, speed, out)?;
                 out.clear();
-                let (c_rest, k_rest) = b.pivot_rest(speed);
+                b.write_mass(out);
                 let law = b.contact_law();
                 for k in 0..b.pads.len() {
                     let (s, c, state) = b.pad_state(k, q, qdot);
                     let part = self.pad_film(&film, b, k, &state, speed)?;
-                    out.add_transformed(&part, Some((k, -s, c)));
+                    b.add_pad_part(out, k, (s, c), &part);
                     if let Some((contact, _)) = b.pad_contact(&law, k, &state, speed) {
-                        out.add_transformed(&contact, Some((k, -s, c)));
+                        b.add_pad_part(out, k, (s, c), &contact);
                     }
-                    let i = 2 + k;
-                    out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
-                    out.stiffness[i * n + i] += k_rest;
-                    out.damping[i * n + i] += c_rest;
+                    b.add_pivot(out, k, q, qdot, speed, true);
                 }
             }
         }
@@ -315,10 +316,9 @@ impl Bearing for FiniteFilmBearing {
                 out.add_force(&(force + contact.force), None);
             }
             FilmSupport::TiltingPad(b) => {
-                let n = 2 + b.pads.len();
+                let n = 2 + b.internal_dofs();
                 check_state(n, q, qdot, speed, out)?;
                 out.force.fill(0.0);
-                let (c_rest, k_rest) = b.pivot_rest(speed);
                 let law = b.contact_law();
                 for k in 0..b.pads.len() {
                     let (s, c, state) = b.pad_state(k, q, qdot);
@@ -326,9 +326,8 @@ impl Bearing for FiniteFilmBearing {
                     if let Some((contact, _)) = b.pad_contact(&law, k, &state, speed) {
                         force += contact.force;
                     }
-                    out.add_force(&force, Some((k, -s, c)));
-                    let i = 2 + k;
-                    out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+                    b.add_pad_force(out, k, (s, c), &force);
+                    b.add_pivot(out, k, q, qdot, speed, false);
                 }
             }
         }
@@ -360,7 +359,8 @@ impl Bearing for FiniteFilmBearing {
 
     /// Pad `m`'s moment balance alone, as the short film's
     /// ([`TiltingPadBearing`]'s), with the pad's finite film (table or
-    /// direct solve); `None` for a plain film (no internal coordinates).
+    /// direct solve); `None` for a plain film (no internal coordinates) and
+    /// for pads on pivot springs.
     fn internal_balance(
         &self,
         m: usize,
@@ -371,6 +371,11 @@ impl Bearing for FiniteFilmBearing {
         let FilmSupport::TiltingPad(b) = &self.support else {
             return None;
         };
+        // On pivot springs a pad's tilt and radial displacement balance
+        // together, as for the short film.
+        if b.radial() {
+            return None;
+        }
         let film = self.film();
         Some(b.pad_balance_of(m, q, qdot, speed, &|state| {
             Ok(self.pad_film(&film, b, m, state, speed)?)

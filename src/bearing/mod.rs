@@ -49,6 +49,8 @@ pub mod linear;
 pub mod magnetic_pull;
 pub mod offset;
 pub mod oil;
+pub mod pad;
+mod pad_coordinates;
 pub mod pad_table;
 pub mod plain;
 pub mod reynolds;
@@ -132,11 +134,18 @@ pub struct BearingReport {
 }
 
 /// Generalized forces and Jacobians of a bearing with `n = 2 + m` coordinates
-/// `q = [x, y, internal…]` (internal: pad tilts of a tilting-pad bearing).
+/// `q = [x, y, internal…]` (internal: pad tilts of a tilting-pad bearing),
+/// and the constant mass of the internal coordinates.
 /// Buffers are sized once, so evaluation allocates nothing.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BearingEval {
     n: usize,
+    /// Mass of each internal coordinate (kg; the diagonal `M_pp`, length
+    /// `n − 2`), written by [`Bearing::evaluate`] from
+    /// [`Bearing::internal_mass`]; zeros for massless coordinates. Its
+    /// inertia `−M_pp p̈` is the integrator's and the linear analyses'
+    /// (`Z = K + sC + s²M`), not part of `force`.
+    pub mass: Vec<f64>,
     /// Generalized forces `Q` (N on the journal, then N for each pad tilt).
     pub force: Vec<f64>,
     /// `K = −∂Q/∂q`, row-major `n × n`.
@@ -150,6 +159,7 @@ impl BearingEval {
     pub fn new(n: usize) -> Self {
         Self {
             n,
+            mass: vec![0.0; n.saturating_sub(2)],
             force: vec![0.0; n],
             stiffness: vec![0.0; n * n],
             damping: vec![0.0; n * n],
@@ -196,6 +206,34 @@ impl BearingEval {
         }
     }
 
+    /// Add a journal-type contribution `f, K, C` acting on the effective
+    /// journal coordinates `(x_e, y_e) = (x, y) + Σ q_i (a_i, b_i)` of two
+    /// internal coordinates `internal = [(i, a_i, b_i); 2]` (indices into `q`),
+    /// i.e. with `T = [[1, 0, a_1, a_2], [0, 1, b_1, b_2]]`: `Q += Tᵀ f`,
+    /// `K += Tᵀ K T`, `C += Tᵀ C T` (a pad's tilt and radial displacement).
+    fn add_columns(&mut self, part: &BearingForce, internal: [(usize, f64, f64); 2]) {
+        let n = self.n;
+        let cols = [(0, 1.0, 0.0), (1, 0.0, 1.0), internal[0], internal[1]];
+        let f = &part.force;
+        for &(r, a, b) in &cols {
+            self.force[r] += a * f.x + b * f.y;
+        }
+        for (mat, out) in [
+            (&part.stiffness, &mut self.stiffness),
+            (&part.damping, &mut self.damping),
+        ] {
+            for &(c, a, b) in &cols {
+                let col = [
+                    mat[(0, 0)] * a + mat[(0, 1)] * b,
+                    mat[(1, 0)] * a + mat[(1, 1)] * b,
+                ];
+                for &(r, ra, rb) in &cols {
+                    out[r * n + c] += ra * col[0] + rb * col[1];
+                }
+            }
+        }
+    }
+
     /// Add a journal-type contribution `f, K, C` acting on the effective journal
     /// coordinates `(x_e, y_e) = (x, y) + η·(a, b)` of internal coordinate
     /// `internal` (`None`: the journal itself), i.e. with `T = [[1, 0, a], [0, 1, b]]`:
@@ -239,6 +277,14 @@ pub trait Bearing: Send + Sync + std::fmt::Debug {
     /// tilts `η = ψ R` (m) of a tilting-pad bearing; none for other kinds.
     fn internal_dofs(&self) -> usize {
         0
+    }
+
+    /// The constant mass (kg) of internal coordinate `m`, its inertia
+    /// `−M_m q̈_m` in its balance (a pad's moment of inertia over the squared
+    /// radius on its tilt `η = ψR`); zero (the default) for a massless
+    /// coordinate, whose balance is first order.
+    fn internal_mass(&self, _m: usize) -> f64 {
+        0.0
     }
 
     /// Forces and Jacobians at `q = [x, y, internal…]`, `q̇` likewise (SI), spin

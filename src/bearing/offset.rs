@@ -67,6 +67,10 @@ impl Bearing for OffsetBearing {
         self.inner.internal_dofs()
     }
 
+    fn internal_mass(&self, m: usize) -> f64 {
+        self.inner.internal_mass(m)
+    }
+
     fn evaluate(
         &self,
         q: &[f64],

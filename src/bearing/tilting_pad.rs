@@ -33,10 +33,12 @@ use std::f64::consts::PI;
 
 use nalgebra::Vector2;
 
+pub use super::pad::{Pad, PadSupport};
+
 use super::BearingForce;
 use super::contact::{ContactExtent, ContactLaw, ContactReport};
 use super::plain::{attitude_angle, contact_friction_torque};
-use super::short_film::{Film, FilmWindow, ShortFilm, Terms, force_only_of};
+use super::short_film::{Film, ShortFilm, Terms, force_only_of};
 use super::{Bearing, BearingError, BearingEval, BearingReport, JournalState, check_state};
 
 /// Relative size of the pivot's restoring moment (see the module docs).
@@ -45,70 +47,6 @@ const PIVOT_REST: f64 = 1e-9;
 /// `|p_e|² / C²` below which a pad's contact is not evaluated (it is zero
 /// there; the margin covers the rounding of `n·p_e` against `|p_e|`).
 const CONTACT_FREE: f64 = 1.0 - 1e-9;
-
-/// One pad of a tilting-pad bearing, with its fixed geometry's trigonometry
-/// worked out once ([`Pad::new`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Pad {
-    pivot: f64,
-    arc: f64,
-    offset: f64,
-    preload: f64,
-    /// `(sin θp, cos θp)`.
-    pivot_sc: (f64, f64),
-    /// The pad's arc from the leading edge, normalized to start in `[0, 2π)`.
-    window: FilmWindow,
-}
-
-impl Pad {
-    /// Pad with pivot angle `θp` from +x toward +y (rad), arc extent (rad),
-    /// pivot `offset` as a fraction of the arc from the leading edge (0.5 =
-    /// centred) and preload `m = 1 − C_b/C` (0 = pad curvature centred on the
-    /// bearing).
-    pub fn new(pivot: f64, arc: f64, offset: f64, preload: f64) -> Self {
-        let lead = (pivot - offset * arc).rem_euclid(2.0 * PI);
-        Self {
-            pivot,
-            arc,
-            offset,
-            preload,
-            pivot_sc: pivot.sin_cos(),
-            window: FilmWindow::new(lead, lead + arc),
-        }
-    }
-
-    /// Pivot angle `θp` (rad).
-    pub fn pivot(&self) -> f64 {
-        self.pivot
-    }
-
-    /// Arc extent (rad).
-    pub fn arc(&self) -> f64 {
-        self.arc
-    }
-
-    /// Pivot position as a fraction of the arc from the leading edge.
-    pub fn offset(&self) -> f64 {
-        self.offset
-    }
-
-    /// Preload `m` (–).
-    pub fn preload(&self) -> f64 {
-        self.preload
-    }
-
-    /// The pad's arc `(from, to)` (rad), normalized to start in `[0, 2π)`:
-    /// the window of its film.
-    pub fn film_arc(&self) -> (f64, f64) {
-        (self.window.from, self.window.to)
-    }
-
-    /// Leading and trailing edge angles (rad); the spin carries oil from leading to trailing.
-    pub fn edges(&self) -> (f64, f64) {
-        let lead = self.pivot - self.offset * self.arc;
-        (lead, lead + self.arc)
-    }
-}
 
 /// Tilting-pad journal bearing (SI units).
 #[derive(Debug, Clone, PartialEq)]
@@ -126,6 +64,9 @@ pub struct TiltingPadBearing {
     /// Journal–pad contact; `None`: the steel default [`ContactLaw::steel`] for
     /// this geometry (gap = the pad clearance, on each pad's effective position).
     pub contact: Option<ContactLaw>,
+    /// The pads' pivot stiffness and inertia ([`PadSupport`]; default rigid
+    /// pivots, massless pads).
+    pub support: PadSupport,
 }
 
 impl TiltingPadBearing {
@@ -186,33 +127,14 @@ impl TiltingPadBearing {
             .fold(self.clearance, f64::min)
     }
 
-    /// Effective journal position of pad `k` with the journal at `(x, y)` and
-    /// the pad tilted by `η`.
-    fn pad_position(&self, k: usize, x: f64, y: f64, eta: f64) -> Vector2<f64> {
-        let pad = &self.pads[k];
-        let (s, c) = pad.pivot_sc;
-        let shift = pad.preload * self.clearance;
-        Vector2::new(x + shift * c - eta * s, y + shift * s + eta * c)
-    }
-
-    /// `(sin θp, cos θp)` and the effective journal state of pad `k`.
-    pub(crate) fn pad_state(&self, k: usize, q: &[f64], qdot: &[f64]) -> (f64, f64, JournalState) {
-        let (s, c) = self.pads[k].pivot_sc;
-        let eta_dot = qdot[2 + k];
-        let state = JournalState {
-            position: self.pad_position(k, q[0], q[1], q[2 + k]),
-            velocity: Vector2::new(qdot[0] - eta_dot * s, qdot[1] + eta_dot * c),
-        };
-        (s, c, state)
-    }
-
     /// Minimum film thickness (m) on pad `k` at `q = [x, y, η…]`: the film
     /// `h = C − X_e cos θ − Y_e sin θ` at the effective journal position `p_e`
     /// is thinnest, `C − |p_e|`, at `θ = atan2(Y_e, X_e)` when that lies on the
     /// pad's arc (for arcs under π: `p_e` between the ends' directions by the
     /// signs of two cross products), else at the nearer edge.
     pub fn pad_min_film_thickness(&self, k: usize, q: &[f64]) -> f64 {
-        self.min_film_at(k, self.pad_position(k, q[0], q[1], q[2 + k]))
+        let [x, y] = self.journal_seen_by(k, q);
+        self.min_film_at(k, self.pad_position(k, x, y, q[2 + k]))
     }
 
     /// [`TiltingPadBearing::pad_min_film_thickness`] at the effective journal
@@ -315,7 +237,7 @@ impl TiltingPadBearing {
         speed: f64,
         film: &dyn Fn(&JournalState) -> Result<BearingForce, BearingError>,
     ) -> Result<[f64; 3], BearingError> {
-        let n = 2 + self.pads.len();
+        let n = 2 + self.internal_dofs();
         if q.len() != n || qdot.len() != n || k >= self.pads.len() {
             return Err(BearingError::Dimension {
                 expected: n,
@@ -385,7 +307,11 @@ impl PadBatch {
 
 impl Bearing for TiltingPadBearing {
     fn internal_dofs(&self) -> usize {
-        self.pads.len()
+        self.support.coordinates_per_pad() * self.pads.len()
+    }
+
+    fn internal_mass(&self, m: usize) -> f64 {
+        self.support.mass(m, self.pads.len(), self.radius)
     }
 
     fn evaluate(
@@ -395,11 +321,11 @@ impl Bearing for TiltingPadBearing {
         speed: f64,
         out: &mut BearingEval,
     ) -> Result<(), BearingError> {
-        let n = 2 + self.pads.len();
+        let n = 2 + self.internal_dofs();
         check_state(n, q, qdot, speed, out)?;
         out.clear();
+        self.write_mass(out);
         let film = self.film();
-        let (c_rest, k_rest) = self.pivot_rest(speed);
         let law = self.contact_law();
         // Pads in batches: their films' potentials evaluated together
         // (`ShortFilm::complete`), then each pad's force in pad order.
@@ -417,14 +343,11 @@ impl Bearing for TiltingPadBearing {
             for (i, k) in batch.enumerate() {
                 let (s, c, state) = &pads.states[i];
                 let part = film.force_of(pads.films[i], speed)?;
-                out.add_transformed(&part, Some((k, -s, *c)));
+                self.add_pad_part(out, k, (*s, *c), &part);
                 if let Some((contact, _)) = self.pad_contact(&law, k, state, speed) {
-                    out.add_transformed(&contact, Some((k, -s, *c)));
+                    self.add_pad_part(out, k, (*s, *c), &contact);
                 }
-                let i = 2 + k;
-                out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
-                out.stiffness[i * n + i] += k_rest;
-                out.damping[i * n + i] += c_rest;
+                self.add_pivot(out, k, q, qdot, speed, true);
             }
         }
         Ok(())
@@ -470,18 +393,54 @@ impl Bearing for TiltingPadBearing {
     /// keep the pad film open, refined by bisection ([`TiltingPadBearing::stable_tilt`]).
     /// A pad with none (unloaded) starts at zero. Newton from zero tilts can
     /// otherwise run to the unloaded root, where the film vanishes.
+    ///
+    /// On pivots with a stiffness, each pad's radial displacement `ξ` is
+    /// where its pivot spring carries its film's radial force with the pad
+    /// on its stable tilt, `k_piv ξ = −u·F(ξ)`, by bisection on
+    /// `[0, −u·F(0)/k_piv]` (the film's push falls as the pad recedes).
     fn guess_internal(&self, journal: [f64; 2], speed: f64, internal: &mut [f64]) {
-        for (k, pad) in self.pads.iter().enumerate() {
-            let (s, c) = pad.pivot_sc;
-            // A journal pressed onto the pad's pivot line (at rest on the pad):
-            // the tilt that puts the contact at the pivot, `η = −p·t_k`.
-            let pressed = journal[0] * c + journal[1] * s >= self.clearance * (1.0 - pad.preload);
-            let resting = if pressed {
-                journal[0] * s - journal[1] * c
-            } else {
-                0.0
+        for (k, tilt) in internal.iter_mut().take(self.pads.len()).enumerate() {
+            *tilt = self.seated_tilt(k, journal, speed);
+        }
+        let Some(k_piv) = self.support.pivot_stiffness else {
+            return;
+        };
+        let n = self.pads.len();
+        for k in 0..n {
+            let (s, c) = self.pads[k].pivot_sc;
+            // The pad's radial push on its pivot, `−u·F`, at `ξ`, with its tilt.
+            let push = |xi: f64| -> (f64, f64) {
+                let seen = [journal[0] - xi * c, journal[1] - xi * s];
+                let eta = self.seated_tilt(k, seen, speed);
+                let state = JournalState {
+                    position: self.pad_position(k, seen[0], seen[1], eta),
+                    velocity: Vector2::zeros(),
+                };
+                let f = self
+                    .film()
+                    .force(&state, speed, Some(&self.pads[k].window))
+                    .map(|f| f.force)
+                    .unwrap_or_else(|_| Vector2::zeros());
+                (-(c * f.x + s * f.y), eta)
             };
-            internal[k] = self.stable_tilt(k, journal, speed).unwrap_or(resting);
+            let (first, eta0) = push(0.0);
+            internal[n + k] = 0.0;
+            internal[k] = eta0;
+            if first.is_nan() || first <= 0.0 {
+                continue;
+            }
+            let (mut lo, mut hi) = (0.0, first / k_piv);
+            for _ in 0..40 {
+                let mid = 0.5 * (lo + hi);
+                if push(mid).0 > k_piv * mid {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            let xi = 0.5 * (lo + hi);
+            internal[n + k] = xi;
+            internal[k] = push(xi).1;
         }
     }
 
@@ -490,7 +449,8 @@ impl Bearing for TiltingPadBearing {
     /// zero-moment tilt where it carries load exists at this journal position —
     /// is set to that tilt: the pad the journal moves towards takes up load, as
     /// a free pad does. Loaded pads, and unloaded pads without a loaded tilt,
-    /// are left alone.
+    /// are left alone. On pivots with a stiffness the journal is the one the
+    /// pad's film sees off its radial displacement.
     fn reseat_internal(&self, q: &mut [f64], speed: f64) -> bool {
         let film = self.film();
         let unloaded = self.pivot_rest(speed).1 * self.clearance;
@@ -509,7 +469,7 @@ impl Bearing for TiltingPadBearing {
             if force(q).is_none_or(|f| f > unloaded) {
                 continue;
             }
-            let Some(tilt) = self.stable_tilt(k, [q[0], q[1]], speed) else {
+            let Some(tilt) = self.stable_tilt(k, self.journal_seen_by(k, q), speed) else {
                 continue;
             };
             let previous = q[2 + k];
@@ -577,6 +537,11 @@ impl Bearing for TiltingPadBearing {
         qdot: &[f64],
         speed: f64,
     ) -> Option<Result<[f64; 3], BearingError>> {
+        // On pivots with a stiffness a pad's tilt and radial displacement
+        // balance together: no balance of one coordinate alone.
+        if self.radial() {
+            return None;
+        }
         Some(self.pad_balance(m, q, qdot, speed))
     }
 
@@ -593,6 +558,23 @@ impl Bearing for TiltingPadBearing {
 }
 
 impl TiltingPadBearing {
+    /// Pad `k`'s starting tilt with the journal seen at `journal` (m): its
+    /// stable zero-moment tilt ([`TiltingPadBearing::stable_tilt`]), else,
+    /// with the journal pressed onto the pad's pivot line (at rest on the
+    /// pad), the tilt that puts the contact at the pivot, `η = −p·t_k`,
+    /// else zero.
+    fn seated_tilt(&self, k: usize, journal: [f64; 2], speed: f64) -> f64 {
+        let pad = &self.pads[k];
+        let (s, c) = pad.pivot_sc;
+        let pressed = journal[0] * c + journal[1] * s >= self.clearance * (1.0 - pad.preload);
+        let resting = if pressed {
+            journal[0] * s - journal[1] * c
+        } else {
+            0.0
+        };
+        self.stable_tilt(k, journal, speed).unwrap_or(resting)
+    }
+
     /// One pass over the pads for the generalized forces in `out.force`, each
     /// pad's film force without its Jacobians (the numbers of
     /// [`ShortFilm::force_only`], a batch of pads' potentials evaluated
@@ -612,10 +594,9 @@ impl TiltingPadBearing {
             Option<&(BearingForce, ContactReport)>,
         ),
     ) -> Result<(), BearingError> {
-        let n = 2 + self.pads.len();
+        let n = 2 + self.internal_dofs();
         check_state(n, q, qdot, speed, out)?;
         out.force.fill(0.0);
-        let (c_rest, k_rest) = self.pivot_rest(speed);
         let law = self.contact_law();
         let mut pads = PadBatch::new();
         for first in (0..self.pads.len()).step_by(PAD_BATCH) {
@@ -624,13 +605,12 @@ impl TiltingPadBearing {
             for (i, k) in batch.enumerate() {
                 let (s, c, state) = &pads.states[i];
                 let (force, whole) = force_only_of(pads.films[i])?;
-                out.add_force(&force, Some((k, -s, *c)));
+                self.add_pad_force(out, k, (*s, *c), &force);
                 let contact = self.pad_contact(&law, k, state, speed);
                 if let Some((contact, _)) = &contact {
-                    out.add_force(&contact.force, Some((k, -s, *c)));
+                    self.add_pad_force(out, k, (*s, *c), &contact.force);
                 }
-                let i = 2 + k;
-                out.force[i] -= k_rest * q[i] + c_rest * qdot[i];
+                self.add_pivot(out, k, q, qdot, speed, false);
                 each_pad(k, state, whole, contact.as_ref());
             }
         }
@@ -751,6 +731,7 @@ mod tests {
             viscosity: 0.02,
             pads,
             contact: None,
+            support: Default::default(),
         };
         let speed = 314.16;
         let n = 7;
@@ -803,6 +784,7 @@ mod tests {
             viscosity: 0.02,
             pads,
             contact: None,
+            support: Default::default(),
         };
         let speed = 314.16;
         let journal = [0.3e-4, -0.5e-4];

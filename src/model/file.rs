@@ -335,6 +335,16 @@ pub enum BearingEntry {
         pivot_offset: Option<f64>,
         /// Preload m = 1 − C_b/C, default 0.
         preload: Option<f64>,
+        /// Radial stiffness of each pad's pivot (N/m), default rigid.
+        pivot_stiffness: Option<f64>,
+        /// Each pad's moment of inertia about its pivot (kg·m²), default 0.
+        pad_inertia: Option<f64>,
+        /// Each pad's mass (kg) on its pivot spring, default 0 (needs
+        /// `pivot_stiffness`).
+        pad_mass: Option<f64>,
+        /// Radial damping of each pad's pivot (N·s/m), default 0 (needs
+        /// `pivot_stiffness`).
+        pivot_damping: Option<f64>,
         /// Contact penalty stiffness (N/m) once the journal touches; default
         /// the steel line contact `(π/4) E* L` of `ContactLaw::steel`.
         contact_stiffness: Option<f64>,

@@ -131,6 +131,38 @@ pub const CONTACT_STIFFNESS: Limit = Limit {
     why: "a steel line contact is about 1e9–1e11 N/m",
 };
 
+/// Radial stiffness of a tilting pad's pivot (N/m).
+pub const PIVOT_STIFFNESS: Limit = Limit {
+    min: 1.0,
+    max: 1e15,
+    unit: "N/m",
+    why: "a pad's pivot, liner and housing in series are about 1e8–1e10 N/m; 1e15 N/m is rigid",
+};
+
+/// Radial damping of a tilting pad's pivot (N·s/m).
+pub const PIVOT_DAMPING: Limit = Limit {
+    min: 0.0,
+    max: 1e12,
+    unit: "N·s/m",
+    why: "a pivot's own damping is far below its pad's squeeze film, about 1e7–1e9 N·s/m",
+};
+
+/// A tilting pad's moment of inertia about its pivot (kg·m²).
+pub const PAD_INERTIA: Limit = Limit {
+    min: 0.0,
+    max: 1e6,
+    unit: "kg·m²",
+    why: "the pads of the largest guide bearings are about 1e2 kg·m²",
+};
+
+/// A tilting pad's mass (kg).
+pub const PAD_MASS: Limit = Limit {
+    min: 0.0,
+    max: 1e6,
+    unit: "kg",
+    why: "the pads of the largest guide bearings weigh about 1 t",
+};
+
 /// Largest field excitation of a magnetic pull (2: twice the nominal flux,
 /// beyond any over-excitation a generator survives), also the FMU's bound.
 pub const MAX_EXCITATION: f64 = 2.0;

@@ -229,6 +229,12 @@ fn hydrodynamic_bearing_errors() {
         (format!("{tp}pads = 4\npivots_deg = [0.0, 90.0, 180.0, 270.0]\npad_arc_deg = 60.0\n"), "either pads"),
         (format!("{tp}pads = 4\npad_arc_deg = 60.0\npreload = 1.0\n"), "bearings[0].preload = 1"),
         (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_offset = 1.5\n"), "pivot_offset = 1.5"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_stiffness = 0.0\n"), "bearings[0].pivot_stiffness = 0"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_stiffness = 1e20\n"), "m.toml:25: bearings[0].pivot_stiffness = 1e20: must lie in [1, 1e15] N/m"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npad_inertia = -1.0\n"), "bearings[0].pad_inertia = -1"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npad_mass = 2.0\n"), "bearings[0].pad_mass = 2: needs pivot_stiffness"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_damping = 5.0\n"), "bearings[0].pivot_damping = 5: needs pivot_stiffness"),
+        (format!("{tp}pads = 4\npad_arc_deg = 60.0\npivot_stiffness = 1e9\npivot_damping = -5.0\n"), "bearings[0].pivot_damping = -5"),
         (
             "\n[[bearings]]\ntype = \"plain\"\nnode = 1\nradius = 0.05\njournal_collar = true\nlength = 0.03\nclearance = 0.01\nviscosity = 0.02\n".to_string(),
             "bearings[0].clearance = 0.01",

@@ -7,6 +7,7 @@
 //! default: a simulator not asked steps exactly as before.
 
 use super::simulator::Simulator;
+use crate::bearing::Bearing;
 
 impl Simulator {
     /// Whether each call of [`Simulator::advance_to`] stops at the first

@@ -4,6 +4,7 @@
 //! bearing's or rub's first excursion once per episode.
 
 use super::simulator::Simulator;
+use crate::bearing::Bearing;
 
 /// Which limit of the contact law a contact left.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -15,6 +15,7 @@
 //! reactions of the rotor on rigid supports at the journals, exact for two
 //! bearings — and puts the rotor on the journals it finds.
 
+use crate::bearing::Bearing;
 use crate::bearing::equilibrium::journal_equilibrium;
 use crate::rotor::Rotor;
 use nalgebra::Vector2;
@@ -74,7 +75,7 @@ pub(super) fn film_start(
             (reaction, eq)
         } else {
             let reaction = Vector2::new(k * cx.of(&u), k * cy.of(&u));
-            let eq = journal_equilibrium(site.bearing.as_ref(), reaction, speed, clearance).ok()?;
+            let eq = journal_equilibrium(&site.bearing, reaction, speed, clearance).ok()?;
             (reaction, eq)
         };
         cx.add(&mut rhs, k * eq.q[0] - reaction.x);

@@ -142,7 +142,7 @@ impl Simulator {
         *output = placed.build();
         if let Some(k) = site {
             let site = &mut self.sites.list[*k];
-            site.bearing = placed.build();
+            site.bearing = super::pad_inertia::InertialBearing::new(placed.build());
             site.memo.clear();
         }
         Ok(())

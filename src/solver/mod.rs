@@ -79,6 +79,7 @@ mod options;
 mod output_memo;
 mod outputs;
 mod pad_balance;
+mod pad_inertia;
 pub mod plausible;
 pub mod reduction_check;
 pub mod run;

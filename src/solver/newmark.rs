@@ -389,6 +389,8 @@ impl Simulator {
         let speed1 = self.speed_at(t1);
         let spin1 = self.state.spin_angle + 0.5 * (speed0 + speed1) * h;
         self.external_force(t1, spin1);
+        self.sites
+            .begin_step(2.0 / h, &self.state.pd, &self.state.pdd);
         let mut factor = self.factor.take();
         let exact = self.prepare_factor(h, speed1, &mut factor);
         self.predict(h, matches!(exact, Ok(true)));
@@ -407,6 +409,7 @@ impl Simulator {
         };
         self.factor = factor;
         self.record_factor();
+        self.sites.end_step();
         outcome
     }
 

@@ -4,6 +4,7 @@
 //! closing with a Schur complement on the bearing DOFs ([`super::schur`]; see
 //! [`crate::solver`]).
 
+use crate::bearing::Bearing;
 use crate::linalg::LinalgError;
 
 use super::dense::{lu_in_place, lu_solve};
@@ -240,7 +241,7 @@ impl Simulator {
                         start_rate: s.pd[i],
                     };
                     let taken = pad_balance::settle(
-                        &*site.bearing,
+                        &site.bearing,
                         m,
                         &mut site.q,
                         &mut site.qd,

@@ -16,6 +16,7 @@ use crate::rotor::Rotor;
 use super::condense::Condensation;
 use super::error::SolverError;
 use super::output_memo::OutputMemo;
+use super::pad_inertia::InertialBearing;
 
 /// One journal coordinate of a site: a journal DOF, less its housing DOF
 /// when the bearing stands on a pedestal (a column of `E`).
@@ -70,8 +71,9 @@ pub(super) struct Site {
     pub index: usize,
     pub name: String,
     /// The bearing as installed: about its centre [`Site::centre`]
-    /// ([`crate::model::PlacedBearing::build`]).
-    pub bearing: Box<dyn Bearing>,
+    /// ([`crate::model::PlacedBearing::build`]), with the inertia of its
+    /// internal coordinates within a step ([`super::pad_inertia`]).
+    pub bearing: InertialBearing,
     /// Its housing centre off the nominal axis `o` (m): the journal
     /// coordinates `Eᵀu` are absolute, the bearing sees `Eᵀu − o`.
     pub centre: [f64; 2],
@@ -168,7 +170,7 @@ impl Sites {
                 condensation: Condensation::new(internal),
                 memo: OutputMemo::default(),
                 centre: b.offset,
-                bearing,
+                bearing: InertialBearing::new(bearing),
             });
             offset += internal;
         }
@@ -194,6 +196,23 @@ impl Sites {
                 .all(|s| s.journal.iter().all(|c| c.housing.is_none())),
             list,
         })
+    }
+
+    /// Open a Newmark step with `a1 = 2/h` from the internal rates `pd` and
+    /// accelerations `pdd` at its start: the internal coordinates' inertia
+    /// joins the bearings' forces ([`super::pad_inertia`]).
+    pub fn begin_step(&mut self, a1: f64, pd: &[f64], pdd: &[f64]) {
+        for site in &mut self.list {
+            let range = site.offset..site.offset + site.internal;
+            site.bearing.begin_step(a1, &pd[range.clone()], &pdd[range]);
+        }
+    }
+
+    /// Close the step ([`Sites::begin_step`]).
+    pub fn end_step(&mut self) {
+        for site in &mut self.list {
+            site.bearing.end_step();
+        }
     }
 
     /// Evaluate the bearings at `u`, `u̇` (rotor) and `p`, `ṗ` (internal) at

@@ -5,6 +5,7 @@
 //! [`Simulator`](super::Simulator): the linearized analyses call
 //! [`equilibrium`] once per speed.
 
+use crate::bearing::Bearing;
 use crate::bearing::BearingEval;
 use crate::rotor::Rotor;
 

@@ -37,6 +37,7 @@
 //! [`Bearing::report`]: crate::bearing::Bearing::report
 //! [`ThrustBearing`]: crate::bearing::thrust::ThrustBearing
 
+use crate::bearing::Bearing;
 use crate::bearing::thrust::ThrustBearing;
 use crate::fe::{DOF_X, DOF_Y};
 use crate::units::{RAD_S_TO_RPM, Short};

@@ -6,14 +6,15 @@ use crate::bearing::finite_bearing::{
     FilmSupport, FiniteFilmBearing, PAD_ARC_RANGE, SLENDERNESS_RANGE, slenderness,
 };
 use crate::bearing::reynolds::{Cavitation, ReynoldsMesh};
-use crate::bearing::tilting_pad::Pad;
+use crate::bearing::tilting_pad::{Pad, PadSupport};
 use crate::bearing::{BearingKind, PlainBearing, TableBearing, TiltingPadBearing};
 
 use crate::model::context::{Ctx, Names, default_name};
 use crate::model::error::FieldPath;
 use crate::model::file::{BearingEntry, MagneticPullEntry, RubEntry, SealEntry};
 use crate::model::limits::{
-    CLEARANCE, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, RADIUS, STIFFNESS, VISCOSITY,
+    CLEARANCE, DAMPING, DIAMETRAL_CLEARANCE, LENGTH, Limit, PAD_INERTIA, PAD_MASS, PIVOT_DAMPING,
+    PIVOT_STIFFNESS, RADIUS, STIFFNESS, VISCOSITY,
 };
 use crate::model::{
     ModelError, Pedestal, PlacedBearing, PlacedElement, RADIUS_TOLERANCE, TableFile,
@@ -421,6 +422,10 @@ pub(super) fn bearings(
                 pad_arc_deg,
                 pivot_offset,
                 preload,
+                pivot_stiffness,
+                pad_inertia,
+                pad_mass,
+                pivot_damping,
                 contact_stiffness,
                 contact_damping,
                 friction_coefficient,
@@ -508,6 +513,11 @@ pub(super) fn bearings(
                         .map(|d| Pad::new(d.to_radians(), arc.to_radians(), offset, preload))
                         .collect(),
                     contact: None,
+                    support: pad_support(
+                        ctx,
+                        &p,
+                        [pivot_stiffness, pad_inertia, pad_mass, pivot_damping],
+                    )?,
                 };
                 bearing.contact = contact_law(
                     ctx,
@@ -546,4 +556,44 @@ pub(super) fn bearings(
         (&mut names, &mut files),
     )?);
     Ok((bearings, files))
+}
+
+/// The pads' support from `pivot_stiffness` (N/m, > 0; none: rigid),
+/// `pad_inertia` (kg·m², ≥ 0), `pad_mass` (kg, ≥ 0) and `pivot_damping`
+/// (N·s/m, ≥ 0), the last two only on a pivot with a stiffness.
+fn pad_support(
+    ctx: &Ctx,
+    p: &FieldPath,
+    [pivot_stiffness, pad_inertia, pad_mass, pivot_damping]: [Option<f64>; 4],
+) -> Result<PadSupport, ModelError> {
+    let pivot_stiffness = pivot_stiffness
+        .map(|k| ctx.within(p.key("pivot_stiffness"), k, &PIVOT_STIFFNESS))
+        .transpose()?;
+    let pad_inertia = ctx.within(
+        p.key("pad_inertia"),
+        pad_inertia.unwrap_or(0.0),
+        &PAD_INERTIA,
+    )?;
+    let radial = |key: &str, value: Option<f64>, limit: &Limit| -> Result<f64, ModelError> {
+        let Some(v) = value else {
+            return Ok(0.0);
+        };
+        let v = ctx.within(p.key(key), v, limit)?;
+        if pivot_stiffness.is_none() {
+            return Err(ctx.err(
+                p.key(key),
+                v,
+                "needs pivot_stiffness: a pad on a rigid pivot has no radial motion",
+            ));
+        }
+        Ok(v)
+    };
+    let pad_mass = radial("pad_mass", pad_mass, &PAD_MASS)?;
+    let pivot_damping = radial("pivot_damping", pivot_damping, &PIVOT_DAMPING)?;
+    Ok(PadSupport {
+        pivot_stiffness,
+        pad_inertia,
+        pad_mass,
+        pivot_damping,
+    })
 }

@@ -100,7 +100,7 @@ pub fn describe_bearing(kind: &BearingKind) -> String {
                 short(b.length * 1e3),
                 short(b.clearance * 1e6),
                 short(b.viscosity)
-            )
+            ) + &pad_support(&b.support)
         }
         BearingKind::Rub(r) => format!(
             "rub element, radial gap {} µm, rotor radius {} mm, contact stiffness {} N/m, damping {} N·s/m, friction μ = {}",
@@ -332,11 +332,14 @@ pub fn operating_point(rpm: f64, points: &[BearingOperatingPoint]) -> String {
         for (k, pad) in p.film.iter().flat_map(|f| f.pads.iter()).enumerate() {
             writeln!(
                 s,
-                "  pad {} (pivot {}°): tilt {} µm ({} mrad), minimum film thickness {} µm",
+                "  pad {} (pivot {}°): tilt {} µm ({} mrad), {}minimum film thickness {} µm",
                 k + 1,
                 short(pad.pivot.to_degrees()),
                 short(pad.tilt * 1e6),
                 short(pad.tilt_angle * 1e3),
+                pad.radial
+                    .map(|xi| format!("radial displacement {} µm, ", short(xi * 1e6)))
+                    .unwrap_or_default(),
                 short(pad.min_film_thickness * 1e6)
             )
             .ok();
@@ -627,6 +630,32 @@ pub fn run_summary(model: &RotorModel, records: &[Outputs]) -> String {
         s.push('\n');
     }
     s
+}
+
+/// The pads' pivot stiffness and inertia for a bearing's description
+/// (nothing for rigid pivots and massless pads).
+fn pad_support(support: &crate::bearing::tilting_pad::PadSupport) -> String {
+    let mut parts = Vec::new();
+    if let Some(k) = support.pivot_stiffness {
+        parts.push(format!("pivot stiffness {} N/m", short(k)));
+    }
+    if support.pivot_damping != 0.0 {
+        parts.push(format!(
+            "pivot damping {} N·s/m",
+            short(support.pivot_damping)
+        ));
+    }
+    if support.pad_inertia != 0.0 {
+        parts.push(format!("pad inertia {} kg·m²", short(support.pad_inertia)));
+    }
+    if support.pad_mass != 0.0 {
+        parts.push(format!("pad mass {} kg", short(support.pad_mass)));
+    }
+    if parts.is_empty() {
+        String::new()
+    } else {
+        format!(", {}", parts.join(", "))
+    }
 }
 
 #[cfg(test)]
