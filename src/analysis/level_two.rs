@@ -31,18 +31,15 @@
 //! `N_mc` is the top of the operating range, as for the API unbalance cases
 //! ([`super::api_unbalance::ApiUnbalance::mcs`]).
 
-use nalgebra::Complex;
-
 use crate::rotor::Rotor;
 
 use super::linearize::linearized_from;
-use super::modal::{ModalOptions, ModalResult, Mode, OverdampedRoot, Whirl, modal_analysis};
+use super::modal::{ModalOptions, Mode, OverdampedRoot, Whirl, modal_analysis};
 use super::stability::{
-    StabilityError, Stage, add_cross_coupling, anticipated, api617_placement, with_cross_coupling,
+    StabilityError, Stage, anticipated, api617_placement, own_modes_with_cross_coupling,
+    with_cross_coupling,
 };
-use super::whirl_modes::{coefficients_at, own_frequency, reconcile_and, with_pads};
-
-type C64 = Complex<f64>;
+use super::whirl_modes::with_pads;
 
 /// Level II: the smallest acceptable log decrement of the judged modes.
 pub const LEVEL_II_MIN_LOG_DEC: f64 = 0.1;
@@ -124,38 +121,7 @@ fn forward_modes(
         .collect();
     let modes = match pads {
         None => analysis.modes,
-        Some(eq) => {
-            // Every mode at its own frequency, held against the exact
-            // eigenvalues with the pad coordinates ([`reconcile`]): with
-            // Q_A, the compressor's forward 84 Hz seed iterated to the 81 Hz
-            // backward mode beside it, and the forward one was lost.
-            let linear_at = |s: C64| -> Result<Rotor, StabilityError> {
-                with_cross_coupling(
-                    &rotor.with_bearing_coefficients(&coefficients_at(eq, s))?,
-                    sites,
-                    q,
-                )
-            };
-            let mut own: Vec<Mode> = analysis
-                .modes
-                .into_iter()
-                .map(|m| own_frequency(&linear_at, speed, m))
-                .collect::<Result<_, _>>()?;
-            own.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
-            // (`sites` hold a cross-coupling: `linear_at` added it above.)
-            let held = reconcile_and(
-                ModalResult {
-                    modes: own,
-                    overdamped: Vec::new(),
-                },
-                (rotor, eq, speed),
-                &linear_at,
-                &|r| {
-                    let _ = add_cross_coupling(r, sites, q);
-                },
-            )?;
-            held.modes
-        }
+        Some(eq) => own_modes_with_cross_coupling(rotor, (eq, speed), analysis.modes, (sites, q))?,
     };
     let mut out: Vec<Mode> = modes
         .into_iter()

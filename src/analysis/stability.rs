@@ -30,6 +30,7 @@
 
 use crate::fe::{DOF_X, DOF_Y};
 use crate::rotor::{AssemblyError, Rotor};
+use crate::solver::Equilibrium;
 
 type C64 = nalgebra::Complex<f64>;
 
@@ -376,6 +377,46 @@ pub fn add_cross_coupling(
     Ok(())
 }
 
+/// The synchronous modes `seeds` of `rotor` linearized at `eq` (spin
+/// `speed`, rad/s) with `[[0, q], [−q, 0]]` at `sites`, each iterated to its
+/// own frequency (the pads condensed at its eigenvalue, [`own_frequency`])
+/// and held against the exact eigenvalues with the pad coordinates and the
+/// cross-coupling ([`reconcile_and`]), by damped frequency: a forward seed
+/// can iterate to the backward mode beside it (the compressor's 84 Hz pair
+/// with Q_A), and the forward mode would be lost.
+pub(crate) fn own_modes_with_cross_coupling(
+    rotor: &Rotor,
+    (eq, speed): (&Equilibrium, f64),
+    seeds: Vec<Mode>,
+    (sites, q): (&[usize], f64),
+) -> Result<Vec<Mode>, StabilityError> {
+    let linear_at = |s: C64| -> Result<Rotor, StabilityError> {
+        with_cross_coupling(
+            &rotor.with_bearing_coefficients(&coefficients_at(eq, s))?,
+            sites,
+            q,
+        )
+    };
+    let mut own: Vec<Mode> = seeds
+        .into_iter()
+        .map(|m| own_frequency(&linear_at, speed, m))
+        .collect::<Result<_, _>>()?;
+    own.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
+    // (`linear_at` has refused `sites` a support fixes.)
+    let held = reconcile_and(
+        ModalResult {
+            modes: own,
+            overdamped: Vec::new(),
+        },
+        (rotor, eq, speed),
+        &linear_at,
+        &|r| {
+            let _ = add_cross_coupling(r, sites, q);
+        },
+    )?;
+    Ok(held.modes)
+}
+
 /// The forward mode of least logarithmic decrement among the first `count`
 /// modes of the linear rotor at `speed` (rad/s): the one cross-coupling turns
 /// unstable first. (On fluid films the lowest forward mode by frequency can be
@@ -557,36 +598,13 @@ pub fn stability_study(
         let Some(eq) = &pads else {
             return least_stable_forward(&coupled, speed, count);
         };
-        let linear_at = |s: C64| -> Result<Rotor, StabilityError> {
-            with_cross_coupling(
-                &rotor.with_bearing_coefficients(&coefficients_at(eq, s))?,
-                &sites,
-                q,
-            )
-        };
-        // Every mode at its own frequency, held against the exact
-        // eigenvalues with the pad coordinates and the cross-coupling
-        // ([`reconcile_and`]): a forward seed can iterate to the backward
-        // mode beside it (the compressor's 84 Hz pair with Q), and the
-        // forward mode would be lost.
-        let mut own: Vec<Mode> = modes(&coupled, speed, &options)?
-            .into_iter()
-            .map(|m| own_frequency(&linear_at, speed, m))
-            .collect::<Result<_, _>>()?;
-        own.sort_by(|a, b| a.damped_frequency.total_cmp(&b.damped_frequency));
-        let held = reconcile_and(
-            ModalResult {
-                modes: own,
-                overdamped: Vec::new(),
-            },
-            (rotor, eq, speed),
-            &linear_at,
-            &|r| {
-                let _ = add_cross_coupling(r, &sites, q);
-            },
+        let held = own_modes_with_cross_coupling(
+            rotor,
+            (eq, speed),
+            modes(&coupled, speed, &options)?,
+            (&sites, q),
         )?;
         let least = held
-            .modes
             .into_iter()
             .filter(|m| m.whirl == Whirl::Forward)
             .min_by(|a, b| a.log_decrement.total_cmp(&b.log_decrement));
