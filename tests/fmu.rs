@@ -73,6 +73,10 @@ fn resources(tag: &str, model: &Path) -> PathBuf {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("fmu_resources_{tag}"));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::copy(model, dir.join("model.toml")).unwrap();
+    // Its film tables (the compressor's), as `rotor fmu-stage` stages them:
+    // the debug library would otherwise build them at every instantiation.
+    let m = RotorModel::from_file(model).unwrap();
+    rotor_bearing::fmu::resources::write_film_tables(&m, &dir).unwrap();
     dir
 }
 

@@ -15,6 +15,31 @@ pub const FILM_TABLES: &str = "film_tables";
 /// The model file inside the resources folder.
 pub const MODEL_FILE: &str = "model.toml";
 
+/// Write the force tables of `model`'s finite films (plain films' and
+/// tilting pads') into `resources/`[`FILM_TABLES`], where an instance reads
+/// them (`rotor fmu-stage`); the error names the file.
+pub fn write_film_tables(model: &RotorModel, resources: &Path) -> Result<(), String> {
+    use crate::bearing::BearingKind;
+    use crate::bearing::film_table_cache::{CachedTable, encode, table_path};
+    fn put<T: CachedTable>(tables: &Path, table: &T) -> Result<(), String> {
+        std::fs::create_dir_all(tables).map_err(|e| format!("{}: {e}", tables.display()))?;
+        let path = table_path(tables, &table.key());
+        std::fs::write(&path, encode(table)).map_err(|e| format!("{}: {e}", path.display()))
+    }
+    let tables = resources.join(FILM_TABLES);
+    for b in &model.bearings {
+        if let BearingKind::FiniteFilm(f) = &b.kind {
+            if let Some(t) = &f.table {
+                put(&tables, &*t.table)?;
+            }
+            for t in &f.pad_tables {
+                put(&tables, &*t.table)?;
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The folder a `file` URI names: `file:///path`, `file:/path` and
 /// `file://localhost/path`, percent-decoded (RFC 8089). The scheme and the host
 /// are case-insensitive (`FILE:///path`, RFC 3986 §3.1, §3.2.2); a `?query` or

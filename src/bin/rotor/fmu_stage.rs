@@ -48,26 +48,7 @@ pub fn stage(model: &Path, dir: &Path, fmi: u8) -> Result<(), String> {
     }
     // Force tables of finite films (plain films' and tilting pads') travel
     // in resources/film_tables.
-    let tables = dir
-        .join("resources")
-        .join(rotor_bearing::fmu::resources::FILM_TABLES);
-    for b in &m.bearings {
-        if let rotor_bearing::bearing::BearingKind::FiniteFilm(f) = &b.kind {
-            use rotor_bearing::bearing::film_table_cache::{CachedTable, encode, table_path};
-            fn put<T: CachedTable>(tables: &Path, table: &T) -> Result<(), String> {
-                std::fs::create_dir_all(tables)
-                    .map_err(|e| format!("{}: {e}", tables.display()))?;
-                let path = table_path(tables, &table.key());
-                std::fs::write(&path, encode(table)).map_err(|e| format!("{}: {e}", path.display()))
-            }
-            if let Some(t) = &f.table {
-                put(&tables, &*t.table)?;
-            }
-            for t in &f.pad_tables {
-                put(&tables, &*t.table)?;
-            }
-        }
-    }
+    rotor_bearing::fmu::resources::write_film_tables(&m, &dir.join("resources"))?;
     write_file(
         &dir.join("documentation/index.html"),
         &rotor_bearing::fmi2::docs::index_html(&m),
