@@ -73,6 +73,12 @@ SHAFT_TORQUE_TOLERANCE = 1e-8
 # differ by 2e-11).
 ROUNDOFF = 1e-14
 ROUNDOFF_FACTOR = 3.0
+# Run-ups that amplify round-off themselves, judged as the oil whirl is: the
+# compressor from rest to 11 500 rpm in 0.5 s (23 000 rpm/s) drags its ten
+# finite-film pads off their contacts within milliseconds, and its linux64
+# run with every input scaled by 1 + ROUNDOFF moves by 0.80 of an output's
+# largest value (its binaries differ by 0.11).
+CHAOTIC_RUN_UPS = {"compressor"}
 # The unit on brackets' run-up passes its nearly unloaded pads through the
 # slow-contraction rule of docs/solver.md (solver/slow_pads.rs), whose choice
 # to extrapolate a pad follows the last digits of its contraction ratios: the
@@ -251,7 +257,7 @@ def main(root):
         for stem in stems:
             model = tomllib.load(open(os.path.join(root, "models", stem + ".toml"), "rb"))
             rpm = float(model.get("speed_rpm", 0.0))
-            runs.append((stem, f"{stem}: run-up to {rpm:g} rpm", rpm, {}, False))
+            runs.append((stem, f"{stem}: run-up to {rpm:g} rpm", rpm, {}, stem in CHAOTIC_RUN_UPS))
             if stem == "hydro_unit":
                 runs.append((stem, f"{stem}: reduced rotor (10 modes), run-up to {rpm:g} rpm", rpm,
                              {"solver.reduced_modes": 10}, False))

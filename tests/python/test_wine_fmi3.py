@@ -105,7 +105,7 @@ def main(root):
         for stem in stems:
             model = tomllib.load(open(os.path.join(root, "models", stem + ".toml"), "rb"))
             rpm = float(model.get("speed_rpm", 0.0))
-            runs.append((stem, f"{stem}: run-up to {rpm:g} rpm", rpm, {}, False))
+            runs.append((stem, f"{stem}: run-up to {rpm:g} rpm", rpm, {}, stem in w.CHAOTIC_RUN_UPS))
             if stem == "hydro_unit":
                 runs.append((stem, f"{stem}: reduced rotor (10 modes), run-up to {rpm:g} rpm", rpm,
                              {"solver.reduced_modes": 10}, False))
