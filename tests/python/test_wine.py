@@ -356,7 +356,12 @@ def main(root):
             d = copies[stem]
             md = read_model_description(os.path.join(d, "modelDescription.xml"))
             model = tomllib.load(open(os.path.join(root, "models", stem + ".toml"), "rb"))
-            w0 = float(model.get("speed_rpm", 0.0)) * np.pi / 30.0
+            # The importer ramps the speed by 20 %: within the model's trip
+            # speed (the compressor's is 105 % of its speed_rpm).
+            rpm = float(model.get("speed_rpm", 0.0))
+            if "max_speed_rpm" in model:
+                rpm = min(rpm, float(model["max_speed_rpm"]) / 1.2)
+            w0 = rpm * np.pi / 30.0
             # The driven input: the speed, or a torque-driven shaft's first torque.
             drive = [v for v in md.modelVariables if v.causality == "input" and v.name.startswith("torques.")]
             if drive:
