@@ -76,7 +76,7 @@ ROUNDOFF_FACTOR = 3.0
 # Run-ups that amplify round-off themselves, judged as the oil whirl is: the
 # compressor from rest to 11 500 rpm in 0.5 s (23 000 rpm/s) drags its ten
 # finite-film pads off their contacts within milliseconds, and its linux64
-# run with every input scaled by 1 + ROUNDOFF moves by 0.80 of an output's
+# run with every input scaled by 1 + ROUNDOFF moves by 0.115 of an output's
 # largest value (its binaries differ by 0.11).
 CHAOTIC_RUN_UPS = {"compressor"}
 # The unit on brackets' run-up passes its nearly unloaded pads through the
