@@ -189,8 +189,9 @@ fn random_call_sequences_on_every_shipped_fmu() {
     for fmu in shipped_fmus() {
         let dir = unpack(&fmu);
         // An FMU that carries finite-film force tables (the compressor)
-        // prepares them at every instantiation, 0.3 s for its two (the
-        // sequences take milliseconds otherwise): a tenth of the sequences,
+        // prepares them at every instantiation (a library loaded afresh
+        // keeps none): 400 times another FMU's sequence, nearly all of it in
+        // the tables' preparation (a profile): a tenth of the sequences,
         // at least 100. Its calls and states are every FMU's; what is its
         // own, the tables in its resources, each sequence reads.
         let sequences = if fmu.ends_with("torque_ports.fmu") {
