@@ -151,7 +151,7 @@ mod tests {
 
     /// The three-guide-bearing unit started from its settled state with the
     /// unbalance at once, accuracy-controlled steps, communication every
-    /// 5 ms for 0.3 s: its steps come back to the same sizes (44 of the 108
+    /// 5 ms for 0.3 s: its steps come back to the same sizes (21 of the 53
     /// factorizations recalled, measured), and the factorizations recalled
     /// for them give the run that forms every one anew, bit for bit.
     #[test]
@@ -184,7 +184,7 @@ mod tests {
         let (formed, without) = run(Some(0));
         assert_eq!(with.steps, without.steps);
         assert_eq!(without.factors_recalled, 0);
-        assert!(with.factors_recalled >= 30, "{with:?}");
+        assert!(with.factors_recalled >= 15, "{with:?}");
         assert_eq!(
             with.factorizations + with.factors_recalled,
             without.factorizations
