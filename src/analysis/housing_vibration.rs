@@ -208,7 +208,7 @@ pub fn report_spans(rotor: &Rotor, speed: f64) -> (f64, f64) {
 }
 
 /// The frequency (rad/s) of each harmonic force of the model at spin `speed`.
-fn forcing_frequencies(rotor: &Rotor, speed: f64) -> impl Iterator<Item = f64> + '_ {
+pub fn forcing_frequencies(rotor: &Rotor, speed: f64) -> impl Iterator<Item = f64> + '_ {
     rotor.model.forces.iter().filter_map(move |f| match f.kind {
         crate::model::ForceKind::Harmonic { frequency, .. } => Some(match frequency {
             crate::model::HarmonicFrequency::Ratio(r) => (r * speed).abs(),

@@ -28,6 +28,7 @@ pub mod parallel;
 mod polish;
 pub mod ring_down;
 pub mod shaft_loads;
+pub mod shaft_orbits;
 pub mod shapes;
 pub mod spectrum;
 pub mod speed_range;

@@ -28,6 +28,7 @@ pub mod csv;
 pub mod html;
 pub mod hydro;
 pub mod level_two;
+pub mod orbits;
 pub mod review;
 pub mod series;
 pub mod stamp;

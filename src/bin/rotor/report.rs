@@ -17,6 +17,7 @@ use rotor_bearing::analysis::level_two::level_two;
 use rotor_bearing::analysis::modal::ModalOptions;
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::analysis::shaft_loads::coupling_loads;
+use rotor_bearing::analysis::shaft_orbits;
 use rotor_bearing::analysis::speed_range::default_top_speed;
 use rotor_bearing::analysis::stability::{
     StabilityRequest, StageData, level_one_stages, mid_span_node, site_label, stability_study,
@@ -32,8 +33,8 @@ use rotor_bearing::analysis::unbalance::{
 use rotor_bearing::analysis::whirl_modes::modal_analysis_own;
 use rotor_bearing::model::DEFAULT_MODEL_TOML;
 use rotor_bearing::plot::{
-    PlotError, RAD_S_TO_RPM, campbell_png, mode_shapes_png, rotor_png, stability_png, ucs_png,
-    unbalance_png,
+    OrbitPanel, PlotError, RAD_S_TO_RPM, campbell_png, mode_shapes_png, orbits_png, rotor_png,
+    stability_png, ucs_png, unbalance_png,
 };
 use rotor_bearing::report::api as api_report;
 use rotor_bearing::report::cases as cases_report;
@@ -402,6 +403,13 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             blocks,
         ));
     }
+    if model.machine.is_hydro() {
+        sections.push(section(
+            "shaft-orbits",
+            "Shaft orbits: operating speed, field on, runaway",
+            orbit_section(rotor, speed, &dir),
+        ));
+    }
 
     // A line set off its axis or a train: its alignment.
     if model.bearings.iter().any(|b| b.is_offset()) || !model.couplings.is_empty() {
@@ -535,5 +543,35 @@ fn housing_study<'a>(
     HousingStudy {
         group: model.housing_group,
         vibration: vibration.as_deref().map_err(Clone::clone),
+    }
+}
+
+/// A hydro unit's shaft orbits in its cases: the table, and one figure of
+/// each case's orbits in their clearance circles.
+fn orbit_section(rotor: &Rotor, speed: f64, dir: &Path) -> Vec<Block> {
+    let cases = shaft_orbits::hydro_cases(rotor, speed);
+    match shaft_orbits::report_orbits(rotor, &cases) {
+        Ok(orbits) => {
+            let mut blocks = rotor_bearing::report::orbits::orbit_blocks(&orbits);
+            for (k, c) in orbits.iter().enumerate() {
+                let panels: Vec<OrbitPanel> = c
+                    .bearings
+                    .iter()
+                    .map(|b| OrbitPanel {
+                        name: format!("bearing {}", b.name),
+                        x: b.x.clone(),
+                        y: b.y.clone(),
+                        clearance: b.clearance,
+                    })
+                    .collect();
+                let caption = format!("shaft orbits relative to the housings: {}", c.case.label);
+                let png = figure(dir, &format!("orbits_{k}.png"), |p| {
+                    orbits_png(p, &caption, &panels, &c.spin_angle, c.case.speed)
+                });
+                blocks.push(figure_block(png, &caption));
+            }
+            blocks
+        }
+        Err(e) => vec![Block::Failure(format!("shaft orbits: {e}"))],
     }
 }

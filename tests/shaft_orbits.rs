@@ -1,0 +1,166 @@
+//! Shaft orbits of the design review (issue 48, `analysis::shaft_orbits`):
+//! the transient's shaft displacement relative to the bearing housing
+//! against the steady unbalance response of linear theory, and the cases a
+//! hydro unit is shown in.
+
+use rotor_bearing::analysis::linear::{node_xy, unbalance_response};
+use rotor_bearing::analysis::shaft_orbits::{OrbitCase, hydro_cases, shaft_orbits};
+use rotor_bearing::model::RotorModel;
+use rotor_bearing::rotor::Rotor;
+
+const RPM: f64 = std::f64::consts::PI / 30.0;
+const SETTLE: f64 = 1.0;
+
+/// A rigid shaft of one element with two disks, its end rotations held, on
+/// two damped linear bearings standing on one damped pedestal (the frame),
+/// with an unbalance at the left end: a linear system whose steady
+/// response is the frequency-domain unbalance response.
+fn rotor_on_frame() -> Rotor {
+    let text = r#"
+name = "rotor_on_frame"
+speed_rpm = 3000
+max_speed_rpm = 3600
+[[materials]]
+name = "steel"
+youngs_modulus = 211e9
+poisson_ratio = 0.3
+density = 7810.0
+[[shaft]]
+length = 0.2
+outer_diameter = 0.1
+material = "steel"
+elements = 1
+[[disks]]
+node = 1
+mass = 30.0
+polar_inertia = 0.4
+diametral_inertia = 0.25
+[[disks]]
+node = 2
+mass = 30.0
+polar_inertia = 0.4
+diametral_inertia = 0.25
+[[bearings]]
+name = "left"
+type = "linear"
+node = 1
+kxx = 1e7
+kyy = 1.5e7
+cxx = 2e4
+cyy = 2e4
+pedestal = "frame"
+[[bearings]]
+name = "right"
+type = "linear"
+node = 2
+kxx = 1e7
+kyy = 1.5e7
+cxx = 2e4
+cyy = 2e4
+pedestal = "frame"
+[[pedestals]]
+name = "frame"
+mass = 80.0
+kxx = 3e7
+kyy = 5e7
+cxx = 3e4
+cyy = 3e4
+[[supports]]
+node = 1
+fix = ["rx", "ry"]
+[[supports]]
+node = 2
+fix = ["rx", "ry"]
+[[unbalance]]
+name = "left"
+node = 1
+magnitude = 1e-4
+phase_deg = 0.0
+"#;
+    Rotor::new(RotorModel::from_toml(text, "frame.toml").unwrap()).unwrap()
+}
+
+/// The transient's steady orbit of each journal relative to the frame has
+/// the peak-to-peak displacements of linear theory, `2 |X_j − X_h|` in `x`
+/// and in `y` (`X` the complex unbalance response of the journal node and
+/// of the pedestal), and `S_max` the orbit's major semi-axis: within 5e-4
+/// (128 samples a revolution, so the peak sampled within `1 − cos(π/128)`
+/// = 3e-4 of itself; the average-acceleration rule's period error at the
+/// 0.08 ms steps, 5e-5; what is left of the start after 1 s, 50
+/// revolutions of the damped modes; measured 9e-6 to 8e-5). The orbits with the anisotropic frame are ellipses,
+/// so `x` and `y` differ and `S_max` is the major semi-axis, not either.
+#[test]
+fn the_transients_orbit_is_the_linear_unbalance_response_relative_to_the_housing() {
+    let rotor = rotor_on_frame();
+    let speed = 3000.0 * RPM;
+    let case = OrbitCase {
+        label: "operating".into(),
+        speed,
+        excitation: None,
+    };
+    let orbits = shaft_orbits(&rotor, &case, SETTLE, 0.1).unwrap();
+    let response = unbalance_response(&rotor, speed).unwrap();
+    let housing = (response[response.len() - 2], response[response.len() - 1]);
+    assert_eq!(orbits.bearings.len(), 2);
+    for (orbit, node) in orbits.bearings.iter().zip([0, 1]) {
+        let (x, y) = node_xy(&response, node);
+        let (rx, ry) = (x - housing.0, y - housing.1);
+        let want = [2.0 * rx.norm(), 2.0 * ry.norm()];
+        for i in 0..2 {
+            let error = (orbit.peak_to_peak[i] / want[i] - 1.0).abs();
+            assert!(
+                error <= 5e-4,
+                "{} {i}: {} against {} ({error:e})",
+                orbit.name,
+                orbit.peak_to_peak[i],
+                want[i]
+            );
+        }
+        // The ellipse's major semi-axis: the largest |Re((rx, ry) e^{iθ})|.
+        let major = (0..3600)
+            .map(|k| {
+                let e =
+                    nalgebra::Complex::from_polar(1.0, k as f64 * std::f64::consts::TAU / 3600.0);
+                (rx * e).re.hypot((ry * e).re)
+            })
+            .fold(0.0, f64::max);
+        let error = (orbit.s_max / major - 1.0).abs();
+        assert!(
+            error <= 5e-4,
+            "{}: S_max {} against {major} ({error:e})",
+            orbit.name,
+            orbit.s_max
+        );
+        assert!(
+            (orbit.peak_to_peak[0] / orbit.peak_to_peak[1] - 1.0).abs() > 0.05,
+            "{:?}",
+            orbit.peak_to_peak
+        );
+    }
+}
+
+/// A hydro unit's cases: the operating speed as modelled, with the field on
+/// where its pull's own excitation is not 1, and the runaway speed with the
+/// field off; a unit without a pull has no field case, and a model whose top
+/// speed is its operating speed no runaway case.
+#[test]
+fn a_hydro_unit_is_shown_at_its_operating_speed_field_on_and_at_runaway() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/hydro_unit_brackets.toml");
+    let model = RotorModel::from_file(&path).unwrap();
+    let rotor = Rotor::new(model.clone()).unwrap();
+    let cases = hydro_cases(&rotor, model.nominal_speed);
+    let speeds: Vec<(f64, Option<f64>)> = cases
+        .iter()
+        .map(|c| (c.speed / RPM, c.excitation))
+        .collect();
+    assert_eq!(cases.len(), 3, "{cases:?}");
+    assert!((speeds[0].0 - 300.0).abs() < 1e-9 && speeds[0].1.is_none());
+    assert!((speeds[1].0 - 300.0).abs() < 1e-9 && speeds[1].1 == Some(1.0));
+    assert!((speeds[2].0 - 600.0).abs() < 1e-9 && speeds[2].1 == Some(0.0));
+    let plain = rotor_on_frame();
+    let cases = hydro_cases(&plain, 3000.0 * RPM);
+    assert_eq!(cases.len(), 2, "no pull: no field case; {cases:?}");
+    assert_eq!(cases[1].excitation, None);
+    assert!((cases[1].speed / RPM - 3600.0).abs() < 1e-9);
+}
