@@ -106,14 +106,12 @@ fn the_transients_orbit_is_the_linear_unbalance_response_relative_to_the_housing
         let (x, y) = node_xy(&response, node);
         let (rx, ry) = (x - housing.0, y - housing.1);
         let want = [2.0 * rx.norm(), 2.0 * ry.norm()];
-        for i in 0..2 {
-            let error = (orbit.peak_to_peak[i] / want[i] - 1.0).abs();
+        for (i, (got, want)) in orbit.peak_to_peak.iter().zip(want).enumerate() {
+            let error = (got / want - 1.0).abs();
             assert!(
                 error <= 5e-4,
-                "{} {i}: {} against {} ({error:e})",
-                orbit.name,
-                orbit.peak_to_peak[i],
-                want[i]
+                "{} {i}: {got} against {want} ({error:e})",
+                orbit.name
             );
         }
         // The ellipse's major semi-axis: the largest |Re((rx, ry) e^{iθ})|.
