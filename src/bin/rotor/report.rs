@@ -39,6 +39,7 @@ use rotor_bearing::report::api as api_report;
 use rotor_bearing::report::cases as cases_report;
 use rotor_bearing::report::html::{Block, Section, Verdict, page};
 use rotor_bearing::report::hydro::{self, HousingStudy};
+use rotor_bearing::report::hydro_torsion;
 use rotor_bearing::report::level_two::{level_two_blocks, level_two_summary_rows};
 use rotor_bearing::report::review::{self, SummaryInputs};
 use rotor_bearing::report::stamp::{now_utc, sha256_hex, software_version};
@@ -226,6 +227,12 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         housing_vibration::housing_vibration(rotor, speed, settle, record).map_err(|e| err(&e))
     });
 
+    // A hydro unit's torsional modes against the running and grid frequencies.
+    let torsion = model
+        .machine
+        .is_hydro()
+        .then(|| hydro_torsion::torsion_study(model, speed));
+
     // An API machine's unbalance cases, on the unbalance study's speeds.
     let api = model.machine.is_api().then(|| {
         let max = match &unbalance {
@@ -277,6 +284,9 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             .map_or(summary.rows.len(), |k| k + 1);
         let rows = level_two_summary_rows(&l.as_ref().map_err(Clone::clone));
         summary.rows.splice(at..at, rows);
+    }
+    if let Some(t) = &torsion {
+        summary.rows.extend(hydro_torsion::torsion_rows(t));
     }
     if let Some(c) = &cases {
         summary.rows.extend(cases_report::summary_rows(
@@ -447,6 +457,13 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         Err(e) => vec![Block::Failure(format!("modes: {e}"))],
     };
     sections.push(section("modes", "Modes and mode shapes", blocks));
+    if let Some(t) = &torsion {
+        let blocks = match t {
+            Ok(study) => hydro_torsion::torsion_blocks(study),
+            Err(e) => vec![Block::Failure(format!("torsional modes: {e}"))],
+        };
+        sections.push(section("torsional-modes", "Torsional modes", blocks));
+    }
 
     let blocks = match &stability {
         Ok(s) => {
