@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use rotor_bearing::analysis::alignment::alignment;
 use rotor_bearing::analysis::api_unbalance::{ApiRequest, api_unbalance};
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
+use rotor_bearing::analysis::element_operating_point::thrust_operating_points;
 use rotor_bearing::analysis::housing_vibration;
 use rotor_bearing::analysis::level_two::level_two;
 use rotor_bearing::analysis::modal::ModalOptions;
@@ -39,11 +40,11 @@ use rotor_bearing::report::api as api_report;
 use rotor_bearing::report::cases as cases_report;
 use rotor_bearing::report::html::{Block, Section, Verdict, page};
 use rotor_bearing::report::hydro::{self, HousingStudy};
-use rotor_bearing::report::hydro_torsion;
 use rotor_bearing::report::level_two::{level_two_blocks, level_two_summary_rows};
 use rotor_bearing::report::review::{self, SummaryInputs};
 use rotor_bearing::report::stamp::{now_utc, sha256_hex, software_version};
 use rotor_bearing::report::text::short;
+use rotor_bearing::report::{hydro_loads, hydro_torsion};
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::SolverOptions;
 use rotor_bearing::units::Amplitude;
@@ -401,6 +402,18 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         &format!("Bearings at {} rpm", short(rpm)),
         blocks,
     ));
+    if model.machine.is_hydro() {
+        let thrusts = thrust_operating_points(rotor, speed);
+        let losses = points
+            .as_deref()
+            .map(|p| hydro_loads::power_losses(model, p, &thrusts))
+            .map_err(Clone::clone);
+        sections.push(section(
+            "thrust-bearings",
+            &format!("Thrust bearings and power losses at {} rpm", short(rpm)),
+            hydro_loads::thrust_blocks(model, speed, &thrusts, &losses),
+        ));
+    }
     if let Some(h) = &housing {
         let blocks = match h {
             Ok(_) => hydro::housing_blocks(&housing_study(model, h)),
