@@ -7,15 +7,20 @@
 //!   `T = c π μ ω (R_o⁴ − R_i⁴)/(2h)` (the boundary friction has faded by
 //!   `exp(−ω/ω_l) = e⁻⁶⁰`), its loss `T ω`; the unloaded guide bearings run
 //!   centred, each losing Petroff's `2π μ ω R³ L/C · ω`; the report's total
-//!   is their sum.
+//!   is their sum;
+//! - a horizontal unit whose two bearings stand on brackets (pedestal
+//!   springs in series with the bearings): statically determinate, each
+//!   bearing's reaction is the beam's `R_b = g (m_s L/2 + m_d a)/L`,
+//!   `R_a = g (m_s + m_d) − R_b`; each bracket passes on that reaction plus
+//!   its own weight, `F = R + m_p g`, and deflects `F/k`.
 
 use std::f64::consts::PI;
 use std::process::Command;
 
 use rotor_bearing::analysis::element_operating_point::thrust_operating_points;
-use rotor_bearing::analysis::operating_point::operating_point;
+use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::model::RotorModel;
-use rotor_bearing::report::hydro_loads::power_losses;
+use rotor_bearing::report::hydro_loads::{bracket_loads, power_losses};
 use rotor_bearing::rotor::Rotor;
 
 const RPM: f64 = 300.0;
@@ -180,4 +185,83 @@ fn thrust_and_guide_bearing_losses_are_petroffs() {
     assert_eq!(rows[2][0], "thrust bearing thrust");
     assert_eq!(rows[3][0], "total (guide and thrust bearings)");
     assert!(close(num(&rows[3][2]), total, 1e-5), "{:?}", rows[3]);
+}
+
+/// The horizontal unit: a 2 m × 100 mm shaft, a 100 kg disk at 0.5 m, rigid
+/// bearings at the ends on brackets `a` (30 kg, 2e7 N/m) and `b` (50 kg,
+/// 5e7 N/m).
+const BRACKETS: [(&str, f64, f64); 2] = [("a", 30.0, 2.0e7), ("b", 50.0, 5.0e7)];
+
+fn horizontal_unit() -> String {
+    let mut s = format!(
+        "name = \"horizontal_unit\"\nmachine = \"hydro_generator\"\nspeed_rpm = {RPM}\nmax_speed_rpm = 600\n\
+         gravity = [0.0, -{G}, 0.0]\n\
+         [[materials]]\nname = \"steel\"\nyoungs_modulus = 206e9\npoisson_ratio = 0.3\ndensity = {RHO}\n\
+         [[shaft]]\nlength = 2.0\nouter_diameter = 0.1\nmaterial = \"steel\"\nelements = 4\n\
+         [[disks]]\nname = \"disk\"\nnode = 2\nmass = 100.0\npolar_inertia = 2.0\ndiametral_inertia = 1.0\n\
+         [[bearings]]\nname = \"bearing_a\"\ntype = \"linear\"\nnode = 1\nkxx = 1e8\nkyy = 1e8\ncxx = 1e4\ncyy = 1e4\npedestal = \"a\"\n\
+         [[bearings]]\nname = \"bearing_b\"\ntype = \"linear\"\nnode = 5\nkxx = 1e8\nkyy = 1e8\ncxx = 1e4\ncyy = 1e4\npedestal = \"b\"\n"
+    );
+    for (name, mass, k) in BRACKETS {
+        s += &format!(
+            "[[pedestals]]\nname = \"{name}\"\nmass = {mass}\nkxx = {k}\nkyy = {k}\ncxx = 1e3\ncyy = 1e3\n"
+        );
+    }
+    s
+}
+
+#[test]
+fn each_bracket_passes_on_its_bearing_reaction_and_weight_and_deflects_f_over_k() {
+    let m_s = RHO * PI * 0.1 * 0.1 / 4.0 * 2.0;
+    let r_b = G * (m_s * 1.0 + 100.0 * 0.5) / 2.0;
+    let r_a = G * (m_s + 100.0) - r_b;
+    let text = horizontal_unit();
+    let rotor = Rotor::new(RotorModel::from_toml(&text, "horizontal_unit.toml").unwrap()).unwrap();
+    let omega = RPM * PI / 30.0;
+    let guides = operating_point(&rotor, omega).unwrap();
+    let pedestals = pedestal_operating_points(&rotor, omega).unwrap();
+    let brackets = bracket_loads(&rotor.model, &guides, &pedestals);
+    assert_eq!(brackets.len(), 2);
+    let page = report_page(&text, "horizontal_unit");
+    let rows = table_rows(&page, "brackets");
+    assert_eq!(rows.len(), 2, "{rows:?}");
+    for ((b, (name, mass, k)), (r, row)) in brackets
+        .iter()
+        .zip(BRACKETS)
+        .zip([r_a, r_b].into_iter().zip(&rows))
+    {
+        assert_eq!(b.name, name);
+        assert_eq!(b.carries, [format!("bearing_{name}")]);
+        // The rotor pushes the bracket down by the bearing's reaction.
+        assert!(b.reaction[0].abs() < 1e-9 * r, "{b:?}");
+        assert!(
+            close(-b.reaction[1], r, 1e-9),
+            "{name}: {} against {r}",
+            -b.reaction[1]
+        );
+        let f = r + mass * G;
+        assert!(
+            close(-b.load[1], f, 1e-9),
+            "{name}: load {} against {f}",
+            -b.load[1]
+        );
+        assert!(
+            close(-b.deflection[1], f / k, 1e-9),
+            "{name}: {} against {}",
+            -b.deflection[1],
+            f / k
+        );
+        eprintln!(
+            "bracket {name}: reaction {r:.6} N, load {f:.6} N, deflection {:.6} µm",
+            f / k * 1e6
+        );
+        // The report's row: "magnitude (x, y)".
+        let first = |s: &str| s.split_whitespace().next().unwrap().parse::<f64>().unwrap();
+        assert_eq!(row[0], name);
+        assert_eq!(row[1], format!("bearing_{name}"));
+        assert!(close(first(&row[2]), r, 1e-5), "{row:?}");
+        assert!(close(first(&row[3]), mass * G, 1e-5), "{row:?}");
+        assert!(close(first(&row[4]), f, 1e-5), "{row:?}");
+        assert!(close(first(&row[6]), f / k * 1e6, 1e-5), "{row:?}");
+    }
 }

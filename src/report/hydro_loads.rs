@@ -170,3 +170,111 @@ pub fn thrust_blocks(
     }
     blocks
 }
+
+/// A bracket (pedestal) at the operating point: the load the rotor puts on
+/// it through its bearings, its own weight, the load it passes on to its
+/// support and its deflection.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BracketLoad {
+    /// Pedestal name.
+    pub name: String,
+    /// The bearings it carries.
+    pub carries: Vec<String>,
+    /// The force of the rotor on it through those bearings `(Fx, Fy)` (N):
+    /// the bearings' reactions, reversed.
+    pub reaction: [f64; 2],
+    /// Its own weight `m g` in the lateral plane `(Fx, Fy)` (N).
+    pub weight: [f64; 2],
+    /// The load on its support `K (q − q_on)` (N): statically the reaction,
+    /// its weight and whatever else stands on it (seals, other pedestals).
+    pub load: [f64; 2],
+    /// Its stiffness (N/m).
+    pub stiffness: [[f64; 2]; 2],
+    /// Its static deflection `(x, y)` (m), absolute.
+    pub deflection: [f64; 2],
+}
+
+/// Every pedestal of `model` with the bearings' operating points `guides`
+/// and the pedestals' `pedestals`.
+pub fn bracket_loads(
+    model: &RotorModel,
+    guides: &[BearingOperatingPoint],
+    pedestals: &[crate::analysis::operating_point::PedestalOperatingPoint],
+) -> Vec<BracketLoad> {
+    pedestals
+        .iter()
+        .map(|p| {
+            let pedestal = &model.pedestals[p.pedestal];
+            let carried: Vec<&BearingOperatingPoint> = guides
+                .iter()
+                .filter(|g| g.housing.as_ref().is_some_and(|h| h.pedestal == p.pedestal))
+                .collect();
+            let reaction = carried
+                .iter()
+                .fold([0.0; 2], |a, g| [a[0] - g.force[0], a[1] - g.force[1]]);
+            BracketLoad {
+                name: p.name.clone(),
+                carries: carried.iter().map(|g| g.name.clone()).collect(),
+                reaction,
+                weight: [
+                    pedestal.mass * model.gravity[0],
+                    pedestal.mass * model.gravity[1],
+                ],
+                load: p.load,
+                stiffness: pedestal.stiffness,
+                deflection: p.deflection,
+            }
+        })
+        .collect()
+}
+
+/// The brackets' table.
+pub fn bracket_blocks(rpm: f64, brackets: &[BracketLoad]) -> Vec<Block> {
+    let pair = |v: [f64; 2], scale: f64| {
+        format!(
+            "{} ({}, {})",
+            short(v[0].hypot(v[1]) * scale),
+            short(v[0] * scale),
+            short(v[1] * scale)
+        )
+    };
+    let rows = brackets
+        .iter()
+        .map(|b| {
+            vec![
+                Cell::from(b.name.clone()),
+                if b.carries.is_empty() {
+                    "—".to_string()
+                } else {
+                    b.carries.join(", ")
+                }
+                .into(),
+                pair(b.reaction, 1.0).into(),
+                pair(b.weight, 1.0).into(),
+                pair(b.load, 1.0).into(),
+                super::text::coefficient_matrix(&b.stiffness).into(),
+                pair(b.deflection, 1e6).into(),
+            ]
+        })
+        .collect();
+    vec![Block::Table(Table {
+        id: "brackets".into(),
+        caption: format!(
+            "brackets (pedestals) at the static equilibrium at {} rpm: the rotor's force on each through its bearings, its weight, the load it passes on to its support K (q − q_on) and its deflection (magnitude (x, y))",
+            short(rpm)
+        ),
+        headers: [
+            "bracket",
+            "carries",
+            "bearing reaction (N)",
+            "own weight (N)",
+            "load on its support (N)",
+            "stiffness K (N/m)",
+            "deflection (µm)",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect(),
+        rows,
+    })]
+}

@@ -391,9 +391,11 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         Ok(p) => review::operating_blocks(p),
         Err(e) => vec![Block::Failure(format!("operating point: {e}"))],
     };
-    if !model.pedestals.is_empty() {
-        blocks.push(match pedestal_operating_points(rotor, speed) {
-            Ok(p) => Block::Text(rotor_bearing::report::text::pedestals(rpm, &p)),
+    let pedestal_points =
+        (!model.pedestals.is_empty()).then(|| pedestal_operating_points(rotor, speed));
+    if let Some(p) = &pedestal_points {
+        blocks.push(match p {
+            Ok(p) => Block::Text(rotor_bearing::report::text::pedestals(rpm, p)),
             Err(e) => Block::Failure(format!("pedestals: {e}")),
         });
     }
@@ -413,6 +415,20 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             &format!("Thrust bearings and power losses at {} rpm", short(rpm)),
             hydro_loads::thrust_blocks(model, speed, &thrusts, &losses),
         ));
+        if let Some(p) = &pedestal_points {
+            let blocks = match (&points, p) {
+                (Ok(guides), Ok(p)) => {
+                    hydro_loads::bracket_blocks(rpm, &hydro_loads::bracket_loads(model, guides, p))
+                }
+                (Err(e), _) => vec![Block::Failure(format!("brackets: {e}"))],
+                (_, Err(e)) => vec![Block::Failure(format!("brackets: {e}"))],
+            };
+            sections.push(section(
+                "brackets",
+                &format!("Brackets at {} rpm", short(rpm)),
+                blocks,
+            ));
+        }
     }
     if let Some(h) = &housing {
         let blocks = match h {
