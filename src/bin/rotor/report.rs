@@ -528,7 +528,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
                 .as_ref()
                 .map(|(_, _, c)| c.sites.iter().map(|&n| site_label(rotor, n)).collect())
                 .unwrap_or_default();
-            blocks.extend(level_two_blocks(l, &sites));
+            blocks.extend(level_two_blocks(l, &sites, model));
         }
         Some(Err(e)) => blocks.push(Block::Failure(format!("API 617 Level II: {e}"))),
         None => {}
