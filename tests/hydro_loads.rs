@@ -264,4 +264,19 @@ fn each_bracket_passes_on_its_bearing_reaction_and_weight_and_deflects_f_over_k(
         assert!(close(first(&row[4]), f, 1e-5), "{row:?}");
         assert!(close(first(&row[6]), f / k * 1e6, 1e-5), "{row:?}");
     }
+    assert!(!page.contains("Every bracket load is zero"));
+    // Stood upright (gravity along the shaft) nothing loads the brackets
+    // statically: every row is zero and the page says why.
+    let upright = text.replace(
+        &format!("gravity = [0.0, -{G}, 0.0]"),
+        &format!("gravity = [0.0, 0.0, {G}]"),
+    );
+    let page = report_page(&upright, "upright_unit");
+    assert!(page.contains("Every bracket load is zero"));
+    for row in table_rows(&page, "brackets") {
+        for cell in &row[2..5] {
+            assert_eq!(cell, "0 (0, 0)", "{row:?}");
+        }
+        assert_eq!(row[6], "0 (0, 0)", "{row:?}");
+    }
 }

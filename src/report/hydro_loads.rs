@@ -257,7 +257,17 @@ pub fn bracket_blocks(rpm: f64, brackets: &[BracketLoad]) -> Vec<Block> {
             ]
         })
         .collect();
-    vec![Block::Table(Table {
+    let mut blocks = Vec::new();
+    if brackets
+        .iter()
+        .all(|b| b.load == [0.0; 2] && b.reaction == [0.0; 2])
+    {
+        blocks.push(Block::Text(
+            "Every bracket load is zero: no static lateral load acts at this operating point (gravity along the shaft, no static lateral force or field in the model as written); the brackets' dynamic loads are the housing vibration's."
+                .into(),
+        ));
+    }
+    blocks.push(Block::Table(Table {
         id: "brackets".into(),
         caption: format!(
             "brackets (pedestals) at the static equilibrium at {} rpm: the rotor's force on each through its bearings, its weight, the load it passes on to its support K (q − q_on) and its deflection (magnitude (x, y))",
@@ -276,5 +286,6 @@ pub fn bracket_blocks(rpm: f64, brackets: &[BracketLoad]) -> Vec<Block> {
         .map(|s| s.to_string())
         .collect(),
         rows,
-    })]
+    }));
+    blocks
 }
