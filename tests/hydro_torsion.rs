@@ -214,6 +214,7 @@ fn the_torsional_criteria_keys_are_validated() {
     let bad = [
         ("grid_frequency_hz = -50\n", "grid_frequency_hz", "-50"),
         ("grid_frequency_hz = 5000\n", "grid_frequency_hz", "5000"),
+        ("grid_frequency_hz = 1e300\n", "grid_frequency_hz", "1e300"),
         ("torsional_margin = 1.5\n", "torsional_margin", "1.5"),
         ("torsional_margin = -0.1\n", "torsional_margin", "-0.1"),
     ];

@@ -244,24 +244,26 @@ fn torsional_criteria(
         if value.is_some() && !class.is_hydro() {
             return Err(ctx.err(
                 root.key(key),
-                value.unwrap_or_default(),
+                crate::units::Short(value.unwrap_or_default()),
                 "judges a hydraulic machine set's torsional modes: give it with machine = \"hydro_generator\" or \"pump_turbine\"",
             ));
         }
     }
-    if let Some(f) = grid.filter(|f| !(f.is_finite() && *f > 0.0 && *f <= 1000.0)) {
-        return Err(ctx.err(
+    let grid = match grid {
+        Some(f) => Some(ctx.within(
             root.key("grid_frequency_hz"),
             f,
-            "must be a frequency in hertz above 0 and at most 1000 (50 or 60 on most grids)",
-        ));
-    }
-    if let Some(m) = margin.filter(|m| !(m.is_finite() && *m >= 0.0 && *m < 1.0)) {
-        return Err(ctx.err(
+            &super::limits::GRID_FREQUENCY_HZ,
+        )?),
+        None => None,
+    };
+    let margin = match margin {
+        Some(m) => Some(ctx.within(
             root.key("torsional_margin"),
             m,
-            "must be a fraction from 0 to below 1 (0.1 for 10 %)",
-        ));
-    }
+            &super::limits::TORSIONAL_MARGIN,
+        )?),
+        None => None,
+    };
     Ok((grid, margin))
 }
