@@ -215,3 +215,107 @@ fn the_report_summary_carries_the_commands_level_two() {
         assert!(row.contains(">FAIL<"), "{row}");
     }
 }
+
+/// The Level II heading names the coefficients the model holds: with the
+/// seal "the seals' with their cross-coupling", without it "(the model has
+/// no seals)" and no word of a seal's cross-coupling.
+#[test]
+fn the_level_two_heading_says_what_the_model_contains() {
+    let with_seal = compressor(1.0e6);
+    let start = with_seal.find("[[seals]]").unwrap();
+    let end = with_seal[start + 1..]
+        .find("\n[[")
+        .map_or(with_seal.len(), |k| start + 1 + k + 1);
+    let without_seal = format!("{}{}", &with_seal[..start], &with_seal[end..]);
+    assert!(!without_seal.contains("[[seals]]"));
+    let dir = std::env::temp_dir().join(format!("level-two-words-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (name, text, has_seal) in [("seal", &with_seal, true), ("bare", &without_seal, false)] {
+        let model = RotorModel::from_toml(text, "c.toml").unwrap();
+        let words = rotor_bearing::report::text::level_two_elements(&model);
+        let path = dir.join(format!("{name}.toml"));
+        std::fs::write(&path, text).unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+            .args(["stability", path.to_str().unwrap(), "--rpm", "3000"])
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let printed = String::from_utf8(out.stdout).unwrap();
+        let heading = printed
+            .lines()
+            .find(|l| l.starts_with("API 617 Level II at"))
+            .unwrap();
+        assert!(heading.contains(&words), "{heading}");
+        if has_seal {
+            assert!(
+                heading.contains("the seals' with their cross-coupling"),
+                "{heading}"
+            );
+            assert!(!heading.contains("no seals"), "{heading}");
+        } else {
+            assert!(heading.contains("(the model has no seals)"), "{heading}");
+            assert!(!heading.contains("seals' with"), "{heading}");
+        }
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `rotor stability --level-two-csv` writes Level II: a row per judged mode
+/// of each case with the log decrement the closed form gives (to 1e-3, as
+/// above) and the case's verdict (Q = 1.25e6 N/m: as built 0.118 passes,
+/// with `Q_A` 0.093 fails).
+#[test]
+fn the_level_two_csv_holds_each_case_against_the_closed_form() {
+    let q = 1.25e6;
+    let qa = 3.0 * 1e5 / (0.3 * 0.02 * 3000.0 * RPM);
+    let dir = std::env::temp_dir().join(format!("level-two-csv-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("c.toml");
+    std::fs::write(&path, compressor(q)).unwrap();
+    let csv = dir.join("level_two.csv");
+    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
+        .args(["stability", path.to_str().unwrap(), "--rpm", "3000"])
+        .args([
+            "--power",
+            "1e5",
+            "--impeller-diameter",
+            "0.3",
+            "--flow-width",
+            "0.02",
+        ])
+        .arg("--level-two-csv")
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let table = std::fs::read_to_string(&csv).unwrap();
+    std::fs::remove_dir_all(&dir).ok();
+    let mut lines = table.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "case,speed_rpm,cross_coupling_N_m,mode,damped_frequency_hz,log_decrement,verdict"
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2, "{table}");
+    for (row, (case, added, verdict)) in rows
+        .iter()
+        .zip([("as_built", 0.0, "pass"), ("with_Q_A", qa, "FAIL")])
+    {
+        assert_eq!(row[0], case);
+        assert!((row[1].parse::<f64>().unwrap() - 3000.0).abs() < 1e-9);
+        let cross: f64 = row[2].parse().unwrap();
+        assert!((cross - added).abs() <= 1e-9 * qa, "{row:?}");
+        assert_eq!(row[3], "1");
+        let delta: f64 = row[5].parse().unwrap();
+        let expected = closed_form(q + added);
+        assert!(
+            (delta - expected).abs() < 1e-3,
+            "{case}: {delta} against {expected}"
+        );
+        assert_eq!(row[6], verdict);
+    }
+}

@@ -113,6 +113,36 @@ pub fn torsional_modes(
         .collect())
 }
 
+/// Every elastic torsional mode of `model` with a natural frequency up to
+/// `omega` (rad/s) and the first above it (where the chain has one),
+/// ascending: how many lie below is a Sturm count of the tridiagonal pencil,
+/// so none is missed.
+///
+/// ```
+/// use rotor_bearing::analysis::torsion::torsional_modes_up_to;
+/// use rotor_bearing::model::RotorModel;
+///
+/// let path = concat!(env!("CARGO_MANIFEST_DIR"), "/models/hydro_unit.toml");
+/// let model = RotorModel::from_file(std::path::Path::new(path))?;
+/// let modes = torsional_modes_up_to(&model, 2.0 * std::f64::consts::TAU * 60.0)?;
+/// let last = modes.last().unwrap().natural_frequency;
+/// assert!(last > 2.0 * std::f64::consts::TAU * 60.0);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn torsional_modes_up_to(
+    model: &RotorModel,
+    omega: f64,
+) -> Result<Vec<TorsionalMode>, LinalgError> {
+    let chain = TorsionalRotor::new(model);
+    let n = chain.dof_count();
+    if n == 0 {
+        return Ok(Vec::new());
+    }
+    let rigid = usize::from(n == model.node_count());
+    let below = tridiagonal_eigenvalues_below(&chain.stiffness, &chain.mass, omega * omega);
+    torsional_modes(model, below.saturating_sub(rigid) + 1)
+}
+
 /// Shift-invert Arnoldi with the shift and rigid-body filter scaled by the
 /// stiffest element (fast; its result is checked by [`verified`]): the
 /// lowest `count` modes it finds and the next frequency it found, if any.

@@ -41,6 +41,15 @@ pub struct ModelFile {
     /// ISO 10816-5 machine group (2, 3 or 4) of a hydro class.
     #[serde(default)]
     pub housing_group: Option<i64>,
+    /// Electrical grid frequency (Hz) a hydro class's torsional modes are
+    /// judged against (1x and 2x); none: those checks are not judged.
+    #[serde(default)]
+    pub grid_frequency_hz: Option<f64>,
+    /// Separation (fraction) a hydro class's torsional natural frequencies
+    /// keep from the excitations; default
+    /// [`crate::model::machine_class::DEFAULT_TORSIONAL_MARGIN`].
+    #[serde(default)]
+    pub torsional_margin: Option<f64>,
     /// Largest spin speed the machine may be driven at (rpm, either direction);
     /// default [`crate::model::DEFAULT_MAX_SPEED_RPM`].
     #[serde(default)]

@@ -215,6 +215,22 @@ pub const MAX_SPEED_RPM: Limit = Limit {
     why: "the fastest micro-turbines spin at about 1e6 rpm",
 };
 
+/// Electrical grid frequency (Hz).
+pub const GRID_FREQUENCY_HZ: Limit = Limit {
+    min: 1.0,
+    max: 1000.0,
+    unit: "Hz",
+    why: "public grids run at 50 or 60 Hz, aircraft and ship grids at 400 Hz",
+};
+
+/// Separation of a torsional natural frequency from an excitation (fraction).
+pub const TORSIONAL_MARGIN: Limit = Limit {
+    min: 0.0,
+    max: 0.9,
+    unit: "(fraction)",
+    why: "0.1 is 10 %; a band of ±90 % would cover almost every frequency",
+};
+
 /// Pull stiffness of a generator's unbalanced magnetic pull (N/m).
 pub const PULL_STIFFNESS: Limit = Limit {
     min: 1.0,

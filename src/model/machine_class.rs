@@ -5,6 +5,14 @@
 //! hydraulic machine sets) and their first critical speed against the
 //! runaway speed; the API classes by API 684/617.
 
+/// The separation (fraction) a hydro class's torsional natural frequencies
+/// keep from the running speed and from the grid frequency and its double
+/// when the model gives no `torsional_margin`: 10 %, an engineering
+/// assumption of this tool, not a standard's value. (ISO 22266-1 sets such
+/// margins for steam and gas turbine generator sets, not hydro units; its
+/// numbers are not reproduced here.)
+pub const DEFAULT_TORSIONAL_MARGIN: f64 = 0.10;
+
 /// What kind of machine the model describes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum MachineClass {

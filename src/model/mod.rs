@@ -403,6 +403,14 @@ pub struct RotorModel {
     pub machine: machine_class::MachineClass,
     /// Its ISO 10816-5 machine group (`housing_group`), for a hydro class.
     pub housing_group: Option<machine_class::HousingGroup>,
+    /// The electrical grid frequency (Hz, `grid_frequency_hz`) a hydro
+    /// class's torsional modes are judged against; `None`: not judged.
+    pub grid_frequency: Option<f64>,
+    /// The separation (fraction, `torsional_margin`) a hydro class's
+    /// torsional natural frequencies keep from the running speed and the
+    /// grid frequency and its double; `None`: the default
+    /// [`machine_class::DEFAULT_TORSIONAL_MARGIN`].
+    pub torsional_margin: Option<f64>,
     /// Coefficient-table files read, as written and as resolved ([`Self::table_files`]).
     pub table_files: Vec<TableFile>,
     /// The reduced rotor transients run on (`[reduction]`, see

@@ -484,6 +484,44 @@ pub fn stability(result: &Stability) -> String {
     out
 }
 
+/// API 617 Level II: one row per judged forward mode of each case (`as_built`,
+/// `with_Q_A`), its added cross-coupling (N/m), damped frequency (Hz) and
+/// log decrement, and the case's verdict; a case that diverges statically
+/// adds a row `static_divergence` with the growth rate (1/s) in place of the
+/// frequency and no log decrement.
+pub fn level_two(l: &crate::analysis::level_two::LevelTwo) -> String {
+    let mut out = String::from(
+        "case,speed_rpm,cross_coupling_N_m,mode,damped_frequency_hz,log_decrement,verdict\n",
+    );
+    let rpm = l.speed.abs() * RAD_S_TO_RPM;
+    let cases = std::iter::once(("as_built", &l.as_built))
+        .chain(l.anticipated.as_ref().map(|(_, _, c)| ("with_Q_A", c)));
+    for (name, case) in cases {
+        let verdict = if case.pass() { "pass" } else { "FAIL" };
+        for (k, m) in case.modes.iter().enumerate() {
+            writeln!(
+                out,
+                "{name},{rpm},{},{},{},{},{verdict}",
+                case.cross_coupling,
+                k + 1,
+                m.damped_frequency / (2.0 * PI),
+                m.log_decrement
+            )
+            .ok();
+        }
+        for root in &case.diverging {
+            writeln!(
+                out,
+                "{name},{rpm},{},static_divergence,{},,{verdict}",
+                case.cross_coupling,
+                -root.decay_rate()
+            )
+            .ok();
+        }
+    }
+    out
+}
+
 /// A critical speed map: per support stiffness (N/m) the forward synchronous
 /// critical speeds in rpm (`critical_k_rpm`, increasing; empty where fewer
 /// exist) and the number of statically unstable modes (none where any).

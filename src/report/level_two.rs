@@ -11,8 +11,12 @@ use super::text;
 
 /// The stability section's Level II table: the lines `rotor stability`
 /// prints, one a row. `sites` labels the anticipated cross-coupling's nodes.
-pub fn level_two_blocks(l: &LevelTwo, sites: &[String]) -> Vec<Block> {
-    let printed = text::level_two(l, sites);
+pub fn level_two_blocks(
+    l: &LevelTwo,
+    sites: &[String],
+    model: &crate::model::RotorModel,
+) -> Vec<Block> {
+    let printed = text::level_two(l, sites, model);
     vec![Block::Table(Table {
         id: "level-two".into(),
         caption: "API 617 Level II: log decrements at the maximum continuous speed with every element's coefficients".into(),

@@ -27,6 +27,8 @@ pub mod cases;
 pub mod csv;
 pub mod html;
 pub mod hydro;
+pub mod hydro_loads;
+pub mod hydro_torsion;
 pub mod level_two;
 pub mod orbits;
 pub mod review;

@@ -302,6 +302,10 @@ enum Command {
         /// Write log decrement against Q to this CSV file.
         #[arg(long)]
         csv: Option<PathBuf>,
+        /// Write an API machine's API 617 Level II (each case's judged modes
+        /// and verdict) to this CSV file.
+        #[arg(long)]
+        level_two_csv: Option<PathBuf>,
         /// Draw it to this PNG file.
         #[arg(long)]
         png: Option<PathBuf>,
@@ -594,6 +598,7 @@ fn run(cli: Cli) -> Result<(), String> {
             points,
             modes,
             csv,
+            level_two_csv,
             png,
             verify,
         } => {
@@ -611,6 +616,7 @@ fn run(cli: Cli) -> Result<(), String> {
                     stages: stages.stages()?,
                     at: stages.at,
                     csv,
+                    level_two_csv,
                     png,
                     verify,
                 },

@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 use rotor_bearing::analysis::alignment::alignment;
 use rotor_bearing::analysis::api_unbalance::{ApiRequest, api_unbalance};
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
+use rotor_bearing::analysis::element_operating_point::thrust_operating_points;
 use rotor_bearing::analysis::housing_vibration;
 use rotor_bearing::analysis::level_two::level_two;
 use rotor_bearing::analysis::modal::ModalOptions;
@@ -44,6 +45,7 @@ use rotor_bearing::report::level_two::{level_two_blocks, level_two_summary_rows}
 use rotor_bearing::report::review::{self, SummaryInputs};
 use rotor_bearing::report::stamp::{now_utc, sha256_hex, software_version};
 use rotor_bearing::report::text::short;
+use rotor_bearing::report::{hydro_loads, hydro_torsion};
 use rotor_bearing::rotor::Rotor;
 use rotor_bearing::solver::SolverOptions;
 use rotor_bearing::units::Amplitude;
@@ -227,6 +229,12 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         housing_vibration::housing_vibration(rotor, speed, settle, record).map_err(|e| err(&e))
     });
 
+    // A hydro unit's torsional modes against the running and grid frequencies.
+    let torsion = model
+        .machine
+        .is_hydro()
+        .then(|| hydro_torsion::torsion_study(model, speed));
+
     // An API machine's unbalance cases, on the unbalance study's speeds.
     let api = model.machine.is_api().then(|| {
         let max = match &unbalance {
@@ -278,6 +286,9 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             .map_or(summary.rows.len(), |k| k + 1);
         let rows = level_two_summary_rows(&l.as_ref().map_err(Clone::clone));
         summary.rows.splice(at..at, rows);
+    }
+    if let Some(t) = &torsion {
+        summary.rows.extend(hydro_torsion::torsion_rows(t));
     }
     if let Some(c) = &cases {
         summary.rows.extend(cases_report::summary_rows(
@@ -381,9 +392,11 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         Ok(p) => review::operating_blocks(p),
         Err(e) => vec![Block::Failure(format!("operating point: {e}"))],
     };
-    if !model.pedestals.is_empty() {
-        blocks.push(match pedestal_operating_points(rotor, speed) {
-            Ok(p) => Block::Text(rotor_bearing::report::text::pedestals(rpm, &p)),
+    let pedestal_points =
+        (!model.pedestals.is_empty()).then(|| pedestal_operating_points(rotor, speed));
+    if let Some(p) = &pedestal_points {
+        blocks.push(match p {
+            Ok(p) => Block::Text(rotor_bearing::report::text::pedestals(rpm, p)),
             Err(e) => Block::Failure(format!("pedestals: {e}")),
         });
     }
@@ -392,6 +405,32 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         &format!("Bearings at {} rpm", short(rpm)),
         blocks,
     ));
+    if model.machine.is_hydro() {
+        let thrusts = thrust_operating_points(rotor, speed);
+        let losses = points
+            .as_deref()
+            .map(|p| hydro_loads::power_losses(model, p, &thrusts))
+            .map_err(Clone::clone);
+        sections.push(section(
+            "thrust-bearings",
+            &format!("Thrust bearings and power losses at {} rpm", short(rpm)),
+            hydro_loads::thrust_blocks(model, speed, &thrusts, &losses),
+        ));
+        if let Some(p) = &pedestal_points {
+            let blocks = match (&points, p) {
+                (Ok(guides), Ok(p)) => {
+                    hydro_loads::bracket_blocks(rpm, &hydro_loads::bracket_loads(model, guides, p))
+                }
+                (Err(e), _) => vec![Block::Failure(format!("brackets: {e}"))],
+                (_, Err(e)) => vec![Block::Failure(format!("brackets: {e}"))],
+            };
+            sections.push(section(
+                "brackets",
+                &format!("Brackets at {} rpm", short(rpm)),
+                blocks,
+            ));
+        }
+    }
     if let Some(h) = &housing {
         let blocks = match h {
             Ok(_) => hydro::housing_blocks(&housing_study(model, h)),
@@ -455,6 +494,13 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         Err(e) => vec![Block::Failure(format!("modes: {e}"))],
     };
     sections.push(section("modes", "Modes and mode shapes", blocks));
+    if let Some(t) = &torsion {
+        let blocks = match t {
+            Ok(study) => hydro_torsion::torsion_blocks(study),
+            Err(e) => vec![Block::Failure(format!("torsional modes: {e}"))],
+        };
+        sections.push(section("torsional-modes", "Torsional modes", blocks));
+    }
 
     let blocks = match &stability {
         Ok(s) => {
@@ -490,7 +536,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
                 .as_ref()
                 .map(|(_, _, c)| c.sites.iter().map(|&n| site_label(rotor, n)).collect())
                 .unwrap_or_default();
-            blocks.extend(level_two_blocks(l, &sites));
+            blocks.extend(level_two_blocks(l, &sites, model));
         }
         Some(Err(e)) => blocks.push(Block::Failure(format!("API 617 Level II: {e}"))),
         None => {}

@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use rotor_bearing::analysis::level_two::level_two;
+use rotor_bearing::analysis::level_two::{LevelTwo, level_two};
 use rotor_bearing::analysis::ring_down::{RingDown, ring_down};
 use rotor_bearing::analysis::stability::{
     StabilityRequest, StageData, disks_and_seals, level_one_stages, site_label, stability_study,
@@ -28,6 +28,8 @@ pub struct Request {
     pub at: Option<String>,
     pub stages: Option<StageData>,
     pub csv: Option<PathBuf>,
+    /// Level II's CSV (an API machine).
+    pub level_two_csv: Option<PathBuf>,
     pub png: Option<PathBuf>,
     /// Ring the least-damped modes down in the nonlinear transient.
     pub verify: bool,
@@ -149,9 +151,19 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         // A Level II that cannot be computed is said, not fatal: the
         // study above stands.
         match level_two_text(rotor, &request, mcs) {
-            Ok(text) => print!("{text}"),
+            Ok((text, l)) => {
+                if let Some(path) = &req.level_two_csv {
+                    write_file(path, &report_csv::level_two(&l))?;
+                }
+                print!("{text}")
+            }
             Err(e) => println!("\n{e}: not computed"),
         }
+    } else if req.level_two_csv.is_some() {
+        eprintln!(
+            "note: --level-two-csv is not written: API 617 Level II is run for an API machine (machine = {}), not this one",
+            machine.name()
+        );
     }
     if req.verify {
         let checks = verify(rotor, result.speed, &result.modes)?;
@@ -161,12 +173,13 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
 }
 
 /// An API machine's Level II analysis at its maximum continuous speed
-/// `mcs` (rad/s), with the Level I stages' `Q_A` when there are stages.
+/// `mcs` (rad/s), with the Level I stages' `Q_A` when there are stages: its
+/// text and the analysis.
 pub fn level_two_text(
     rotor: &Rotor,
     request: &StabilityRequest,
     mcs: f64,
-) -> Result<String, String> {
+) -> Result<(String, LevelTwo), String> {
     let l = level_two(rotor, mcs, &request.stages, request.modes)
         .map_err(|e| format!("{}: API 617 Level II: {e}", rotor.model.name))?;
     let labels: Vec<String> = l
@@ -174,7 +187,10 @@ pub fn level_two_text(
         .as_ref()
         .map(|(_, _, c)| c.sites.iter().map(|&n| site_label(rotor, n)).collect())
         .unwrap_or_default();
-    Ok(format!("\n{}", text::level_two(&l, &labels)))
+    Ok((
+        format!("\n{}", text::level_two(&l, &labels, &rotor.model)),
+        l,
+    ))
 }
 
 /// The three least-damped oscillating modes rung down in the transient.

@@ -102,6 +102,13 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         }
     };
     let (machine, housing_group) = machine_class(ctx, &root, &raw.machine, raw.housing_group)?;
+    let (grid_frequency, torsional_margin) = torsional_criteria(
+        ctx,
+        &root,
+        machine,
+        raw.grid_frequency_hz,
+        raw.torsional_margin,
+    )?;
     let reduction = match raw.reduction {
         None => None,
         Some(r) => Some(match r.modes {
@@ -131,6 +138,8 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         operating_range,
         machine,
         housing_group,
+        grid_frequency,
+        torsional_margin,
         name: raw.name,
         description: raw.description,
         source: ctx.source.to_string(),
@@ -219,4 +228,42 @@ fn machine_class(
         }
     };
     Ok((class, group))
+}
+
+/// `grid_frequency_hz` and `torsional_margin`: the criteria of a hydro
+/// class's torsional modes (the grid frequency in hertz, the margin a
+/// fraction); on another class an error.
+fn torsional_criteria(
+    ctx: &Ctx,
+    root: &FieldPath,
+    class: super::machine_class::MachineClass,
+    grid: Option<f64>,
+    margin: Option<f64>,
+) -> Result<(Option<f64>, Option<f64>), ModelError> {
+    for (key, value) in [("grid_frequency_hz", grid), ("torsional_margin", margin)] {
+        if value.is_some() && !class.is_hydro() {
+            return Err(ctx.err(
+                root.key(key),
+                crate::units::Short(value.unwrap_or_default()),
+                "judges a hydraulic machine set's torsional modes: give it with machine = \"hydro_generator\" or \"pump_turbine\"",
+            ));
+        }
+    }
+    let grid = match grid {
+        Some(f) => Some(ctx.within(
+            root.key("grid_frequency_hz"),
+            f,
+            &super::limits::GRID_FREQUENCY_HZ,
+        )?),
+        None => None,
+    };
+    let margin = match margin {
+        Some(m) => Some(ctx.within(
+            root.key("torsional_margin"),
+            m,
+            &super::limits::TORSIONAL_MARGIN,
+        )?),
+        None => None,
+    };
+    Ok((grid, margin))
 }

@@ -4,6 +4,7 @@
 use std::fmt::Write;
 
 use crate::analysis::level_two::{LEVEL_II_MIN_LOG_DEC, LevelTwo, LevelTwoCase};
+use crate::model::RotorModel;
 use crate::units::RAD_S_TO_RPM;
 
 use super::short;
@@ -53,14 +54,37 @@ fn mode_rows(s: &mut String, case: &LevelTwoCase) {
     }
 }
 
+/// Which coefficients Level II holds, by what `model` contains: the
+/// bearings', the seals' with their cross-coupling, the magnetic pulls'.
+pub fn level_two_elements(model: &RotorModel) -> String {
+    let count = |pick: &dyn Fn(&crate::bearing::BearingKind) -> bool| {
+        model.bearings.iter().filter(|b| pick(&b.kind)).count()
+    };
+    let (seals, pulls) = (count(&|k| k.is_seal()), count(&|k| k.is_magnetic_pull()));
+    let mut parts = vec!["the bearings'".to_string()];
+    if seals > 0 {
+        parts.push("the seals' with their cross-coupling".into());
+    }
+    if pulls > 0 {
+        parts.push("the magnetic pulls'".into());
+    }
+    let mut s = format!("every element's coefficients: {}", parts.join(", "));
+    if seals == 0 {
+        s.push_str(" (the model has no seals)");
+    }
+    s
+}
+
 /// The Level II section of `rotor stability`: the maximum continuous speed,
 /// the frequency limit, each case's judged modes and verdict. `sites` labels
-/// the anticipated cross-coupling's nodes.
-pub fn level_two(l: &LevelTwo, sites: &[String]) -> String {
+/// the anticipated cross-coupling's nodes; `model` says which elements'
+/// coefficients it holds ([`level_two_elements`]).
+pub fn level_two(l: &LevelTwo, sites: &[String], model: &RotorModel) -> String {
     let rpm = l.speed.abs() * RAD_S_TO_RPM;
     let mut s = format!(
-        "API 617 Level II at the maximum continuous speed {} rpm (the top of the operating range), every element's coefficients with the seals' cross-coupling:\n",
-        short(rpm)
+        "API 617 Level II at the maximum continuous speed {} rpm (the top of the operating range), {}:\n",
+        short(rpm),
+        level_two_elements(model)
     );
     writeln!(
         s,

@@ -33,7 +33,7 @@ pub use api_unbalance::{
 pub use cases::{case_value, cases_heading, governing_cells, tolerance_cases};
 pub use element_points::element_points;
 pub use hydro_verdicts::{log_dec_holds, stability_verdict, unbalance_runaway};
-pub use level_two::{level_two, level_two_finding, level_two_verdict};
+pub use level_two::{level_two, level_two_elements, level_two_finding, level_two_verdict};
 pub use modal::{
     ROUND_OFF_DAMPING_RATIO, campbell_study, critical_margins, damping_ratio, margin_cells, modes,
     overdamped_roots, overdamped_summary, static_divergence, torsional_modes, zeta_and_log_dec,
