@@ -320,6 +320,7 @@ fn info_label(section: &str, entry: &toml::Table) -> String {
         "thrust_bearings" => "thrust bearing".into(),
         "reduction" => "reduction".into(),
         "cases" => "tolerance cases".into(),
+        "shaft_vibration_zones" => "shaft vibration zones".into(),
         other => panic!("no `rotor info` label for the section [{other}]"),
     }
 }

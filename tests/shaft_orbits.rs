@@ -97,6 +97,7 @@ fn the_transients_orbit_is_the_linear_unbalance_response_relative_to_the_housing
         label: "operating".into(),
         speed,
         excitation: None,
+        steady: true,
     };
     let orbits = shaft_orbits(&rotor, &case, SETTLE, 0.1).unwrap();
     let response = unbalance_response(&rotor, speed).unwrap();
@@ -156,9 +157,115 @@ fn a_hydro_unit_is_shown_at_its_operating_speed_field_on_and_at_runaway() {
     assert!((speeds[0].0 - 300.0).abs() < 1e-9 && speeds[0].1.is_none());
     assert!((speeds[1].0 - 300.0).abs() < 1e-9 && speeds[1].1 == Some(1.0));
     assert!((speeds[2].0 - 600.0).abs() < 1e-9 && speeds[2].1 == Some(0.0));
+    let steady: Vec<bool> = cases.iter().map(|c| c.steady).collect();
+    assert_eq!(
+        steady,
+        [true, true, false],
+        "runaway is no steady condition"
+    );
     let plain = rotor_on_frame();
     let cases = hydro_cases(&plain, 3000.0 * RPM);
     assert_eq!(cases.len(), 2, "no pull: no field case; {cases:?}");
     assert_eq!(cases[1].excitation, None);
     assert!((cases[1].speed / RPM - 3600.0).abs() < 1e-9);
+}
+
+/// `[shaft_vibration_zones]`: the user's zone boundaries from their copy of
+/// the standard, in µm, at the named bearings (default every bearing, not
+/// the seal or the pull); a bad entry names file, line, field and value.
+#[test]
+fn shaft_vibration_zones_are_read_and_bad_ones_named() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/hydro_unit_brackets.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let with = |section: &str| format!("{text}\n{section}\n");
+    let model = RotorModel::from_toml(
+        &with("[shaft_vibration_zones]\nsource = \"my copy, table X\"\nboundaries_um = [65.0, 100.0, 160.0]\nbearings = [\"upper_guide\"]"),
+        "unit.toml",
+    )
+    .unwrap();
+    let zones = model.shaft_zones.clone().unwrap();
+    assert_eq!(zones.source, "my copy, table X");
+    for (got, want) in zones.boundaries.iter().zip([65e-6, 100e-6, 160e-6]) {
+        assert!((got / want - 1.0).abs() < 1e-15, "{:?}", zones.boundaries);
+    }
+    let upper = model
+        .bearings
+        .iter()
+        .position(|b| b.name == "upper_guide")
+        .unwrap();
+    assert_eq!(zones.bearings, [upper]);
+    let info = rotor_bearing::report::text::model_summary(&Rotor::new(model.clone()).unwrap());
+    assert!(
+        info.contains("shaft vibration zones: A/B, B/C, C/D at 65 / 100 / 160 µm pk-pk at upper_guide (my copy, table X)"),
+        "{info}"
+    );
+    let all = RotorModel::from_toml(
+        &with("[shaft_vibration_zones]\nsource = \"s\"\nboundaries_um = [1.0, 2.0, 3.0]"),
+        "unit.toml",
+    )
+    .unwrap();
+    let bearings: Vec<&str> = all
+        .shaft_zones
+        .as_ref()
+        .unwrap()
+        .bearings
+        .iter()
+        .map(|&k| all.bearings[k].name.as_str())
+        .collect();
+    assert_eq!(bearings, ["upper_guide", "lower_guide", "turbine_guide"]);
+    assert!(RotorModel::from_file(&path).unwrap().shaft_zones.is_none());
+    for (section, field, value) in [
+        (
+            "source = \"s\"\nboundaries_um = [100.0, 65.0, 160.0]",
+            "shaft_vibration_zones.boundaries_um",
+            "[100, 65, 160]",
+        ),
+        (
+            "source = \"s\"\nboundaries_um = [65.0, 100.0]",
+            "shaft_vibration_zones.boundaries_um",
+            "[65, 100]",
+        ),
+        (
+            "source = \" \"\nboundaries_um = [65.0, 100.0, 160.0]",
+            "shaft_vibration_zones.source",
+            "\"\"",
+        ),
+        (
+            "source = \"s\"\nboundaries_um = [65.0, 100.0, 160.0]\nbearings = [\"runner_seal\"]",
+            "shaft_vibration_zones.bearings[0]",
+            "runner_seal",
+        ),
+    ] {
+        let e = RotorModel::from_toml(
+            &with(&format!("[shaft_vibration_zones]\n{section}")),
+            "unit.toml",
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            e.contains("unit.toml") && e.contains(field) && e.contains(value),
+            "{e}"
+        );
+        let line = e.split(':').nth(1).unwrap_or("");
+        assert!(
+            line.parse::<usize>().is_ok_and(|l| l > 200),
+            "the line of the section: {e}"
+        );
+    }
+    // A class other than a hydro one has no such zones.
+    let jeffcott = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("models/jeffcott.toml"),
+    )
+    .unwrap();
+    let e = RotorModel::from_toml(
+        &format!("{jeffcott}\n[shaft_vibration_zones]\nsource = \"s\"\nboundaries_um = [65.0, 100.0, 160.0]\n"),
+        "j.toml",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.contains("shaft_vibration_zones.source") && e.contains("hydro_generator"),
+        "{e}"
+    );
 }

@@ -28,6 +28,9 @@ pub struct OrbitCase {
     /// The field excitation given to every magnetic pull (0: field off, 1:
     /// nominal); `None` keeps the model's own.
     pub excitation: Option<f64>,
+    /// Within the normal operating range, where zones of steady vibration
+    /// apply (not at runaway, a transient condition).
+    pub steady: bool,
 }
 
 /// The cases of a hydraulic unit: operating speed as given, operating speed
@@ -46,12 +49,14 @@ pub fn hydro_cases(rotor: &Rotor, operating: f64) -> Vec<OrbitCase> {
         label: "operating speed, as modelled".into(),
         speed: operating,
         excitation: None,
+        steady: true,
     }];
     if excitations.iter().any(|&e| e != 1.0) {
         cases.push(OrbitCase {
             label: "operating speed, field on (excitation 1)".into(),
             speed: operating,
             excitation: Some(1.0),
+            steady: true,
         });
     }
     let runaway = model.max_speed;
@@ -68,6 +73,7 @@ pub fn hydro_cases(rotor: &Rotor, operating: f64) -> Vec<OrbitCase> {
                 runaway.abs()
             },
             excitation: (!excitations.is_empty()).then_some(0.0),
+            steady: false,
         });
     }
     cases

@@ -116,6 +116,9 @@ pub struct ModelFile {
     /// `[cases]`: the tolerance cases (oil temperature, clearance, preload).
     #[serde(default)]
     pub cases: Option<super::tolerance_cases::CasesEntry>,
+    /// `[shaft_vibration_zones]`: a hydro unit's shaft-displacement zones.
+    #[serde(default)]
+    pub shaft_vibration_zones: Option<super::shaft_zones::ShaftZonesEntry>,
 }
 
 /// `[reduction]`: run transients on a Craig–Bampton reduced rotor (the

@@ -15,6 +15,7 @@ mod load_inputs;
 pub mod machine_class;
 mod plausibility;
 pub mod schema;
+pub mod shaft_zones;
 mod source_map;
 pub mod speed_table;
 pub mod tolerance_cases;
@@ -418,6 +419,9 @@ pub struct RotorModel {
     pub reduction: Option<ReductionRequest>,
     /// The tolerance cases (`[cases]`), `None` without the section.
     pub tolerance_cases: Option<tolerance_cases::ToleranceCases>,
+    /// `[shaft_vibration_zones]` of a hydro class: the zones its shaft
+    /// orbits are judged by, from the user's copy of the standard.
+    pub shaft_zones: Option<shaft_zones::ShaftZones>,
 }
 
 /// What a model's `[reduction]` asks for.

@@ -18,7 +18,7 @@ use rotor_bearing::analysis::level_two::level_two;
 use rotor_bearing::analysis::modal::ModalOptions;
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::analysis::shaft_loads::coupling_loads;
-use rotor_bearing::analysis::shaft_orbits;
+use rotor_bearing::analysis::shaft_orbits::{self, CaseOrbits};
 use rotor_bearing::analysis::speed_range::default_top_speed;
 use rotor_bearing::analysis::stability::{
     StabilityRequest, StageData, level_one_stages, mid_span_node, site_label, stability_study,
@@ -33,6 +33,7 @@ use rotor_bearing::analysis::unbalance::{
 };
 use rotor_bearing::analysis::whirl_modes::modal_analysis_own;
 use rotor_bearing::model::DEFAULT_MODEL_TOML;
+use rotor_bearing::model::shaft_zones::ShaftZones;
 use rotor_bearing::plot::{
     OrbitPanel, PlotError, RAD_S_TO_RPM, campbell_png, mode_shapes_png, orbits_png, rotor_png,
     stability_png, ucs_png, unbalance_png,
@@ -42,6 +43,7 @@ use rotor_bearing::report::cases as cases_report;
 use rotor_bearing::report::html::{Block, Section, Verdict, page};
 use rotor_bearing::report::hydro::{self, HousingStudy};
 use rotor_bearing::report::level_two::{level_two_blocks, level_two_summary_rows};
+use rotor_bearing::report::orbits::{orbit_blocks, orbit_summary_row};
 use rotor_bearing::report::review::{self, SummaryInputs};
 use rotor_bearing::report::stamp::{now_utc, sha256_hex, software_version};
 use rotor_bearing::report::text::short;
@@ -229,6 +231,12 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         housing_vibration::housing_vibration(rotor, speed, settle, record).map_err(|e| err(&e))
     });
 
+    // A hydro unit's shaft orbits: operating speed, field on, runaway.
+    let orbits = model.machine.is_hydro().then(|| {
+        shaft_orbits::report_orbits(rotor, &shaft_orbits::hydro_cases(rotor, speed))
+            .map_err(|e| err(&e))
+    });
+
     // A hydro unit's torsional modes against the running and grid frequencies.
     let torsion = model
         .machine
@@ -286,6 +294,12 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             .map_or(summary.rows.len(), |k| k + 1);
         let rows = level_two_summary_rows(&l.as_ref().map_err(Clone::clone));
         summary.rows.splice(at..at, rows);
+    }
+    if let Some(o) = &orbits {
+        summary.rows.push(orbit_summary_row(
+            &o.as_deref().map_err(Clone::clone),
+            model.shaft_zones.as_ref(),
+        ));
     }
     if let Some(t) = &torsion {
         summary.rows.extend(hydro_torsion::torsion_rows(t));
@@ -442,11 +456,11 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             blocks,
         ));
     }
-    if model.machine.is_hydro() {
+    if let Some(o) = &orbits {
         sections.push(section(
             "shaft-orbits",
             "Shaft orbits: operating speed, field on, runaway",
-            orbit_section(rotor, speed, &dir),
+            orbit_section(o, model.shaft_zones.as_ref(), &dir),
         ));
     }
 
@@ -594,30 +608,32 @@ fn housing_study<'a>(
 
 /// A hydro unit's shaft orbits in its cases: the table, and one figure of
 /// each case's orbits in their clearance circles.
-fn orbit_section(rotor: &Rotor, speed: f64, dir: &Path) -> Vec<Block> {
-    let cases = shaft_orbits::hydro_cases(rotor, speed);
-    match shaft_orbits::report_orbits(rotor, &cases) {
-        Ok(orbits) => {
-            let mut blocks = rotor_bearing::report::orbits::orbit_blocks(&orbits);
-            for (k, c) in orbits.iter().enumerate() {
-                let panels: Vec<OrbitPanel> = c
-                    .bearings
-                    .iter()
-                    .map(|b| OrbitPanel {
-                        name: format!("bearing {}", b.name),
-                        x: b.x.clone(),
-                        y: b.y.clone(),
-                        clearance: b.clearance,
-                    })
-                    .collect();
-                let caption = format!("shaft orbits relative to the housings: {}", c.case.label);
-                let png = figure(dir, &format!("orbits_{k}.png"), |p| {
-                    orbits_png(p, &caption, &panels, &c.spin_angle, c.case.speed)
-                });
-                blocks.push(figure_block(png, &caption));
-            }
-            blocks
-        }
-        Err(e) => vec![Block::Failure(format!("shaft orbits: {e}"))],
+fn orbit_section(
+    orbits: &Result<Vec<CaseOrbits>, String>,
+    zones: Option<&ShaftZones>,
+    dir: &Path,
+) -> Vec<Block> {
+    let orbits = match orbits {
+        Ok(o) => o,
+        Err(e) => return vec![Block::Failure(format!("shaft orbits: {e}"))],
+    };
+    let mut blocks = orbit_blocks(orbits, zones);
+    for (k, c) in orbits.iter().enumerate() {
+        let panels: Vec<OrbitPanel> = c
+            .bearings
+            .iter()
+            .map(|b| OrbitPanel {
+                name: format!("bearing {}", b.name),
+                x: b.x.clone(),
+                y: b.y.clone(),
+                clearance: b.clearance,
+            })
+            .collect();
+        let caption = format!("shaft orbits relative to the housings: {}", c.case.label);
+        let png = figure(dir, &format!("orbits_{k}.png"), |p| {
+            orbits_png(p, &caption, &panels, &c.spin_angle, c.case.speed)
+        });
+        blocks.push(figure_block(png, &caption));
     }
+    blocks
 }

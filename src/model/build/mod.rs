@@ -129,9 +129,12 @@ pub(super) fn build(ctx: &Ctx, raw: ModelFile) -> Result<RotorModel, ModelError>
         }),
     };
     let tolerance_cases = super::tolerance_cases::validate(ctx, &root, raw.cases, &bearings)?;
+    let shaft_zones =
+        super::shaft_zones::validate(ctx, &root, raw.shaft_vibration_zones, machine, &bearings)?;
     let model = RotorModel {
         reduction,
         tolerance_cases,
+        shaft_zones,
         nominal_speed,
         max_speed,
         max_speed_stated: raw.max_speed_rpm.is_some(),

@@ -173,6 +173,25 @@ pub fn model_summary(rotor: &Rotor) -> String {
         )
         .ok();
     }
+    if let Some(z) = &m.shaft_zones {
+        let names: Vec<&str> = z
+            .bearings
+            .iter()
+            .map(|&k| m.bearings[k].name.as_str())
+            .collect();
+        writeln!(
+            s,
+            "  shaft vibration zones: A/B, B/C, C/D at {} µm pk-pk at {} ({})",
+            z.boundaries
+                .iter()
+                .map(|b| short(b * 1e6))
+                .collect::<Vec<_>>()
+                .join(" / "),
+            names.join(", "),
+            z.source
+        )
+        .ok();
+    }
     let [gx, gy, gz] = m.gravity.map(short);
     writeln!(s, "  gravity ({gx}, {gy}, {gz}) m/s²").ok();
     s
