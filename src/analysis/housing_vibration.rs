@@ -136,17 +136,7 @@ pub fn housing_vibration(
     if on_pedestals.is_empty() {
         return Ok(Vec::new());
     }
-    let fastest = forcing_frequencies(rotor, speed).fold(speed.abs(), f64::max);
-    let dt = std::f64::consts::TAU / fastest / SAMPLES_PER_PERIOD;
-    let own = Rotor::new(model.clone()).map_err(|e| SolverError::Input(e.to_string()))?;
-    let mut sim = Simulator::new(
-        own,
-        SolverOptions {
-            time_step: dt.min(SolverOptions::default().time_step),
-            unbalance_ramp_time: 0.0,
-            ..SolverOptions::default()
-        },
-    )?;
+    let (mut sim, dt) = sampling_simulator(rotor, speed)?;
     sim.set_speed(speed, 0.0)?;
     sim.settle_static()?;
     sim.advance_to(settle)?;
@@ -190,6 +180,31 @@ pub fn housing_vibration(
         .collect())
 }
 
+/// The simulator the report's sampled transients run on at spin `speed`
+/// (rad/s; not yet set), with fixed steps of at most the default one and
+/// no unbalance ramp, and the sampling interval (s):
+/// [`SAMPLES_PER_PERIOD`] samples a period of the fastest forcing (1× or a
+/// harmonic force).
+pub fn sampling_simulator(rotor: &Rotor, speed: f64) -> Result<(Simulator, f64), SolverError> {
+    let fastest = forcing_frequencies(rotor, speed).fold(speed.abs(), f64::max);
+    if fastest.is_nan() || fastest <= 0.0 {
+        return Err(SolverError::Input(
+            "a sampled transient needs a spin or a harmonic force".into(),
+        ));
+    }
+    let dt = std::f64::consts::TAU / fastest / SAMPLES_PER_PERIOD;
+    let own = Rotor::new(rotor.model.clone()).map_err(|e| SolverError::Input(e.to_string()))?;
+    let sim = Simulator::new(
+        own,
+        SolverOptions {
+            time_step: dt.min(SolverOptions::default().time_step),
+            unbalance_ramp_time: 0.0,
+            ..SolverOptions::default()
+        },
+    )?;
+    Ok((sim, dt))
+}
+
 /// The spans (s) the report settles and records over at spin `speed`
 /// (rad/s): 20 revolutions (at least 2 s) to settle, then 10 revolutions or
 /// 3 periods of the slowest harmonic force, whichever is longer.
@@ -208,7 +223,7 @@ pub fn report_spans(rotor: &Rotor, speed: f64) -> (f64, f64) {
 }
 
 /// The frequency (rad/s) of each harmonic force of the model at spin `speed`.
-pub fn forcing_frequencies(rotor: &Rotor, speed: f64) -> impl Iterator<Item = f64> + '_ {
+fn forcing_frequencies(rotor: &Rotor, speed: f64) -> impl Iterator<Item = f64> + '_ {
     rotor.model.forces.iter().filter_map(move |f| match f.kind {
         crate::model::ForceKind::Harmonic { frequency, .. } => Some(match frequency {
             crate::model::HarmonicFrequency::Ratio(r) => (r * speed).abs(),

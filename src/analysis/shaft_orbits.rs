@@ -7,16 +7,17 @@
 //! Each orbit is the shaft's displacement relative to the bearing housing,
 //! what a pair of proximity probes on the housing in `x` and `y` measures
 //! (ISO 7919-1's shaft relative displacement): sampled after `settle`
-//! seconds over `record` seconds at [`SAMPLES_PER_PERIOD`] samples per
+//! seconds over `record` seconds at
+//! [`super::housing_vibration::SAMPLES_PER_PERIOD`] samples per
 //! period of the fastest forcing (1× or a harmonic force), as the housing
 //! vibration of [`super::housing_vibration`] is. Per bearing it gives the
 //! peak-to-peak displacement in `x` and in `y` (`max − min`) and `S_max`,
 //! the largest distance of the orbit from its mean position.
 
 use crate::rotor::Rotor;
-use crate::solver::{Simulator, SolverError, SolverOptions};
+use crate::solver::SolverError;
 
-use super::housing_vibration::{SAMPLES_PER_PERIOD, forcing_frequencies, report_spans};
+use super::housing_vibration::{report_spans, sampling_simulator};
 
 /// A running condition of the orbit study.
 #[derive(Debug, Clone, PartialEq)]
@@ -124,23 +125,7 @@ pub fn shaft_orbits(
         .filter(|&k| model.bearings[k].kind.is_bearing())
         .collect();
     let speed = case.speed;
-    let fastest = forcing_frequencies(rotor, speed).fold(speed.abs(), f64::max);
-    if fastest.is_nan() || fastest <= 0.0 {
-        return Err(SolverError::Input(format!(
-            "the orbits of '{}' need a spin or a harmonic force",
-            case.label
-        )));
-    }
-    let dt = std::f64::consts::TAU / fastest / SAMPLES_PER_PERIOD;
-    let own = Rotor::new(model.clone()).map_err(|e| SolverError::Input(e.to_string()))?;
-    let mut sim = Simulator::new(
-        own,
-        SolverOptions {
-            time_step: dt.min(SolverOptions::default().time_step),
-            unbalance_ramp_time: 0.0,
-            ..SolverOptions::default()
-        },
-    )?;
+    let (mut sim, dt) = sampling_simulator(rotor, speed)?;
     if let Some(e) = case.excitation {
         for (k, b) in model.bearings.iter().enumerate() {
             if b.kind.is_magnetic_pull() {
