@@ -39,14 +39,22 @@ check(peak > 1e-6 and diff <= 1e-12 * peak,
       f"the reference rotor is models/classic_disk_rotor_damped.toml: journal at node 7 equal to {diff / peak:.1e} of {peak * 1e6:.2f} µm")
 
 # libcosim's fixed-step coupling is the PD loop with the force over
-# [t_n, t_n+1] computed from the rotor's state at t_(n-1), bit for bit.
+# [t_n, t_n+1] computed from the rotor's state at t_(n-1): its force is that
+# law of its own motion bit for bit, and its motion the explicit loop's in
+# FMPy to round-off. Not bit for bit: libcosim computes the communication
+# points from integer nanoseconds, FMPy as n h, and where they differ in the
+# last bit the rotor's accuracy-controlled steps are planned from a span that
+# differs in its last bits (8.6e-13 m of a 45 µm orbit, measured); the bound
+# is 1e-6 of each coordinate's range, against the difference between this Jacobi loop
+# and a Gauss-Seidel one (about 6e-3 of the orbit, below).
 h = amb.STEP
 t, motion, force = amb.coupled(h, 0.05)
 _, replica = amb.explicit_loop(h, 1, 0.05)
 law = -(amb.K * motion[:, :2] + amb.C * motion[:, 2:])
-check(np.array_equal(motion, replica) and np.array_equal(force[2:], law[:-2]) and not force[:2].any(),
-      "libcosim holds over each step the PD force of the state one step earlier (lag h … 2h): "
-      "equal bit for bit to the explicit loop in FMPy")
+gap = float(np.max(np.abs(motion - replica) / np.max(np.abs(replica), axis=0)))
+check(gap <= 1e-6 and np.array_equal(force[2:], law[:-2]) and not force[:2].any(),
+      "libcosim holds over each step the PD force of the state one step earlier (lag h … 2h), bit for bit; "
+      f"its orbit is the explicit loop's in FMPy to {gap:.1e} of each coordinate's range")
 
 # The orbit at h and h/2 within the bound derived from h; first order; the
 # bound not vacuous; a Gauss–Seidel master (lag 0 … h) within its own bound.
