@@ -15,13 +15,15 @@
 //!   its own weight, `F = R + m_p g`, and deflects `F/k`.
 
 use std::f64::consts::PI;
-use std::process::Command;
 
 use rotor_bearing::analysis::element_operating_point::thrust_operating_points;
 use rotor_bearing::analysis::operating_point::{operating_point, pedestal_operating_points};
 use rotor_bearing::model::RotorModel;
 use rotor_bearing::report::hydro_loads::{bracket_loads, power_losses};
 use rotor_bearing::rotor::Rotor;
+
+mod report_page;
+use report_page::{report_page, table_rows};
 
 const RPM: f64 = 300.0;
 const G: f64 = 9.81;
@@ -51,61 +53,6 @@ fn vertical_unit() -> String {
          [[bearings]]\nname = \"lower_guide\"\ntype = \"plain\"\nnode = 9\nradius = {R}\nlength = {LB}\nclearance = {C}\nviscosity = {MU}\n\
          [[thrust_bearings]]\nname = \"thrust\"\nnode = 1\ninner_radius = {RI}\nouter_radius = {RO}\nfilm_thickness = {H}\nviscosity = {MU}\n"
     )
-}
-
-/// The page `rotor report` writes for the model `text`.
-fn report_page(text: &str, name: &str) -> String {
-    let dir = std::env::temp_dir().join(format!("hydro-loads-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join(format!("{name}.toml"));
-    std::fs::write(&file, text).unwrap();
-    let html = dir.join("report.html");
-    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
-        .arg("report")
-        .arg(&file)
-        .arg("--out")
-        .arg(&html)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let page = std::fs::read_to_string(&html).unwrap();
-    let _ = std::fs::remove_dir_all(&dir);
-    page
-}
-
-/// The rows of the table `id` on `page`, cells stripped of tags.
-fn table_rows(page: &str, id: &str) -> Vec<Vec<String>> {
-    let table = &page[page
-        .find(&format!("id=\"{id}\""))
-        .unwrap_or_else(|| panic!("no table {id}"))..];
-    let table = &table[..table.find("</table>").unwrap()];
-    let strip = |c: &str| {
-        let mut s = String::new();
-        let mut inside = false;
-        for ch in c.chars() {
-            match ch {
-                '<' => inside = true,
-                '>' => inside = false,
-                _ if !inside => s.push(ch),
-                _ => {}
-            }
-        }
-        s.replace("&amp;", "&").trim().to_string()
-    };
-    table
-        .split("<tr>")
-        .skip(2)
-        .map(|r| {
-            r.split("<td")
-                .skip(1)
-                .map(|c| strip(&format!("<td{c}")))
-                .collect()
-        })
-        .collect()
 }
 
 fn close(a: f64, b: f64, tol: f64) -> bool {

@@ -4,7 +4,6 @@
 //! API 617's Level I; the values are the library's own (`campbell_study`,
 //! `housing_vibration`); the same model as `generic` keeps the API criteria.
 
-use std::path::PathBuf;
 use std::process::Command;
 
 use rotor_bearing::analysis::campbell::{CampbellRequest, campbell_study};
@@ -13,6 +12,9 @@ use rotor_bearing::model::RotorModel;
 use rotor_bearing::report::hydro::housing_zone;
 use rotor_bearing::report::text::short;
 use rotor_bearing::rotor::Rotor;
+
+mod report_page;
+use report_page::{report_page, table_rows};
 
 #[path = "common/pedestal_rotor.rs"]
 mod pedestal_rotor;
@@ -25,62 +27,10 @@ fn model_text(machine: &str) -> String {
     pedestal_rotor::on_pedestals(4.5e-3, &format!("{machine}max_speed_rpm = 2000\n"))
 }
 
-/// The summary table's rows of the report of `text`, cells stripped of tags.
-fn summary_rows(text: &str, name: &str) -> Vec<Vec<String>> {
-    let dir = std::env::temp_dir().join(format!("hydro-report-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let model = dir.join(format!("{name}.toml"));
-    std::fs::write(&model, text).unwrap();
-    let html = dir.join("report.html");
-    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
-        .arg("report")
-        .arg(&model)
-        .arg("--out")
-        .arg(&html)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let page = std::fs::read_to_string(&html).unwrap();
-    let table = &page[page.find("id=\"summary-table\"").unwrap()..];
-    let table = &table[..table.find("</table>").unwrap()];
-    let strip = |c: &str| {
-        let mut s = String::new();
-        let mut inside = false;
-        for ch in c.chars() {
-            match ch {
-                '<' => inside = true,
-                '>' => inside = false,
-                _ if !inside => s.push(ch),
-                _ => {}
-            }
-        }
-        s.replace("&lt;", "<")
-            .replace("&gt;", ">")
-            .replace("&amp;", "&")
-            .trim()
-            .to_string()
-    };
-    let _ = std::fs::remove_dir_all(PathBuf::from(&dir));
-    table
-        .split("<tr>")
-        .skip(2)
-        .map(|r| {
-            r.split("<td")
-                .skip(1)
-                .map(|c| strip(&format!("<td{c}")))
-                .collect()
-        })
-        .collect()
-}
-
 #[test]
 fn a_hydro_unit_is_judged_by_runaway_speed_and_housing_zones() {
     let text = model_text("machine = \"hydro_generator\"\nhousing_group = 3\n");
-    let rows = summary_rows(&text, "hydro");
+    let rows = table_rows(&report_page(&text, "hydro_report_hydro"), "summary-table");
     let rotor = Rotor::new(RotorModel::from_toml(&text, "hydro.toml").unwrap()).unwrap();
     let speed = 1000.0 * RPM;
     // The first critical speed, as the Campbell study finds it.
@@ -157,7 +107,10 @@ fn a_hydro_unit_is_judged_by_runaway_speed_and_housing_zones() {
 
 #[test]
 fn a_generic_model_keeps_the_api_criteria() {
-    let rows = summary_rows(&model_text(""), "generic");
+    let rows = table_rows(
+        &report_page(&model_text(""), "hydro_report_generic"),
+        "summary-table",
+    );
     assert!(rows.iter().any(|r| r[3].contains("(API 684)")), "{rows:?}");
     assert!(rows.iter().all(|r| !r[0].contains("ISO 10816-5")));
     assert!(

@@ -16,6 +16,9 @@ use rotor_bearing::model::RotorModel;
 use rotor_bearing::report::html::Verdict;
 use rotor_bearing::report::hydro_torsion::{torsion_rows, torsion_study};
 
+mod report_page;
+use report_page::{report_page, table_rows};
+
 /// Shear modulus of the material (Pa): `E = 210 GPa`, `ν = 0.3`.
 const G: f64 = 210e9 / 2.6;
 /// Shaft length (m) and diameter (m); disk inertias (kg·m²).
@@ -116,59 +119,11 @@ fn a_torsional_frequency_inside_the_band_of_an_excitation_fails() {
     assert_eq!(rows[1][2].text, "not judged: no grid frequency");
 }
 
-/// The summary rows of `rotor report` on `text`, cells stripped of tags.
-fn report_rows(text: &str) -> Vec<Vec<String>> {
-    let dir = std::env::temp_dir().join(format!("hydro-torsion-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let file = dir.join("two_inertia.toml");
-    std::fs::write(&file, text).unwrap();
-    let html = dir.join("report.html");
-    let out = Command::new(env!("CARGO_BIN_EXE_rotor"))
-        .arg("report")
-        .arg(&file)
-        .arg("--out")
-        .arg(&html)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let page = std::fs::read_to_string(&html).unwrap();
-    let _ = std::fs::remove_dir_all(&dir);
-    let table = &page[page.find("id=\"summary-table\"").unwrap()..];
-    let table = &table[..table.find("</table>").unwrap()];
-    let strip = |c: &str| {
-        let mut s = String::new();
-        let mut inside = false;
-        for ch in c.chars() {
-            match ch {
-                '<' => inside = true,
-                '>' => inside = false,
-                _ if !inside => s.push(ch),
-                _ => {}
-            }
-        }
-        s.replace("&amp;", "&").trim().to_string()
-    };
-    table
-        .split("<tr>")
-        .skip(2)
-        .map(|r| {
-            r.split("<td")
-                .skip(1)
-                .map(|c| strip(&format!("<td{c}")))
-                .collect()
-        })
-        .collect()
-}
-
 #[test]
 fn the_report_row_is_the_frequency_rotor_modes_prints() {
     let f = closed_form();
     let text = model_text(300.0, &format!("grid_frequency_hz = {}\n", 1.05 * f / 2.0));
-    let rows = report_rows(&text);
+    let rows = table_rows(&report_page(&text, "hydro_torsion"), "summary-table");
     let torsion: Vec<&Vec<String>> = rows
         .iter()
         .filter(|r| r[0] == "torsional natural frequencies")
