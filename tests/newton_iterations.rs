@@ -26,7 +26,10 @@
 //!
 //! With the accuracy control's growth window and held plan
 //! (`solver/adaptive.rs`) the vertical rotors take 4.45 and 3.81 (3083 and
-//! 3266 steps); every other row stays at or below 3.
+//! 3266 steps); every other row stays at or below 3. With no chord
+//! iteration tried for 16 steps after one is refused (`CHORD_PAUSE`,
+//! `solver/newton.rs`) they take 3.89 and 3.65, the hydro unit on plain
+//! bearings 2.70 (was 2.77); every other row is unchanged, bit for bit.
 //!
 //! The target is not met on the last two rows yet (issue 51 stays open for
 //! them: the plain bearing's slow iterations are not the pads'):
@@ -50,8 +53,8 @@ const TARGET: f64 = 3.0;
 /// Bounds of the runs not at the target yet (iterations a step): 5 % above
 /// the counts measured with the pads settled on their own balance (module
 /// docs).
-const VERTICAL_PLAIN: f64 = 5.1;
-const VERTICAL_PADS: f64 = 4.15;
+const VERTICAL_PLAIN: f64 = 4.1;
+const VERTICAL_PADS: f64 = 3.85;
 
 fn model(name: &str) -> RotorModel {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("models/{name}.toml"));
@@ -204,7 +207,7 @@ fn the_runs_not_yet_at_the_target_keep_the_rules_gain() {
 }
 
 #[test]
-#[ignore = "issue 51: the vertical rotors still take 3.81 and 4.45 iterations a step"]
+#[ignore = "issue 51: the vertical rotors still take 3.89 and 3.65 iterations a step"]
 fn the_runs_not_yet_at_the_target_meet_it() {
     let over: Vec<_> = counts(true).into_iter().filter(|c| c.2 > TARGET).collect();
     assert!(over.is_empty(), "above {TARGET} a step: {over:?}");
@@ -330,4 +333,49 @@ fn a_torque_driven_coast_takes_one_lateral_solve_a_step() {
     println!("against 1e-12: displacements {worst:.2e} of their range, speed {speed:.2e}");
     assert!(worst <= 1e-7, "{worst:e}");
     assert!(speed <= 1e-10, "{speed:e}");
+}
+
+/// The pause of chord iterations after a refused one goes with the state:
+/// the whirling vertical rotor, stopped where a pause is running, saved,
+/// run on, restored and run on again, ends bit for bit where it ended the
+/// first time; a state whose pause is not a whole number of steps within
+/// the rule's is refused by name.
+#[test]
+fn a_restored_state_keeps_its_chord_pause() {
+    let mut model = model("vertical_rotor");
+    model.drive = Drive::Speed;
+    let speed = model.nominal_speed;
+    let options = SolverOptions {
+        time_step: largest_adaptive_step(&model, None),
+        local_error_tolerance: DEFAULT_LOCAL_ERROR_TOLERANCE,
+        ..SolverOptions::default()
+    };
+    let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
+    sim.set_speed(speed, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    let mut t = 1.0;
+    sim.advance_to(t).unwrap();
+    // A communication point inside a pause (every step of this rotor refuses one).
+    while sim.state().chord_pause == 0.0 {
+        t += 1e-3;
+        sim.advance_to(t).unwrap();
+    }
+    let saved = sim.state().clone();
+    sim.advance_to(t + 0.2).unwrap();
+    let first = sim.state().u.clone();
+    let mut restored = saved.clone();
+    sim.set_state(restored.clone()).unwrap();
+    sim.advance_to(t + 0.2).unwrap();
+    assert_eq!(first, sim.state().u, "the restored run left the first");
+    // The same state with no pause runs on other iterates (not bit for bit):
+    // the pause is what the state carried.
+    restored.chord_pause = 0.0;
+    sim.set_state(restored.clone()).unwrap();
+    sim.advance_to(t + 0.2).unwrap();
+    assert_ne!(first, sim.state().u);
+    for bad in [0.5, -1.0, 17.0] {
+        restored.chord_pause = bad;
+        let e = sim.set_state(restored.clone()).unwrap_err().to_string();
+        assert!(e.contains("chord_pause"), "{e}");
+    }
 }

@@ -52,8 +52,9 @@ pub const MAGIC: &[u8; 8] = b"RBFMUst\0";
 /// 8 which contact and coefficient-table warnings have been raised and the
 /// reduced rotor's validity watch, 9 whether the pads are settled on their
 /// own balance, 10 each bearing's static load, 11 each harmonic force's
-/// phase and frequency, tunable in the FMU).
-pub const VERSION: u64 = 11;
+/// phase and frequency, tunable in the FMU, 12 the steps left without chord
+/// iterations).
+pub const VERSION: u64 = 12;
 /// Bytes before the fields: magic, version, fingerprint.
 const HEADER: usize = MAGIC.len() + 8 + 8;
 /// Bytes after the fields: the checksum.
@@ -79,7 +80,7 @@ fn phase_index(phase: Phase) -> f64 {
 }
 
 /// The scalar fields, in image order.
-const SCALARS: [Scalar; 19] = [
+const SCALARS: [Scalar; 20] = [
     ("time", |s| s.sim.time, |s, v| put(&mut s.sim.time, v)),
     (
         "spin_angle",
@@ -204,6 +205,15 @@ const SCALARS: [Scalar; 19] = [
         |s, v| {
             s.sim.pad_balancing = v;
             v == 0.0 || v == 1.0
+        },
+    ),
+    (
+        "chord_pause",
+        |s| s.sim.chord_pause,
+        |s, v| {
+            s.sim.chord_pause = v;
+            // Its range is `SimState::check`'s, which names it.
+            v.is_finite()
         },
     ),
 ];
@@ -512,6 +522,7 @@ mod tests {
                 harmonic_frequency: v(1, 24.0),
                 step_proposal: 2.5e-4,
                 pad_balancing: 1.0,
+                chord_pause: 7.0,
             },
             params: Params {
                 time_step: 1e-3,

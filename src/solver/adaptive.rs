@@ -113,6 +113,7 @@ impl SimState {
             table_warned,
             static_load,
             pad_balancing,
+            chord_pause,
             harmonic_phase,
             harmonic_frequency,
         } = other;
@@ -152,6 +153,7 @@ impl SimState {
             (&mut self.factor_speed, factor_speed),
             (&mut self.step_proposal, step_proposal),
             (&mut self.pad_balancing, pad_balancing),
+            (&mut self.chord_pause, chord_pause),
         ] {
             *dst = *src;
         }

@@ -33,6 +33,9 @@ pub(super) struct CondensedWork {
     /// (`Bearing::output`), which such a step's outputs take. Either pass gives
     /// the same bits, so this choice of work changes no result.
     pub(super) last_on_iterate: bool,
+    /// Steps left in which the condensed Newton tries no chord iteration,
+    /// set to [`CHORD_PAUSE`](crate::solver::newton::CHORD_PAUSE) when one is refused.
+    pub(super) chord_pause: u32,
 }
 
 impl CondensedWork {
@@ -51,6 +54,7 @@ impl CondensedWork {
             cj_rhs: vec![0.0; n_journal],
             balancing: false,
             last_on_iterate: false,
+            chord_pause: 0,
         }
     }
 }
@@ -64,5 +68,15 @@ impl CondensedWork {
     /// Restore [`CondensedWork::balancing`] with a state (`SimState::pad_balancing`).
     pub fn set_balancing(&mut self, on: bool) {
         self.balancing = on;
+    }
+
+    /// Steps left without chord iterations ([`CondensedWork::chord_pause`]).
+    pub fn chord_pause(&self) -> u32 {
+        self.chord_pause
+    }
+
+    /// Restore [`CondensedWork::chord_pause`] with a state (`SimState::chord_pause`).
+    pub fn set_chord_pause(&mut self, steps: u32) {
+        self.chord_pause = steps;
     }
 }

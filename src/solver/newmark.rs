@@ -420,6 +420,7 @@ impl Simulator {
         let speed1 = self.speed_at(t1);
         let spin1 = self.state.spin_angle + 0.5 * (speed0 + speed1) * h;
         self.state.pad_balancing = f64::from(u8::from(self.condensed.balancing()));
+        self.state.chord_pause = f64::from(self.condensed.chord_pause());
         let (s, w) = (&mut self.state, &mut self.newmark);
         std::mem::swap(&mut s.u, &mut w.u);
         std::mem::swap(&mut s.ud, &mut w.ud);

@@ -456,6 +456,7 @@ mod tests {
             harmonic_frequency: vec![],
             step_proposal: 0.0,
             pad_balancing: 0.0,
+            chord_pause: 0.0,
         };
         for &node in &rotor.reduction.as_ref().unwrap().kept_nodes {
             let (ix, iy) = (

@@ -140,6 +140,7 @@ impl Simulator {
             harmonic_frequency: rotor.model.harmonic_forces().map(|h| h.2).collect(),
             step_proposal: 0.0,
             pad_balancing: 0.0,
+            chord_pause: 0.0,
         };
         if let Some(t) = &torsion {
             let n = t.chain.dof_count();
@@ -289,6 +290,8 @@ impl Simulator {
         }
         self.schur.ready = false;
         self.condensed.set_balancing(state.pad_balancing != 0.0);
+        // A whole number within 0..=CHORD_PAUSE (`SimState::check`).
+        self.condensed.set_chord_pause(state.chord_pause as u32);
         self.state = state;
         Ok(())
     }

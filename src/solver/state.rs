@@ -2,6 +2,7 @@
 //! the solver holds) and its validation when a front end restores it.
 
 use super::error::SolverError;
+use super::newton::CHORD_PAUSE;
 use crate::units::{RAD_S_TO_RPM, Short};
 
 /// The complete dynamic state: restoring it reproduces a run bit for bit.
@@ -67,6 +68,10 @@ pub struct SimState {
     /// (`solver::pad_balance`), set by a slowly contracting step and carried
     /// to the next, else 0.
     pub pad_balancing: f64,
+    /// Steps left in which the condensed Newton tries no chord iteration
+    /// (a whole number from 0 to `solver::newton::CHORD_PAUSE`), set when one
+    /// is refused and carried to the next steps.
+    pub chord_pause: f64,
     /// For each nonlinear bearing site (site order), whether its contact has
     /// gone beyond the penetration and the force limit of its law (1) or not
     /// (0), two entries a site: a warning is raised once, and a restored
@@ -111,6 +116,7 @@ impl SimState {
             ("stuck", self.stuck),
             ("step_proposal", self.step_proposal),
             ("pad_balancing", self.pad_balancing),
+            ("chord_pause", self.chord_pause),
         ];
         let vectors: [(&str, &[f64]); 21] = [
             ("u", &self.u),
@@ -171,6 +177,13 @@ impl SimState {
             return Err(SolverError::Input(format!(
                 "state field step_proposal = {} s is negative",
                 Short(self.step_proposal)
+            )));
+        }
+        let pause = self.chord_pause;
+        if pause.fract() != 0.0 || !(0.0..=f64::from(CHORD_PAUSE)).contains(&pause) {
+            return Err(SolverError::Input(format!(
+                "state field chord_pause = {} is not a whole number of steps from 0 to {CHORD_PAUSE}",
+                Short(pause)
             )));
         }
         if self.speed.abs() > max_speed {
