@@ -36,6 +36,10 @@ pub(super) struct CondensedWork {
     /// Steps left in which the condensed Newton tries no chord iteration,
     /// set to [`CHORD_PAUSE`](crate::solver::newton::CHORD_PAUSE) when one is refused.
     pub(super) chord_pause: u32,
+    /// Set by a step whose gyroscopic correction moved a journal by more
+    /// than the Newton tolerance: the step is taken again on a factorization
+    /// at its own speed (`Simulator::gyroscopic_correction`).
+    pub(super) gyroscopic_excess: bool,
 }
 
 impl CondensedWork {
@@ -55,6 +59,7 @@ impl CondensedWork {
             balancing: false,
             last_on_iterate: false,
             chord_pause: 0,
+            gyroscopic_excess: false,
         }
     }
 }

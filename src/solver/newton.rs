@@ -189,11 +189,23 @@ impl Simulator {
                 &mut w.lin,
                 |j| (a0 * s.u[j] + a2 * s.ud[j] + s.udd[j], a1 * s.u[j] + s.ud[j]),
             );
+            let change = speed1 - f.speed;
+            if change != 0.0 {
+                // The gyroscopic force of the speed change at the predicted
+                // rates, `−ΔΩ G u̇_p` with `u̇_p = u̇ₙ + h üₙ` (`gyroscopic_correction`).
+                for (v, (ud, udd)) in w.mv.iter_mut().zip(s.ud.iter().zip(&s.udd)) {
+                    *v = ud + h * udd;
+                }
+                self.rotor
+                    .gyroscopic
+                    .mul_add_vec(-change, &w.mv, &mut w.lin);
+            }
             f.lu.solve_in_place(&mut w.lin);
         }
         if sj == 0 {
             self.stats.iterations += 1;
             self.set_displacement_and_rates(h, Displacement::Linear);
+            self.gyroscopic_correction(h, speed1, f);
             return Ok(None);
         }
         let tol = self.options.tolerance;
@@ -388,7 +400,7 @@ impl Simulator {
                 for (fk, wk) in c.fj.iter_mut().zip(&c.wv) {
                     *fk += wk;
                 }
-                self.displacement_from_journal_forces(h, f);
+                self.displacement_from_journal_forces(h, speed1, f);
                 self.place_journals(h);
                 self.stats.steps_on_iterate += 1;
                 self.condensed.last_on_iterate = true;
@@ -413,7 +425,7 @@ impl Simulator {
                     let kc = &c.kc[4 * b + 2 * i..4 * b + 2 * i + 2];
                     *fk += c.wv[k] - kc[0] * c.cj_rhs[2 * b] - kc[1] * c.cj_rhs[2 * b + 1];
                 }
-                self.displacement_from_journal_forces(h, f);
+                self.displacement_from_journal_forces(h, speed1, f);
                 if !damped {
                     self.condensed.balancing = balanced && most_evaluations > BALANCED_EVALUATIONS;
                 }
@@ -457,7 +469,7 @@ impl Simulator {
 
     /// The step's displacement `u = u_lin + A⁻¹ E F_j` and its Newmark rates,
     /// `F_j` the journal forces in `condensed.fj`.
-    fn displacement_from_journal_forces(&mut self, h: f64, f: &Factor) {
+    fn displacement_from_journal_forces(&mut self, h: f64, speed1: f64, f: &Factor) {
         let (w, c) = (&mut self.newmark, &self.condensed);
         if f.z.is_empty() {
             w.mv.fill(0.0);
@@ -474,6 +486,71 @@ impl Simulator {
             }
             self.set_displacement_and_rates(h, Displacement::Linear);
         }
+        self.gyroscopic_correction(h, speed1, f);
+    }
+
+    /// A factorization made at a speed `ΔΩ` off the step's `speed1` leaves
+    /// the gyroscopic term `a1 ΔΩ G` out of `A`: the step put `−ΔΩ G u̇_p` in
+    /// as a force at the predicted rates `u̇_p = u̇ₙ + h üₙ`, and the rest,
+    /// `g = −ΔΩ G (u̇ − u̇_p)`, is added here as a linear correction with the
+    /// bearings' condensed stiffness: the journals move by
+    /// `δj = (I + G_j K_c)⁻¹ Eᵀ A⁻¹ g` (the step's factored Newton matrix), their
+    /// forces by `−K_c δj`, the rotor by `A⁻¹ (g − E K_c δj)`; what is left
+    /// is of second order in `ΔΩ`. Two banded solves a step, against a
+    /// factorization and a solve per journal DOF. A correction that moves a
+    /// journal by more than the Newton tolerance sends the step back to a
+    /// factorization at its own speed ([`CondensedWork::gyroscopic_excess`]).
+    ///
+    /// [`CondensedWork::gyroscopic_excess`]: super::condensed_work::CondensedWork
+    fn gyroscopic_correction(&mut self, h: f64, speed1: f64, f: &Factor) {
+        let change = speed1 - f.speed;
+        if change == 0.0 {
+            return;
+        }
+        let (s, w, c) = (&self.state, &mut self.newmark, &mut self.condensed);
+        for (d, (ud, (ud0, udd0))) in
+            w.du.iter_mut()
+                .zip(w.ud.iter().zip(s.ud.iter().zip(&s.udd)))
+        {
+            *d = ud - (ud0 + h * udd0);
+        }
+        w.mv.fill(0.0);
+        self.rotor.gyroscopic.mul_add_vec(-change, &w.du, &mut w.mv);
+        f.lu.solve_in_place(&mut w.mv);
+        let sj = self.sites.n_journal;
+        if sj > 0 {
+            for (r, coordinate) in self.sites.coordinates.iter().enumerate() {
+                c.cj_rhs[r] = coordinate.of(&w.mv);
+            }
+            lu_solve(&c.cj, sj, &c.cj_piv, &mut c.cj_rhs);
+            let journal = c.cj_rhs.iter().fold(0.0_f64, |m, d| m.max(d.abs()));
+            if journal > self.options.tolerance * self.sites.length_scale {
+                c.gyroscopic_excess = true;
+                return;
+            }
+            w.du.fill(0.0);
+            for (k, (coordinate, fk)) in self
+                .sites
+                .coordinates
+                .iter()
+                .zip(c.fj.iter_mut())
+                .enumerate()
+            {
+                let (b, i) = (k / 2, k % 2);
+                let kc = &c.kc[4 * b + 2 * i..4 * b + 2 * i + 2];
+                let force = -kc[0] * c.cj_rhs[2 * b] - kc[1] * c.cj_rhs[2 * b + 1];
+                *fk += force;
+                coordinate.add(&mut w.du, force);
+            }
+            f.lu.solve_in_place(&mut w.du);
+            for (m, d) in w.mv.iter_mut().zip(&w.du) {
+                *m += d;
+            }
+        }
+        for (u, d) in w.u.iter_mut().zip(&w.mv) {
+            *u += d;
+        }
+        self.set_displacement_and_rates(h, Displacement::Iterate);
     }
 
     /// Put the journals (each one rotor DOF: [`Sites::on_ground`]) on the
