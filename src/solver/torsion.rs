@@ -607,9 +607,14 @@ fn torsional_residual(
         }
     }
     if jacobian {
-        tors.a.assign(&tors.chain.stiffness);
-        tors.a.scale_add(a1, &tors.chain.damping);
-        tors.a.scale_add(a0, &tors.chain.mass);
+        // Formed once a step size, in the same order: the same bits.
+        if tors.base_for != [a0, a1] {
+            tors.base.assign(&tors.chain.stiffness);
+            tors.base.scale_add(a1, &tors.chain.damping);
+            tors.base.scale_add(a0, &tors.chain.mass);
+            tors.base_for = [a0, a1];
+        }
+        tors.a.assign(&tors.base);
     }
     for (dof, t) in &tors.thrust {
         if let Some(i) = *dof {

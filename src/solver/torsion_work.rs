@@ -23,6 +23,10 @@ pub(super) struct Torsion {
     /// factors (storage reused).
     pub(super) a: BandMatrix<f64>,
     pub(super) lu: BandLu<f64>,
+    /// `K + a1 C + a0 M` for the Newmark constants `base_for` = `(a0, a1)`
+    /// (`[NaN; 2]` before the first), the part of `a` a step size fixes.
+    pub(super) base: BandMatrix<f64>,
+    pub(super) base_for: [f64; 2],
     /// Iterate: twist, rate, acceleration at the step's end.
     pub theta: Vec<f64>,
     pub omega: Vec<f64>,
@@ -71,6 +75,8 @@ impl Torsion {
         }
         Self {
             lu: a.lu().expect("the identity factors"),
+            base: a.zeroed_like(),
+            base_for: [f64::NAN; 2],
             a,
             inputs,
             planes,
