@@ -496,8 +496,9 @@ impl Simulator {
     /// bearings' condensed stiffness: the journals move by
     /// `δj = (I + G_j K_c)⁻¹ Eᵀ A⁻¹ g` (the step's factored Newton matrix), their
     /// forces by `−K_c δj`, the rotor by `A⁻¹ (g − E K_c δj)`; what is left
-    /// is of second order in `ΔΩ`. Two banded solves a step, against a
-    /// factorization and a solve per journal DOF. A correction that moves a
+    /// is of second order in `ΔΩ`. One banded solve a step and `A⁻¹ E`'s
+    /// columns where the factorization keeps them (else a second solve),
+    /// against a factorization and a solve per journal DOF. A correction that moves a
     /// journal by more than the Newton tolerance sends the step back to a
     /// factorization at its own speed ([`CondensedWork::gyroscopic_excess`]).
     ///
@@ -528,6 +529,9 @@ impl Simulator {
                 c.gyroscopic_excess = true;
                 return;
             }
+            // `A⁻¹ E` by its columns where the factorization keeps them.
+            let columns = !f.z.is_empty();
+            let n = w.mv.len();
             w.du.fill(0.0);
             for (k, (coordinate, fk)) in self
                 .sites
@@ -540,11 +544,19 @@ impl Simulator {
                 let kc = &c.kc[4 * b + 2 * i..4 * b + 2 * i + 2];
                 let force = -kc[0] * c.cj_rhs[2 * b] - kc[1] * c.cj_rhs[2 * b + 1];
                 *fk += force;
-                coordinate.add(&mut w.du, force);
+                if columns {
+                    for (m, z) in w.mv.iter_mut().zip(&f.z[k * n..(k + 1) * n]) {
+                        *m += z * force;
+                    }
+                } else {
+                    coordinate.add(&mut w.du, force);
+                }
             }
-            f.lu.solve_in_place(&mut w.du);
-            for (m, d) in w.mv.iter_mut().zip(&w.du) {
-                *m += d;
+            if !columns {
+                f.lu.solve_in_place(&mut w.du);
+                for (m, d) in w.mv.iter_mut().zip(&w.du) {
+                    *m += d;
+                }
             }
         }
         for (u, d) in w.u.iter_mut().zip(&w.mv) {
