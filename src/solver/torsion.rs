@@ -479,7 +479,7 @@ impl Simulator {
             }
             tors.rhs[0] = 0.0;
         }
-        let outcome = tors.a.lu_into(&mut tors.lu);
+        let outcome = tors.factor();
         if outcome.is_ok() {
             tors.lu.solve_in_place(&mut tors.rhs);
             if free {
@@ -551,7 +551,7 @@ fn torsional_newton(tors: &mut Torsion, s: &SimState, h: f64) -> Result<(), Solv
     }
     let mut residual = torsional_residual(tors, s, (a0, a1, a2), true);
     for _ in 0..MAX_TORSION_ITERATIONS {
-        tors.a.lu_into(&mut tors.lu)?;
+        tors.factor()?;
         tors.scratch.copy_from_slice(&tors.rhs);
         tors.lu.solve_in_place(&mut tors.scratch);
         let step = tors.scratch.iter().fold(0.0_f64, |m, v| m.max(v.abs()));

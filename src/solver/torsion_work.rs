@@ -3,7 +3,7 @@
 
 use crate::bearing::BearingEval;
 use crate::bearing::thrust::ThrustBearing;
-use crate::linalg::{BandLu, BandMatrix};
+use crate::linalg::{BandLu, BandMatrix, LinalgError};
 use crate::rotor::Rotor;
 use crate::rotor::torsion::TorsionalRotor;
 
@@ -27,6 +27,8 @@ pub(super) struct Torsion {
     /// (`[NaN; 2]` before the first), the part of `a` a step size fixes.
     pub(super) base: BandMatrix<f64>,
     pub(super) base_for: [f64; 2],
+    /// The matrix `lu` factors: a step whose `a` has the same bits reuses it.
+    pub(super) factored: BandMatrix<f64>,
     /// Iterate: twist, rate, acceleration at the step's end.
     pub theta: Vec<f64>,
     pub omega: Vec<f64>,
@@ -76,6 +78,7 @@ impl Torsion {
         Self {
             lu: a.lu().expect("the identity factors"),
             base: a.zeroed_like(),
+            factored: a.clone(),
             base_for: [f64::NAN; 2],
             a,
             inputs,
@@ -93,6 +96,23 @@ impl Torsion {
             eval: site_sizes.iter().map(|&m| BearingEval::new(m)).collect(),
             chain,
         }
+    }
+
+    /// Factor `a` into `lu`, unless `lu` already factors a matrix with the
+    /// same bits (at a steady speed the thrust friction's slope, and so `a`,
+    /// stays the same to the bit over thousands of steps: the torque-driven
+    /// hydro unit factored 60 times in 24 652 torsional iterations).
+    pub(super) fn factor(&mut self) -> Result<(), LinalgError> {
+        if self.a == self.factored {
+            return Ok(());
+        }
+        let outcome = self.a.lu_into(&mut self.lu);
+        match outcome {
+            Ok(()) => self.factored.assign(&self.a),
+            // Factors left half made match no matrix.
+            Err(_) => self.factored.set(0, 0, f64::NAN),
+        }
+        outcome
     }
 
     /// Inertia-weighted mean of `v` over the free twist DOFs.
