@@ -95,17 +95,7 @@ fn iterations_per_step(mut model: RotorModel, excitation: Option<f64>) -> (f64, 
             .count();
         assert!(pulls > 0);
     }
-    let speed = model.nominal_speed;
-    // The FMU's defaults: accuracy-controlled steps up to 12 a revolution at
-    // the top speed.
-    let options = SolverOptions {
-        time_step: largest_adaptive_step(&model, None),
-        local_error_tolerance: DEFAULT_LOCAL_ERROR_TOLERANCE,
-        ..SolverOptions::default()
-    };
-    let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
-    sim.set_speed(speed, 0.0).unwrap();
-    sim.settle_static().unwrap();
+    let mut sim = settled_at_speed(model);
     sim.advance_to(1.0).unwrap();
     let before = sim.stats();
     sim.advance_to(1.0 + COUNTED).unwrap();
@@ -119,6 +109,22 @@ fn iterations_per_step(mut model: RotorModel, excitation: Option<f64>) -> (f64, 
         (after.iterations - before.iterations) as f64 / steps as f64,
         steps,
     )
+}
+
+/// A simulator of `model` at its operating speed at the FMU's defaults
+/// (accuracy-controlled steps up to 12 a revolution at the top speed),
+/// settled on its static equilibrium.
+fn settled_at_speed(model: RotorModel) -> Simulator {
+    let speed = model.nominal_speed;
+    let options = SolverOptions {
+        time_step: largest_adaptive_step(&model, None),
+        local_error_tolerance: DEFAULT_LOCAL_ERROR_TOLERANCE,
+        ..SolverOptions::default()
+    };
+    let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
+    sim.set_speed(speed, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    sim
 }
 
 /// Every shipped model's file name, and whether it has a magnetic pull.
@@ -349,15 +355,7 @@ fn a_torque_driven_coast_takes_one_lateral_solve_a_step() {
 fn a_restored_state_keeps_its_chord_pause() {
     let mut model = model("vertical_rotor");
     model.drive = Drive::Speed;
-    let speed = model.nominal_speed;
-    let options = SolverOptions {
-        time_step: largest_adaptive_step(&model, None),
-        local_error_tolerance: DEFAULT_LOCAL_ERROR_TOLERANCE,
-        ..SolverOptions::default()
-    };
-    let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
-    sim.set_speed(speed, 0.0).unwrap();
-    sim.settle_static().unwrap();
+    let mut sim = settled_at_speed(model);
     let mut t = 1.0;
     sim.advance_to(t).unwrap();
     // A communication point inside a pause (every step of this rotor refuses one).

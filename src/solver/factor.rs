@@ -154,6 +154,25 @@ impl Simulator {
         }
         Ok(false)
     }
+
+    /// Make `factor` a factorization for exactly step `h` at speed `speed1`
+    /// (the damped retry's, and a step whose gyroscopic correction was too
+    /// large), refactoring the one in hand if it is not.
+    pub(super) fn exact_factor(
+        &mut self,
+        h: f64,
+        speed1: f64,
+        factor: &mut Option<Factor>,
+    ) -> Result<(), SolverError> {
+        let exact = factor
+            .as_ref()
+            .is_some_and(|f| (f.step - h).abs() <= 1e-12 * h && f.speed == speed1);
+        if !exact {
+            *factor = Some(self.dynamic_factor(h, speed1, factor.take())?);
+            self.schur.ready = false;
+        }
+        Ok(())
+    }
 }
 
 #[cfg(test)]

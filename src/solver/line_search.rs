@@ -168,13 +168,7 @@ impl Simulator {
         speed1: f64,
         factor: &mut Option<Factor>,
     ) -> Result<Option<f64>, SolverError> {
-        let exact = factor
-            .as_ref()
-            .is_some_and(|f| (f.step - h).abs() <= 1e-12 * h && f.speed == speed1);
-        if !exact {
-            *factor = Some(self.dynamic_factor(h, speed1, factor.take())?);
-            self.schur.ready = false;
-        }
+        self.exact_factor(h, speed1, factor)?;
         self.stats.retries += 1;
         self.predict(h, true);
         match factor.as_ref() {

@@ -426,12 +426,12 @@ impl Simulator {
         speed1: f64,
         factor: &mut Option<Factor>,
     ) -> Result<Option<f64>, SolverError> {
-        let f = self.dynamic_factor(h, speed1, factor.take())?;
-        self.schur.ready = false;
+        self.exact_factor(h, speed1, factor)?;
         self.predict(h, true);
-        let outcome = self.newton_condensed(h, t1, speed1, &f, false);
-        *factor = Some(f);
-        outcome
+        match factor.as_ref() {
+            Some(f) => self.newton_condensed(h, t1, speed1, f, false),
+            None => Err(SolverError::Input("internal: no factorization".into())),
+        }
     }
 
     /// Take the solved lateral step of size `h` from `newmark` into the state.
