@@ -66,6 +66,7 @@ mod factor;
 mod factor_work;
 mod film_start;
 mod floor;
+mod gyroscopic_correction;
 mod inputs;
 mod line_search;
 mod newmark;
