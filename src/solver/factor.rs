@@ -62,15 +62,22 @@ pub(super) fn make_factor(
     Ok(factor)
 }
 
-/// Relative speed change within which the condensed step keeps a
-/// factorization of its step size and corrects for the gyroscopic term
-/// instead (`Simulator::gyroscopic_correction`). The torque-driven hydro unit
-/// coasting from 150 rpm (`tests/newton_iterations.rs`), its speed moving
-/// about 5e-6 of itself a step: 1.0 factorizations a step on every speed
-/// change; 0.137 / 0.043 / 0.009 with a band of 3e-5 / 1e-4 / 1e-3, its
-/// displacements within 1.8e-8 / 3.7e-9 / 1.9e-8 of their range of a run at
-/// a Newton tolerance of 1e-12 (2.4e-9 refactoring every step).
-pub(super) const SPEED_REUSE_BAND: f64 = 1e-4;
+/// Gyroscopic phase `|ΔΩ| h` (rad) between a step's speed and that of a
+/// factorization of its step size within which the condensed step keeps the
+/// factorization and corrects for the gyroscopic term instead
+/// (`Simulator::gyroscopic_correction`). The term left out of `A` is
+/// `(2/h) ΔΩ G` against `(4/h²) M`, so `ΔΩ h` measures it: what the
+/// correction leaves is of that order relative to a correction already
+/// within the Newton tolerance (a larger one refactors). Against the relative
+/// band of 1e-4 it replaces (`|ΔΩ| ≤ 1e-4 |Ω|`, which refactored every step
+/// of a start-up, its speed 0 at first), at 1e-3 a linear run-up from rest
+/// to the rated speed in 10 s (first 4 s, equal steps of a quarter of the
+/// FMU's largest; `docs/solver.md`) makes 0.006–0.04 factorizations a step
+/// instead of 1.0, and the torque-driven hydro unit's coast from 150 rpm
+/// 0.007 instead of 0.043 (0.009 at 1e-4; its displacements within 3.1e-8
+/// of their range of a run at a Newton tolerance of 1e-12, 2.0e-8 at 1e-4,
+/// 3.7e-9 with the relative band, 2.4e-9 refactoring every step).
+pub(super) const GYROSCOPIC_PHASE_BAND: f64 = 1e-3;
 
 /// A factorization at a speed more than 2 % away from `reference` (rad/s) is
 /// not reused by the stale path.
@@ -116,10 +123,11 @@ impl Simulator {
 
     /// Make `factor` exact for step `h` at speed `speed1` where that pays off;
     /// returns whether it is exact. A factorization of the same step within
-    /// [`SPEED_REUSE_BAND`] of the speed counts as exact: the condensed step
-    /// corrects it for the gyroscopic term of the difference. A factorization
-    /// at another step size, or more than 2 % off in speed, is always redone. Within that band a speed
-    /// change is refactored when the journal DOFs are few (≤ 8): one banded LU
+    /// [`GYROSCOPIC_PHASE_BAND`] of the speed counts as exact: the condensed step
+    /// corrects it for the gyroscopic term of the difference. Beyond it, a
+    /// factorization at another step size, or more than 2 % off in speed, is
+    /// always redone; within 2 % a speed change is refactored when the
+    /// journal DOFs are few (≤ 8): one banded LU
     /// plus one solve per journal DOF for `G`, against the stale path's
     /// mat-vecs and two solves per iteration, and 1.5× the iterations on a
     /// Jeffcott run-up (see the test in [`super::newmark`]). It is refactored
@@ -139,7 +147,7 @@ impl Simulator {
             None => (false, true),
             Some(f) => (
                 (f.step - h).abs() <= 1e-12 * h
-                    && (speed1 - f.speed).abs() <= SPEED_REUSE_BAND * f.speed.abs(),
+                    && (speed1 - f.speed).abs() * h <= self.gyroscopic_phase_band,
                 (f.step - h).abs() > 1e-9 * h || speed_band_changed(f.speed, speed1),
             ),
         };
