@@ -269,15 +269,16 @@ fn run_ups_on_pads_take_at_most_three_iterations_a_step() {
 /// 3e-13 rad of twist, is taken by the torsional correction instead
 /// (`solver/torsion.rs`, `absorb_coupling_change`): 4.0 iterations and 2.0
 /// factorizations a step before, 2.0 and 1.0 then. A speed change within
-/// 1e-4 of the factorization's is now not refactored but corrected for its
-/// gyroscopic term (`solver/factor.rs`, `SPEED_REUSE_BAND`): 0.043
-/// factorizations a step (bound 0.1). The run agrees with one at a Newton
+/// a gyroscopic phase `|ΔΩ| h` of 1e-3 of the factorization's is now not
+/// refactored but corrected for its gyroscopic term (`solver/factor.rs`,
+/// `GYROSCOPIC_PHASE_BAND`): 0.007 factorizations a step (bound 0.1; 0.043
+/// with the relative band of 1e-4 before it). The run agrees with one at a Newton
 /// tolerance of 1e-12 (where the correction is seldom small enough and the
 /// coupling is iterated, 4.8 iterations a step, and the gyroscopic
 /// correction, moving a journal by more than that tolerance, mostly sends the
 /// step back to a factorization at its speed): displacements within 1e-7 of
-/// their range (3.7e-9 measured; 2.4e-9 refactoring every step), the speed
-/// within 1e-10 of itself (9.9e-12).
+/// their range (3.1e-8 measured; 3.7e-9 with the relative band, 2.4e-9
+/// refactoring every step), the speed within 1e-10 of itself (8.7e-12).
 #[test]
 fn a_torque_driven_coast_takes_one_lateral_solve_a_step() {
     let run = |tolerance: f64| {

@@ -41,7 +41,27 @@ pub(super) struct FactorWork {
     /// [`SET_ASIDE_BYTES`] over the storage of one factorization, at most
     /// [`SET_ASIDE_COUNT`].
     pub(super) capacity: usize,
+    /// [`GYROSCOPIC_PHASE_BAND`], the band within which a factorization at
+    /// another speed is kept (`Simulator::prepare_factor`).
+    pub(super) phase_band: f64,
 }
+
+/// Gyroscopic phase `|ΔΩ| h` (rad) between a step's speed and that of a
+/// factorization of its step size within which the condensed step keeps the
+/// factorization and corrects for the gyroscopic term instead
+/// (`Simulator::gyroscopic_correction`). The term left out of `A` is
+/// `(2/h) ΔΩ G` against `(4/h²) M`, so `ΔΩ h` measures it: what the
+/// correction leaves is of that order relative to a correction already
+/// within the Newton tolerance (a larger one refactors). Against the relative
+/// band of 1e-4 it replaces (`|ΔΩ| ≤ 1e-4 |Ω|`, which refactored every step
+/// of a start-up, its speed 0 at first), at 1e-3 a linear run-up from rest
+/// to the rated speed in 10 s (first 4 s, equal steps of a quarter of the
+/// FMU's largest; `docs/solver.md`) makes 0.006–0.04 factorizations a step
+/// instead of 1.0, and the torque-driven hydro unit's coast from 150 rpm
+/// 0.007 instead of 0.043 (0.009 at 1e-4; its displacements within 3.1e-8
+/// of their range of a run at a Newton tolerance of 1e-12, 2.0e-8 at 1e-4,
+/// 3.7e-9 with the relative band, 2.4e-9 refactoring every step).
+pub(super) const GYROSCOPIC_PHASE_BAND: f64 = 1e-3;
 
 /// Largest number of factorizations set aside.
 const SET_ASIDE_COUNT: usize = 8;
@@ -64,6 +84,7 @@ impl FactorWork {
             column: vec![0.0; n],
             set_aside: Vec::new(),
             capacity: (SET_ASIDE_BYTES / bytes).min(SET_ASIDE_COUNT),
+            phase_band: GYROSCOPIC_PHASE_BAND,
         }
     }
 

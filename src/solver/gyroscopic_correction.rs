@@ -1,5 +1,5 @@
 //! The correction of a condensed step taken on a factorization made at a
-//! speed `ΔΩ` off the step's own (within `factor::GYROSCOPIC_PHASE_BAND`): the
+//! speed `ΔΩ` off the step's own (within `factor_work::GYROSCOPIC_PHASE_BAND`): the
 //! gyroscopic term `a1 ΔΩ G` that `A` leaves out (`docs/solver.md`).
 
 use super::dense::lu_solve;

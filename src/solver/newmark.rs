@@ -482,11 +482,11 @@ mod tests {
     #[test]
     fn condensed_and_full_residual_newton_agree_on_a_run_up() {
         let mut exact = jeffcott();
-        exact.gyroscopic_phase_band = 0.0;
+        exact.factor_work.phase_band = 0.0;
         let mut corrected = jeffcott();
         let mut banded = jeffcott();
         banded.refactor_journal_limit = 0;
-        banded.gyroscopic_phase_band = 0.0;
+        banded.factor_work.phase_band = 0.0;
         let clearance = exact.sites.length_scale;
         let (mut worst, mut worst_corrected): (f64, f64) = (0.0, 0.0);
         for k in 1..=200 {
@@ -528,7 +528,7 @@ mod tests {
         let banded = || {
             let mut sim = jeffcott();
             sim.refactor_journal_limit = 0;
-            sim.gyroscopic_phase_band = 0.0;
+            sim.factor_work.phase_band = 0.0;
             sim
         };
         let t = |k: usize| k as f64 * 0.003;

@@ -56,9 +56,6 @@ pub struct Simulator {
     /// Up to this many journal DOFs a speed change is refactored exactly (see
     /// [`Simulator::prepare_factor`]).
     pub(super) refactor_journal_limit: usize,
-    /// The gyroscopic phase `|ΔΩ| h` within which a factorization at
-    /// another speed is kept and corrected for ([`Simulator::prepare_factor`]).
-    pub(super) gyroscopic_phase_band: f64,
     pub(super) newmark: NewmarkWork,
     pub(super) schur: SchurSolve,
     pub(super) condensed: CondensedWork,
@@ -173,7 +170,6 @@ impl Simulator {
             output_q: vec![0.0; widest],
             output_qd: vec![0.0; widest],
             refactor_journal_limit: 8,
-            gyroscopic_phase_band: super::factor::GYROSCOPIC_PHASE_BAND,
             newmark: NewmarkWork::new(n, n_internal, rotor.model.load_inputs().len()),
             schur: SchurSolve::new(n, &sites),
             condensed: CondensedWork::new(&sites),
