@@ -236,6 +236,24 @@ mod tests {
         assert!(recalled == formed, "the recalled run differs");
     }
 
+    /// A simulator of shipped model `name` driven by its speed, in equal
+    /// steps of a quarter of the FMU's largest, keeping a factorization
+    /// within the phase band `band`; and its rated speed.
+    fn at_quarter_steps(name: &str, band: f64) -> (Simulator, f64) {
+        let path = format!("{}/models/{name}.toml", env!("CARGO_MANIFEST_DIR"));
+        let mut model = RotorModel::from_file(std::path::Path::new(&path)).unwrap();
+        model.drive = crate::model::Drive::Speed;
+        let options = SolverOptions {
+            time_step: crate::solver::time_step::largest_adaptive_step(&model, None) / 4.0,
+            local_error_tolerance: 0.0,
+            ..SolverOptions::default()
+        };
+        let rated = model.nominal_speed;
+        let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
+        sim.factor_work.phase_band = band;
+        (sim, rated)
+    }
+
     /// Start-ups from rest (the static equilibrium at standstill, then a
     /// linear run-up to the rated speed in 10 s, its first 2 s in equal
     /// steps of a quarter of the FMU's largest), on a factorization kept
@@ -250,17 +268,7 @@ mod tests {
     #[test]
     fn start_ups_keep_their_factorization_within_the_newton_tolerance() {
         let run = |name: &str, band: f64| {
-            let path = format!("{}/models/{name}.toml", env!("CARGO_MANIFEST_DIR"));
-            let mut model = RotorModel::from_file(std::path::Path::new(&path)).unwrap();
-            model.drive = crate::model::Drive::Speed;
-            let options = SolverOptions {
-                time_step: crate::solver::time_step::largest_adaptive_step(&model, None) / 4.0,
-                local_error_tolerance: 0.0,
-                ..SolverOptions::default()
-            };
-            let rated = model.nominal_speed;
-            let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
-            sim.factor_work.phase_band = band;
+            let (mut sim, rated) = at_quarter_steps(name, band);
             if band == 0.0 {
                 sim.refactor_journal_limit = usize::MAX;
             }
@@ -308,19 +316,7 @@ mod tests {
     #[test]
     fn a_speed_step_on_a_large_unit_refactors_once() {
         let run = |band: f64| {
-            let path = concat!(
-                env!("CARGO_MANIFEST_DIR"),
-                "/models/turbine_generator_train.toml"
-            );
-            let model = RotorModel::from_file(std::path::Path::new(path)).unwrap();
-            let options = SolverOptions {
-                time_step: crate::solver::time_step::largest_adaptive_step(&model, None) / 4.0,
-                local_error_tolerance: 0.0,
-                ..SolverOptions::default()
-            };
-            let rated = model.nominal_speed;
-            let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
-            sim.factor_work.phase_band = band;
+            let (mut sim, rated) = at_quarter_steps("turbine_generator_train", band);
             sim.set_speed(rated, 0.0).unwrap();
             sim.settle_static().unwrap();
             sim.advance_to(0.05).unwrap();
