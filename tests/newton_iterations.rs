@@ -116,15 +116,21 @@ fn iterations_per_step(mut model: RotorModel, excitation: Option<f64>) -> (f64, 
 /// settled on its static equilibrium.
 fn settled_at_speed(model: RotorModel) -> Simulator {
     let speed = model.nominal_speed;
+    let mut sim = at_fmu_defaults(model);
+    sim.set_speed(speed, 0.0).unwrap();
+    sim.settle_static().unwrap();
+    sim
+}
+
+/// A simulator of `model` at the FMU's defaults: accuracy-controlled steps
+/// up to 12 a revolution at the top speed, the FMU's local error tolerance.
+fn at_fmu_defaults(model: RotorModel) -> Simulator {
     let options = SolverOptions {
         time_step: largest_adaptive_step(&model, None),
         local_error_tolerance: DEFAULT_LOCAL_ERROR_TOLERANCE,
         ..SolverOptions::default()
     };
-    let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
-    sim.set_speed(speed, 0.0).unwrap();
-    sim.settle_static().unwrap();
-    sim
+    Simulator::new(Rotor::new(model).unwrap(), options).unwrap()
 }
 
 /// Every shipped model's file name, and whether it has a magnetic pull.
@@ -240,12 +246,7 @@ fn run_ups_on_pads_take_at_most_three_iterations_a_step() {
         }
         model.drive = Drive::Speed;
         let rated = model.nominal_speed;
-        let options = SolverOptions {
-            time_step: largest_adaptive_step(&model, None),
-            local_error_tolerance: DEFAULT_LOCAL_ERROR_TOLERANCE,
-            ..SolverOptions::default()
-        };
-        let mut sim = Simulator::new(Rotor::new(model).unwrap(), options).unwrap();
+        let mut sim = at_fmu_defaults(model);
         sim.set_speed(0.0, 0.0).unwrap();
         sim.settle_static().unwrap();
         sim.set_speed(0.0, rated / 10.0).unwrap();

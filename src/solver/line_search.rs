@@ -168,13 +168,8 @@ impl Simulator {
         speed1: f64,
         factor: &mut Option<Factor>,
     ) -> Result<Option<f64>, SolverError> {
-        self.exact_factor(h, speed1, factor)?;
         self.stats.retries += 1;
-        self.predict(h, true);
-        match factor.as_ref() {
-            Some(f) => self.newton_condensed(h, t1, speed1, f, true),
-            None => Err(SolverError::Input("internal: no factorization".into())),
-        }
+        self.exact_factor_step(h, t1, speed1, factor, true)
     }
 }
 

@@ -405,7 +405,7 @@ impl Simulator {
         };
         if std::mem::take(&mut self.condensed.gyroscopic_excess) {
             // The step again, on a factorization at its own speed.
-            outcome = self.exact_factor_step(h, t1, speed1, &mut factor);
+            outcome = self.exact_factor_step(h, t1, speed1, &mut factor, false);
         }
         // Plain Newton failed: the damped Newton gets the step before it is cut.
         let outcome = match outcome {
@@ -418,18 +418,21 @@ impl Simulator {
         outcome
     }
 
-    /// The condensed step on a factorization made at exactly `speed1`.
-    fn exact_factor_step(
+    /// The condensed step from the predictor on a factorization made at
+    /// exactly `speed1` (refactored into `factor` if the one in hand is
+    /// not), `damped` or plain (`Simulator::newton_condensed`).
+    pub(super) fn exact_factor_step(
         &mut self,
         h: f64,
         t1: f64,
         speed1: f64,
         factor: &mut Option<Factor>,
+        damped: bool,
     ) -> Result<Option<f64>, SolverError> {
         self.exact_factor(h, speed1, factor)?;
         self.predict(h, true);
         match factor.as_ref() {
-            Some(f) => self.newton_condensed(h, t1, speed1, f, false),
+            Some(f) => self.newton_condensed(h, t1, speed1, f, damped),
             None => Err(SolverError::Input("internal: no factorization".into())),
         }
     }
