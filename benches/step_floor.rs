@@ -22,7 +22,11 @@
 //!
 //! Each window in five segments, the floor measured after each at the
 //! state it ends on; medians over the segments (the ratio the median of
-//! the segments' ratios). `cargo bench --bench step_floor`.
+//! the segments' ratios). The table also gives the internal steps a
+//! communication point takes and the floor of a point, `steps a point ×
+//! (pass + solve)`: what a point costs at that step count even if every step
+//! were one pass and one solve, the bound below any plant-loop cost at the
+//! FMU's default accuracy. `cargo bench --bench step_floor`.
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -68,8 +72,8 @@ fn median(mut v: Vec<f64>) -> f64 {
 /// the floor measured at the state it ends on (so that a load on the machine
 /// weighs on both); returns the medians over the segments of µs per step,
 /// µs per force-and-Jacobian pass, µs per banded solve and their ratio, the
-/// Newton iterations a step and the steps.
-fn measure(sim: &mut Simulator, from: f64, to: f64) -> [f64; 6] {
+/// Newton iterations a step, the steps and the steps a communication point.
+fn measure(sim: &mut Simulator, from: f64, to: f64) -> [f64; 7] {
     sim.advance_to(from).unwrap();
     let before = sim.stats();
     let count = ((to - from) / COMM).round() as usize;
@@ -101,6 +105,7 @@ fn measure(sim: &mut Simulator, from: f64, to: f64) -> [f64; 6] {
         median(ratio),
         (after.iterations - before.iterations) as f64 / n as f64,
         n as f64,
+        n as f64 / count as f64,
     ]
 }
 
@@ -124,9 +129,12 @@ fn floor(sim: &mut Simulator) -> (f64, f64) {
     (pass, solve)
 }
 
-fn row(name: &str, run: &str, [step, pass, solve, ratio, newton, n]: [f64; 6]) {
+/// A table row; the floor of a communication point is its steps' floors,
+/// `steps a point × (pass + solve)`.
+fn row(name: &str, run: &str, [step, pass, solve, ratio, newton, n, per_point]: [f64; 7]) {
+    let floor_point = per_point * (pass + solve);
     println!(
-        "| {name} | {run} | {n} | {newton:.2} | {step:.1} | {pass:.2} | {solve:.2} | **{ratio:.1}** |"
+        "| {name} | {run} | {n} | {per_point:.2} | {newton:.2} | {step:.1} | {pass:.2} | {solve:.2} | **{ratio:.1}** | {floor_point:.1} |"
     );
 }
 
@@ -135,9 +143,9 @@ fn main() {
         return;
     }
     println!(
-        "| model | run | steps | Newton it/step | µs per step | µs per force-and-Jacobian pass | µs per banded solve | **step / (pass + solve)** |"
+        "| model | run | steps | steps a point | Newton it/step | µs per step | µs per force-and-Jacobian pass | µs per banded solve | **step / (pass + solve)** | floor of a point, µs |"
     );
-    println!("|---|---|---:|---:|---:|---:|---:|---:|");
+    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|");
     for (name, mut model) in shipped() {
         model.drive = Drive::Speed;
         let rated = model.nominal_speed;
