@@ -52,6 +52,7 @@ pub mod oil;
 pub mod pad;
 mod pad_coordinates;
 pub mod pad_table;
+mod pad_tally;
 pub mod plain;
 pub mod reynolds;
 pub mod rub;
