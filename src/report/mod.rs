@@ -32,6 +32,7 @@ pub mod hydro_torsion;
 pub mod level_two;
 pub mod orbits;
 pub mod review;
+pub mod review_summary;
 pub mod series;
 pub mod stamp;
 pub mod text;

@@ -44,7 +44,8 @@ use rotor_bearing::report::html::{Block, Section, Verdict, page};
 use rotor_bearing::report::hydro::{self, HousingStudy};
 use rotor_bearing::report::level_two::{level_two_blocks, level_two_summary_rows};
 use rotor_bearing::report::orbits::{orbit_blocks, orbit_summary_row};
-use rotor_bearing::report::review::{self, SummaryInputs};
+use rotor_bearing::report::review;
+use rotor_bearing::report::review_summary::{self, SummaryInputs};
 use rotor_bearing::report::stamp::{now_utc, sha256_hex, software_version};
 use rotor_bearing::report::text::short;
 use rotor_bearing::report::{hydro_loads, hydro_torsion};
@@ -274,7 +275,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
         .is_some()
         .then(|| tolerance_cases(rotor, speed, operating).map_err(|e| err(&e)));
 
-    let mut summary = review::summary(&SummaryInputs {
+    let mut summary = review_summary::summary(&SummaryInputs {
         campbell: campbell.as_ref().map_err(Clone::clone),
         unbalance: unbalance.as_ref().map_err(Clone::clone),
         stability: stability.as_ref().map_err(Clone::clone),
@@ -309,7 +310,7 @@ pub fn run(rotor: &Rotor, req: Request) -> Result<(), String> {
             &c.as_ref().map_err(Clone::clone),
         ));
     }
-    let overall = review::overall(&summary);
+    let overall = review_summary::overall(&summary);
     let file_arg = req
         .source
         .as_ref()
