@@ -9,6 +9,7 @@ mod build;
 mod context;
 mod error;
 pub mod file;
+mod file_bearings;
 pub mod impeller_stage;
 pub mod limits;
 mod load_inputs;
@@ -694,3 +695,5 @@ impl RotorModel {
 mod tests;
 #[cfg(test)]
 mod tests_machine;
+#[cfg(test)]
+mod tests_plausibility;
