@@ -9,6 +9,7 @@ pub mod backward_crossing;
 pub mod campbell;
 mod campbell_point;
 mod critical_refine;
+mod cross_coupling_sites;
 pub mod element_operating_point;
 pub mod film_validity;
 pub mod forced;
