@@ -321,17 +321,6 @@ pub fn overhung_mass(model: &RotorModel, bearing: usize, last_end: bool) -> f64 
         .sum()
 }
 
-/// Node (0-based) nearest axial position `z`.
-fn nearest_node(model: &RotorModel, z: f64) -> usize {
-    (0..model.node_count())
-        .min_by(|&i, &j| {
-            (model.node_z[i] - z)
-                .abs()
-                .total_cmp(&(model.node_z[j] - z).abs())
-        })
-        .unwrap_or(0)
-}
-
 /// Damping ratio below which a mode can show a resonance peak (`AF = 1/(2ζ)
 /// > 1`): the heavily damped film modes below it are no critical speeds.
 pub const RESONANT_DAMPING: f64 = 0.5;
@@ -350,7 +339,7 @@ fn first_mode_antinode(rotor: &Rotor, speed: f64, a: usize, b: usize) -> usize {
 /// its largest orbit; the mid-span node when the modes cannot be found.
 fn mode_antinode(rotor: &Rotor, speed: f64, (a, b): (usize, usize), which: usize) -> usize {
     let model = &rotor.model;
-    let mid = nearest_node(model, 0.5 * (model.node_z[a] + model.node_z[b]));
+    let mid = model.nearest_node(0.5 * (model.node_z[a] + model.node_z[b]));
     let options = ModalOptions {
         modes: 8,
         target_frequency: 0.0,
@@ -440,8 +429,8 @@ pub fn api_cases(rotor: &Rotor, mcs: f64) -> Result<(Vec<PlannedCase>, Vec<f64>)
         model.node_z[supports[second + 1]],
     );
     let quarter = [
-        nearest_node(model, za + 0.25 * (zb - za)),
-        nearest_node(model, za + 0.75 * (zb - za)),
+        model.nearest_node(za + 0.25 * (zb - za)),
+        model.nearest_node(za + 0.75 * (zb - za)),
     ];
     cases.push((
         ApiCaseKind::QuarterSpan,

@@ -18,14 +18,7 @@ pub fn mid_span_node(rotor: &Rotor) -> usize {
     } else {
         (m.node_z[0], m.node_z[m.node_count() - 1])
     };
-    let mid = 0.5 * (lo + hi);
-    (0..m.node_count())
-        .min_by(|&a, &b| {
-            (m.node_z[a] - mid)
-                .abs()
-                .total_cmp(&(m.node_z[b] - mid).abs())
-        })
-        .unwrap_or(0)
+    m.nearest_node(0.5 * (lo + hi))
 }
 
 /// Where the cross-coupling acts by default: [`api617_placement`].

@@ -114,12 +114,8 @@ impl Ctx<'_> {
             (None, Some(z)) => {
                 let z = self.finite(path.key("z"), z)?;
                 let span = node_z[node_z.len() - 1] - node_z[0];
-                let (best, dist) = node_z
-                    .iter()
-                    .enumerate()
-                    .map(|(i, &zn)| (i, (zn - z).abs()))
-                    .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
-                if dist <= 1e-9 * span.max(1.0) {
+                let best = super::nodes::nearest(node_z, z);
+                if (node_z[best] - z).abs() <= 1e-9 * span.max(1.0) {
                     Ok(best)
                 } else {
                     Err(self.err(

@@ -14,6 +14,7 @@ pub mod impeller_stage;
 pub mod limits;
 mod load_inputs;
 pub mod machine_class;
+mod nodes;
 mod plausibility;
 pub mod schema;
 pub mod shaft_zones;
@@ -577,11 +578,6 @@ impl RotorModel {
             film_cache,
         };
         build::build(&ctx, raw)
-    }
-
-    /// Number of nodes.
-    pub fn node_count(&self) -> usize {
-        self.node_z.len()
     }
 
     /// Where each pedestal's DOFs are numbered: `(pedestal, node)` with node
